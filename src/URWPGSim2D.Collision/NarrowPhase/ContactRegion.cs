@@ -1,0 +1,176 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
+
+namespace URWPGSim2D.Collision.NarrowPhase;
+
+/// <summary>
+/// Where two overlapping shapes touch: the action point of a contact. Every function returns
+/// a point of the overlap region (inside both shapes, or on their boundaries), so the point is
+/// the same, up to round-off, whichever shape is called first.
+/// </summary>
+internal static class ContactRegion
+{
+    /// <summary>
+    /// The area centroid of the intersection of two convex views (a flat or single-point view:
+    /// the middle of its part inside the other). <paramref name="origin"/> is a nearby point
+    /// that all arithmetic is taken relative to; <paramref name="fallback"/> is returned when
+    /// round-off leaves no region (grazing contacts).
+    /// </summary>
+    public static Vector2 IntersectionCentroid(in ConvexView a, in ConvexView b, Vector2 origin, Vector2 fallback)
+    {
+        if (a.Vertices.Length < 3 || b.Vertices.Length < 3)
+        {
+            return a.Vertices.Length <= b.Vertices.Length
+                ? FlatInside(a, b, origin, fallback)
+                : FlatInside(b, a, origin, fallback);
+        }
+
+        int room = a.Vertices.Length + b.Vertices.Length + 1;
+        Span<Vector2> ping = stackalloc Vector2[room];
+        Span<Vector2> pong = stackalloc Vector2[room];
+        int n = a.Vertices.Length;
+        for (int i = 0; i < n; i++)
+        {
+            ping[i] = a.Vertices[i] - origin;
+        }
+
+        var bv = b.Vertices;
+        var bn = b.Normals;
+        for (int j = 0; j < bv.Length && n > 0; j++)
+        {
+            n = HalfPlaneClip.Clip(ping[..n], pong, bn[j], Vector2.Dot(bv[j] - origin, bn[j]));
+            var swap = ping;
+            ping = pong;
+            pong = swap;
+        }
+
+        return n == 0 ? fallback : origin + Centroid(ping[..n]);
+    }
+
+    /// <summary>
+    /// The interval [lo, hi] of t for which p + t·u lies in the view (empty: lo &gt; hi).
+    /// u must be a unit vector. A point or a segment gives the single crossing (or, along
+    /// the segment's own line, the segment's extent).
+    /// </summary>
+    public static void LineInterval(in ConvexView view, Vector2 p, Vector2 u, out float lo, out float hi)
+    {
+        var v = view.Vertices;
+        if (v.Length == 1)
+        {
+            lo = hi = Vector2.Dot(v[0] - p, u);
+            return;
+        }
+
+        if (v.Length == 2)
+        {
+            SegmentCrossing(v[0], v[1], p, u, out lo, out hi);
+            return;
+        }
+
+        lo = float.NegativeInfinity;
+        hi = float.PositiveInfinity;
+        var nrm = view.Normals;
+        for (int i = 0; i < v.Length; i++)
+        {
+            float s = Vector2.Dot(nrm[i], p - v[i]);
+            float d = Vector2.Dot(nrm[i], u);
+            if (d > 0f)
+            {
+                hi = MathF.Min(hi, -s / d);
+            }
+            else if (d < 0f)
+            {
+                lo = MathF.Max(lo, -s / d);
+            }
+            else if (s > 0f)
+            {
+                lo = float.PositiveInfinity;
+                hi = float.NegativeInfinity;
+                return;
+            }
+        }
+    }
+
+    /// <summary>The area centroid of a polygon given relative to some origin (vertex mean if it has no area).</summary>
+    public static Vector2 Centroid(ReadOnlySpan<Vector2> p)
+    {
+        Vector2 o = p[0];
+        float area2 = 0f;
+        Vector2 sum = Vector2.Zero;
+        for (int i = 1; i + 1 < p.Length; i++)
+        {
+            Vector2 e1 = p[i] - o, e2 = p[i + 1] - o;
+            float w = XZPlane.Cross(e1, e2);
+            area2 += w;
+            sum += (e1 + e2) * w;
+        }
+
+        float scale = 0f;
+        for (int i = 1; i < p.Length; i++)
+        {
+            scale = MathF.Max(scale, (p[i] - o).LengthSquared());
+        }
+
+        if (area2 > 1e-6f * scale)
+        {
+            return o + sum / (3f * area2);
+        }
+
+        Vector2 mean = Vector2.Zero;
+        for (int i = 1; i < p.Length; i++)
+        {
+            mean += p[i] - o;
+        }
+
+        return o + mean / p.Length;
+    }
+
+    // The middle of the part of a point or segment `flat` that lies inside `other`.
+    private static Vector2 FlatInside(in ConvexView flat, in ConvexView other, Vector2 origin, Vector2 fallback)
+    {
+        var fv = flat.Vertices;
+        if (fv.Length == 1)
+        {
+            return fv[0];
+        }
+
+        Vector2 a = fv[0] - origin;
+        Vector2 e = fv[1] - fv[0];
+        float len = e.Length();
+        Vector2 u = e / len;
+        if (other.Vertices.Length == 1)
+        {
+            return other.Vertices[0];
+        }
+
+        LineInterval(other, a + origin, u, out float lo, out float hi);
+        lo = MathF.Max(lo, 0f);
+        hi = MathF.Min(hi, len);
+        return lo <= hi ? origin + a + u * (0.5f * (lo + hi)) : fallback;
+    }
+
+    private static void SegmentCrossing(Vector2 a, Vector2 b, Vector2 p, Vector2 u, out float lo, out float hi)
+    {
+        Vector2 e = b - a;
+        float denom = XZPlane.Cross(u, e);
+        Vector2 ap = a - p;
+        if (MathF.Abs(denom) <= 1e-6f * e.Length())
+        {
+            float ta = Vector2.Dot(ap, u), tb = Vector2.Dot(b - p, u);
+            lo = MathF.Min(ta, tb);
+            hi = MathF.Max(ta, tb);
+            return;
+        }
+
+        float s = XZPlane.Cross(ap, u) / denom;
+        if (s < -1e-6f || s > 1f + 1e-6f)
+        {
+            lo = float.PositiveInfinity;
+            hi = float.NegativeInfinity;
+            return;
+        }
+
+        lo = hi = XZPlane.Cross(ap, e) / denom;
+    }
+}

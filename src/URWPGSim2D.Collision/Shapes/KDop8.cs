@@ -1,0 +1,205 @@
+using System;
+using System.Diagnostics.CodeAnalysis;
+using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
+
+namespace URWPGSim2D.Collision.Shapes;
+
+/// <summary>
+/// An 8-DOP (discrete-orientation polytope with 8 faces): the intersection of four slabs
+/// minᵢ ≤ p·aᵢ ≤ maxᵢ along the fixed unit axes a₀ = (1, 0), a₁ = (0, 1), a₂ = (√½, √½),
+/// a₃ = (√½, −√½) of the X–Z plane (vector Y = world Z), in mm. At most an octagon.
+/// </summary>
+/// <remarks>
+/// On construction the slabs are tightened so that every slab touches the shape (a redundant
+/// slab is moved in), which makes the projection of the shape on axis i exactly
+/// [<see cref="GetMin"/>, <see cref="GetMax"/>]. The vertices are kept inline: no heap.
+/// A flat or single-point 8-DOP (min = max on some axis) is allowed.
+/// </remarks>
+public readonly struct KDop8
+{
+    /// <summary>√½, the component of the diagonal axes.</summary>
+    internal const float Diagonal = 0.70710678118654752f;
+
+    private static readonly Vector2[] SatAxes = [new(1f, 0f), new(0f, 1f), new(Diagonal, Diagonal), new(Diagonal, -Diagonal)];
+
+    private readonly Vector4 _min;
+    private readonly Vector4 _max;
+    private readonly VertexBuffer8 _vertices;
+    private readonly VertexBuffer8 _normals;
+    private readonly int _count;
+
+    /// <summary>Creates an 8-DOP from its slab bounds, validating and tightening them.</summary>
+    /// <param name="min">Four lower slab values along a₀..a₃, mm.</param>
+    /// <param name="max">Four upper slab values along a₀..a₃, mm.</param>
+    /// <exception cref="ArgumentException">Not four values each, a value not finite, min &gt; max on an axis, or slabs with no common point.</exception>
+    public KDop8(ReadOnlySpan<float> min, ReadOnlySpan<float> max)
+    {
+        if (min.Length != 4)
+        {
+            throw new ArgumentException($"8-DOP needs 4 slab minima, got {min.Length}", nameof(min));
+        }
+
+        if (max.Length != 4)
+        {
+            throw new ArgumentException($"8-DOP needs 4 slab maxima, got {max.Length}", nameof(max));
+        }
+
+        for (int i = 0; i < 4; i++)
+        {
+            Guard.Finite(min[i], $"{nameof(min)}[{i}]");
+            Guard.Finite(max[i], $"{nameof(max)}[{i}]");
+            if (min[i] > max[i])
+            {
+                throw new ArgumentException($"min[{i}] ({min[i]}) is greater than max[{i}] ({max[i]})", nameof(min));
+            }
+        }
+
+        this = Build(new Vector4(min[0], min[1], min[2], min[3]), new Vector4(max[0], max[1], max[2], max[3]));
+        if (_count == 0)
+        {
+            throw new ArgumentException("8-DOP slabs have no point in common (the diagonal slabs miss the box)", nameof(min));
+        }
+    }
+
+    private KDop8(Vector4 min, Vector4 max, in VertexBuffer8 vertices, in VertexBuffer8 normals, int count)
+    {
+        _min = min;
+        _max = max;
+        _vertices = vertices;
+        _normals = normals;
+        _count = count;
+    }
+
+    /// <summary>The unit axis aᵢ (i = 0..3) along which slab i is measured.</summary>
+    /// <param name="index">0: (1, 0); 1: (0, 1); 2: (√½, √½); 3: (√½, −√½).</param>
+    /// <returns>The axis as a plane vector.</returns>
+    public static Vector2 Axis(int index) => SatAxes[index];
+
+    /// <summary>The tight 8-DOP of a set of points (their projections on the four axes).</summary>
+    /// <param name="points">At least one finite point, mm.</param>
+    /// <returns>The smallest 8-DOP containing the points.</returns>
+    /// <exception cref="ArgumentException">No points, or a coordinate that is not finite.</exception>
+    public static KDop8 FromPoints(ReadOnlySpan<Vector2> points)
+    {
+        if (points.IsEmpty)
+        {
+            throw new ArgumentException("8-DOP needs at least one point", nameof(points));
+        }
+
+        for (int i = 0; i < points.Length; i++)
+        {
+            Guard.Finite(points[i], $"{nameof(points)}[{i}]");
+        }
+
+        Slabs(points, out Vector4 min, out Vector4 max);
+        return Build(min, max);
+    }
+
+    /// <summary>The 8-DOP equal to a box: its diagonal slabs pass through the box's corners.</summary>
+    /// <param name="box">The box.</param>
+    /// <returns>The same region as an 8-DOP.</returns>
+    public static KDop8 FromAabb(in Aabb box)
+    {
+        Span<Vector2> corners = stackalloc Vector2[4];
+        box.WriteVertices(corners);
+        Slabs(corners, out Vector4 min, out Vector4 max);
+        return Build(min, max);
+    }
+
+    /// <summary>The lower slab value along axis <paramref name="axis"/> (0..3), mm.</summary>
+    /// <param name="axis">Axis index 0..3.</param>
+    /// <returns>min over the shape of p·aᵢ.</returns>
+    public float GetMin(int axis) => _min[axis];
+
+    /// <summary>The upper slab value along axis <paramref name="axis"/> (0..3), mm.</summary>
+    /// <param name="axis">Axis index 0..3.</param>
+    /// <returns>max over the shape of p·aᵢ.</returns>
+    public float GetMax(int axis) => _max[axis];
+
+    /// <summary>The vertices (1 to 8), counter-clockwise in x–z coordinates, mm.</summary>
+    [UnscopedRef]
+    public ReadOnlySpan<Vector2> Vertices => ((ReadOnlySpan<Vector2>)_vertices)[.._count];
+
+    /// <summary>The outer bounding circle: centred on the vertex mean, through the farthest vertex.</summary>
+    public Circle BoundingCircle
+    {
+        get
+        {
+            var v = Vertices;
+            Vector2 c = Vector2.Zero;
+            foreach (var p in v)
+            {
+                c += p - v[0];
+            }
+
+            c = v[0] + c / v.Length;
+            float r2 = 0f;
+            foreach (var p in v)
+            {
+                r2 = MathF.Max(r2, Vector2.DistanceSquared(p, c));
+            }
+
+            return Circle.Bounding(c, MathF.Sqrt(r2));
+        }
+    }
+
+    /// <summary>True when the interiors of the two 8-DOPs overlap (all four slab pairs overlap).</summary>
+    /// <param name="other">The other 8-DOP.</param>
+    /// <returns>Whether they overlap.</returns>
+    public bool Overlaps(in KDop8 other) => SlabsOverlap(_min, _max, other._min, other._max);
+
+    /// <summary>This 8-DOP moved by <paramref name="offset"/> mm.</summary>
+    /// <param name="offset">Translation in mm.</param>
+    /// <returns>The translated 8-DOP.</returns>
+    public KDop8 Translated(Vector2 offset)
+    {
+        Guard.Finite(offset, nameof(offset));
+        Vector4 d = Project(offset);
+        return Build(_min + d, _max + d);
+    }
+
+    internal Vector4 MinSlabs => _min;
+
+    internal Vector4 MaxSlabs => _max;
+
+    /// <summary>A view over the inline vertices and normals, with the four fixed axes for SAT.</summary>
+    [UnscopedRef]
+    internal ConvexView View() =>
+        new(Vertices, ((ReadOnlySpan<Vector2>)_normals)[..(_count >= 2 ? _count : 0)], SatAxes);
+
+    /// <summary>p·a₀..a₃ of one point.</summary>
+    internal static Vector4 Project(Vector2 p) => new(p.X, p.Y, (p.X + p.Y) * Diagonal, (p.X - p.Y) * Diagonal);
+
+    /// <summary>Open-interval overlap on all four axes.</summary>
+    internal static bool SlabsOverlap(Vector4 minA, Vector4 maxA, Vector4 minB, Vector4 maxB) =>
+        Vector4.LessThanAll(minA, maxB) && Vector4.LessThanAll(minB, maxA);
+
+    /// <summary>The slab bounds of a point set.</summary>
+    internal static void Slabs(ReadOnlySpan<Vector2> points, out Vector4 min, out Vector4 max)
+    {
+        min = max = Project(points[0]);
+        for (int i = 1; i < points.Length; i++)
+        {
+            Vector4 p = Project(points[i]);
+            min = Vector4.Min(min, p);
+            max = Vector4.Max(max, p);
+        }
+    }
+
+    /// <summary>Builds the tight 8-DOP of the slab intersection; count 0 when it is empty.</summary>
+    internal static KDop8 Build(Vector4 min, Vector4 max)
+    {
+        var vertices = default(VertexBuffer8);
+        int count = KDop8Vertices.Compute(min, max, vertices);
+        if (count == 0)
+        {
+            return new KDop8(min, max, vertices, default, 0);
+        }
+
+        Slabs(((ReadOnlySpan<Vector2>)vertices)[..count], out Vector4 tightMin, out Vector4 tightMax);
+        var normals = default(VertexBuffer8);
+        KDop8Vertices.EdgeNormals(((ReadOnlySpan<Vector2>)vertices)[..count], normals);
+        return new KDop8(tightMin, tightMax, vertices, normals, count);
+    }
+}
