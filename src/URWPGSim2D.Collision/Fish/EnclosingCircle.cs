@@ -6,7 +6,7 @@ namespace URWPGSim2D.Collision.Fish;
 
 /// <summary>
 /// Bounding circles for the fish's tree: the minimum enclosing circle of a few points
-/// (incremental Welzl, no allocation) and the smallest circle around two circles. Every
+/// (incremental Welzl, no allocation). Every
 /// circle returned is grown by a few parts per million so that round-off never leaves a
 /// point of what it bounds outside it.
 /// </summary>
@@ -69,25 +69,6 @@ internal static class EnclosingCircle
         }
 
         return WithSlack(center, MathF.Sqrt(max2));
-    }
-
-    /// <summary>The smallest circle containing both circles, plus slack.</summary>
-    public static Circle AroundTwo(in Circle a, in Circle b)
-    {
-        Vector2 ab = b.Center - a.Center;
-        float d = ab.Length();
-        if (d + b.Radius <= a.Radius)
-        {
-            return WithSlack(a.Center, a.Radius);
-        }
-
-        if (d + a.Radius <= b.Radius)
-        {
-            return WithSlack(b.Center, b.Radius);
-        }
-
-        float r = 0.5f * (d + a.Radius + b.Radius);
-        return WithSlack(a.Center + ab * ((r - a.Radius) / d), r);
     }
 
     /// <summary>Grows a radius by 2 ppm of the coordinates' magnitude (covers float round-off of the points and the centre).</summary>

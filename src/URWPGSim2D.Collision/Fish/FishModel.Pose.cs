@@ -80,10 +80,17 @@ public sealed partial class FishModel
         int[] order = _template.TailOrder;
         for (int i = 0; i < order.Length; i++)
         {
-            _tailPoints[i] = _vertices[order[i]];
+            _orderedPoints[i] = _vertices[order[i]];
         }
 
-        TailGroup = EnclosingCircle.Minimum(_tailPoints);
-        Root = EnclosingCircle.AroundTwo(BodyGroup, TailGroup);
+        TailGroup = EnclosingCircle.Minimum(_orderedPoints.AsSpan(0, order.Length));
+
+        order = _template.AllOrder;
+        for (int i = 0; i < order.Length; i++)
+        {
+            _orderedPoints[i] = _vertices[order[i]];
+        }
+
+        Root = EnclosingCircle.Minimum(_orderedPoints);
     }
 }

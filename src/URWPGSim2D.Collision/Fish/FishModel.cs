@@ -14,9 +14,10 @@ namespace URWPGSim2D.Collision.Fish;
 /// </summary>
 /// <remarks>
 /// Every buffer is allocated here, once; <see cref="SetPose"/> rebuilds the leaves and all
-/// bounding volumes in place without allocating. Each circle encloses its two children (or its
-/// leaves) and is the minimum enclosing circle of them up to a few µm of slack (the root: the
-/// smallest circle around the two group circles). Not thread-safe while a pose is being set.
+/// bounding volumes in place without allocating. Each circle is the minimum enclosing circle
+/// of the leaves below it, grown by a few µm against round-off: it encloses every leaf below
+/// it (the root need not enclose the group circles themselves, which bulge past the fish; the
+/// descent only needs each volume to hold its leaves). Not thread-safe while a pose is being set.
 /// </remarks>
 public sealed partial class FishModel
 {
@@ -26,7 +27,7 @@ public sealed partial class FishModel
     private readonly Vector2[] _axes = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector4[] _slabMin = new Vector4[FishLeafLayout.LeafCount];
     private readonly Vector4[] _slabMax = new Vector4[FishLeafLayout.LeafCount];
-    private readonly Vector2[] _tailPoints;
+    private readonly Vector2[] _orderedPoints;
 
     /// <summary>Creates the model of a fish of the given size at the given pose.</summary>
     /// <param name="size">The fish's dimensions (a validated <see cref="FishSize"/>; not <c>default</c>).</param>
@@ -40,7 +41,7 @@ public sealed partial class FishModel
         }
 
         _template = new FishTemplate(size);
-        _tailPoints = new Vector2[_template.TailOrder.Length];
+        _orderedPoints = new Vector2[_template.AllOrder.Length];
         SetPose(pose);
     }
 
@@ -50,7 +51,7 @@ public sealed partial class FishModel
     /// <summary>The pose the model was last built for.</summary>
     public FishPose Pose { get; private set; }
 
-    /// <summary>Encloses the whole fish: the smallest circle around <see cref="BodyGroup"/> and <see cref="TailGroup"/>.</summary>
+    /// <summary>Encloses the whole fish: the minimum enclosing circle of all leaves at this pose.</summary>
     public Circle Root { get; private set; }
 
     /// <summary>Encloses the body and both pectoral fins: their minimum enclosing circle (rigid, computed once per size).</summary>

@@ -46,7 +46,8 @@ internal sealed class FishTemplate
         }
 
         BodyGroup = EnclosingCircle.Minimum(_vertices.AsSpan(0, FishLeafLayout.TailGroupFirstVertex));
-        TailOrder = ExtremeFirstTailOrder();
+        TailOrder = ExtremeFirstOrder(FishLeafLayout.BodyGroupEnd);
+        AllOrder = ExtremeFirstOrder(0);
     }
 
     /// <summary>The size this template was built for.</summary>
@@ -67,6 +68,9 @@ internal sealed class FishTemplate
     /// <summary>Packed indices of the tail group's distinct vertices, farthest from the straight tail's centre first.</summary>
     public int[] TailOrder { get; }
 
+    /// <summary>Packed indices of all distinct vertices, farthest from the straight fish's centre first.</summary>
+    public int[] AllOrder { get; }
+
     /// <summary>Number of SAT axes of a leaf (its edge normals with parallel ones merged).</summary>
     public int AxisCount(int leaf) => _axisCounts[leaf];
 
@@ -83,16 +87,15 @@ internal sealed class FishTemplate
         return false;
     }
 
-    // The tail group's vertices in the straight pose (all frames along +X); shared vertices of the
-    // caudal fin and tail segment 3 appear once. Sorted by decreasing distance from their
-    // enclosing circle's centre, so the incremental search meets the boundary points first.
-    private int[] ExtremeFirstTailOrder()
+    // The vertices of leaves firstLeaf..7 in the straight pose (all frames along +X); shared
+    // vertices of the caudal fin and tail segment 3 appear once. Sorted by decreasing distance
+    // from their enclosing circle's centre, so the incremental search meets the boundary first.
+    private int[] ExtremeFirstOrder(int firstLeaf)
     {
-        int first = FishLeafLayout.TailGroupFirstVertex;
-        Span<Vector2> straight = stackalloc Vector2[FishLeafLayout.VertexCount - first];
+        Span<Vector2> straight = stackalloc Vector2[FishLeafLayout.VertexCount];
         Span<int> index = stackalloc int[straight.Length];
         int count = 0;
-        for (int leaf = FishLeafLayout.BodyGroupEnd; leaf < FishLeafLayout.LeafCount; leaf++)
+        for (int leaf = firstLeaf; leaf < FishLeafLayout.LeafCount; leaf++)
         {
             float originX = FrameOriginX(FishLeafLayout.Frame(leaf));
             for (int k = 0; k < FishLeafLayout.Count(leaf); k++)
