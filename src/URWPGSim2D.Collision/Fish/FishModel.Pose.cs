@@ -77,20 +77,22 @@ public sealed partial class FishModel
         var body = _template.BodyGroup;
         BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
 
-        int[] order = _template.TailOrder;
+        TailGroup = MinimumCircle(_tailOrder);
+        Root = MinimumCircle(_allOrder);
+    }
+
+    // The minimum enclosing circle of the vertices listed in `order`; its defining vertices move
+    // to the front of the list, where the next pose (a small move) will most likely find them again.
+    private Circle MinimumCircle(int[] order)
+    {
+        var points = _orderedPoints.AsSpan(0, order.Length);
         for (int i = 0; i < order.Length; i++)
         {
-            _orderedPoints[i] = _vertices[order[i]];
+            points[i] = _vertices[order[i]];
         }
 
-        TailGroup = EnclosingCircle.Minimum(_orderedPoints.AsSpan(0, order.Length));
-
-        order = _template.AllOrder;
-        for (int i = 0; i < order.Length; i++)
-        {
-            _orderedPoints[i] = _vertices[order[i]];
-        }
-
-        Root = EnclosingCircle.Minimum(_orderedPoints);
+        var circle = EnclosingCircle.Minimum(points, out var support);
+        EnclosingCircle.MoveToFront(order, support);
+        return circle;
     }
 }
