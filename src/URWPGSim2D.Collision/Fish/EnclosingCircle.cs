@@ -16,22 +16,14 @@ internal static class EnclosingCircle
     /// The minimum enclosing circle of <paramref name="points"/> (at least one point), mm.
     /// Incremental algorithm: whenever a point falls outside the current circle it must lie on
     /// the boundary of the circle of the points seen so far, which is rebuilt with it (then
-    /// with two fixed points, then three). Putting the likely boundary points first keeps the
+    /// with two fixed points, then three). Putting the likely extreme points first keeps the
     /// rebuilds rare. The radius is finally the largest distance from the centre, plus slack.
     /// </summary>
-    public static Circle Minimum(ReadOnlySpan<Vector2> points) => Minimum(points, out _);
-
-    /// <summary>
-    /// As <see cref="Minimum(ReadOnlySpan{Vector2})"/>, also giving the positions of the (up to
-    /// three) points that define the circle, −1 where unused: moved to the front, they make the
-    /// next search over slightly moved points almost free.
-    /// </summary>
-    public static Circle Minimum(ReadOnlySpan<Vector2> points, out Support support)
+    public static Circle Minimum(ReadOnlySpan<Vector2> points)
     {
         Vector2 o = points[0];
         Vector2 c = Vector2.Zero;
         float r2 = 0f;
-        support = new Support(0, -1, -1);
         for (int i = 1; i < points.Length; i++)
         {
             Vector2 pi = points[i] - o;
@@ -42,7 +34,6 @@ internal static class EnclosingCircle
 
             c = pi;
             r2 = 0f;
-            support = new Support(i, -1, -1);
             for (int j = 0; j < i; j++)
             {
                 Vector2 pj = points[j] - o;
@@ -53,7 +44,6 @@ internal static class EnclosingCircle
 
                 c = 0.5f * (pi + pj);
                 r2 = Vector2.DistanceSquared(pi, c);
-                support = new Support(i, j, -1);
                 for (int k = 0; k < j; k++)
                 {
                     Vector2 pk = points[k] - o;
@@ -61,32 +51,12 @@ internal static class EnclosingCircle
                     {
                         c = ThroughThree(pi, pj, pk);
                         r2 = Vector2.DistanceSquared(pi, c);
-                        support = new Support(i, j, k);
                     }
                 }
             }
         }
 
         return Enclosing(points, o + c);
-    }
-
-    /// <summary>Moves the defining points to the front of <paramref name="order"/>, keeping the others in order.</summary>
-    public static void MoveToFront(Span<int> order, Support support)
-    {
-        Span<int> positions = [support.First, support.Second, support.Third];
-        positions.Sort();
-        int front = 0;
-        foreach (int at in positions)
-        {
-            if (at < 0)
-            {
-                continue;
-            }
-
-            int value = order[at];
-            order[front..at].CopyTo(order[(front + 1)..(at + 1)]);
-            order[front++] = value;
-        }
     }
 
     /// <summary>The circle centred at <paramref name="center"/> through the farthest of <paramref name="points"/>, plus slack.</summary>
@@ -125,7 +95,4 @@ internal static class EnclosingCircle
 
         return a + new Vector2(ac.Y * ab2 - ab.Y * ac2, ab.X * ac2 - ac.X * ab2) / d;
     }
-
-    /// <summary>Positions (in the searched span) of the points on a minimum enclosing circle; −1 where unused.</summary>
-    internal readonly record struct Support(int First, int Second, int Third);
 }

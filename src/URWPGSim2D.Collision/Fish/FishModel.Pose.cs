@@ -77,13 +77,12 @@ public sealed partial class FishModel
         var body = _template.BodyGroup;
         BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
 
-        TailGroup = MinimumCircle(_tailOrder);
-        Root = MinimumCircle(_allOrder);
+        TailGroup = MinimumCircle(_template.TailOrder);
+        Root = MinimumCircle(_template.AllOrder);
     }
 
-    // The minimum enclosing circle of the vertices listed in `order`; its defining vertices move
-    // to the front of the list, where the next pose (a small move) will most likely find them again.
-    private Circle MinimumCircle(int[] order)
+    // The minimum enclosing circle of the vertices listed in `order` (likely boundary points first).
+    private Circle MinimumCircle(ReadOnlySpan<int> order)
     {
         var points = _orderedPoints.AsSpan(0, order.Length);
         for (int i = 0; i < order.Length; i++)
@@ -91,8 +90,6 @@ public sealed partial class FishModel
             points[i] = _vertices[order[i]];
         }
 
-        var circle = EnclosingCircle.Minimum(points, out var support);
-        EnclosingCircle.MoveToFront(order, support);
-        return circle;
+        return EnclosingCircle.Minimum(points);
     }
 }

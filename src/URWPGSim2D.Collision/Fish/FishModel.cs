@@ -17,9 +17,7 @@ namespace URWPGSim2D.Collision.Fish;
 /// bounding volumes in place without allocating. Each circle is the minimum enclosing circle
 /// of the leaves below it, grown by a few µm against round-off: it encloses every leaf below
 /// it (the root need not enclose the group circles themselves, which bulge past the fish; the
-/// descent only needs each volume to hold its leaves). The circle searches start with the
-/// vertices that defined the previous circles, which makes small pose steps cheap; the circles
-/// are unique, so this changes nothing but round-off. Not thread-safe while a pose is being set.
+/// descent only needs each volume to hold its leaves). Not thread-safe while a pose is being set.
 /// </remarks>
 public sealed partial class FishModel
 {
@@ -30,8 +28,6 @@ public sealed partial class FishModel
     private readonly Vector4[] _slabMin = new Vector4[FishLeafLayout.LeafCount];
     private readonly Vector4[] _slabMax = new Vector4[FishLeafLayout.LeafCount];
     private readonly Vector2[] _orderedPoints;
-    private readonly int[] _tailOrder;
-    private readonly int[] _allOrder;
 
     /// <summary>Creates the model of a fish of the given size at the given pose.</summary>
     /// <param name="size">The fish's dimensions (a validated <see cref="FishSize"/>; not <c>default</c>).</param>
@@ -46,8 +42,6 @@ public sealed partial class FishModel
 
         _template = new FishTemplate(size);
         _orderedPoints = new Vector2[_template.AllOrder.Length];
-        _tailOrder = (int[])_template.TailOrder.Clone();
-        _allOrder = (int[])_template.AllOrder.Clone();
         SetPose(pose);
     }
 

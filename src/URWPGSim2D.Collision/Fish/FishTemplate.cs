@@ -17,6 +17,8 @@ internal sealed class FishTemplate
     private readonly Vector2[] _normals = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector2[] _axes = new Vector2[FishLeafLayout.VertexCount];
     private readonly byte[] _axisCounts = new byte[FishLeafLayout.LeafCount];
+    private readonly int[] _tailOrder;
+    private readonly int[] _allOrder;
 
     public FishTemplate(in FishSize size)
     {
@@ -46,8 +48,8 @@ internal sealed class FishTemplate
         }
 
         BodyGroup = EnclosingCircle.Minimum(_vertices.AsSpan(0, FishLeafLayout.TailGroupFirstVertex));
-        TailOrder = ExtremeFirstOrder(FishLeafLayout.BodyGroupEnd);
-        AllOrder = ExtremeFirstOrder(0);
+        _tailOrder = ExtremeFirstOrder(FishLeafLayout.BodyGroupEnd);
+        _allOrder = ExtremeFirstOrder(0);
     }
 
     /// <summary>The size this template was built for.</summary>
@@ -66,10 +68,10 @@ internal sealed class FishTemplate
     public Circle BodyGroup { get; }
 
     /// <summary>Packed indices of the tail group's distinct vertices, farthest from the straight tail's centre first.</summary>
-    public int[] TailOrder { get; }
+    public ReadOnlySpan<int> TailOrder => _tailOrder;
 
     /// <summary>Packed indices of all distinct vertices, farthest from the straight fish's centre first.</summary>
-    public int[] AllOrder { get; }
+    public ReadOnlySpan<int> AllOrder => _allOrder;
 
     /// <summary>Number of SAT axes of a leaf (its edge normals with parallel ones merged).</summary>
     public int AxisCount(int leaf) => _axisCounts[leaf];
