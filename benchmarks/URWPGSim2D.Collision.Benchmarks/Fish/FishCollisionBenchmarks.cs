@@ -9,10 +9,11 @@ namespace URWPGSim2D.Collision.Benchmarks.Fish;
 
 /// <summary>
 /// Costs of the fish tree against the narrow-phase primitives, in one class so that the ratios
-/// come from the same run: a circle–circle test (the baseline), one leaf-vs-leaf SAT, and the
-/// fish queries and pose update. Run: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter *FishCollision* --job short</c>.
+/// come from the same run: a circle–circle test that misses (the baseline; like the fish queries
+/// it returns the full result struct), one leaf-vs-leaf SAT, and the fish queries and pose updates. Run: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter *FishCollision* --job short</c>.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class FishCollisionBenchmarks
 {
     private readonly FishPose[] _poses = new FishPose[16];

@@ -8,8 +8,9 @@ namespace URWPGSim2D.Collision.Fish;
 /// <summary>
 /// Everything about a fish that depends on its size only, computed once: each leaf in its
 /// rigid frame (vertices counter-clockwise, outward unit edge normals, SAT axes with parallel
-/// edges merged), the body group's minimum enclosing circle in the body frame, and the order
-/// in which the tail group's distinct vertices are fed to the enclosing-circle search.
+/// edges merged), the body group's minimum enclosing circle in the body frame, and the orders
+/// in which the tail group's and the whole fish's distinct vertices are fed to the
+/// enclosing-circle search (likely boundary points first).
 /// </summary>
 internal sealed class FishTemplate
 {
