@@ -85,7 +85,7 @@ internal sealed class CollideCommand : ICliCommand
 
         if (file.StartsWith('-') && file != InputText.StandardInput)
         {
-            throw new CliUsageException($"collide: unknown option \"{file}\"", Usage);
+            throw new CliUsageException($"collide: unknown option {CliText.Quote(file)}", Usage);
         }
 
         return file;

@@ -1,7 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Text.Encodings.Web;
-using System.Text.Json;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Server.Cli;
 
@@ -60,15 +58,9 @@ internal static class ShapeJson
             KDop8Type => ReadKDop8(dto, fields),
             PolygonType => ReadPolygon(dto, fields),
             SegmentType => ReadSegment(dto, fields),
-            _ => throw new CliInputException(fields.PathOf("type"), $"unknown shape type {Quote(type)}"),
+            _ => throw new CliInputException(fields.PathOf("type"), $"unknown shape type {CliText.Quote(type)}"),
         };
     }
-
-    /// <summary>A string as a JSON literal (quotes, escapes), so that the message stays on one line.</summary>
-    /// <param name="value">Any string.</param>
-    /// <returns>E.g. <c>"triangle"</c>.</returns>
-    public static string Quote(string value) =>
-        $"\"{JsonEncodedText.Encode(value, JavaScriptEncoder.UnsafeRelaxedJsonEscaping)}\"";
 
     private static Shape ReadCircle(ShapeDto dto, FieldReader fields)
     {

@@ -6,7 +6,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>What one in-process run of the command line produced.</summary>
 internal sealed record CliRun(int ExitCode, string Stdout, string Stderr)
 {
-    /// <summary>Runs <see cref="CliApp.Run"/> with in-memory streams.</summary>
+    /// <summary>Runs the program's command line (<c>CliApp.Run</c>, as <c>Main</c> does) with in-memory streams.</summary>
     public static CliRun Of(string stdin, params string[] args)
     {
         using var input = new StringReader(stdin);
