@@ -39,6 +39,9 @@ public sealed class CollideErrorTests
         { Polygon((0, 0), (10, 0), (20, 0)), "pairs[0].a.vertices: polygon is degenerate: its vertices are collinear" },
         { Polygon((0, 0), (10, 0), (10, 10), (5, 2)), "pairs[0].a.vertices: polygon is not convex" },
 
+        // 8-DOP slabs that share no point: the diagonal slab lies beyond the unit box.
+        { KDop8([0, 0, 100, 0], [1, 1, 101, 1]), "pairs[0].a.min: 8-DOP slabs have no point in common (the diagonal slabs miss the box)" },
+
         // Segment of zero length.
         { Segment(1, 1, 1, 1), "pairs[0].a.b: segment has zero length: both ends are [1, 1]" },
 
@@ -97,6 +100,19 @@ public sealed class CollideErrorTests
     public void NegativeRadiusInTheFourthPair()
     {
         AssertFails(Pairs(Pair(Ok, Ok), Pair(Ok, Ok), Pair(Ok, Ok), Pair(Circle(0, 0, -5), Ok)), "pairs[3].a.radius: must be > 0, got -5");
+    }
+
+    [Fact]
+    public void APolygonWithTooManyVerticesIsRejected()
+    {
+        var vertices = new (double X, double Z)[65];
+        for (int i = 0; i < vertices.Length; i++)
+        {
+            double angle = 2 * System.Math.PI * i / vertices.Length;
+            vertices[i] = (System.Math.Round(100 * System.Math.Cos(angle), 3), System.Math.Round(100 * System.Math.Sin(angle), 3));
+        }
+
+        AssertFails(Pairs(Pair(Ok, Polygon(vertices))), "pairs[0].b.vertices: polygon has 65 vertices, at most 64 are allowed");
     }
 
     [Fact]
@@ -166,6 +182,24 @@ public sealed class CollideErrorTests
         var run = CliRun.Of(string.Empty, "collide", missing);
 
         AssertOneLineFailure(run, missing + ": file not found");
+    }
+
+    [Fact]
+    public void AnUnreadableFileIsReportedByName()
+    {
+        // A directory cannot be read as a file (whatever the user's permissions).
+        string directory = System.IO.Path.Combine(System.IO.Path.GetTempPath(), $"urwpgsim2d-dir-{System.Guid.NewGuid():N}");
+        System.IO.Directory.CreateDirectory(directory);
+        try
+        {
+            var run = CliRun.Of(string.Empty, "collide", directory);
+
+            AssertOneLineFailure(run, $"{directory}: cannot read file: Access to the path '{directory}' is denied.");
+        }
+        finally
+        {
+            System.IO.Directory.Delete(directory);
+        }
     }
 
     internal static void AssertOneLineFailure(CliRun run, string expectedLine)
