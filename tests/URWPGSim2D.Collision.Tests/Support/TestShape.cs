@@ -7,7 +7,7 @@ using URWPGSim2D.Collision.Shapes;
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>
-/// One shape under test: the library <see cref="Shapes.Shape"/> and its independent
+/// One shape under test: the library <see cref="URWPGSim2D.Collision.Shapes.Shape"/> and its independent
 /// double-precision <see cref="ReferenceShape"/>, both built from the same float numbers (the
 /// "spec"). <see cref="Translated"/> moves the spec and rebuilds both, so the reference always
 /// describes exactly the floats the library was given.
@@ -86,7 +86,7 @@ public sealed class TestShape
     /// <summary>The 8-DOP of a point set (the reference computes the slabs in double).</summary>
     public static TestShape KDop8OfPoints(Vector2[] points) => new(
         ShapeKind.KDop8,
-        Shapes.KDop8.FromPoints(points),
+        global::URWPGSim2D.Collision.Shapes.KDop8.FromPoints(points),
         ReferenceShape.KDop8OfPoints(points),
         $"KDop8.FromPoints([{string.Join(", ", points.Select(V))}])",
         d => KDop8OfPoints(points.Select(v => Move(v, d)).ToArray()));
