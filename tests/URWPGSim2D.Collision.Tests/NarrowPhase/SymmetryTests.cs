@@ -49,7 +49,7 @@ public sealed class SymmetryTests
             var before = CollisionDetector.Detect(c.A.Shape, c.B.Shape);
             var after = CollisionDetector.Detect(a2.Shape, b2.Shape);
             var back = after.Intersect
-                ? new CollisionDetectionResult(true, after.MinimumTranslationVector, after.NormalAxis, after.ActionPoint - Geometry.XZPlane.ToWorld(offset.ToVector2()))
+                ? new CollisionDetectionResult(true, after.MinimumTranslationVector, after.NormalAxis, after.ActionPoint - URWPGSim2D.Collision.Geometry.XZPlane.ToWorld(offset.ToVector2()))
                 : after;
             // Same MTV. The action point is not compared: for a grazing contact the overlap is a
             // long sliver whose position along the contact moves a lot when rounding the moved

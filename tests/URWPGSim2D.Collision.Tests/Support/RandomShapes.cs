@@ -76,25 +76,25 @@ public sealed class RandomShapes
             (sizeA, sizeB) = _random.Next(2) == 0 ? (big, small) : (small, big);
         }
 
-        TestShape a = Create(kindA, Point2.Zero, sizeA);
+        TestShape a0 = Create(kindA, Point2.Zero, sizeA);
         TestShape b0 = Create(kindB, Point2.Zero, sizeB);
-        double reach = a.Reference.BoundingRadius + b0.Reference.BoundingRadius;
+        double reach = a0.Reference.BoundingRadius + b0.Reference.BoundingRadius;
         double distance = scenario switch
         {
-            PairScenario.Containment => Uniform(0, 0.25) * Math.Max(a.Reference.BoundingRadius, b0.Reference.BoundingRadius),
+            PairScenario.Containment => Uniform(0, 0.25) * Math.Max(a0.Reference.BoundingRadius, b0.Reference.BoundingRadius),
             PairScenario.Apart => reach * Uniform(1.001, 1.3),
             _ => reach * Uniform(0, 1.05),
         };
-        TestShape b = b0.Translated(a.Reference.Centre - b0.Reference.Centre + Direction() * distance);
+        Point2 placeB = a0.Reference.Centre - b0.Reference.Centre + Direction() * distance;
 
         // Somewhere in the field such that both shapes stay within ±MaxCoordinate.
-        var (loX, hiX) = Extent(a, b, new Point2(1, 0));
-        var (loY, hiY) = Extent(a, b, new Point2(0, 1));
+        var (loX, hiX) = Extent(a0, b0, placeB, new Point2(1, 0));
+        var (loY, hiY) = Extent(a0, b0, placeB, new Point2(0, 1));
         var shift = new Point2(
             Uniform(-MaxCoordinate - loX, MaxCoordinate - hiX),
             Uniform(-MaxCoordinate - loY, MaxCoordinate - hiY));
-        a = a.Translated(shift);
-        b = b.Translated(shift);
+        TestShape a = a0.Translated(shift);
+        TestShape b = b0.Translated(placeB + shift);
 
         if (scenario == PairScenario.NearTouching)
         {
@@ -106,8 +106,9 @@ public sealed class RandomShapes
     }
 
     /// <summary>
-    /// The vertices of a random convex polygon (Valtr's algorithm), stretched by up to 4:1,
-    /// rotated, scaled to diameter <paramref name="size"/> and centred on <paramref name="centre"/>;
+    /// The vertices of a random convex polygon (Valtr's algorithm with <paramref name="count"/>
+    /// vertices, less any that are nearly collinear with their neighbours), stretched by up to
+    /// 4:1, rotated, scaled to diameter <paramref name="size"/> and centred on <paramref name="centre"/>;
     /// counter-clockwise or clockwise at random. Every vertex lies at least 0.2 % of the size
     /// inside every edge line it is not on, so float rounding anywhere in ±25,000 mm keeps it convex.
     /// </summary>
@@ -121,6 +122,7 @@ public sealed class RandomShapes
             Point2 u = Point2.FromAngle(angle), w = u.RightPerp;
             p = p.Select(q => u * q.X + w * (q.Y * aspect)).ToArray();
             double diameter = p.SelectMany(q => p, (q, r) => Point2.Distance(q, r)).Max();
+            p = PruneFlatVertices(p, 2.5e-3 * diameter);
             var v = p.Select(q => (centre + q * (size / diameter)).ToVector2()).ToArray();
             if (!HasMargin(v, 2e-3 * size))
             {
@@ -136,11 +138,37 @@ public sealed class RandomShapes
         }
     }
 
-    private static (double Lo, double Hi) Extent(TestShape a, TestShape b, Point2 axis)
+    // The extent along `axis` of a together with b moved by `offsetB` (with 1 mm to spare for rounding).
+    private static (double Lo, double Hi) Extent(TestShape a, TestShape b, Point2 offsetB, Point2 axis)
     {
         var pa = a.Reference.Project(axis);
         var pb = b.Reference.Project(axis);
-        return (Math.Min(pa.Min, pb.Min), Math.Max(pa.Max, pb.Max));
+        double d = Point2.Dot(offsetB, axis);
+        return (Math.Min(pa.Min, pb.Min + d) - 1, Math.Max(pa.Max, pb.Max + d) + 1);
+    }
+
+    // Drops vertices that lie within `margin` of the chord of their neighbours (Valtr's vectors
+    // can be almost parallel), as long as three remain.
+    private static Point2[] PruneFlatVertices(Point2[] p, double margin)
+    {
+        var list = p.ToList();
+        bool removed = true;
+        while (removed && list.Count > 3)
+        {
+            removed = false;
+            for (int i = 0; i < list.Count && list.Count > 3; i++)
+            {
+                Point2 prev = list[(i + list.Count - 1) % list.Count], next = list[(i + 1) % list.Count];
+                Point2 chord = next - prev;
+                if (Math.Abs(Point2.Cross(chord, list[i] - prev)) < margin * chord.Length)
+                {
+                    list.RemoveAt(i);
+                    removed = true;
+                }
+            }
+        }
+
+        return list.ToArray();
     }
 
     // Every vertex not on edge i lies at least `margin` inside edge i's line, in either winding.

@@ -24,7 +24,18 @@ public static class ReferenceGeometry
     /// </summary>
     public static Point2[] ConvexHull(IEnumerable<Point2> points)
     {
-        var p = points.Distinct().OrderBy(q => q.X).ThenBy(q => q.Y).ToArray();
+        var sorted = points.ToArray();
+        Array.Sort(sorted, (u, v) => u.X != v.X ? u.X.CompareTo(v.X) : u.Y.CompareTo(v.Y));
+        int unique = 0;
+        foreach (var q in sorted)
+        {
+            if (unique == 0 || q != sorted[unique - 1])
+            {
+                sorted[unique++] = q;
+            }
+        }
+
+        var p = sorted[..unique];
         if (p.Length <= 2)
         {
             return p;
