@@ -119,6 +119,56 @@ internal static class KDop8Vertices
         return count;
     }
 
+    /// <summary>
+    /// The area centroid of the region min ≤ p·aᵢ ≤ max (the vertex mean when it has no area),
+    /// computed in double: the action point of two overlapping slab sets. False when the region
+    /// is empty.
+    /// </summary>
+    public static bool RegionCentroid(Vector4 min, Vector4 max, out Vector2 centroid)
+    {
+        Span<double> lo = stackalloc double[4];
+        Span<double> hi = stackalloc double[4];
+        double scale = 1;
+        for (int i = 0; i < 4; i++)
+        {
+            lo[i] = min[i];
+            hi[i] = max[i];
+            scale = Math.Max(scale, Math.Max(Math.Abs(lo[i]), Math.Abs(hi[i])));
+        }
+
+        Span<Vector2D> p = stackalloc Vector2D[12];
+        int n = ClipBox(lo, hi, Slack * scale, p);
+        if (n == 0)
+        {
+            centroid = default;
+            return false;
+        }
+
+        // Fan from the first vertex, relative to it.
+        Vector2D o = p[0];
+        double area2 = 0, sx = 0, sy = 0, mx = 0, my = 0;
+        for (int i = 1; i < n; i++)
+        {
+            double ex = p[i].X - o.X, ey = p[i].Y - o.Y;
+            mx += ex;
+            my += ey;
+            if (i + 1 < n)
+            {
+                double fx = p[i + 1].X - o.X, fy = p[i + 1].Y - o.Y;
+                double w = ex * fy - ey * fx;
+                area2 += w;
+                sx += (ex + fx) * w;
+                sy += (ey + fy) * w;
+            }
+        }
+
+        double extent = Math.Max(hi[0] - lo[0], hi[1] - lo[1]);
+        centroid = area2 > 1e-12 * extent * extent
+            ? new Vector2((float)(o.X + sx / (3 * area2)), (float)(o.Y + sy / (3 * area2)))
+            : new Vector2((float)(o.X + mx / n), (float)(o.Y + my / n));
+        return true;
+    }
+
     /// <summary>p·aᵢ in double for the four axes (1, 0), (0, 1), (√½, √½), (√½, −√½).</summary>
     public static double Project(double x, double y, int axis) => axis switch
     {

@@ -39,11 +39,8 @@ internal static class SlabSat
             }
         }
 
-        Span<Vector2> region = stackalloc Vector2[8];
-        Span<Vector2> normals = stackalloc Vector2[8];
-        int n = KDop8Vertices.Compute(Vector4.Max(minA, minB), Vector4.Min(maxA, maxB), region, normals, out _, out _);
-        Vector2 point = n > 0
-            ? ContactRegion.Centroid(region[..n])
+        Vector2 point = KDop8Vertices.RegionCentroid(Vector4.Max(minA, minB), Vector4.Min(maxA, maxB), out Vector2 centroid)
+            ? centroid
             : new Vector2(0.5f * (MathF.Max(minA.X, minB.X) + MathF.Min(maxA.X, maxB.X)), 0.5f * (MathF.Max(minA.Y, minB.Y) + MathF.Min(maxA.Y, maxB.Y)));
         return CollisionDetectionResult.FromPlane(normal, depth, point);
     }
