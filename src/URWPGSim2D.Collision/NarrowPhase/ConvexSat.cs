@@ -5,54 +5,187 @@ using URWPGSim2D.Collision.Geometry;
 namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>
-/// The separating-axis test with minimum translation vector for two convex polygon-like views.
-/// Both shapes are projected on every axis of either; an axis on which the projections do not
-/// overlap (or only touch) separates them. Otherwise the MTV is the smallest of the overlaps
-/// maxB − minA (move a along +axis) and maxA − minB (move a along −axis) over all axes. Because
-/// the edge normals of both shapes contain every edge normal of their Minkowski difference, this
-/// minimum is the exact penetration depth, containment included.
+/// The separating-axis test with minimum translation vector for two convex polygon-like views,
+/// done face by face. For every face i of one shape (outward unit normal nᵢ through vertex vᵢ)
+/// the separation sᵢ = min over the other shape's vertices w of nᵢ·(w − vᵢ) is how far the other
+/// shape stays outside that face; sᵢ ≥ 0 for some face means the shapes are apart (or only
+/// touch). Otherwise the face with the greatest separation over both shapes is the reference
+/// face, and −s is the exact penetration depth: the faces of both shapes carry every face of
+/// their Minkowski difference, and −sᵢ is that difference's support distance along the face
+/// normal, containment included.
 /// </summary>
 internal static class ConvexSat
 {
-    /// <summary>The MTV moves <paramref name="a"/>; all projections are taken relative to a's first vertex.</summary>
+    /// <summary>Tolerance (mm) for accepting the fast action point as inside both shapes.</summary>
+    private const float InsideTolerance = 1e-3f;
+
+    /// <summary>The MTV moves <paramref name="a"/>; all arithmetic is relative to a's first vertex.</summary>
     public static CollisionDetectionResult Detect(in ConvexView a, in ConvexView b)
     {
         Vector2 origin = a.Vertices[0];
-        float depth = float.PositiveInfinity;
-        Vector2 normal = default;
-        if (!MinimumOverlap(a.Axes, a, b, origin, ref depth, ref normal)
-            || !MinimumOverlap(b.Axes, a, b, origin, ref depth, ref normal))
+        Span<Vector2> ra = stackalloc Vector2[a.Vertices.Length];
+        Span<Vector2> rb = stackalloc Vector2[b.Vertices.Length];
+        Relative(a.Vertices, origin, ra);
+        Relative(b.Vertices, origin, rb);
+        if (!MaxSeparation(ra, a.Normals, rb, out int faceA, out float sepA)
+            || !MaxSeparation(rb, b.Normals, ra, out int faceB, out float sepB))
         {
             return CollisionDetectionResult.None;
         }
 
-        Vector2 point = ContactRegion.IntersectionCentroid(a, b, origin, normal);
-        return CollisionDetectionResult.FromPlane(normal, depth, point);
+        // The reference face: the greater separation (the smaller push); ties go to a.
+        bool referenceIsA = faceA >= 0 && (faceB < 0 || sepA >= sepB);
+        Vector2 normal = referenceIsA ? -a.Normals[faceA] : b.Normals[faceB];
+        float depth = referenceIsA ? -sepA : -sepB;
+
+        bool found = referenceIsA
+            ? FacePoint(ra, a.Normals, faceA, rb, b.Normals, out Vector2 point)
+            : FacePoint(rb, b.Normals, faceB, ra, a.Normals, out point);
+        if (!found || !Inside(ra, a.Normals, point) || !Inside(rb, b.Normals, point))
+        {
+            point = ContactRegion.IntersectionCentroid(a, b, origin, normal) - origin;
+        }
+
+        return CollisionDetectionResult.FromPlane(normal, depth, origin + point);
     }
 
-    private static bool MinimumOverlap(ReadOnlySpan<Vector2> axes, in ConvexView a, in ConvexView b, Vector2 origin, ref float depth, ref Vector2 normal)
+    private static void Relative(ReadOnlySpan<Vector2> vertices, Vector2 origin, Span<Vector2> relative)
     {
-        foreach (Vector2 axis in axes)
+        for (int i = 0; i < vertices.Length; i++)
         {
-            a.Project(axis, origin, out float minA, out float maxA);
-            b.Project(axis, origin, out float minB, out float maxB);
-            float forward = maxB - minA;
-            float backward = maxA - minB;
-            if (forward <= 0f || backward <= 0f)
+            relative[i] = vertices[i] - origin;
+        }
+    }
+
+    // Greatest separation of `other` from the faces of `reference`; false when some face separates.
+    // A single point has no faces: face −1, separation −∞ (the other shape's faces decide).
+    private static bool MaxSeparation(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
+    {
+        face = -1;
+        separation = float.NegativeInfinity;
+        for (int i = 0; i < normals.Length; i++)
+        {
+            Vector2 n = normals[i];
+            float lowest = float.PositiveInfinity;
+            foreach (Vector2 w in other)
+            {
+                float d = Vector2.Dot(n, w);
+                lowest = d < lowest ? d : lowest;
+            }
+
+            float s = lowest - Vector2.Dot(n, reference[i]);
+            if (s >= 0f)
             {
                 return false;
             }
 
-            if (forward < depth)
+            if (s > separation)
             {
-                depth = forward;
-                normal = axis;
+                separation = s;
+                face = i;
             }
+        }
 
-            if (backward < depth)
+        return true;
+    }
+
+    /// <summary>
+    /// The middle of the overlap between the incident edge (the edge of the other shape most
+    /// anti-parallel to the reference face) clipped to the reference face's side planes, and the
+    /// reference face: each clipped end point below the face is moved half way toward it. False
+    /// when nothing is below the face (or a shape is flat); the caller then uses the exact centroid.
+    /// </summary>
+    private static bool FacePoint(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> referenceNormals, int face, ReadOnlySpan<Vector2> incident, ReadOnlySpan<Vector2> incidentNormals, out Vector2 point)
+    {
+        point = default;
+        if (reference.Length < 3 || incident.Length < 3)
+        {
+            return false;
+        }
+
+        Vector2 n = referenceNormals[face];
+        Vector2 v1 = reference[face];
+        Vector2 v2 = reference[face + 1 == reference.Length ? 0 : face + 1];
+        int edge = 0;
+        float mostAnti = float.PositiveInfinity;
+        for (int j = 0; j < incidentNormals.Length; j++)
+        {
+            float d = Vector2.Dot(incidentNormals[j], n);
+            if (d < mostAnti)
             {
-                depth = backward;
-                normal = -axis;
+                mostAnti = d;
+                edge = j;
+            }
+        }
+
+        Vector2 p1 = incident[edge];
+        Vector2 p2 = incident[edge + 1 == incident.Length ? 0 : edge + 1];
+        Vector2 t = v2 - v1;
+        if (!ClipBelow(ref p1, ref p2, -t, -Vector2.Dot(t, v1)) || !ClipBelow(ref p1, ref p2, t, Vector2.Dot(t, v2)))
+        {
+            return false;
+        }
+
+        float k = Vector2.Dot(n, v1);
+        float s1 = Vector2.Dot(n, p1) - k;
+        float s2 = Vector2.Dot(n, p2) - k;
+        Vector2 c1 = p1 - n * (0.5f * s1);
+        Vector2 c2 = p2 - n * (0.5f * s2);
+        if (s1 <= 0f && s2 <= 0f)
+        {
+            point = 0.5f * (c1 + c2);
+        }
+        else if (s1 <= 0f)
+        {
+            point = c1;
+        }
+        else if (s2 <= 0f)
+        {
+            point = c2;
+        }
+        else
+        {
+            return false;
+        }
+
+        return true;
+    }
+
+    // Keeps the part of segment p1p2 with m·p ≤ offset; false when none is left.
+    private static bool ClipBelow(ref Vector2 p1, ref Vector2 p2, Vector2 m, float offset)
+    {
+        float d1 = Vector2.Dot(m, p1) - offset;
+        float d2 = Vector2.Dot(m, p2) - offset;
+        if (d1 > 0f && d2 > 0f)
+        {
+            return false;
+        }
+
+        if (d1 > 0f)
+        {
+            p1 += (p2 - p1) * (d1 / (d1 - d2));
+        }
+        else if (d2 > 0f)
+        {
+            p2 += (p1 - p2) * (d2 / (d2 - d1));
+        }
+
+        return true;
+    }
+
+    // Whether p lies inside a convex view with ≥ 3 vertices, within InsideTolerance.
+    private static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p)
+    {
+        if (vertices.Length < 3)
+        {
+            return false;
+        }
+
+        for (int i = 0; i < normals.Length; i++)
+        {
+            if (Vector2.Dot(normals[i], p - vertices[i]) > InsideTolerance)
+            {
+                return false;
             }
         }
 

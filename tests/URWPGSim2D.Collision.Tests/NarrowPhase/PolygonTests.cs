@@ -19,8 +19,9 @@ public sealed class PolygonTests
     [Fact]
     public void WedgeTipInASquare()
     {
-        // Intersection: triangle (8, 5), (10, 3.333), (10, 6.667), centroid (28/3, 5).
-        ContactAssert.Contact(Square, Wedge, -2, 0, 28.0 / 3, 5);
+        // Reference face: the square's side x = 10; the incident tip (8, 5) lies 2 below it, so the
+        // action point is half way between the tip and the face: (9, 5).
+        ContactAssert.Contact(Square, Wedge, -2, 0, 9, 5);
     }
 
     [Fact]
@@ -54,14 +55,14 @@ public sealed class PolygonTests
     public void DiamondTipInABox()
     {
         // Tip (5, 7) enters the box [0, 10] × [5, 15] by 2; diagonal axes need 7/√2 ≈ 4.95.
-        // Intersection: triangle (5, 7), (3, 5), (7, 5), centroid (5, 17/3).
-        ContactAssert.Contact(Diamond, new Aabb(new(0, 5), new(10, 15)), 0, -2, 5, 17.0 / 3);
+        // Reference face: the box's side z = 5; the tip is 2 below it: action point (5, 6).
+        ContactAssert.Contact(Diamond, new Aabb(new(0, 5), new(10, 15)), 0, -2, 5, 6);
     }
 
     [Fact]
     public void DiamondTipInAnEightDop()
     {
-        ContactAssert.Contact(Diamond, KDop8.FromAabb(new Aabb(new(0, 5), new(10, 15))), 0, -2, 5, 17.0 / 3);
+        ContactAssert.Contact(Diamond, KDop8.FromAabb(new Aabb(new(0, 5), new(10, 15))), 0, -2, 5, 6);
     }
 
     [Fact]
@@ -75,7 +76,7 @@ public sealed class PolygonTests
     public void FarFromTheOriginKeepsTheAccuracyGoal()
     {
         var offset = new Vector2(-24000, 23000);
-        var r = ContactAssert.Contact(Square.Translated(offset), Wedge.Translated(offset), -2, 0, -24000 + 28.0 / 3, 23005, Tolerances.Depth);
+        var r = ContactAssert.Contact(Square.Translated(offset), Wedge.Translated(offset), -2, 0, -24000 + 9, 23005, Tolerances.Depth);
         Assert.True(r.Intersect);
     }
 }

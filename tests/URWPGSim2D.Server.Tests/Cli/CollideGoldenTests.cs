@@ -46,8 +46,9 @@ public sealed class CollideGoldenTests
         // Diamond centred (14, 5), half-diagonal 6: the overlap is the triangle (8,5)(10,3)(10,7).
         data.Add("aabb-kdop8", Aabb(0, 0, 10, 10), Diamond(14, 5, 6), [-2, 0, -1, 0, 28.0 / 3, 5]);
 
-        // Triangle with its apex (8, 5) in the box: overlap triangle (8,5)(10,4)(10,6).
-        data.Add("aabb-polygon", Aabb(0, 0, 10, 10), Polygon((8, 5), (20, -1), (20, 11)), [-2, 0, -1, 0, 28.0 / 3, 5]);
+        // Triangle with its apex (8, 5) 2 inside the box's side x = 10 (the reference face): the
+        // action point is half way from the apex to that face.
+        data.Add("aabb-polygon", Aabb(0, 0, 10, 10), Polygon((8, 5), (20, -1), (20, 11)), [-2, 0, -1, 0, 9, 5]);
 
         // Segment z = 9 across the box: least push 1 along −z; the overlap is x ∈ [0, 10] on z = 9.
         data.Add("aabb-segment", Aabb(0, 0, 10, 10), Segment(-5, 9, 20, 9), [0, -1, 0, -1, 5, 9]);
@@ -56,14 +57,15 @@ public sealed class CollideGoldenTests
         // along −(√½, √½); the overlap is the rectangle 6 ≤ x + z ≤ 10, |x − z| ≤ 10, centroid (4, 4).
         data.Add("kdop8-kdop8", Diamond(0, 0, 10), Diamond(8, 8, 10), [-2, -2, -S, -S, 4, 4]);
 
-        // Square [8, 20] × [−3, 3] against the diamond: overlap triangle (8,−2)(8,2)(10,0).
-        data.Add("kdop8-polygon", Diamond(0, 0, 10), Polygon((8, -3), (20, -3), (20, 3), (8, 3)), [-2, 0, -1, 0, 26.0 / 3, 0]);
+        // Square [8, 20] × [−3, 3] against the diamond: the diamond's tip (10, 0) is 2 inside the
+        // square's side x = 8 (the reference face): action point half way, (9, 0).
+        data.Add("kdop8-polygon", Diamond(0, 0, 10), Polygon((8, -3), (20, -3), (20, 3), (8, 3)), [-2, 0, -1, 0, 9, 0]);
 
         // Segment x = 8 through the diamond: overlap z ∈ [−2, 2].
         data.Add("kdop8-segment", Diamond(0, 0, 10), Segment(8, -20, 8, 20), [-2, 0, -1, 0, 8, 0]);
 
         // Square polygon against the triangle of aabb-polygon.
-        data.Add("polygon-polygon", Polygon((0, 0), (10, 0), (10, 10), (0, 10)), Polygon((8, 5), (20, 11), (20, -1)), [-2, 0, -1, 0, 28.0 / 3, 5]);
+        data.Add("polygon-polygon", Polygon((0, 0), (10, 0), (10, 10), (0, 10)), Polygon((8, 5), (20, 11), (20, -1)), [-2, 0, -1, 0, 9, 5]);
 
         // Triangle x, z ≥ 0, x + z ≤ 10 cut by x = 6 (z ∈ [0, 4]): least push 4 along −x.
         data.Add("polygon-segment", Polygon((0, 0), (10, 0), (0, 10)), Segment(6, -5, 6, 20), [-4, 0, -1, 0, 6, 2]);
