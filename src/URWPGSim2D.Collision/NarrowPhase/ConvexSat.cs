@@ -19,6 +19,9 @@ internal static class ConvexSat
     /// <summary>Tolerance (mm) for accepting the fast action point as inside both shapes.</summary>
     private const float InsideTolerance = 1e-3f;
 
+    /// <summary>Separations (mm) closer than this count as a tie between the two shapes' faces.</summary>
+    private const float TieTolerance = 1e-4f;
+
     /// <summary>The MTV moves <paramref name="a"/>; all arithmetic is relative to a's first vertex.</summary>
     public static CollisionDetectionResult Detect(in ConvexView a, in ConvexView b)
     {
@@ -39,11 +42,18 @@ internal static class ConvexSat
         float depth = referenceIsA ? -sepA : -sepB;
 
         bool found = referenceIsA
-            ? FacePoint(ra, a.Normals, faceA, rb, b.Normals, out Vector2 point)
-            : FacePoint(rb, b.Normals, faceB, ra, a.Normals, out point);
-        if (!found || !Inside(ra, a.Normals, point) || !Inside(rb, b.Normals, point))
+            ? FacePoint(ra, a.Normals, faceA, rb, b.Normals, out Vector2 point, out Vector2 onIncident)
+            : FacePoint(rb, b.Normals, faceB, ra, a.Normals, out point, out onIncident);
+        if (!found || !InsideBoth(ra, a.Normals, rb, b.Normals, point))
         {
-            point = ContactRegion.IntersectionCentroid(a, b, origin, normal) - origin;
+            // Near a corner of the incident shape the half-way point can leave it; the clipped
+            // incident points themselves lie on its boundary. Not on a tie between a face of a and
+            // a face of b: which one is the reference would then depend on the argument order,
+            // and the answer must not. Failing that, the exact centroid.
+            bool tie = faceA >= 0 && faceB >= 0 && MathF.Abs(sepA - sepB) <= TieTolerance;
+            point = found && !tie && InsideBoth(ra, a.Normals, rb, b.Normals, onIncident)
+                ? onIncident
+                : ContactRegion.IntersectionCentroid(a, b, origin, normal) - origin;
         }
 
         return CollisionDetectionResult.FromPlane(normal, depth, origin + point);
@@ -92,12 +102,14 @@ internal static class ConvexSat
     /// <summary>
     /// The middle of the overlap between the incident edge (the edge of the other shape most
     /// anti-parallel to the reference face) clipped to the reference face's side planes, and the
-    /// reference face: each clipped end point below the face is moved half way toward it. False
-    /// when nothing is below the face (or a shape is flat); the caller then uses the exact centroid.
+    /// reference face: each clipped end point below the face is moved half way toward it
+    /// (<paramref name="point"/>); <paramref name="onIncident"/> is the same mean without the move.
+    /// False when nothing is below the face (or a shape is flat).
     /// </summary>
-    private static bool FacePoint(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> referenceNormals, int face, ReadOnlySpan<Vector2> incident, ReadOnlySpan<Vector2> incidentNormals, out Vector2 point)
+    private static bool FacePoint(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> referenceNormals, int face, ReadOnlySpan<Vector2> incident, ReadOnlySpan<Vector2> incidentNormals, out Vector2 point, out Vector2 onIncident)
     {
         point = default;
+        onIncident = default;
         if (reference.Length < 3 || incident.Length < 3)
         {
             return false;
@@ -134,14 +146,17 @@ internal static class ConvexSat
         if (s1 <= 0f && s2 <= 0f)
         {
             point = 0.5f * (c1 + c2);
+            onIncident = 0.5f * (p1 + p2);
         }
         else if (s1 <= 0f)
         {
             point = c1;
+            onIncident = p1;
         }
         else if (s2 <= 0f)
         {
             point = c2;
+            onIncident = p2;
         }
         else
         {
@@ -172,6 +187,9 @@ internal static class ConvexSat
 
         return true;
     }
+
+    private static bool InsideBoth(ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> na, ReadOnlySpan<Vector2> rb, ReadOnlySpan<Vector2> nb, Vector2 p) =>
+        Inside(ra, na, p) && Inside(rb, nb, p);
 
     // Whether p lies inside a convex view with ≥ 3 vertices, within InsideTolerance.
     private static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p)

@@ -69,8 +69,11 @@ public sealed class ContainmentAndTouchingTests
     public void TriangleInsideABox()
     {
         // Triangle (2, 2), (6, 2), (2, 5) in [0, 10]²: −z needs 5 (least), −x 6, its hypotenuse
-        // normal (0.6, 0.8) needs 5.2. Centroid (10/3, 3).
-        ContactAssert.Contact(new ConvexPolygon([new(2, 2), new(6, 2), new(2, 5)]), Box, 0, -5, 10.0 / 3, 3);
+        // normal (0.6, 0.8) needs 5.2. Reference face: the box's side z = 0; incident edge: the
+        // hypotenuse (6, 2)–(2, 5). Moving its ends half way to z = 0 leaves the triangle, so the
+        // action point is the middle of the clipped incident edge itself, (4, 3.5): on the
+        // triangle's boundary, inside the box.
+        ContactAssert.Contact(new ConvexPolygon([new(2, 2), new(6, 2), new(2, 5)]), Box, 0, -5, 4, 3.5);
     }
 
     [Fact]
