@@ -1,0 +1,85 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Server.Strategies;
+
+/// <summary>
+/// Built-in <c>chase-ball</c>: each fish swims to the ball nearest to it and pushes it toward the
+/// opponent's goal (team 0 attacks +X, team 1 attacks −X). It first heads for a point behind the
+/// ball on the goal–ball line, then, once lined up, drives through the ball. Deterministic.
+/// </summary>
+public sealed class ChaseBallStrategy : IStrategy
+{
+    private const float LineUpAngle = 0.6f;
+
+    /// <inheritdoc/>
+    public string TeamName => "chase-ball";
+
+    /// <inheritdoc/>
+    public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
+    {
+        var balls = snapshot.Balls;
+        for (int k = 0; k < fish.Length; k++)
+        {
+            FishView me = snapshot.Fish[fish[k]];
+            if (balls.IsEmpty)
+            {
+                decisions[k] = Decision.Stop;
+                continue;
+            }
+
+            Vector2 head = me.Position + (Direction(me.Heading) * ((me.BodyLength * 0.5f) + me.HeadLength));
+            int nearest = 0;
+            float best = float.PositiveInfinity;
+            for (int b = 0; b < balls.Length; b++)
+            {
+                float d = Vector2.DistanceSquared(head, balls[b].Position);
+                if (d < best)
+                {
+                    best = d;
+                    nearest = b;
+                }
+            }
+
+            BallView ball = balls[nearest];
+            float goalX = me.Team == 0 ? snapshot.FieldLength * 0.5f : -snapshot.FieldLength * 0.5f;
+            Vector2 toGoal = new Vector2(goalX, 0f) - ball.Position;
+            toGoal = toGoal.LengthSquared() > 1e-6f ? Vector2.Normalize(toGoal) : new Vector2(me.Team == 0 ? 1f : -1f, 0f);
+            Vector2 behind = ball.Position - (toGoal * (ball.Radius + 60f));
+            Vector2 toBall = ball.Position - head;
+            bool linedUp = Vector2.Dot(toBall, toGoal) > 0f && AngleBetween(toBall, toGoal) < LineUpAngle;
+            Vector2 aim = linedUp ? ball.Position + (toGoal * ball.Radius) : behind;
+            decisions[k] = Steer(me, aim, linedUp);
+        }
+    }
+
+    private static Decision Steer(in FishView me, Vector2 aim, bool pushing)
+    {
+        Vector2 to = aim - me.Position;
+        float error = WrapAngle(MathF.Atan2(to.Y, to.X) - me.Heading);
+        int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.8f, -1f, 1f) * 7f);
+        float distance = to.Length();
+        int vcode = MathF.Abs(error) > 1.2f ? 4 : distance < 150f && !pushing ? 6 : pushing ? 15 : 12;
+        return new Decision(vcode, tcode);
+    }
+
+    private static float AngleBetween(Vector2 a, Vector2 b)
+    {
+        float la = a.Length();
+        float lb = b.Length();
+        if (la <= 0f || lb <= 0f)
+        {
+            return 0f;
+        }
+
+        return MathF.Acos(Math.Clamp(Vector2.Dot(a, b) / (la * lb), -1f, 1f));
+    }
+
+    private static Vector2 Direction(float heading) => new(MathF.Cos(heading), MathF.Sin(heading));
+
+    private static float WrapAngle(float angle)
+    {
+        float a = MathF.IEEERemainder(angle, 2f * MathF.PI);
+        return a >= MathF.PI ? a - (2f * MathF.PI) : a;
+    }
+}
