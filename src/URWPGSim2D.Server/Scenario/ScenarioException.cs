@@ -15,7 +15,11 @@ public sealed class ScenarioException : Exception
         : base(path.Length == 0 ? problem : $"{path}: {problem}")
     {
         Path = path;
+        Problem = problem;
     }
+
+    /// <summary>The problem without the path.</summary>
+    public string Problem { get; }
 
     /// <summary>The JSON path of the offending value.</summary>
     public string Path { get; }
