@@ -39,7 +39,7 @@ internal sealed class RunCommand : ICliCommand
         ScenarioDefinition scenario;
         try
         {
-            scenario = options.Scenario is null ? DefaultScenario.Load() : ScenarioParser.Parse(ReadScenario(options.Scenario));
+            scenario = options.Scenario is null ? DefaultScenario.Load() : ScenarioParser.Parse(ReadScenario(options.Scenario, console));
         }
         catch (ScenarioException e)
         {
@@ -93,11 +93,11 @@ internal sealed class RunCommand : ICliCommand
         return ExitCodes.Success;
     }
 
-    private static string ReadScenario(string path)
+    private static string ReadScenario(string path, CliConsole console)
     {
         try
         {
-            return path == "-" ? Console.In.ReadToEnd() : File.ReadAllText(path);
+            return path == "-" ? console.In.ReadToEnd() : File.ReadAllText(path);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {

@@ -32,7 +32,7 @@ internal sealed class RunOptions
     public string?[] Strategies { get; } = new string?[2];
 
     /// <summary>Time limit of a loaded strategy per cycle, ms.</summary>
-    public int StrategyTimeoutMs { get; private set; } = Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Whether --help was given.</summary>
     public bool Help { get; private set; }

@@ -21,6 +21,7 @@ internal static class Locomotion
         const float dt = PhysicsConstants.CycleSeconds;
         foreach (var f in world.Fish)
         {
+            f.BeginCycle();
             var d = f.Decision;
             f.Speed.Advance(SpeedTable.TargetSpeed(d.VCode));
             if (f.Speed.Value < PhysicsConstants.MinimumTurningSpeed)
@@ -37,7 +38,6 @@ internal static class Locomotion
             f.Joint3 = TailWave.JointAngle(2, d.VCode, d.TCode, endTime);
             f.Velocity = f.Speed.Value * f.Forward;
             f.AngularVelocity = f.Turn.Value;
-            f.Touched = false;
             f.NoiseVelocity = Vector2.Zero;
             f.NoiseAngularVelocity = 0f;
             if (noise is not null)
@@ -48,7 +48,7 @@ internal static class Locomotion
                 f.NoiseVelocity = new Vector2(noise.NextSigned() * reach, noise.NextSigned() * reach) / dt;
             }
 
-            f.SyncModel();
+            f.Invalidate();
         }
 
         foreach (var b in world.Balls)
@@ -61,18 +61,13 @@ internal static class Locomotion
         }
     }
 
-    /// <summary>After the cycle's travel: forward speed from what contacts left, and ball drag.</summary>
+    /// <summary>
+    /// After the cycle's travel: ball drag. A fish's contacts changed its motion for the rest of the
+    /// cycle only; its swimming speed and turn rate (the gear approach state) are its own propulsion
+    /// and carry on, so a fish pressed against a wall or another fish can still turn away.
+    /// </summary>
     public static void Finish(World world)
     {
-        foreach (var f in world.Fish)
-        {
-            if (f.Touched)
-            {
-                f.Speed.Value = MathF.Max(0f, Vector2.Dot(f.Velocity, f.Forward));
-                f.Turn.Value = f.AngularVelocity;
-            }
-        }
-
         foreach (var b in world.Balls)
         {
             b.Velocity = BallMotion.Decelerate(b.Velocity, PhysicsConstants.CycleSeconds);

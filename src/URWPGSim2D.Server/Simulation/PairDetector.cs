@@ -13,11 +13,11 @@ internal static class PairDetector
         switch (pair.Kind)
         {
             case PairKind.FishFish:
-                return Hit.From(FishCollision.Detect(world.Fish[pair.A].Model, world.Fish[pair.B].Model));
+                return Hit.From(FishCollision.Detect(world.Fish[pair.A].PosedModel, world.Fish[pair.B].PosedModel));
             case PairKind.FishBall:
             {
                 Circle ball = world.Balls[pair.B].Shape;
-                return Hit.From(FishCollision.Detect(world.Fish[pair.A].Model, ball));
+                return Hit.From(FishCollision.Detect(world.Fish[pair.A].PosedModel, ball));
             }
 
             case PairKind.BallBall:
@@ -28,11 +28,11 @@ internal static class PairDetector
             }
 
             case PairKind.FishStatic:
-                return DetectFishStatic(world.Fish[pair.A].Model, world.Statics[pair.B]);
+                return DetectFishStatic(world.Fish[pair.A].PosedModel, world.Statics[pair.B]);
             case PairKind.BallStatic:
                 return DetectBallStatic(world.Balls[pair.A].Shape, world.Statics[pair.B]);
             case PairKind.FishWall:
-                return Hit.From(world.Field.Contain(world.Fish[pair.A].Model));
+                return Hit.From(world.Field.Contain(world.Fish[pair.A].PosedModel));
             default:
             {
                 Circle ball = world.Balls[pair.A].Shape;

@@ -34,10 +34,13 @@ internal static class PhysicsConstants
     public const float SeparationMargin = 0.01f;
 
     /// <summary>Bisection stops when nothing involved moves more than this (mm) inside the bracket.</summary>
-    public const float TimeOfImpactTolerance = 0.05f;
+    public const float TimeOfImpactTolerance = 0.25f;
 
     /// <summary>Largest number of contact events (each with its own time of first contact) per cycle.</summary>
     public const int MaximumEventsPerCycle = 64;
+
+    /// <summary>Position corrections a fish may take in one cycle before its move is rejected.</summary>
+    public const int MaximumCorrectionsPerFish = 8;
 
     /// <summary>Largest number of sub-steps per cycle.</summary>
     public const int MaximumSubSteps = 2048;

@@ -19,6 +19,7 @@ internal sealed class Stepper
     private readonly World _world;
     private readonly SweepPlanner _planner;
     private readonly ContactLog _log;
+    private readonly ContactResponse _response;
     private readonly int[] _hits;
     private readonly bool[] _fishInvolved;
     private readonly bool[] _ballInvolved;
@@ -30,6 +31,7 @@ internal sealed class Stepper
         _world = world;
         _log = log;
         _planner = new SweepPlanner(world);
+        _response = new ContactResponse(world);
         _hits = new int[_planner.Capacity];
         _fishInvolved = new bool[world.Fish.Length];
         _ballInvolved = new bool[world.Balls.Length];
@@ -95,12 +97,12 @@ internal sealed class Stepper
             h = (1.0 - t) / _planner.Plan((float)(1.0 - t));
         }
 
-        LeftoverOverlap = MeasureOverlap();
+        Settle();
     }
 
     /// <summary>
-    /// Resolves overlaps left by a discontinuous change (a ball put back at its start) without
-    /// motion: a few passes of position correction and impulses, then measures the leftover.
+    /// Resolves overlaps left by a discontinuous change (a ball put back at its start, a fish's
+    /// rejected move, the last contact of a cycle) without motion: a few passes of position correction and impulses, then measures the leftover.
     /// </summary>
     public void Settle()
     {
@@ -213,7 +215,7 @@ internal sealed class Stepper
             Hit hit = PairDetector.Detect(_world, pair);
             if (hit.Depth > PhysicsConstants.ContactSlop)
             {
-                ContactKind kind = ContactResponse.Apply(_world, pair, hit);
+                ContactKind kind = _response.Apply(pair, hit);
                 _log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point), kind);
             }
         }
@@ -307,6 +309,6 @@ internal sealed class Stepper
 
         f.Position = position;
         f.Heading = heading;
-        f.SyncModel();
+        f.Invalidate();
     }
 }

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// Broad phase and sub-step sizing for the rest of a cycle. Every mover gets a travel rate (the
 /// most any of its points moves per unit of cycle fraction: |v|·dt, plus |ω|·dt times the reach of
 /// its farthest point for a fish). A pair is a candidate when its bounding circles, grown by that
-/// travel, can meet. Each moving candidate pair may travel at most half the sum of the pair's
+/// travel, can meet. Each moving candidate pair may travel (relative to each other) at most half the sum of the pair's
 /// thinnest widths per sub-step (a ball's diameter, a tail segment's end width, an obstacle's
 /// smaller side, a goal block's depth), so neither can pass through the other between two
 /// samples; walls are half-planes and never need more than one sub-step.
@@ -21,6 +21,9 @@ internal sealed class SweepPlanner
     private readonly CandidatePair[] _pairs;
     private readonly float[] _fishRate;
     private readonly float[] _ballRate;
+    private readonly Vector2[] _fishVelocity;
+    private readonly Vector2[] _ballVelocity;
+    private readonly float[] _fishSpin;
     private readonly Circle[] _fishBound;
     private int _count;
 
@@ -33,6 +36,9 @@ internal sealed class SweepPlanner
         _pairs = new CandidatePair[(f * (f - 1) / 2) + (f * b) + (b * (b - 1) / 2) + ((f + b) * s) + f + b];
         _fishRate = new float[f];
         _ballRate = new float[b];
+        _fishVelocity = new Vector2[f];
+        _ballVelocity = new Vector2[b];
+        _fishSpin = new float[f];
         _fishBound = new Circle[f];
     }
 
@@ -48,15 +54,22 @@ internal sealed class SweepPlanner
     /// <summary>Travel (mm per unit of cycle fraction) of each ball.</summary>
     public ReadOnlySpan<float> BallRate => _ballRate;
 
-    /// <summary>Travel rate of body A plus body B of a pair (mm per unit fraction).</summary>
-    public float PairRate(in CandidatePair p) => p.Kind switch
+    /// <summary>
+    /// Most the two bodies of a pair move relative to each other per unit of cycle fraction, mm:
+    /// |vA − vB|·dt plus what each one's turning sweeps.
+    /// </summary>
+    public float PairRate(in CandidatePair p)
     {
-        PairKind.FishFish => _fishRate[p.A] + _fishRate[p.B],
-        PairKind.FishBall => _fishRate[p.A] + _ballRate[p.B],
-        PairKind.BallBall => _ballRate[p.A] + _ballRate[p.B],
-        PairKind.FishStatic or PairKind.FishWall => _fishRate[p.A],
-        _ => _ballRate[p.A],
-    };
+        const float dt = PhysicsConstants.CycleSeconds;
+        return p.Kind switch
+        {
+            PairKind.FishFish => ((_fishVelocity[p.A] - _fishVelocity[p.B]).Length() * dt) + _fishSpin[p.A] + _fishSpin[p.B],
+            PairKind.FishBall => ((_fishVelocity[p.A] - _ballVelocity[p.B]).Length() * dt) + _fishSpin[p.A],
+            PairKind.BallBall => (_ballVelocity[p.A] - _ballVelocity[p.B]).Length() * dt,
+            PairKind.FishStatic or PairKind.FishWall => _fishRate[p.A],
+            _ => _ballRate[p.A],
+        };
+    }
 
     /// <summary>Plans the remaining <paramref name="remaining"/> fraction of the cycle; returns the number of sub-steps.</summary>
     public int Plan(float remaining)
@@ -69,15 +82,18 @@ internal sealed class SweepPlanner
         for (int i = 0; i < fish.Length; i++)
         {
             var f = fish[i];
-            Circle root = f.Model.Root;
-            float reach = Vector2.Distance(root.Center, f.Position) + root.Radius;
-            _fishRate[i] = (((f.Velocity + f.NoiseVelocity).Length()) + (MathF.Abs(f.AngularVelocity + f.NoiseAngularVelocity) * reach)) * dt;
-            _fishBound[i] = root;
+            Circle bound = f.Bound();
+            float reach = Vector2.Distance(bound.Center, f.Position) + bound.Radius;
+            _fishVelocity[i] = f.Velocity + f.NoiseVelocity;
+            _fishSpin[i] = MathF.Abs(f.AngularVelocity + f.NoiseAngularVelocity) * reach * dt;
+            _fishRate[i] = (_fishVelocity[i].Length() * dt) + _fishSpin[i];
+            _fishBound[i] = bound;
         }
 
         for (int i = 0; i < balls.Length; i++)
         {
-            _ballRate[i] = (balls[i].Velocity + balls[i].NoiseVelocity).Length() * dt;
+            _ballVelocity[i] = balls[i].Velocity + balls[i].NoiseVelocity;
+            _ballRate[i] = _ballVelocity[i].Length() * dt;
         }
 
         _count = 0;
@@ -91,12 +107,12 @@ internal sealed class SweepPlanner
             for (int j = i + 1; j < fish.Length; j++)
             {
                 Circle b = _fishBound[j];
-                AddIfNear(PairKind.FishFish, i, j, a.Center, ra, b.Center, b.Radius + (_fishRate[j] * remaining), ta + fish[j].Thickness, (_fishRate[i] + _fishRate[j]) * remaining, ref worst);
+                AddIfNear(PairKind.FishFish, i, j, a.Center, ra, b.Center, b.Radius + (_fishRate[j] * remaining), ta + fish[j].Thickness, PairRate(new CandidatePair(PairKind.FishFish, i, j, 0f)) * remaining, ref worst);
             }
 
             for (int j = 0; j < balls.Length; j++)
             {
-                AddIfNear(PairKind.FishBall, i, j, a.Center, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), (_fishRate[i] + _ballRate[j]) * remaining, ref worst);
+                AddIfNear(PairKind.FishBall, i, j, a.Center, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), PairRate(new CandidatePair(PairKind.FishBall, i, j, 0f)) * remaining, ref worst);
             }
 
             AddStatics(PairKind.FishStatic, i, a.Center, ra, ta, _fishRate[i] * remaining, statics, ref worst);
@@ -112,7 +128,7 @@ internal sealed class SweepPlanner
             float ta = 2f * balls[i].Radius;
             for (int j = i + 1; j < balls.Length; j++)
             {
-                AddIfNear(PairKind.BallBall, i, j, balls[i].Position, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), (_ballRate[i] + _ballRate[j]) * remaining, ref worst);
+                AddIfNear(PairKind.BallBall, i, j, balls[i].Position, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), PairRate(new CandidatePair(PairKind.BallBall, i, j, 0f)) * remaining, ref worst);
             }
 
             AddStatics(PairKind.BallStatic, i, balls[i].Position, ra, ta, _ballRate[i] * remaining, statics, ref worst);

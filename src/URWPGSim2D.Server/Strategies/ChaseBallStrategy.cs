@@ -6,11 +6,19 @@ namespace URWPGSim2D.Server.Strategies;
 /// <summary>
 /// Built-in <c>chase-ball</c>: each fish swims to the ball nearest to it and pushes it toward the
 /// opponent's goal (team 0 attacks +X, team 1 attacks −X). It first heads for a point behind the
-/// ball on the goal–ball line, then, once lined up, drives through the ball. Deterministic.
+/// ball on the goal–ball line, then, once lined up, drives through the ball. It slows down to turn
+/// tightly, and a fish that has not moved for two seconds (wedged against a wall) turns the other way
+/// for a while. Deterministic: the only state is each fish's recent progress.
 /// </summary>
 public sealed class ChaseBallStrategy : IStrategy
 {
     private const float LineUpAngle = 0.6f;
+    private const int StuckCycles = 20;
+    private const int EscapeCycles = 25;
+
+    private System.Numerics.Vector2[] _anchor = [];
+    private int[] _still = [];
+    private int[] _escape = [];
 
     /// <inheritdoc/>
     public string TeamName => "chase-ball";
@@ -19,9 +27,22 @@ public sealed class ChaseBallStrategy : IStrategy
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
         var balls = snapshot.Balls;
+        if (_still.Length != fish.Length)
+        {
+            _anchor = new Vector2[fish.Length];
+            _still = new int[fish.Length];
+            _escape = new int[fish.Length];
+        }
+
         for (int k = 0; k < fish.Length; k++)
         {
             FishView me = snapshot.Fish[fish[k]];
+            if (Escaping(k, me, out Decision escape))
+            {
+                decisions[k] = escape;
+                continue;
+            }
+
             if (balls.IsEmpty)
             {
                 decisions[k] = Decision.Stop;
@@ -53,13 +74,43 @@ public sealed class ChaseBallStrategy : IStrategy
         }
     }
 
+    // Counts cycles without progress; once stuck, turns hard the other way for a while.
+    private bool Escaping(int k, in FishView me, out Decision escape)
+    {
+        escape = default;
+        if (_escape[k] > 0)
+        {
+            _escape[k]--;
+            escape = new Decision(3, me.AngularSpeed > 0f ? 0 : 14);
+            return true;
+        }
+
+        if (Vector2.DistanceSquared(me.Position, _anchor[k]) > 40f * 40f)
+        {
+            _anchor[k] = me.Position;
+            _still[k] = 0;
+            return false;
+        }
+
+        if (++_still[k] < StuckCycles)
+        {
+            return false;
+        }
+
+        _still[k] = 0;
+        _escape[k] = EscapeCycles;
+        escape = new Decision(3, me.AngularSpeed > 0f ? 0 : 14);
+        return true;
+    }
+
     private static Decision Steer(in FishView me, Vector2 aim, bool pushing)
     {
         Vector2 to = aim - me.Position;
         float error = WrapAngle(MathF.Atan2(to.Y, to.X) - me.Heading);
-        int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.8f, -1f, 1f) * 7f);
+        int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.6f, -1f, 1f) * 7f);
         float distance = to.Length();
-        int vcode = MathF.Abs(error) > 1.2f ? 4 : distance < 150f && !pushing ? 6 : pushing ? 15 : 12;
+        float absError = MathF.Abs(error);
+        int vcode = absError > 1.2f ? 2 : absError > 0.6f ? 5 : pushing ? 15 : distance < 200f ? 8 : 12;
         return new Decision(vcode, tcode);
     }
 

@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using System.Reflection;
 using System.Runtime.Loader;
 
@@ -13,6 +14,7 @@ internal sealed class StrategyLoadContext(string assemblyPath) : AssemblyLoadCon
     private readonly AssemblyDependencyResolver _resolver = new(assemblyPath);
 
     /// <inheritdoc/>
+    [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = "User strategies are loaded at run time from their own files; the server is never trimmed.")]
     protected override Assembly? Load(AssemblyName assemblyName)
     {
         string? name = assemblyName.Name;

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Reflection;
 
@@ -13,7 +14,11 @@ namespace URWPGSim2D.Server.Strategies;
 /// </summary>
 internal static class StrategyLoader
 {
+    private const string Justification = "User strategies are loaded at run time from their own files; the server is never trimmed.";
+
     /// <summary>Creates the strategy named by <paramref name="spec"/>.</summary>
+    [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
+    [UnconditionalSuppressMessage("Trimming", "IL2072", Justification = Justification)]
     public static IStrategy Load(string spec)
     {
         int hash = spec.LastIndexOf('#');
@@ -47,6 +52,8 @@ internal static class StrategyLoader
         }
     }
 
+    [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
+    [UnconditionalSuppressMessage("Trimming", "IL2075", Justification = Justification)]
     private static Type FindType(Assembly assembly, string path, string? typeName)
     {
         Type[] exported;
