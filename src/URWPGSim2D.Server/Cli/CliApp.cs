@@ -1,0 +1,134 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// The command line, callable in-process: routes <c>args[0]</c> to one of its
+/// <see cref="ICliCommand"/>s, prints help, and turns every failure into one stderr line and an
+/// exit code. <c>Program.Main</c> only forwards to <see cref="Run(string[], TextReader, TextWriter, TextWriter)"/>.
+/// </summary>
+internal sealed class CliApp
+{
+    /// <summary>The program name shown in usage text.</summary>
+    public const string ProgramName = "URWPGSim2D.Server";
+
+    private readonly ICliCommand[] _commands;
+
+    /// <summary>Creates a command line over the given commands.</summary>
+    /// <param name="commands">The commands, in the order <c>--help</c> lists them; at least one.</param>
+    public CliApp(IEnumerable<ICliCommand> commands)
+    {
+        _commands = [.. commands];
+        if (_commands.Length == 0)
+        {
+            throw new ArgumentException("at least one command is needed", nameof(commands));
+        }
+    }
+
+    /// <summary>Every command of the program, in the order <c>--help</c> lists them. Register new commands here.</summary>
+    public static IReadOnlyList<ICliCommand> DefaultCommands { get; } =
+    [
+        new CollideCommand(),
+    ];
+
+    /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>
+    public string Synopsis =>
+        $"{ProgramName} <command> [arguments] (commands: {string.Join(", ", _commands.Select(c => c.Name))}; --help for details)";
+
+    /// <summary>Runs the program's command line (<see cref="DefaultCommands"/>).</summary>
+    /// <param name="args">The arguments after the program name.</param>
+    /// <param name="stdin">Standard input.</param>
+    /// <param name="stdout">Standard output; written only when a command succeeds.</param>
+    /// <param name="stderr">Standard error; usage text or a single error line.</param>
+    /// <returns>The exit code: 0 success, 1 internal error, 2 bad input or arguments.</returns>
+    public static int Run(string[] args, TextReader stdin, TextWriter stdout, TextWriter stderr) =>
+        new CliApp(DefaultCommands).Run(args, new CliConsole(stdin, stdout, stderr));
+
+    /// <summary>True for the arguments that ask for help: <c>--help</c> and <c>-h</c>.</summary>
+    /// <param name="argument">One argument.</param>
+    /// <returns>Whether it asks for help.</returns>
+    public static bool IsHelp(string argument) => argument is "--help" or "-h";
+
+    /// <summary>Runs a command line.</summary>
+    /// <param name="args">The arguments after the program name.</param>
+    /// <param name="console">The streams to use.</param>
+    /// <returns>The exit code: 0 success, 1 internal error, 2 bad input or arguments.</returns>
+    public int Run(string[] args, CliConsole console)
+    {
+        ArgumentNullException.ThrowIfNull(args);
+        ArgumentNullException.ThrowIfNull(console);
+        try
+        {
+            if (args.Length == 0)
+            {
+                return RunWithoutArguments(console);
+            }
+
+            if (IsHelp(args[0]))
+            {
+                console.Out.Write(HelpText());
+                return ExitCodes.Success;
+            }
+
+            ICliCommand command = Array.Find(_commands, c => c.Name == args[0])
+                ?? throw new CliUsageException($"unknown command {CliText.Quote(args[0])}", Synopsis);
+            return command.Run(args.AsSpan(1), console);
+        }
+        catch (CliUsageException ex)
+        {
+            console.Error.WriteLine(ex.Line);
+            return ExitCodes.BadInput;
+        }
+        catch (CliInputException ex)
+        {
+            console.Error.WriteLine(ex.Line);
+            return ExitCodes.BadInput;
+        }
+        catch (Exception ex)
+        {
+            // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
+            console.Error.WriteLine($"internal error: {ex.GetType().Name}: {ex.Message.ReplaceLineEndings(" ")}");
+            return ExitCodes.InternalError;
+        }
+    }
+
+    /// <summary>The program's help: every command's synopsis and summary, and the exit codes.</summary>
+    /// <returns>Multi-line text ending in a newline.</returns>
+    public string HelpText()
+    {
+        int width = Math.Max(_commands.Max(c => c.Synopsis.Length), "--help".Length);
+        var text = new StringBuilder();
+        text.Append(ProgramName).Append(": command-line front end of the URWPGSim2D.Collision library.\n\n");
+        text.Append("Usage:\n");
+        foreach (var command in _commands)
+        {
+            Line(command.Synopsis, command.Summary);
+        }
+
+        Line("--help", "Show this help.");
+        text.Append('\n');
+        text.Append("FILE may be - to read standard input. '").Append(ProgramName)
+            .Append(" COMMAND --help' describes one command.\n");
+        text.Append("Exit codes: 0 success; 2 bad input or arguments (one line on stderr, nothing on stdout); 1 internal error.\n");
+        text.Append("Formats: docs/cli.md.\n");
+        return text.ToString();
+
+        void Line(string synopsis, string summary) =>
+            text.Append("  ").Append(ProgramName).Append(' ').Append(synopsis.PadRight(width)).Append("  ").Append(summary).Append('\n');
+    }
+
+    /// <summary>
+    /// What an empty command line does. This is the single place where the default command will
+    /// be wired: the <c>run</c> command (a simulated match) becomes the default once it exists.
+    /// Until then an empty command line prints the help to stderr and fails.
+    /// </summary>
+    private int RunWithoutArguments(CliConsole console)
+    {
+        console.Error.Write(HelpText());
+        return ExitCodes.BadInput;
+    }
+}

@@ -1,0 +1,28 @@
+using System;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// One sub-command of the program (<c>collide</c>, later <c>shapes</c>, <c>render</c>, <c>run</c>).
+/// A command lives in its own file and is registered once, in <see cref="CliApp"/>.
+/// </summary>
+internal interface ICliCommand
+{
+    /// <summary>The word that selects the command, e.g. <c>collide</c>.</summary>
+    string Name { get; }
+
+    /// <summary>The command and its arguments as shown in usage lines, e.g. <c>collide FILE</c>.</summary>
+    string Synopsis { get; }
+
+    /// <summary>A one-line description for the program's <c>--help</c>.</summary>
+    string Summary { get; }
+
+    /// <summary>
+    /// Runs the command. Bad arguments throw <see cref="CliUsageException"/>, bad input throws
+    /// <see cref="CliInputException"/>; in both cases nothing may have been written to stdout.
+    /// </summary>
+    /// <param name="arguments">The arguments after the command name.</param>
+    /// <param name="console">The streams to use.</param>
+    /// <returns>The exit code (see <see cref="ExitCodes"/>).</returns>
+    int Run(ReadOnlySpan<string> arguments, CliConsole console);
+}

@@ -1,0 +1,152 @@
+using System;
+using System.IO;
+using URWPGSim2D.Server.Cli;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Cli;
+
+/// <summary>Routing, help and argument errors of the command line.</summary>
+public sealed class CliAppTests
+{
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: collide; --help for details)";
+    private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
+
+    [Theory]
+    [InlineData("--help")]
+    [InlineData("-h")]
+    public void HelpGoesToStdoutWithExitCodeZero(string flag)
+    {
+        var run = CliRun.Of(string.Empty, flag);
+
+        Assert.Equal(0, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stderr);
+        Assert.StartsWith("URWPGSim2D.Server: command-line front end", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  URWPGSim2D.Server collide FILE  Test pairs of shapes", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("  URWPGSim2D.Server --help        Show this help.", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("Exit codes: 0 success; 2 bad input", run.Stdout, StringComparison.Ordinal);
+        Assert.EndsWith("\n", run.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void CollideHelpDescribesTheFormats()
+    {
+        var run = CliRun.Of(string.Empty, "collide", "--help");
+
+        Assert.Equal(0, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stderr);
+        Assert.StartsWith(CollideUsage + "\n", run.Stdout, StringComparison.Ordinal);
+        foreach (var type in new[] { "circle", "aabb", "kdop8", "polygon", "segment" })
+        {
+            Assert.Contains($"{{\"type\":\"{type}\"", run.Stdout, StringComparison.Ordinal);
+        }
+
+        Assert.Contains("{\"intersect\":bool,\"mtv\":[x,z],\"normal\":[x,z],\"actionPoint\":[x,z]}", run.Stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void NoArgumentsPrintsTheHelpToStderrAndFails()
+    {
+        var run = CliRun.Of(string.Empty);
+
+        Assert.Equal(2, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stdout);
+        Assert.Equal(CliRun.Of(string.Empty, "--help").Stdout, run.Stderr);
+    }
+
+    [Theory]
+    [InlineData(new[] { "collision" }, "unknown command \"collision\". " + TopUsage)]
+    [InlineData(new[] { "" }, "unknown command \"\". " + TopUsage)]
+    [InlineData(new[] { "--verbose" }, "unknown command \"--verbose\". " + TopUsage)]
+    [InlineData(new[] { "collide" }, "collide: expected one FILE argument (- for stdin), got 0. " + CollideUsage)]
+    [InlineData(new[] { "collide", "a.json", "b.json" }, "collide: expected one FILE argument (- for stdin), got 2. " + CollideUsage)]
+    [InlineData(new[] { "collide", "-", "--help" }, "collide: expected one FILE argument (- for stdin), got 2. " + CollideUsage)]
+    [InlineData(new[] { "collide", "--pretty" }, "collide: unknown option \"--pretty\". " + CollideUsage)]
+    [InlineData(new[] { "collide", "" }, "collide: FILE is empty. " + CollideUsage)]
+    public void WrongArgumentsGiveOneUsageLine(string[] args, string expectedLine)
+    {
+        var run = CliRun.Of("[]", args);
+
+        CollideErrorTests.AssertOneLineFailure(run, expectedLine);
+    }
+
+    [Fact]
+    public void ACommandIsFoundByNameAndGetsTheRemainingArguments()
+    {
+        var probe = new ProbeCommand();
+        var app = new CliApp([new ProbeCommand { NameValue = "other" }, probe]);
+
+        int code = app.Run(["probe", "x", "-y"], Streams(out var stdout, out var stderr));
+
+        Assert.Equal(7, code);
+        Assert.Equal(["x", "-y"], probe.Received);
+        Assert.Equal("probe ran\n", stdout.ToString());
+        Assert.Equal(string.Empty, stderr.ToString());
+    }
+
+    [Fact]
+    public void AnUnexpectedExceptionIsOneLineWithExitCodeOne()
+    {
+        var app = new CliApp([new ProbeCommand { Failure = new InvalidOperationException("broken\ninvariant") }]);
+
+        int code = app.Run(["probe"], Streams(out var stdout, out var stderr));
+
+        Assert.Equal(1, code);
+        Assert.Equal(string.Empty, stdout.ToString());
+        Assert.Equal("internal error: InvalidOperationException: broken invariant\n", stderr.ToString());
+    }
+
+    [Fact]
+    public void InputAndUsageErrorsFromACommandAreOneLineWithExitCodeTwo()
+    {
+        var input = new CliApp([new ProbeCommand { Failure = new CliInputException("things[4].size", "must be > 0, got -1") }]);
+        var usage = new CliApp([new ProbeCommand { Failure = new CliUsageException("probe: too many arguments", "URWPGSim2D.Server probe") }]);
+
+        int inputCode = input.Run(["probe"], Streams(out var inputOut, out var inputErr));
+        int usageCode = usage.Run(["probe"], Streams(out var usageOut, out var usageErr));
+
+        Assert.Equal((2, 2), (inputCode, usageCode));
+        Assert.Equal((string.Empty, string.Empty), (inputOut.ToString(), usageOut.ToString()));
+        Assert.Equal("things[4].size: must be > 0, got -1\n", inputErr.ToString());
+        Assert.Equal("probe: too many arguments. Usage: URWPGSim2D.Server probe\n", usageErr.ToString());
+    }
+
+    [Fact]
+    public void AnAppNeedsAtLeastOneCommand()
+    {
+        Assert.Throws<ArgumentException>(() => new CliApp([]));
+    }
+
+    private static CliConsole Streams(out StringWriter stdout, out StringWriter stderr)
+    {
+        stdout = new StringWriter();
+        stderr = new StringWriter();
+        return new CliConsole(new StringReader(string.Empty), stdout, stderr);
+    }
+
+    private sealed class ProbeCommand : ICliCommand
+    {
+        public string NameValue { get; init; } = "probe";
+
+        public Exception? Failure { get; init; }
+
+        public string[] Received { get; private set; } = [];
+
+        public string Name => NameValue;
+
+        public string Synopsis => NameValue;
+
+        public string Summary => "A test double.";
+
+        public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+        {
+            Received = arguments.ToArray();
+            if (Failure is not null)
+            {
+                throw Failure;
+            }
+
+            console.Out.Write("probe ran\n");
+            return 7;
+        }
+    }
+}
