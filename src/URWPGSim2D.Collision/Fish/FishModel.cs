@@ -1,0 +1,107 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.Fish;
+
+/// <summary>
+/// The collision model of one multi-joint fish: a bounding-volume tree of depth 3 over its
+/// eight convex leaf polygons. The root circle encloses the whole fish; its two children are
+/// the body group circle (body and both pectoral fins) and the tail group circle (three tail
+/// segments and the caudal fin); each leaf is bounded by a tight 8-DOP, with the exact polygon
+/// beneath it for the final separating-axis or Voronoi test (see <see cref="FishCollision"/>).
+/// </summary>
+/// <remarks>
+/// Every buffer is allocated here, once; <see cref="SetPose"/> rebuilds the leaves and all
+/// bounding volumes in place without allocating. Each circle is the minimum enclosing circle
+/// of the leaves below it, grown by a few µm against round-off: it encloses every leaf below
+/// it (the root need not enclose the group circles themselves, which bulge past the fish; the
+/// descent only needs each volume to hold its leaves). Not thread-safe while a pose is being set.
+/// </remarks>
+public sealed partial class FishModel
+{
+    private readonly FishTemplate _template;
+    private readonly Vector2[] _vertices = new Vector2[FishLeafLayout.VertexCount];
+    private readonly Vector2[] _normals = new Vector2[FishLeafLayout.VertexCount];
+    private readonly Vector2[] _axes = new Vector2[FishLeafLayout.VertexCount];
+    private readonly Vector4[] _slabMin = new Vector4[FishLeafLayout.LeafCount];
+    private readonly Vector4[] _slabMax = new Vector4[FishLeafLayout.LeafCount];
+    private readonly Vector2[] _orderedPoints;
+
+    /// <summary>Creates the model of a fish of the given size at the given pose.</summary>
+    /// <param name="size">The fish's dimensions (a validated <see cref="FishSize"/>; not <c>default</c>).</param>
+    /// <param name="pose">The initial pose.</param>
+    /// <exception cref="ArgumentException"><paramref name="size"/> is <c>default(FishSize)</c>.</exception>
+    public FishModel(FishSize size, in FishPose pose)
+    {
+        if (!size.IsValid)
+        {
+            throw new ArgumentException($"must be a validated fish size, got default ({size})", nameof(size));
+        }
+
+        _template = new FishTemplate(size);
+        _orderedPoints = new Vector2[_template.AllOrder.Length];
+        SetPose(pose);
+    }
+
+    /// <summary>The fish's dimensions, mm.</summary>
+    public FishSize Size => _template.Size;
+
+    /// <summary>The pose the model was last built for.</summary>
+    public FishPose Pose { get; private set; }
+
+    /// <summary>Encloses the whole fish: the minimum enclosing circle of all leaves at this pose.</summary>
+    public Circle Root { get; private set; }
+
+    /// <summary>Encloses the body and both pectoral fins: their minimum enclosing circle (rigid, computed once per size).</summary>
+    public Circle BodyGroup { get; private set; }
+
+    /// <summary>Encloses the three tail segments and the caudal fin: their minimum enclosing circle at this pose.</summary>
+    public Circle TailGroup { get; private set; }
+
+    /// <summary>The extreme coordinates of all leaves: the smallest box containing the fish, mm.</summary>
+    public Aabb Bounds { get; private set; }
+
+    /// <summary>The head tip, P + (L/2 + H)·u, mm (the reference point of the original's restitution d/300).</summary>
+    public Vector2 HeadTip { get; private set; }
+
+    /// <summary>The unit forward direction u = (cos θ, sin θ) of the body.</summary>
+    public Vector2 Forward { get; private set; }
+
+    /// <summary>The world vertices of one leaf polygon, counter-clockwise in x–z coordinates, mm.</summary>
+    /// <param name="part">Which leaf.</param>
+    /// <returns>A view of the model's buffer, valid until the next <see cref="SetPose"/>.</returns>
+    /// <exception cref="ArgumentException"><paramref name="part"/> is not one of the eight parts.</exception>
+    public ReadOnlySpan<Vector2> GetLeaf(FishPart part)
+    {
+        int leaf = FishLeafLayout.Index(part, nameof(part));
+        return _vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf));
+    }
+
+    /// <summary>The tight 8-DOP around one leaf polygon (its vertices' projections on the four 8-DOP axes).</summary>
+    /// <param name="part">Which leaf.</param>
+    /// <returns>The leaf's bounding 8-DOP.</returns>
+    /// <exception cref="ArgumentException"><paramref name="part"/> is not one of the eight parts.</exception>
+    public KDop8 GetLeafBound(FishPart part)
+    {
+        int leaf = FishLeafLayout.Index(part, nameof(part));
+        return KDop8.Build(_slabMin[leaf], _slabMax[leaf]);
+    }
+
+    /// <summary>The exact leaf polygon as a view for the narrow phase (vertices, normals, merged axes).</summary>
+    internal ConvexView LeafView(int leaf)
+    {
+        int at = FishLeafLayout.Offset(leaf);
+        return new ConvexView(
+            _vertices.AsSpan(at, FishLeafLayout.Count(leaf)),
+            _normals.AsSpan(at, FishLeafLayout.Count(leaf)),
+            _axes.AsSpan(at, _template.AxisCount(leaf)));
+    }
+
+    /// <summary>Lower slab values of the leaf's 8-DOP along the four axes.</summary>
+    internal Vector4 LeafMin(int leaf) => _slabMin[leaf];
+
+    /// <summary>Upper slab values of the leaf's 8-DOP along the four axes.</summary>
+    internal Vector4 LeafMax(int leaf) => _slabMax[leaf];
+}
