@@ -106,7 +106,7 @@ internal sealed class RunCommand : ICliCommand
     }
 
     private static string HelpText() =>
-        $"Usage: {CliApp.ProgramName} {RunOptions.Synopsis}\n\n" +
+        $"Usage: {CliApp.ProgramName} {RunOptions.Usage}\n\n" +
         "Plays a match of 100 ms cycles and prints cycles, simulated and wall time, goals per team, contacts by pair\n" +
         "kind, sub-steps, the largest leftover overlap and strategy faults. Without --scenario it plays the embedded\n" +
         "default match. --strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context,\n" +

@@ -7,8 +7,11 @@ namespace URWPGSim2D.Server.Cli;
 /// <summary>The parsed arguments of <c>run</c>.</summary>
 internal sealed class RunOptions
 {
-    /// <summary>The command's synopsis.</summary>
-    public const string Synopsis = "run [--scenario FILE] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE]";
+    /// <summary>The command's synopsis in the program's help.</summary>
+    public const string Synopsis = "run [--scenario FILE] [options]";
+
+    /// <summary>The command's full usage.</summary>
+    public const string Usage = "run [--scenario FILE] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE]";
 
     /// <summary>Scenario file, or null for the embedded default match.</summary>
     public string? Scenario { get; private set; }
@@ -53,18 +56,18 @@ internal sealed class RunOptions
 
             if (!name.StartsWith("--", StringComparison.Ordinal))
             {
-                throw Usage($"unexpected argument \"{name}\"");
+                throw UsageError($"unexpected argument {CliText.Quote(name)}");
             }
 
             if (i + 1 >= args.Length)
             {
-                throw Usage($"{name} needs a value");
+                throw UsageError($"{name} needs a value");
             }
 
             string value = args[++i];
             if (name != "--strategy" && !seen.Add(name))
             {
-                throw Usage($"{name} given twice");
+                throw UsageError($"{name} given twice");
             }
 
             switch (name)
@@ -76,19 +79,19 @@ internal sealed class RunOptions
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
                 case "--noise":
-                    o.Noise = value switch { "on" => true, "off" => false, _ => throw Usage($"--noise must be on or off, got \"{value}\"") };
+                    o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {CliText.Quote(value)}") };
                     break;
                 case "--strategy":
                     int eq = value.IndexOf('=', StringComparison.Ordinal);
                     if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
                     {
-                        throw Usage($"--strategy must be TEAM=PATH with TEAM 0 or 1, got \"{value}\"");
+                        throw UsageError($"--strategy must be TEAM=PATH with TEAM 0 or 1, got {CliText.Quote(value)}");
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];
                     break;
                 default:
-                    throw Usage($"unknown option \"{name}\"");
+                    throw UsageError($"unknown option {CliText.Quote(name)}");
             }
         }
 
@@ -99,11 +102,11 @@ internal sealed class RunOptions
     {
         if (!long.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out long v) || v < min || v > max)
         {
-            throw Usage($"{name} must be an integer {min}..{max}, got \"{value}\"");
+            throw UsageError($"{name} must be an integer {min}..{max}, got {CliText.Quote(value)}");
         }
 
         return v;
     }
 
-    private static CliUsageException Usage(string message) => new(message, CliApp.ProgramName + " " + Synopsis);
+    private static CliUsageException UsageError(string message) => new("run: " + message, CliApp.ProgramName + " " + Usage);
 }

@@ -103,7 +103,7 @@ internal static class JsonReader
     /// <summary>The value's JSON text, shortened.</summary>
     public static string Raw(JsonElement e)
     {
-        string text = e.GetRawText();
+        string text = e.GetRawText().ReplaceLineEndings(" ");
         return text.Length <= 40 ? text : text[..37] + "...";
     }
 

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
+using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Strategies;
 using static URWPGSim2D.Server.Scenario.JsonReader;
@@ -120,7 +121,7 @@ internal static class ScenarioParser
         string strategy = e.TryGetProperty("strategy", out var st) ? Text(st, path + ".strategy") : hasDecision ? "fixed" : "idle";
         if (strategy is not ("idle" or "chase-ball" or "fixed"))
         {
-            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\" or \"fixed\", got \"{strategy}\"");
+            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\" or \"fixed\", got {CliText.Quote(strategy)}");
         }
 
         Decision decision = Decision.Stop;
@@ -135,7 +136,7 @@ internal static class ScenarioParser
         }
         else if (hasDecision)
         {
-            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not \"{strategy}\"");
+            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {CliText.Quote(strategy)}");
         }
 
         return new FishDefinition(team, position, heading, strategy, decision);
@@ -190,7 +191,7 @@ internal static class ScenarioParser
             return new ObstacleDefinition(ObstacleKind.Round, center, 2f * radius, 2f * radius, 0f, radius);
         }
 
-        throw new ScenarioException(path + ".type", $"must be \"rectangle\" or \"round\", got \"{type}\"");
+        throw new ScenarioException(path + ".type", $"must be \"rectangle\" or \"round\", got {CliText.Quote(type)}");
     }
 
     private static void Inside(ScenarioDefinition s, string path, Vector2 center, float radius)
