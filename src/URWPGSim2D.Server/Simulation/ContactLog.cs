@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// </summary>
 internal sealed class ContactLog
 {
-    private ContactRecord[] _records = new ContactRecord[64];
+    private ContactRecord[] _records = new ContactRecord[1024];
     private readonly long[] _byKind = new long[7];
 
     /// <summary>This cycle's contacts in resolution order.</summary>

@@ -9,4 +9,5 @@ namespace URWPGSim2D.Server.Simulation;
 /// <param name="Mtv">Minimum translation of A, mm.</param>
 /// <param name="Normal">Unit normal from B toward A.</param>
 /// <param name="Point">Action point, mm.</param>
-internal readonly record struct ContactRecord(CandidatePair Pair, sbyte PartA, sbyte PartB, Vector2 Mtv, Vector2 Normal, Vector2 Point);
+/// <param name="Time">When in the cycle it was resolved, as a fraction 0..1 of the cycle (the time of first contact).</param>
+internal readonly record struct ContactRecord(CandidatePair Pair, sbyte PartA, sbyte PartB, Vector2 Mtv, Vector2 Normal, Vector2 Point, double Time);

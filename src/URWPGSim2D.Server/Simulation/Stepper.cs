@@ -85,7 +85,7 @@ internal sealed class Stepper
                 MoveAll(contact);
             }
 
-            ResolveHits();
+            ResolveHits(contact);
             Events++;
             Commit(contact);
             t = contact;
@@ -116,7 +116,7 @@ internal sealed class Stepper
                 break;
             }
 
-            ResolveHits();
+            ResolveHits(_baseTime);
         }
 
         LeftoverOverlap = MeasureOverlap();
@@ -206,7 +206,7 @@ internal sealed class Stepper
         return false;
     }
 
-    private void ResolveHits()
+    private void ResolveHits(double time)
     {
         var pairs = _planner.Pairs;
         for (int i = 0; i < _hitCount; i++)
@@ -216,7 +216,7 @@ internal sealed class Stepper
             if (hit.Depth > PhysicsConstants.ContactSlop)
             {
                 ContactKind kind = _response.Apply(pair, hit);
-                _log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point), kind);
+                _log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point, time), kind);
             }
         }
     }
