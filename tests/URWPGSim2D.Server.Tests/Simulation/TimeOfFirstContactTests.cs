@@ -21,8 +21,8 @@ public sealed class TimeOfFirstContactTests
         Assert.Equal(PairKind.BallWall, contact.Pair.Kind);
         double expected = gap / (speed * 0.1);
         Assert.InRange(contact.Time, expected - (0.3 / (speed * 0.1)), expected + (0.3 / (speed * 0.1)));
-        Assert.Equal(0f, contact.Normal.X, 4);
-        Assert.Equal(-1f, contact.Normal.Y, 4);
+        Assert.Equal(0f, contact.Normal.X, 1e-4f);
+        Assert.Equal(-1f, contact.Normal.Y, 1e-4f);
 
         // Restitution 0.001: the ball stays at the wall, moving away at a thousandth of its speed (before drag).
         var ball = match.World.Balls[0];
@@ -43,12 +43,12 @@ public sealed class TimeOfFirstContactTests
         // Equal masses, e = 0.005: vA' = v(1 − e)/2, vB' = v(1 + e)/2, then one cycle of drag (250 mm/s²).
         float va = (2000f * (1f - 0.005f) / 2f) - 25f;
         float vb = (2000f * (1f + 0.005f) / 2f) - 25f;
-        Assert.Equal(va, match.World.Balls[0].Velocity.X, 0);
-        Assert.Equal(vb, match.World.Balls[1].Velocity.X, 0);
+        Assert.Equal(va, match.World.Balls[0].Velocity.X, 0.5f);
+        Assert.Equal(vb, match.World.Balls[1].Velocity.X, 0.5f);
 
         // After the contact both travel 0.08 s at their new speeds.
         float contactA = -300f + (2000f * 0.092f);
-        Assert.Equal(contactA + (995f * 0.008f), match.BallAt(0).X, 0);
-        Assert.Equal(1005f * 0.008f, match.BallAt(1).X, 0);
+        Assert.Equal(contactA + (995f * 0.008f), match.BallAt(0).X, 0.5f);
+        Assert.Equal(1005f * 0.008f, match.BallAt(1).X, 0.5f);
     }
 }

@@ -35,9 +35,9 @@ public sealed class SpeedAndTurnTests
             match.Step();
             float v = k >= 10 ? 317f : 31.7f * k;
             expectedX += v * 0.1f;
-            Assert.Equal(v, match.World.Fish[0].Speed.Value, 3);
-            Assert.Equal(expectedX, match.World.Fish[0].Position.X, 2);
-            Assert.Equal(0f, match.World.Fish[0].Position.Y, 3);
+            Assert.Equal(v, match.World.Fish[0].Speed.Value, 1e-3f);
+            Assert.Equal(expectedX, match.World.Fish[0].Position.X, 1e-2f);
+            Assert.Equal(0f, match.World.Fish[0].Position.Y, 1e-3f);
         }
     }
 
@@ -54,8 +54,8 @@ public sealed class SpeedAndTurnTests
         float before = match.World.Fish[0].Heading;
         match.Step();
         float turned = Angle(match.World.Fish[0].Heading - before);
-        Assert.Equal(Turns[tcode] * 0.1f, turned, 5);
-        Assert.Equal(Turns[tcode], match.World.Fish[0].Turn.Value, 5);
+        Assert.Equal(Turns[tcode] * 0.1f, turned, 1e-5f);
+        Assert.Equal(Turns[tcode], match.World.Fish[0].Turn.Value, 1e-5f);
     }
 
     [Fact]
@@ -63,7 +63,7 @@ public sealed class SpeedAndTurnTests
     {
         var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"heading":0.5,"decision":{"vcode":0,"tcode":0}}],"balls":[]}""");
         match.Play(20);
-        Assert.Equal(0.5f, match.World.Fish[0].Heading, 6);
+        Assert.Equal(0.5f, match.World.Fish[0].Heading, 1e-6f);
         Assert.Equal(0f, match.World.Fish[0].Turn.Value);
     }
 
@@ -73,17 +73,17 @@ public sealed class SpeedAndTurnTests
         var g = default(GearApproach);
         g.Reset(100f);
         g.Advance(300f);
-        Assert.Equal(120f, g.Value, 4);
+        Assert.Equal(120f, g.Value, 1e-4f);
         for (int i = 0; i < 8; i++)
         {
             g.Advance(300f);
         }
 
-        Assert.Equal(280f, g.Value, 3);
+        Assert.Equal(280f, g.Value, 1e-3f);
         g.Advance(300f);
         Assert.Equal(300f, g.Value);
         g.Advance(0f);
-        Assert.Equal(270f, g.Value, 3);
+        Assert.Equal(270f, g.Value, 1e-3f);
     }
 
     private static float Angle(float a) => MathF.IEEERemainder(a, 2f * MathF.PI);

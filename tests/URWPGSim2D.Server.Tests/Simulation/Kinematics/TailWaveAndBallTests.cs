@@ -32,7 +32,7 @@ public sealed class TailWaveAndBallTests
 
         mean /= samples;
         float expected = -0.48f * TurnTable.BendFactor(tcode) * 60f * System.MathF.PI / 180f;
-        Assert.Equal(expected, (float)mean, 3);
+        Assert.Equal(expected, (float)mean, 1e-3f);
         Assert.Equal(sign, System.MathF.Sign((float)mean));
     }
 
@@ -41,7 +41,7 @@ public sealed class TailWaveAndBallTests
     {
         // VCode 12 beats at 2 Hz: the angle repeats every 0.5 s and differs half a period later.
         float a = TailWave.JointAngle(0, 12, 7, 3.1);
-        Assert.Equal(a, TailWave.JointAngle(0, 12, 7, 3.6), 4);
+        Assert.Equal(a, TailWave.JointAngle(0, 12, 7, 3.6), 1e-4f);
         Assert.NotEqual(a, TailWave.JointAngle(0, 12, 7, 3.35), 3);
     }
 
@@ -58,7 +58,7 @@ public sealed class TailWaveAndBallTests
     {
         Assert.Equal(deceleration, BallMotion.Deceleration(speed));
         Vector2 after = BallMotion.Decelerate(new Vector2(0f, speed), 0.1f);
-        Assert.Equal(System.MathF.Max(0f, speed - (deceleration * 0.1f)), after.Y, 4);
+        Assert.Equal(System.MathF.Max(0f, speed - (deceleration * 0.1f)), after.Y, 1e-4f);
         Assert.Equal(0f, after.X);
     }
 
@@ -74,8 +74,8 @@ public sealed class TailWaveAndBallTests
             match.Step();
             x += v * 0.1f;
             v = System.MathF.Max(0f, v - (BallMotion.Deceleration(v) * 0.1f));
-            Assert.Equal(x, match.BallAt(0).X, 2);
-            Assert.Equal(v, match.World.Balls[0].Velocity.X, 3);
+            Assert.Equal(x, match.BallAt(0).X, 1e-2f);
+            Assert.Equal(v, match.World.Balls[0].Velocity.X, 1e-3f);
         }
 
         Assert.Equal(0f, match.World.Balls[0].Velocity.X);
