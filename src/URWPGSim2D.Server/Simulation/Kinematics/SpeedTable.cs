@@ -10,12 +10,12 @@ public static class SpeedTable
     /// <summary>Number of gears (VCode 0..15).</summary>
     public const int Gears = 16;
 
-    private static ReadOnlySpan<float> Targets =>
+    private static readonly float[] Targets =
     [
         0f, 10f, 35f, 67f, 98f, 112f, 135f, 154f, 175f, 227f, 273f, 291f, 298f, 294f, 307f, 317f,
     ];
 
-    private static ReadOnlySpan<float> Frequencies =>
+    private static readonly float[] Frequencies =
     [
         0f, 0.375f, 0.5f, 0.625f, 0.75f, 0.875f, 1f, 1.125f, 1.5f, 1.625f, 1.75f, 1.875f, 2f, 2.125f, 2.125f, 2.125f,
     ];

@@ -14,11 +14,11 @@ public static class TailWave
 {
     private const float DegToRad = MathF.PI / 180f;
 
-    private static ReadOnlySpan<float> BendShares => [1f, 0.85f, 0.4f];
+    private static readonly float[] BendShares = [1f, 0.85f, 0.4f];
 
-    private static ReadOnlySpan<float> AmplitudeShares => [1f, 1.1f, 1.2f];
+    private static readonly float[] AmplitudeShares = [1f, 1.1f, 1.2f];
 
-    private static ReadOnlySpan<float> LagsDegrees => [0f, 80f, 59f];
+    private static readonly float[] LagsDegrees = [0f, 80f, 59f];
 
     /// <summary>Amplitude of joint 1 in degrees for a speed gear.</summary>
     /// <param name="vcode">Speed gear (clamped to 0..15).</param>

@@ -15,13 +15,13 @@ public static class TurnTable
     /// <summary>The gear that swims straight.</summary>
     public const int Straight = 7;
 
-    private static ReadOnlySpan<float> Targets =>
+    private static readonly float[] Targets =
     [
         -0.394f, -0.297f, -0.244f, -0.192f, -0.137f, -0.087f, -0.052f, 0f,
         0.052f, 0.087f, 0.137f, 0.192f, 0.244f, 0.297f, 0.349f, 0.349f,
     ];
 
-    private static ReadOnlySpan<float> Bends =>
+    private static readonly float[] Bends =
     [
         -1f, -0.9f, -0.8f, -0.7f, -0.5f, -0.3f, -0.1f, 0f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f, 0.8f, 0.9f, 1f,
     ];
