@@ -66,9 +66,10 @@ public sealed class ChaseBallStrategy : IStrategy
             float goalX = me.Team == 0 ? snapshot.FieldLength * 0.5f : -snapshot.FieldLength * 0.5f;
             Vector2 toGoal = new Vector2(goalX, 0f) - ball.Position;
             toGoal = toGoal.LengthSquared() > 1e-6f ? Vector2.Normalize(toGoal) : new Vector2(me.Team == 0 ? 1f : -1f, 0f);
-            Vector2 behind = ball.Position - (toGoal * (ball.Radius + 60f));
+            Vector2 behind = ball.Position - (toGoal * (ball.Radius + 100f));
             Vector2 toBall = ball.Position - head;
-            bool linedUp = Vector2.Dot(toBall, toGoal) > 0f && AngleBetween(toBall, toGoal) < LineUpAngle;
+            bool linedUp = Vector2.Dot(toBall, toGoal) > 0f && AngleBetween(toBall, toGoal) < LineUpAngle
+                && Vector2.Distance(me.Position, behind) < 260f;
             Vector2 aim = linedUp ? ball.Position + (toGoal * ball.Radius) : behind;
             decisions[k] = Steer(me, aim, linedUp);
         }
@@ -107,10 +108,24 @@ public sealed class ChaseBallStrategy : IStrategy
     {
         Vector2 to = aim - me.Position;
         float error = WrapAngle(MathF.Atan2(to.Y, to.X) - me.Heading);
-        int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.6f, -1f, 1f) * 7f);
+        int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.4f, -1f, 1f) * 7f);
         float distance = to.Length();
         float absError = MathF.Abs(error);
-        int vcode = absError > 1.2f ? 2 : absError > 0.6f ? 5 : pushing ? 15 : distance < 200f ? 8 : 12;
+
+        // Slow enough that the turning circle (radius v/ω, ω ≈ 0.3 rad/s) reaches the aim point:
+        // a circle through the fish tangent to its heading meets the point when r ≤ d / (2·sin e).
+        float sine = absError >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(absError), 0.05f);
+        float fastest = 0.3f * distance / (2f * sine);
+        int vcode = 1;
+        for (int v = pushing ? 15 : 14; v >= 1; v--)
+        {
+            if (Simulation.Kinematics.SpeedTable.TargetSpeed(v) <= fastest)
+            {
+                vcode = v;
+                break;
+            }
+        }
+
         return new Decision(vcode, tcode);
     }
 
