@@ -21,6 +21,7 @@ internal sealed class Stepper
     private readonly ContactLog _log;
     private readonly ContactResponse _response;
     private readonly int[] _hits;
+    private readonly Hit[] _hitValues;
     private readonly bool[] _fishInvolved;
     private readonly bool[] _ballInvolved;
     private int _hitCount;
@@ -33,6 +34,7 @@ internal sealed class Stepper
         _planner = new SweepPlanner(world);
         _response = new ContactResponse(world);
         _hits = new int[_planner.Capacity];
+        _hitValues = new Hit[_planner.Capacity];
         _fishInvolved = new bool[world.Fish.Length];
         _ballInvolved = new bool[world.Balls.Length];
     }
@@ -110,10 +112,11 @@ internal sealed class Stepper
         for (int pass = 0; pass < 4; pass++)
         {
             _planner.Plan(0f);
-            FindHits();
+            float deepest = FindHits();
             if (_hitCount == 0)
             {
-                break;
+                LeftoverOverlap = deepest;
+                return;
             }
 
             ResolveHits(_baseTime);
@@ -143,10 +146,11 @@ internal sealed class Stepper
         var pairs = _planner.Pairs;
         for (int k = 0; k < pairs.Length; k++)
         {
-            float depth = PairDetector.Detect(_world, pairs[k]).Depth;
-            deepest = MathF.Max(deepest, depth);
-            if (depth > PhysicsConstants.ContactSlop)
+            Hit hit = PairDetector.Detect(_world, pairs[k]);
+            deepest = MathF.Max(deepest, hit.Depth);
+            if (hit.Depth > PhysicsConstants.ContactSlop)
             {
+                _hitValues[_hitCount] = hit;
                 _hits[_hitCount++] = k;
             }
         }
@@ -175,6 +179,7 @@ internal sealed class Stepper
 
         double lo = free;
         double hi = hit;
+        Guess(ref lo, ref hi, rate);
         for (int iteration = 0; iteration < 48 && (hi - lo) * rate > PhysicsConstants.TimeOfImpactTolerance; iteration++)
         {
             double mid = 0.5 * (lo + hi);
@@ -190,6 +195,52 @@ internal sealed class Stepper
         }
 
         return hi;
+    }
+
+    // False position before bisection: the deepest hit's depth shrinks at the pair's closing rate,
+    // so it reached zero near hi − depth / rate. Probe there, and just after it, to bracket the time
+    // of first contact tightly (exact for translation; bisection refines what turning leaves).
+    private void Guess(ref double lo, ref double hi, float rate)
+    {
+        int deepest = 0;
+        for (int i = 1; i < _hitCount; i++)
+        {
+            deepest = _hitValues[i].Depth > _hitValues[deepest].Depth ? i : deepest;
+        }
+
+        float closing = PairMotion.ClosingRate(_world, _planner.Pairs[_hits[deepest]], _hitValues[deepest]);
+        if (!(closing > 0f) || rate <= 0f)
+        {
+            return;
+        }
+
+        double guess = hi - (_hitValues[deepest].Depth / closing);
+        if (!(guess > lo && guess < hi))
+        {
+            return;
+        }
+
+        MoveInvolved(guess);
+        if (AnyHitIntersects())
+        {
+            hi = guess;
+            return;
+        }
+
+        lo = guess;
+        double next = lo + (0.5 * PhysicsConstants.TimeOfImpactTolerance / rate);
+        if (next < hi)
+        {
+            MoveInvolved(next);
+            if (AnyHitIntersects())
+            {
+                hi = next;
+            }
+            else
+            {
+                lo = next;
+            }
+        }
     }
 
     private bool AnyHitIntersects()
