@@ -15,7 +15,7 @@ namespace URWPGSim2D.Server.Simulation;
 internal sealed class Separation(World world)
 {
     private const int MaxSearchSteps = 24;
-    private readonly FishContact[] _contacts = new FishContact[FishCollision.MaxContactsWithFish];
+    private readonly FishContact[] _contacts = new FishContact[8 * 8]; // every leaf pair of two fish
 
     /// <summary>Moves A and B of <paramref name="pair"/> apart; the first move is the contact's own MTV.</summary>
     public void Apply(in CandidatePair pair, in Hit hit, float shareA, float shareB)
