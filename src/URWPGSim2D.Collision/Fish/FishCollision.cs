@@ -31,6 +31,11 @@ public static partial class FishCollision
     public static FishContact Detect(FishModel a, in Circle b)
     {
         ArgumentNullException.ThrowIfNull(a);
+        if (!Slabs.MayOverlap(a.Root, b))
+        {
+            return default;
+        }
+
         var partner = new CirclePartner(b);
         return Deepest(a, ref partner);
     }
@@ -91,6 +96,11 @@ public static partial class FishCollision
     public static FishContact Detect(FishModel a, in ConvexPolygon b)
     {
         ArgumentNullException.ThrowIfNull(a);
+        if (!Slabs.MayOverlap(a.Root, b.BoundingCircle))
+        {
+            return default;
+        }
+
         var partner = new ConvexPartner(b.View());
         return Deepest(a, ref partner);
     }

@@ -77,20 +77,19 @@ public sealed partial class FishModel
         var body = _template.BodyGroup;
         BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
 
-        int[] order = _template.TailOrder;
+        TailGroup = MinimumCircle(_template.TailOrder);
+        Root = MinimumCircle(_template.AllOrder);
+    }
+
+    // The minimum enclosing circle of the vertices listed in `order` (likely boundary points first).
+    private Circle MinimumCircle(ReadOnlySpan<int> order)
+    {
+        var points = _orderedPoints.AsSpan(0, order.Length);
         for (int i = 0; i < order.Length; i++)
         {
-            _orderedPoints[i] = _vertices[order[i]];
+            points[i] = _vertices[order[i]];
         }
 
-        TailGroup = EnclosingCircle.Minimum(_orderedPoints.AsSpan(0, order.Length));
-
-        order = _template.AllOrder;
-        for (int i = 0; i < order.Length; i++)
-        {
-            _orderedPoints[i] = _vertices[order[i]];
-        }
-
-        Root = EnclosingCircle.Minimum(_orderedPoints);
+        return EnclosingCircle.Minimum(points);
     }
 }

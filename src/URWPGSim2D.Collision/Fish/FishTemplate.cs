@@ -8,8 +8,9 @@ namespace URWPGSim2D.Collision.Fish;
 /// <summary>
 /// Everything about a fish that depends on its size only, computed once: each leaf in its
 /// rigid frame (vertices counter-clockwise, outward unit edge normals, SAT axes with parallel
-/// edges merged), the body group's minimum enclosing circle in the body frame, and the order
-/// in which the tail group's distinct vertices are fed to the enclosing-circle search.
+/// edges merged), the body group's minimum enclosing circle in the body frame, and the orders
+/// in which the tail group's and the whole fish's distinct vertices are fed to the
+/// enclosing-circle search (likely boundary points first).
 /// </summary>
 internal sealed class FishTemplate
 {
@@ -17,6 +18,8 @@ internal sealed class FishTemplate
     private readonly Vector2[] _normals = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector2[] _axes = new Vector2[FishLeafLayout.VertexCount];
     private readonly byte[] _axisCounts = new byte[FishLeafLayout.LeafCount];
+    private readonly int[] _tailOrder;
+    private readonly int[] _allOrder;
 
     public FishTemplate(in FishSize size)
     {
@@ -46,8 +49,8 @@ internal sealed class FishTemplate
         }
 
         BodyGroup = EnclosingCircle.Minimum(_vertices.AsSpan(0, FishLeafLayout.TailGroupFirstVertex));
-        TailOrder = ExtremeFirstOrder(FishLeafLayout.BodyGroupEnd);
-        AllOrder = ExtremeFirstOrder(0);
+        _tailOrder = ExtremeFirstOrder(FishLeafLayout.BodyGroupEnd);
+        _allOrder = ExtremeFirstOrder(0);
     }
 
     /// <summary>The size this template was built for.</summary>
@@ -66,10 +69,10 @@ internal sealed class FishTemplate
     public Circle BodyGroup { get; }
 
     /// <summary>Packed indices of the tail group's distinct vertices, farthest from the straight tail's centre first.</summary>
-    public int[] TailOrder { get; }
+    public ReadOnlySpan<int> TailOrder => _tailOrder;
 
     /// <summary>Packed indices of all distinct vertices, farthest from the straight fish's centre first.</summary>
-    public int[] AllOrder { get; }
+    public ReadOnlySpan<int> AllOrder => _allOrder;
 
     /// <summary>Number of SAT axes of a leaf (its edge normals with parallel ones merged).</summary>
     public int AxisCount(int leaf) => _axisCounts[leaf];

@@ -16,15 +16,46 @@ public static partial class CollisionDetector
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
     public static CollisionDetectionResult Detect(in KDop8 a, in KDop8 b) => SlabSat.Detect(a.MinSlabs, a.MaxSlabs, b.MinSlabs, b.MaxSlabs);
 
-    /// <summary>Box against box: the slab test (the diagonal slabs of two boxes never decide the MTV).</summary>
+    /// <summary>
+    /// Box against box: interval overlap on x and z only (the Minkowski difference of two boxes is
+    /// a box, so these two axes are exact, and their float differences are exact too); the MTV is
+    /// the least of the four one-sided overlaps; the action point is the centre of the
+    /// intersection rectangle.
+    /// </summary>
     /// <param name="a">The box moved by the MTV.</param>
     /// <param name="b">The other box.</param>
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
     public static CollisionDetectionResult Detect(in Aabb a, in Aabb b)
     {
-        SlabSat.Of(a, out Vector4 minA, out Vector4 maxA);
-        SlabSat.Of(b, out Vector4 minB, out Vector4 maxB);
-        return SlabSat.Detect(minA, maxA, minB, maxB);
+        Vector2 forward = b.Max - a.Min;
+        Vector2 backward = a.Max - b.Min;
+        if (!(forward.X > 0f && forward.Y > 0f && backward.X > 0f && backward.Y > 0f))
+        {
+            return CollisionDetectionResult.None;
+        }
+
+        float depth = forward.X;
+        Vector2 normal = Vector2.UnitX;
+        if (backward.X < depth)
+        {
+            depth = backward.X;
+            normal = -Vector2.UnitX;
+        }
+
+        if (forward.Y < depth)
+        {
+            depth = forward.Y;
+            normal = Vector2.UnitY;
+        }
+
+        if (backward.Y < depth)
+        {
+            depth = backward.Y;
+            normal = -Vector2.UnitY;
+        }
+
+        Vector2 centre = (Vector2.Max(a.Min, b.Min) + Vector2.Min(a.Max, b.Max)) * 0.5f;
+        return CollisionDetectionResult.FromPlane(normal, depth, centre);
     }
 
     /// <summary>Box against 8-DOP: the box as an 8-DOP, then the slab test.</summary>

@@ -14,16 +14,18 @@ internal static class ContactRegion
     /// <summary>
     /// The area centroid of the intersection of two convex views (a flat or single-point view:
     /// the middle of its part inside the other). <paramref name="origin"/> is a nearby point
-    /// that all arithmetic is taken relative to; <paramref name="fallback"/> is returned when
-    /// round-off leaves no region (grazing contacts).
+    /// that all arithmetic is taken relative to. When round-off leaves no region (a grazing
+    /// contact) the answer is <see cref="Grazing"/> for the contact <paramref name="normal"/>
+    /// (unit, from b toward a).
     /// </summary>
-    public static Vector2 IntersectionCentroid(in ConvexView a, in ConvexView b, Vector2 origin, Vector2 fallback)
+    public static Vector2 IntersectionCentroid(in ConvexView a, in ConvexView b, Vector2 origin, Vector2 normal)
     {
         if (a.Vertices.Length < 3 || b.Vertices.Length < 3)
         {
-            return a.Vertices.Length <= b.Vertices.Length
-                ? FlatInside(a, b, origin, fallback)
-                : FlatInside(b, a, origin, fallback);
+            bool found = a.Vertices.Length <= b.Vertices.Length
+                ? FlatInside(a, b, origin, out Vector2 point)
+                : FlatInside(b, a, origin, out point);
+            return found ? point : Grazing(a, b, normal, origin);
         }
 
         int room = a.Vertices.Length + b.Vertices.Length + 1;
@@ -45,7 +47,35 @@ internal static class ContactRegion
             pong = swap;
         }
 
-        return n == 0 ? fallback : origin + Centroid(ping[..n]);
+        return n == 0 ? Grazing(a, b, normal, origin) : origin + Centroid(ping[..n]);
+    }
+
+    /// <summary>
+    /// The action point of a grazing contact along <paramref name="normal"/> (unit, from b toward
+    /// a): on the line midway between a's lowest and b's highest point along the normal, at the
+    /// middle (along the tangent) of the overlap of a's part below b's highest line and b's part
+    /// above a's lowest line. It lies in the contact region up to the tiny depth of the contact,
+    /// whatever the round-off, and does not depend on which shape is called a.
+    /// </summary>
+    public static Vector2 Grazing(in ConvexView a, in ConvexView b, Vector2 normal, Vector2 origin)
+    {
+        float lowA = float.PositiveInfinity, highB = float.NegativeInfinity;
+        foreach (Vector2 v in a.Vertices)
+        {
+            lowA = MathF.Min(lowA, Vector2.Dot(v - origin, normal));
+        }
+
+        foreach (Vector2 v in b.Vertices)
+        {
+            highB = MathF.Max(highB, Vector2.Dot(v - origin, normal));
+        }
+
+        // The bounding lines never cut a shape's own extreme vertex, so neither part is empty.
+        Vector2 tangent = new(-normal.Y, normal.X);
+        TangentRange(a, origin, normal, MathF.Max(highB, lowA), tangent, out float a0, out float a1);
+        TangentRange(b, origin, -normal, -MathF.Min(lowA, highB), tangent, out float b0, out float b1);
+        float t = 0.5f * (MathF.Max(a0, b0) + MathF.Min(a1, b1));
+        return origin + tangent * t + normal * (0.5f * (lowA + highB));
     }
 
     /// <summary>
@@ -126,28 +156,54 @@ internal static class ContactRegion
         return o + mean / p.Length;
     }
 
-    // The middle of the part of a point or segment `flat` that lies inside `other`.
-    private static Vector2 FlatInside(in ConvexView flat, in ConvexView other, Vector2 origin, Vector2 fallback)
+    // The middle of the part of a point or segment `flat` that lies inside `other`; false when
+    // round-off leaves no such part.
+    private static bool FlatInside(in ConvexView flat, in ConvexView other, Vector2 origin, out Vector2 point)
     {
         var fv = flat.Vertices;
         if (fv.Length == 1)
         {
-            return fv[0];
+            point = fv[0];
+            return true;
+        }
+
+        if (other.Vertices.Length == 1)
+        {
+            point = other.Vertices[0];
+            return true;
         }
 
         Vector2 a = fv[0] - origin;
         Vector2 e = fv[1] - fv[0];
         float len = e.Length();
         Vector2 u = e / len;
-        if (other.Vertices.Length == 1)
-        {
-            return other.Vertices[0];
-        }
-
         LineInterval(other, a + origin, u, out float lo, out float hi);
         lo = MathF.Max(lo, 0f);
         hi = MathF.Min(hi, len);
-        return lo <= hi ? origin + a + u * (0.5f * (lo + hi)) : fallback;
+        point = origin + a + u * (0.5f * (lo + hi));
+        return lo <= hi;
+    }
+
+    // The extent along `tangent` of the part of `view` (relative to origin) with p·n ≤ offset.
+    private static void TangentRange(in ConvexView view, Vector2 origin, Vector2 n, float offset, Vector2 tangent, out float lo, out float hi)
+    {
+        var v = view.Vertices;
+        Span<Vector2> relative = stackalloc Vector2[v.Length];
+        Span<Vector2> part = stackalloc Vector2[v.Length + 1];
+        for (int i = 0; i < v.Length; i++)
+        {
+            relative[i] = v[i] - origin;
+        }
+
+        int count = HalfPlaneClip.Clip(relative, part, n, offset);
+        lo = float.PositiveInfinity;
+        hi = float.NegativeInfinity;
+        foreach (Vector2 p in part[..count])
+        {
+            float t = Vector2.Dot(p, tangent);
+            lo = MathF.Min(lo, t);
+            hi = MathF.Max(hi, t);
+        }
     }
 
     private static void SegmentCrossing(Vector2 a, Vector2 b, Vector2 p, Vector2 u, out float lo, out float hi)

@@ -26,9 +26,7 @@ internal static class ConvexSat
             return CollisionDetectionResult.None;
         }
 
-        // Fallback for grazing contacts lost to round-off: a's deepest point, moved half way out.
-        Vector2 fallback = a.Support(-normal) + normal * (0.5f * depth);
-        Vector2 point = ContactRegion.IntersectionCentroid(a, b, origin, fallback);
+        Vector2 point = ContactRegion.IntersectionCentroid(a, b, origin, normal);
         return CollisionDetectionResult.FromPlane(normal, depth, point);
     }
 

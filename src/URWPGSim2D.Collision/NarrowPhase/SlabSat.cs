@@ -39,19 +39,12 @@ internal static class SlabSat
             }
         }
 
-        Span<Vector2> region = stackalloc Vector2[12];
-        int n = KDop8Vertices.Compute(Vector4.Max(minA, minB), Vector4.Min(maxA, maxB), region);
-        Vector2 point = n > 0
-            ? ContactRegion.Centroid(region[..n])
+        Vector2 point = KDop8Vertices.RegionCentroid(Vector4.Max(minA, minB), Vector4.Min(maxA, maxB), out Vector2 centroid)
+            ? centroid
             : new Vector2(0.5f * (MathF.Max(minA.X, minB.X) + MathF.Min(maxA.X, maxB.X)), 0.5f * (MathF.Max(minA.Y, minB.Y) + MathF.Min(maxA.Y, maxB.Y)));
         return CollisionDetectionResult.FromPlane(normal, depth, point);
     }
 
     /// <summary>The four slabs of a box: x, z, and the diagonals through its corners.</summary>
-    public static void Of(in Aabb box, out Vector4 min, out Vector4 max)
-    {
-        Vector2 lo = box.Min, hi = box.Max;
-        min = new Vector4(lo.X, lo.Y, (lo.X + lo.Y) * KDop8.Diagonal, (lo.X - hi.Y) * KDop8.Diagonal);
-        max = new Vector4(hi.X, hi.Y, (hi.X + hi.Y) * KDop8.Diagonal, (hi.X - lo.Y) * KDop8.Diagonal);
-    }
+    public static void Of(in Aabb box, out Vector4 min, out Vector4 max) => KDop8.SlabsOf(box, out min, out max);
 }

@@ -38,7 +38,7 @@ public sealed partial class Field
     /// <summary>Whether a point set (e.g. a polygon's vertices) lies wholly inside the pool; if not, the contact that brings it back.</summary>
     /// <param name="points">At least one point, mm.</param>
     /// <returns><see cref="CollisionDetectionResult.None"/> when inside, else the wall contact (its MTV moves the points).</returns>
-    /// <exception cref="ArgumentException"><paramref name="points"/> is empty.</exception>
+    /// <exception cref="ArgumentException"><paramref name="points"/> is empty or has a coordinate that is not finite.</exception>
     public CollisionDetectionResult Contain(ReadOnlySpan<Vector2> points)
     {
         if (points.IsEmpty)
@@ -47,10 +47,16 @@ public sealed partial class Field
         }
 
         Vector2 min = points[0], max = points[0];
-        for (int i = 1; i < points.Length; i++)
+        for (int i = 0; i < points.Length; i++)
         {
-            min = Vector2.Min(min, points[i]);
-            max = Vector2.Max(max, points[i]);
+            Vector2 p = points[i];
+            if (!float.IsFinite(p.X) || !float.IsFinite(p.Y))
+            {
+                throw new ArgumentException($"points[{i}] must have finite coordinates, got [{p.X}, {p.Y}]", nameof(points));
+            }
+
+            min = Vector2.Min(min, p);
+            max = Vector2.Max(max, p);
         }
 
         if (!Correction(min, max, out Vector2 mtv))

@@ -19,12 +19,17 @@ public readonly struct ConvexPolygon
     // outside an edge line (round-off of float input) and still count as on it.
     private const float ConvexityTolerance = 1e-5f;
 
+    // Plus this fraction of the largest coordinate: rounding a point near 25,000 mm to float
+    // moves it by up to 0.001 mm, whatever the polygon's size.
+    private const float CoordinateTolerance = 4.8e-7f;
+
     private readonly Vector2[]? _vertices;
     private readonly Vector2[]? _normals;
 
     /// <summary>Creates a convex polygon, validating and normalising its vertices.</summary>
     /// <param name="vertices">3 to <see cref="MaxVertices"/> distinct finite points in either winding, forming a convex polygon of non-zero area.</param>
-    /// <exception cref="ArgumentException">Too few or too many vertices, a non-finite coordinate, a repeated vertex, all vertices collinear, or a polygon that is not convex.</exception>
+    /// <exception cref="ArgumentException">Too few or too many vertices, a non-finite coordinate, a repeated vertex, all vertices collinear, or a polygon that is not convex (including self-intersecting outlines).</exception>
+    /// <remarks>A vertex may lie outside the line of an edge by 10⁻⁵ of the polygon's size plus 4.8·10⁻⁷ of the largest coordinate (float resolution) and still count as convex.</remarks>
     public ConvexPolygon(ReadOnlySpan<Vector2> vertices)
     {
         const string param = nameof(vertices);
@@ -51,19 +56,20 @@ public readonly struct ConvexPolygon
         }
 
         var v = vertices.ToArray();
-        float area2 = SignedArea2(v);
-        float size = Size(v);
-        if (MathF.Abs(area2) <= ConvexityTolerance * size * size)
+        float tolerance = ConvexityTolerance * Size(v) + CoordinateTolerance * MaxAbsCoordinate(v);
+        if (AreCollinear(v, tolerance))
         {
             throw new ArgumentException("polygon is degenerate: its vertices are collinear", param);
         }
 
-        if (area2 < 0f)
+        // A self-intersecting outline (a bow-tie) has an area near 0 of either sign: whichever
+        // way it is turned, the convexity check rejects it.
+        if (SignedArea2(v) < 0f)
         {
             Array.Reverse(v);
         }
 
-        if (!IsConvex(v, ConvexityTolerance * size))
+        if (!IsConvex(v, tolerance))
         {
             throw new ArgumentException("polygon is not convex", param);
         }
@@ -143,6 +149,53 @@ public readonly struct ConvexPolygon
         }
 
         return MathF.Max(hi.X - lo.X, hi.Y - lo.Y);
+    }
+
+    private static float MaxAbsCoordinate(ReadOnlySpan<Vector2> v)
+    {
+        float m = 0f;
+        foreach (var p in v)
+        {
+            m = MathF.Max(m, MathF.Max(MathF.Abs(p.X), MathF.Abs(p.Y)));
+        }
+
+        return m;
+    }
+
+    // Every vertex within `tolerance` of the line through two vertices that are farthest apart
+    // (p: farthest from v[0]; q: farthest from p).
+    private static bool AreCollinear(ReadOnlySpan<Vector2> v, float tolerance)
+    {
+        Vector2 p = Farthest(v, v[0]);
+        Vector2 q = Farthest(v, p);
+        Vector2 d = q - p;
+        float len = d.Length();
+        foreach (var r in v)
+        {
+            if (MathF.Abs(XZPlane.Cross(d, r - p)) > tolerance * len)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static Vector2 Farthest(ReadOnlySpan<Vector2> v, Vector2 from)
+    {
+        Vector2 best = from;
+        float bestD = -1f;
+        foreach (var p in v)
+        {
+            float d = Vector2.DistanceSquared(p, from);
+            if (d > bestD)
+            {
+                bestD = d;
+                best = p;
+            }
+        }
+
+        return best;
     }
 
     private static Vector2 VertexMean(ReadOnlySpan<Vector2> v)

@@ -12,9 +12,12 @@ namespace URWPGSim2D.Collision.Shapes;
 /// </summary>
 /// <remarks>
 /// On construction the slabs are tightened so that every slab touches the shape (a redundant
-/// slab is moved in), which makes the projection of the shape on axis i exactly
-/// [<see cref="GetMin"/>, <see cref="GetMax"/>]. The vertices are kept inline: no heap.
-/// A flat or single-point 8-DOP (min = max on some axis) is allowed.
+/// slab is moved in, rounded outward to float), which makes the projection of the shape on axis
+/// i [<see cref="GetMin"/>, <see cref="GetMax"/>]. The polygon is computed in double precision
+/// and each vertex rounded to the nearest float; every edge carries the exact normal of its slab.
+/// Slabs computed from points (<see cref="FromPoints"/>, <see cref="FromAabb"/>,
+/// <see cref="Translated"/>) are rounded outward, so the points stay inside. The vertices are
+/// kept inline: no heap. A flat or single-point 8-DOP (min = max on some axis) is allowed.
 /// </remarks>
 public readonly struct KDop8
 {
@@ -101,9 +104,7 @@ public readonly struct KDop8
     /// <returns>The same region as an 8-DOP.</returns>
     public static KDop8 FromAabb(in Aabb box)
     {
-        Span<Vector2> corners = stackalloc Vector2[4];
-        box.WriteVertices(corners);
-        Slabs(corners, out Vector4 min, out Vector4 max);
+        SlabsOf(box, out Vector4 min, out Vector4 max);
         return Build(min, max);
     }
 
@@ -151,12 +152,19 @@ public readonly struct KDop8
 
     /// <summary>This 8-DOP moved by <paramref name="offset"/> mm.</summary>
     /// <param name="offset">Translation in mm.</param>
-    /// <returns>The translated 8-DOP.</returns>
+    /// <returns>The translated 8-DOP; each slab value is computed in double and rounded outward, so it may grow by one float ulp.</returns>
     public KDop8 Translated(Vector2 offset)
     {
         Guard.Finite(offset, nameof(offset));
-        Vector4 d = Project(offset);
-        return Build(_min + d, _max + d);
+        Vector4 min = default, max = default;
+        for (int i = 0; i < 4; i++)
+        {
+            double d = KDop8Vertices.Project(offset.X, offset.Y, i);
+            min[i] = KDop8Vertices.RoundDown(_min[i] + d);
+            max[i] = KDop8Vertices.RoundUp(_max[i] + d);
+        }
+
+        return Build(min, max);
     }
 
     internal Vector4 MinSlabs => _min;
@@ -168,38 +176,46 @@ public readonly struct KDop8
     internal ConvexView View() =>
         new(Vertices, ((ReadOnlySpan<Vector2>)_normals)[..(_count >= 2 ? _count : 0)], SatAxes);
 
-    /// <summary>p·a₀..a₃ of one point.</summary>
-    internal static Vector4 Project(Vector2 p) => new(p.X, p.Y, (p.X + p.Y) * Diagonal, (p.X - p.Y) * Diagonal);
-
     /// <summary>Open-interval overlap on all four axes.</summary>
     internal static bool SlabsOverlap(Vector4 minA, Vector4 maxA, Vector4 minB, Vector4 maxB) =>
         Vector4.LessThanAll(minA, maxB) && Vector4.LessThanAll(minB, maxA);
 
-    /// <summary>The slab bounds of a point set.</summary>
+    /// <summary>
+    /// The slab bounds of a point set: p·aᵢ computed in double and rounded outward to float, so
+    /// that every point lies inside (the diagonal projections are irrational).
+    /// </summary>
     internal static void Slabs(ReadOnlySpan<Vector2> points, out Vector4 min, out Vector4 max)
     {
-        min = max = Project(points[0]);
-        for (int i = 1; i < points.Length; i++)
+        min = max = default;
+        for (int i = 0; i < 4; i++)
         {
-            Vector4 p = Project(points[i]);
-            min = Vector4.Min(min, p);
-            max = Vector4.Max(max, p);
+            double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
+            foreach (Vector2 p in points)
+            {
+                double d = KDop8Vertices.Project(p.X, p.Y, i);
+                lo = Math.Min(lo, d);
+                hi = Math.Max(hi, d);
+            }
+
+            min[i] = KDop8Vertices.RoundDown(lo);
+            max[i] = KDop8Vertices.RoundUp(hi);
         }
+    }
+
+    /// <summary>The four slabs of a box: x, z, and the diagonals through its corners (rounded outward).</summary>
+    internal static void SlabsOf(in Aabb box, out Vector4 min, out Vector4 max)
+    {
+        Vector2 lo = box.Min, hi = box.Max;
+        min = new Vector4(lo.X, lo.Y, KDop8Vertices.RoundDown(KDop8Vertices.Project(lo.X, lo.Y, 2)), KDop8Vertices.RoundDown(KDop8Vertices.Project(lo.X, hi.Y, 3)));
+        max = new Vector4(hi.X, hi.Y, KDop8Vertices.RoundUp(KDop8Vertices.Project(hi.X, hi.Y, 2)), KDop8Vertices.RoundUp(KDop8Vertices.Project(hi.X, lo.Y, 3)));
     }
 
     /// <summary>Builds the tight 8-DOP of the slab intersection; count 0 when it is empty.</summary>
     internal static KDop8 Build(Vector4 min, Vector4 max)
     {
         var vertices = default(VertexBuffer8);
-        int count = KDop8Vertices.Compute(min, max, vertices);
-        if (count == 0)
-        {
-            return new KDop8(min, max, vertices, default, 0);
-        }
-
-        Slabs(((ReadOnlySpan<Vector2>)vertices)[..count], out Vector4 tightMin, out Vector4 tightMax);
         var normals = default(VertexBuffer8);
-        KDop8Vertices.EdgeNormals(((ReadOnlySpan<Vector2>)vertices)[..count], normals);
+        int count = KDop8Vertices.Compute(min, max, vertices, normals, out Vector4 tightMin, out Vector4 tightMax);
         return new KDop8(tightMin, tightMax, vertices, normals, count);
     }
 }

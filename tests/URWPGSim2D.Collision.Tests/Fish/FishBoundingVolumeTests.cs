@@ -58,6 +58,36 @@ public class FishBoundingVolumeTests
     }
 
     [Fact]
+    public void EnclosingCircleSearchIsExactOnAwkwardPointSets()
+    {
+        var rng = new Random(24);
+        for (int trial = 0; trial < 3000; trial++)
+        {
+            int n = rng.Next(1, 20);
+            var points = new Vector2[n];
+            for (int i = 0; i < n; i++)
+            {
+                points[i] = (trial % 4) switch
+                {
+                    0 => FishTestKit.Point(rng, 300f) + new Vector2(1000f, -700f),
+                    1 => new Vector2(FishTestKit.Range(rng, -200f, 200f), 5f) * new Vector2(1f, (float)rng.Next(0, 2)), // collinear or two rows
+                    2 => i > 0 && rng.Next(3) == 0 ? points[rng.Next(i)] : FishTestKit.Point(rng, 50f), // repeats
+                    _ => 100f * new Vector2(MathF.Cos(i * 2f * MathF.PI / n), MathF.Sin(i * 2f * MathF.PI / n)), // co-circular
+                };
+            }
+
+            var circle = EnclosingCircle.Minimum(points);
+            foreach (var p in points)
+            {
+                Assert.True(Dist(p, circle.Center.X, circle.Center.Y) <= circle.Radius, $"trial {trial}: a point is outside");
+            }
+
+            double exact = n == 1 ? 0 : ExhaustiveMinimumRadius(points);
+            Assert.True(circle.Radius <= (exact * (1 + 1e-4)) + 1e-2, $"trial {trial}: radius {circle.Radius} vs minimum {exact}");
+        }
+    }
+
+    [Fact]
     public void OriginalRadiiWouldMissTheCaudalTipsButOursDoNot()
     {
         // The reference notes the original's root radius (L + L1 + L2 + L3)/2 = 184 does not reach

@@ -68,6 +68,9 @@ public class FieldContainmentTests
         Assert.False(_field.Contain([new Vector2(0f, 0f), new Vector2(1500f, 1000f)]).Intersect);
         var e = Assert.Throws<ArgumentException>(() => _field.Contain(ReadOnlySpan<Vector2>.Empty));
         Assert.Equal("points", e.ParamName);
+        e = Assert.Throws<ArgumentException>(() => _field.Contain([Vector2.Zero, new Vector2(float.NaN, 1f)]));
+        Assert.Equal("points", e.ParamName);
+        Assert.Contains("points[1]", e.Message, StringComparison.Ordinal);
     }
 
     [Fact]
