@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.Geometry;
@@ -39,7 +40,9 @@ internal static class Slabs
     public static void OfCircle(in Circle c, out Vector4 min, out Vector4 max)
     {
         Vector4 p = KDop8.Project(c.Center);
-        var r = new Vector4(c.Radius);
+
+        // Padded by a few float steps of the coordinates so rounding of p can never make it tighter than the disc.
+        var r = new Vector4(c.Radius + 5e-7f * (MathF.Abs(c.Center.X) + MathF.Abs(c.Center.Y)));
         min = p - r;
         max = p + r;
     }

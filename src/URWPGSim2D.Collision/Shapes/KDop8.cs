@@ -176,6 +176,9 @@ public readonly struct KDop8
     internal ConvexView View() =>
         new(Vertices, ((ReadOnlySpan<Vector2>)_normals)[..(_count >= 2 ? _count : 0)], SatAxes);
 
+    /// <summary>p·a₀..a₃ of one point in float (for conservative pre-tests; exact slabs use double).</summary>
+    internal static Vector4 Project(Vector2 p) => new(p.X, p.Y, (p.X + p.Y) * Diagonal, (p.X - p.Y) * Diagonal);
+
     /// <summary>Open-interval overlap on all four axes.</summary>
     internal static bool SlabsOverlap(Vector4 minA, Vector4 maxA, Vector4 minB, Vector4 maxB) =>
         Vector4.LessThanAll(minA, maxB) && Vector4.LessThanAll(minB, maxA);
