@@ -32,6 +32,7 @@ internal sealed class CliApp
     /// <summary>Every command of the program, in the order <c>--help</c> lists them. Register new commands here.</summary>
     public static IReadOnlyList<ICliCommand> DefaultCommands { get; } =
     [
+        new RunCommand(),
         new CollideCommand(),
     ];
 
@@ -122,13 +123,18 @@ internal sealed class CliApp
     }
 
     /// <summary>
-    /// What an empty command line does. This is the single place where the default command will
-    /// be wired: the <c>run</c> command (a simulated match) becomes the default once it exists.
-    /// Until then an empty command line prints the help to stderr and fails.
+    /// What an empty command line does: the <c>run</c> command with no arguments (the embedded
+    /// default match). A command line without a <c>run</c> command prints the help to stderr and fails.
     /// </summary>
     private int RunWithoutArguments(CliConsole console)
     {
-        console.Error.Write(HelpText());
-        return ExitCodes.BadInput;
+        ICliCommand? run = Array.Find(_commands, c => c.Name == "run");
+        if (run is null)
+        {
+            console.Error.Write(HelpText());
+            return ExitCodes.BadInput;
+        }
+
+        return run.Run(ReadOnlySpan<string>.Empty, console);
     }
 }

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: collide; --help for details)";
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide; --help for details)";
     private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
 
     [Theory]
@@ -21,8 +21,9 @@ public sealed class CliAppTests
         Assert.Equal(0, run.ExitCode);
         Assert.Equal(string.Empty, run.Stderr);
         Assert.StartsWith("URWPGSim2D.Server: command-line front end", run.Stdout, StringComparison.Ordinal);
-        Assert.Contains("  URWPGSim2D.Server collide FILE  Test pairs of shapes", run.Stdout, StringComparison.Ordinal);
-        Assert.Contains("  URWPGSim2D.Server --help        Show this help.", run.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"\n  URWPGSim2D\.Server run \[--scenario FILE\] \[options\] +Play a match", run.Stdout);
+        Assert.Matches(@"\n  URWPGSim2D\.Server collide FILE +Test pairs of shapes", run.Stdout);
+        Assert.Matches(@"\n  URWPGSim2D\.Server --help +Show this help\.", run.Stdout);
         Assert.Contains("Exit codes: 0 success; 2 bad input", run.Stdout, StringComparison.Ordinal);
         Assert.EndsWith("\n", run.Stdout, StringComparison.Ordinal);
     }
@@ -44,13 +45,29 @@ public sealed class CliAppTests
     }
 
     [Fact]
-    public void NoArgumentsPrintsTheHelpToStderrAndFails()
+    public void NoArgumentsRunsTheRunCommandWithNoArguments()
     {
-        var run = CliRun.Of(string.Empty);
+        var run = new ProbeCommand { NameValue = "run", Received = ["not called"] };
+        var app = new CliApp([new ProbeCommand(), run]);
 
-        Assert.Equal(2, run.ExitCode);
-        Assert.Equal(string.Empty, run.Stdout);
-        Assert.Equal(CliRun.Of(string.Empty, "--help").Stdout, run.Stderr);
+        int code = app.Run([], Streams(out var stdout, out var stderr));
+
+        Assert.Equal(7, code);
+        Assert.Empty(run.Received);
+        Assert.Equal("probe ran\n", stdout.ToString());
+        Assert.Equal(string.Empty, stderr.ToString());
+    }
+
+    [Fact]
+    public void NoArgumentsWithoutARunCommandPrintsTheHelpToStderrAndFails()
+    {
+        var app = new CliApp([new ProbeCommand()]);
+
+        int code = app.Run([], Streams(out var stdout, out var stderr));
+
+        Assert.Equal(2, code);
+        Assert.Equal(string.Empty, stdout.ToString());
+        Assert.StartsWith("URWPGSim2D.Server: command-line front end", stderr.ToString(), StringComparison.Ordinal);
     }
 
     [Theory]
@@ -129,7 +146,7 @@ public sealed class CliAppTests
 
         public Exception? Failure { get; init; }
 
-        public string[] Received { get; private set; } = [];
+        public string[] Received { get; set; } = [];
 
         public string Name => NameValue;
 

@@ -1,0 +1,65 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>The end-of-match summary printed by <c>run</c>.</summary>
+internal static class MatchSummary
+{
+    private static readonly string[] KindNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
+
+    /// <summary>Formats the summary (several lines, ending in a newline).</summary>
+    public static string Format(Match match, TimeSpan wall)
+    {
+        var c = CultureInfo.InvariantCulture;
+        var stats = match.Statistics;
+        double simulated = stats.Cycles * 0.1;
+        double seconds = Math.Max(wall.TotalSeconds, 1e-9);
+        var s = new StringBuilder();
+        s.Append(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle)\n");
+        s.Append(c, $"goals: team 0 ({TeamLabel(match, 0)}) {match.World.Goals[0]}, team 1 ({TeamLabel(match, 1)}) {match.World.Goals[1]}\n");
+        s.Append("contacts:");
+        var byKind = match.Contacts.ByKind;
+        for (int k = 0; k < byKind.Length; k++)
+        {
+            s.Append(c, $" {KindNames[k]} {byKind[k]}").Append(k + 1 < byKind.Length ? "," : "\n");
+        }
+
+        s.Append(c, $"sub-steps: {stats.SubSteps} (at most {stats.MostSubSteps} in one cycle), contact events: {stats.Events}\n");
+        s.Append(c, $"largest leftover overlap: {stats.LargestLeftoverOverlap:0.000} mm");
+        s.Append(stats.LargestLeftoverCycle > 0 ? string.Create(c, $" (cycle {stats.LargestLeftoverCycle})\n") : "\n");
+        s.Append("strategy faults:");
+        bool any = false;
+        foreach (var slot in match.Strategies.Slots)
+        {
+            if (slot.Exceptions + slot.Timeouts == 0)
+            {
+                continue;
+            }
+
+            any = true;
+            s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts; its fish kept their last decisions; first: {slot.FirstFault}");
+        }
+
+        s.Append(any ? "\n" : " none\n");
+        return s.ToString();
+    }
+
+    /// <summary>The strategy labels of a team, joined.</summary>
+    public static string TeamLabel(Match match, int team)
+    {
+        var labels = new List<string>();
+        foreach (var slot in match.Strategies.Slots)
+        {
+            if (slot.Team == team && !labels.Contains(slot.Label))
+            {
+                labels.Add(slot.Label);
+            }
+        }
+
+        return labels.Count == 0 ? "no fish" : string.Join("+", labels);
+    }
+}

@@ -1,0 +1,112 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>The parsed arguments of <c>run</c>.</summary>
+internal sealed class RunOptions
+{
+    /// <summary>The command's synopsis in the program's help.</summary>
+    public const string Synopsis = "run [--scenario FILE] [options]";
+
+    /// <summary>The command's full usage.</summary>
+    public const string Usage = "run [--scenario FILE] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE]";
+
+    /// <summary>Scenario file, or null for the embedded default match.</summary>
+    public string? Scenario { get; private set; }
+
+    /// <summary>Cycle count override.</summary>
+    public int? Cycles { get; private set; }
+
+    /// <summary>Seed override.</summary>
+    public ulong? Seed { get; private set; }
+
+    /// <summary>Noise override.</summary>
+    public bool? Noise { get; private set; }
+
+    /// <summary>Trace output file.</summary>
+    public string? Trace { get; private set; }
+
+    /// <summary>SVG output file.</summary>
+    public string? Svg { get; private set; }
+
+    /// <summary>Per team (0, 1), a strategy assembly spec or null.</summary>
+    public string?[] Strategies { get; } = new string?[2];
+
+    /// <summary>Time limit of a loaded strategy per cycle, ms.</summary>
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+
+    /// <summary>Whether --help was given.</summary>
+    public bool Help { get; private set; }
+
+    /// <summary>Parses the arguments after "run".</summary>
+    public static RunOptions Parse(ReadOnlySpan<string> args)
+    {
+        var o = new RunOptions();
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        for (int i = 0; i < args.Length; i++)
+        {
+            string name = args[i];
+            if (name is "--help" or "-h")
+            {
+                o.Help = true;
+                continue;
+            }
+
+            if (!name.StartsWith("--", StringComparison.Ordinal))
+            {
+                throw UsageError($"unexpected argument {CliText.Quote(name)}");
+            }
+
+            if (i + 1 >= args.Length)
+            {
+                throw UsageError($"{name} needs a value");
+            }
+
+            string value = args[++i];
+            if (name != "--strategy" && !seen.Add(name))
+            {
+                throw UsageError($"{name} given twice");
+            }
+
+            switch (name)
+            {
+                case "--scenario": o.Scenario = value; break;
+                case "--trace": o.Trace = value; break;
+                case "--svg": o.Svg = value; break;
+                case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
+                case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
+                case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
+                case "--noise":
+                    o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {CliText.Quote(value)}") };
+                    break;
+                case "--strategy":
+                    int eq = value.IndexOf('=', StringComparison.Ordinal);
+                    if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
+                    {
+                        throw UsageError($"--strategy must be TEAM=PATH with TEAM 0 or 1, got {CliText.Quote(value)}");
+                    }
+
+                    o.Strategies[value[0] - '0'] = value[(eq + 1)..];
+                    break;
+                default:
+                    throw UsageError($"unknown option {CliText.Quote(name)}");
+            }
+        }
+
+        return o;
+    }
+
+    private static long Number(string name, string value, long min, long max)
+    {
+        if (!long.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out long v) || v < min || v > max)
+        {
+            throw UsageError($"{name} must be an integer {min}..{max}, got {CliText.Quote(value)}");
+        }
+
+        return v;
+    }
+
+    private static CliUsageException UsageError(string message) => new("run: " + message, CliApp.ProgramName + " " + Usage);
+}

@@ -1,0 +1,103 @@
+using System;
+using System.Collections.Generic;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Strategies;
+
+namespace URWPGSim2D.Server.Scenario;
+
+/// <summary>
+/// Builds a ready-to-play <see cref="Match"/> from a scenario: the field, fish (deployed sizes),
+/// balls, obstacles (indices as in the file; goal blocks follow the obstacles as static bodies) and
+/// the strategy slots: a team strategy takes all of that team's fish, otherwise each fish runs the
+/// built-in strategy its scenario entry names.
+/// </summary>
+internal static class MatchBuilder
+{
+    /// <summary>Default time limit of an isolated strategy per cycle, ms.</summary>
+    public const int DefaultStrategyTimeoutMs = 100;
+
+    /// <summary>Builds the match.</summary>
+    /// <param name="scenario">The scenario.</param>
+    /// <param name="teamStrategies">Per team (index 0, 1): a strategy that replaces the scenario's, or null.</param>
+    /// <param name="seed">Seed override, or null for the scenario's.</param>
+    /// <param name="noise">Noise override, or null for the scenario's.</param>
+    /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs)
+    {
+        var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
+        var fish = new FishState[scenario.Fish.Count];
+        for (int i = 0; i < fish.Length; i++)
+        {
+            var d = scenario.Fish[i];
+            fish[i] = new FishState(i, d.Team, FishSize.Default, d.Position, d.Heading);
+        }
+
+        var balls = new BallState[scenario.Balls.Count];
+        for (int i = 0; i < balls.Length; i++)
+        {
+            var d = scenario.Balls[i];
+            balls[i] = new BallState(i, d.Radius, d.Position, d.Velocity);
+        }
+
+        var views = new ObstacleView[scenario.Obstacles.Count];
+        var statics = new StaticBody[scenario.Obstacles.Count + field.GoalBlocks.Length];
+        for (int i = 0; i < views.Length; i++)
+        {
+            var o = scenario.Obstacles[i];
+            views[i] = new ObstacleView(i, o.Kind, o.Center, o.Length, o.Width, o.Heading, o.Radius);
+            statics[i] = o.Kind == ObstacleKind.Round
+                ? StaticBody.Round(i, o.Center, o.Radius)
+                : StaticBody.Rectangle(i, o.Center, o.Length, o.Width, o.Heading);
+        }
+
+        for (int g = 0; g < field.GoalBlocks.Length; g++)
+        {
+            statics[views.Length + g] = StaticBody.GoalBlock(g, field.GoalBlocks[g]);
+        }
+
+        var world = new World(field, fish, balls, views, statics);
+        var host = new StrategyHost(Slots(scenario, teamStrategies ?? new TeamStrategy?[2]), strategyTimeoutMs);
+        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed);
+    }
+
+    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams)
+    {
+        var slots = new List<StrategySlot>();
+        var teamDone = new bool[2];
+        for (int i = 0; i < scenario.Fish.Count; i++)
+        {
+            var d = scenario.Fish[i];
+            TeamStrategy? team = d.Team < teams.Length ? teams[d.Team] : null;
+            if (team is null)
+            {
+                slots.Add(new StrategySlot(d.Strategy, BuiltIn(d), d.Team, [i], isolated: false));
+            }
+            else if (!teamDone[d.Team])
+            {
+                teamDone[d.Team] = true;
+                var members = new List<int>();
+                for (int j = 0; j < scenario.Fish.Count; j++)
+                {
+                    if (scenario.Fish[j].Team == d.Team)
+                    {
+                        members.Add(j);
+                    }
+                }
+
+                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, members.ToArray(), team.Isolated));
+            }
+        }
+
+        return slots.ToArray();
+    }
+
+    private static IStrategy BuiltIn(FishDefinition d) => d.Strategy switch
+    {
+        "idle" => new IdleStrategy(),
+        "chase-ball" => new ChaseBallStrategy(),
+        "fixed" => new FixedDecisionStrategy(d.Decision),
+        _ => throw new ArgumentException($"unknown built-in strategy \"{d.Strategy}\"", nameof(d)),
+    };
+}

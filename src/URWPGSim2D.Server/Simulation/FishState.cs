@@ -1,0 +1,197 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Shapes;
+using URWPGSim2D.Server.Simulation.Kinematics;
+using URWPGSim2D.Server.Strategies;
+
+namespace URWPGSim2D.Server.Simulation;
+
+/// <summary>
+/// One fish: team, size, pose (position, heading, three joint angles), the speed and angular-speed
+/// approach state, the decision it executes and its collision model. Within a cycle the stepper
+/// moves it with <see cref="Velocity"/> (+ noise) and <see cref="AngularVelocity"/>; contacts may change
+/// both for the rest of the cycle (the swimming speed and turn rate are not changed by contacts).
+/// </summary>
+internal sealed class FishState
+{
+    public FishState(int index, int team, FishSize size, Vector2 position, float heading)
+    {
+        Index = index;
+        Team = team;
+        Size = size;
+        Position = position;
+        Heading = Angles.Wrap(heading);
+        Model = new FishModel(size, new FishPose(position, Heading, 0f, 0f, 0f));
+        BasePosition = position;
+        BaseHeading = Heading;
+        Decision = Decision.Stop;
+        Turn.Reset(0f);
+        Speed.Reset(0f);
+    }
+
+    /// <summary>Index (fishN).</summary>
+    public int Index { get; }
+
+    /// <summary>Team 0 or 1.</summary>
+    public int Team { get; }
+
+    /// <summary>Body and tail sizes.</summary>
+    public FishSize Size { get; }
+
+    /// <summary>Collision model, kept at the current pose.</summary>
+    public FishModel Model { get; }
+
+    /// <summary>Centre of the body rectangle, mm.</summary>
+    public Vector2 Position;
+
+    /// <summary>Heading, rad, wrapped to [−π, π).</summary>
+    public float Heading;
+
+    /// <summary>Joint angles φ1..φ3 from the body axis, rad (fixed for the whole cycle).</summary>
+    public float Joint1, Joint2, Joint3;
+
+    /// <summary>Forward speed along the heading, mm/s, and its one-tenth approach.</summary>
+    public GearApproach Speed;
+
+    /// <summary>Angular speed, rad/s, and its one-tenth approach.</summary>
+    public GearApproach Turn;
+
+    /// <summary>The decision being executed.</summary>
+    public Decision Decision;
+
+    /// <summary>Physical velocity inside the current cycle, mm/s.</summary>
+    public Vector2 Velocity;
+
+    /// <summary>Angular velocity inside the current cycle, rad/s (includes collision spin).</summary>
+    public float AngularVelocity;
+
+    /// <summary>This cycle's noise drift of position (mm/s) and heading (rad/s).</summary>
+    public Vector2 NoiseVelocity;
+
+    /// <summary>This cycle's heading noise as a rate, rad/s.</summary>
+    public float NoiseAngularVelocity;
+
+    /// <summary>Pose at the start of the cycle (the last cycle's resolved end), restored by <see cref="Freeze"/>.</summary>
+    public Vector2 StartPosition;
+
+    /// <summary>Heading at the start of the cycle.</summary>
+    public float StartHeading;
+
+    /// <summary>Joint angles at the start of the cycle.</summary>
+    public float StartJoint1, StartJoint2, StartJoint3;
+
+    /// <summary>Position corrections this fish has had in the current cycle.</summary>
+    public int Corrections;
+
+    /// <summary>
+    /// True when this cycle's move was rejected: the fish is back at its start pose and holds still
+    /// (it counts as immovable in contacts) for the rest of the cycle.
+    /// </summary>
+    public bool Frozen;
+
+    /// <summary>Pose at the stepper's last committed time.</summary>
+    public Vector2 BasePosition;
+
+    /// <summary>Heading at the stepper's last committed time.</summary>
+    public float BaseHeading;
+
+    /// <summary>Forward unit vector u = (cos θ, sin θ).</summary>
+    public Vector2 Forward => new(MathF.Cos(Heading), MathF.Sin(Heading));
+
+    /// <summary>Thinnest feature of this fish: the end of tail segment 3 (2·0.089964·L3), mm.</summary>
+    public float Thickness => MathF.Min(2f * 0.089964f * Size.Joint3, Size.Width);
+
+    /// <summary>
+    /// Farthest any point of the fish can be from its centre at any joint angles, mm: the tail chain
+    /// plus the caudal fin (tips 2·L3 back along segment 3 and 50 mm aside), or the head or a pectoral fin tip.
+    /// </summary>
+    public float MaxReach => MathF.Max(HeadReach, (Size.Length * 0.5f) + Size.Joint1 + Size.Joint2 + (2f * Size.Joint3) + 50f) + 1f;
+
+    /// <summary>Distance along the axis from the centre to the head tip, mm.</summary>
+    public float HeadReach => (Size.Length * 0.5f) + Size.Head;
+
+    /// <summary>Remembers the current pose as the cycle's start pose and clears the per-cycle flags.</summary>
+    public void BeginCycle()
+    {
+        StartPosition = Position;
+        StartHeading = Heading;
+        StartJoint1 = Joint1;
+        StartJoint2 = Joint2;
+        StartJoint3 = Joint3;
+        Corrections = 0;
+        Frozen = false;
+    }
+
+    /// <summary>
+    /// Rejects this cycle's move: back to the start pose (position, heading and joints), no motion
+    /// for the rest of the cycle. Used when contacts cannot be resolved by moving the fish (it is
+    /// wedged, e.g. its tail pose does not fit between two walls).
+    /// </summary>
+    public void Freeze()
+    {
+        Position = StartPosition;
+        Heading = StartHeading;
+        Joint1 = StartJoint1;
+        Joint2 = StartJoint2;
+        Joint3 = StartJoint3;
+        Velocity = Vector2.Zero;
+        AngularVelocity = 0f;
+        NoiseVelocity = Vector2.Zero;
+        NoiseAngularVelocity = 0f;
+        Frozen = true;
+        Invalidate();
+    }
+
+    /// <summary>Whether <see cref="Model"/> lags behind the pose fields (it is rebuilt only when a test needs it).</summary>
+    public bool ModelStale { get; private set; }
+
+    /// <summary>The collision model at the current pose (rebuilt first if stale).</summary>
+    public FishModel PosedModel
+    {
+        get
+        {
+            if (ModelStale)
+            {
+                SyncModel();
+            }
+
+            return Model;
+        }
+    }
+
+    /// <summary>Rebuilds the collision model at the current position, heading and joints.</summary>
+    public void SyncModel()
+    {
+        Model.SetPose(new FishPose(Position, Heading, Joint1, Joint2, Joint3));
+        ModelStale = false;
+    }
+
+    /// <summary>Marks the pose fields as changed; the model is rebuilt when next needed.</summary>
+    public void Invalidate() => ModelStale = true;
+
+    /// <summary>
+    /// A circle enclosing the fish at its current pose without rebuilding the model: the model's
+    /// root circle moved by the position change since the model was built, grown by the arc its
+    /// farthest point sweeps for the heading change ; after a joint change, the circle of
+    /// <see cref="MaxReach"/> around the centre.
+    /// </summary>
+    public Circle Bound()
+    {
+        Circle root = Model.Root;
+        if (!ModelStale)
+        {
+            return root;
+        }
+
+        FishPose posed = Model.Pose;
+        if (posed.Joint1 != Joint1 || posed.Joint2 != Joint2 || posed.Joint3 != Joint3)
+        {
+            return new Circle(Position, MaxReach);
+        }
+
+        float reach = Vector2.Distance(root.Center, posed.Position) + root.Radius;
+        float turn = MathF.Abs(Angles.Wrap(Heading - posed.Heading));
+        return new Circle(root.Center + (Position - posed.Position), root.Radius + (turn * reach));
+    }
+}

@@ -1,0 +1,102 @@
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Server.Strategies;
+
+namespace URWPGSim2D.Server.Simulation;
+
+/// <summary>
+/// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
+/// read-only snapshot of the last cycle → fish locomotion → ball locomotion → motion with collision
+/// detection and response (<see cref="Stepper"/>) → rules (goals). Everything iterates by index;
+/// the noise generators are seeded, so the same scenario and seed replay the same match. After the
+/// first cycles a step allocates nothing (built-in strategies).
+/// </summary>
+internal sealed class Match
+{
+    private readonly SeededRandom? _motionNoise;
+    private readonly SeededRandom? _viewNoise;
+
+    public Match(World world, StrategyHost strategies, bool noise, ulong seed)
+    {
+        World = world;
+        Strategies = strategies;
+        Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
+        Stepper = new Stepper(world, Contacts);
+        if (noise)
+        {
+            _motionNoise = new SeededRandom(seed);
+            _viewNoise = new SeededRandom(seed ^ 0x5DEECE66DUL);
+        }
+    }
+
+    /// <summary>The pool and its bodies.</summary>
+    public World World { get; }
+
+    /// <summary>The strategies.</summary>
+    public StrategyHost Strategies { get; }
+
+    /// <summary>What strategies see.</summary>
+    public MatchSnapshot Snapshot { get; }
+
+    /// <summary>The contacts of the last cycle and the match's counts.</summary>
+    public ContactLog Contacts { get; } = new();
+
+    /// <summary>Motion interpolation and contact handling.</summary>
+    public Stepper Stepper { get; }
+
+    /// <summary>Every goal so far.</summary>
+    public List<GoalEvent> Goals { get; } = new(64);
+
+    /// <summary>Totals for the summary.</summary>
+    public MatchStatistics Statistics { get; } = new();
+
+    /// <summary>Plays one cycle.</summary>
+    public void Step()
+    {
+        FillSnapshot();
+        Strategies.Decide(Snapshot, World.Fish);
+        Contacts.BeginCycle();
+        Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
+        Stepper.Run();
+        World.Cycle++;
+        if (Rules.Apply(World, Goals) > 0)
+        {
+            Stepper.Settle();
+        }
+
+        Locomotion.Finish(World);
+        Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+    }
+
+    private void FillSnapshot()
+    {
+        Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+        var fish = Snapshot.FishBuffer;
+        for (int i = 0; i < fish.Length; i++)
+        {
+            var f = World.Fish[i];
+            Vector2 position = f.Position;
+            float heading = f.Heading;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+                heading = Angles.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
+            }
+
+            fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision);
+        }
+
+        var balls = Snapshot.BallBuffer;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            var b = World.Balls[i];
+            Vector2 position = b.Position;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+            }
+
+            balls[i] = new BallView(i, position, b.Velocity, b.Radius);
+        }
+    }
+}

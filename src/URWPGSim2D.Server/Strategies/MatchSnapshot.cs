@@ -1,0 +1,67 @@
+using System;
+
+namespace URWPGSim2D.Server.Strategies;
+
+/// <summary>
+/// The read-only picture of the match that strategies decide from: the state at the end of the
+/// last cycle (with the reference's observation noise when the match has noise on). The same
+/// instance is refilled every cycle; do not keep references to its spans across cycles.
+/// </summary>
+public sealed class MatchSnapshot
+{
+    private readonly FishView[] _fish;
+    private readonly BallView[] _balls;
+    private readonly ObstacleView[] _obstacles;
+    private readonly int[] _goals = new int[2];
+
+    internal MatchSnapshot(int fishCount, int ballCount, ObstacleView[] obstacles, float fieldLength, float fieldWidth)
+    {
+        _fish = new FishView[fishCount];
+        _balls = new BallView[ballCount];
+        _obstacles = obstacles;
+        FieldLength = fieldLength;
+        FieldWidth = fieldWidth;
+    }
+
+    /// <summary>Cycles completed so far (0 before the first).</summary>
+    public int Cycle { get; private set; }
+
+    /// <summary>Simulated time so far, s (Cycle × 0.1).</summary>
+    public double Time => Cycle * 0.1;
+
+    /// <summary>Field length along X, mm (X from −Length/2 to +Length/2).</summary>
+    public float FieldLength { get; }
+
+    /// <summary>Field width along Z, mm (Z from −Width/2 to +Width/2).</summary>
+    public float FieldWidth { get; }
+
+    /// <summary>Goal mouth width along Z, mm (|Z| ≤ 200).</summary>
+    public float GoalWidth => 400f;
+
+    /// <summary>Goal depth along X, mm, measured inward from each end line.</summary>
+    public float GoalDepth => 150f;
+
+    /// <summary>Every fish of the match, by index.</summary>
+    public ReadOnlySpan<FishView> Fish => _fish;
+
+    /// <summary>Every ball, by index.</summary>
+    public ReadOnlySpan<BallView> Balls => _balls;
+
+    /// <summary>Every obstacle, by index.</summary>
+    public ReadOnlySpan<ObstacleView> Obstacles => _obstacles;
+
+    /// <summary>Goals scored so far by a team.</summary>
+    /// <param name="team">0 or 1.</param>
+    public int GoalsOf(int team) => _goals[Math.Clamp(team, 0, 1)];
+
+    internal Span<FishView> FishBuffer => _fish;
+
+    internal Span<BallView> BallBuffer => _balls;
+
+    internal void SetHeader(int cycle, int goalsTeam0, int goalsTeam1)
+    {
+        Cycle = cycle;
+        _goals[0] = goalsTeam0;
+        _goals[1] = goalsTeam1;
+    }
+}

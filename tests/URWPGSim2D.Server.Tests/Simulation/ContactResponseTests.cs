@@ -1,0 +1,101 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Server.Simulation;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Simulation;
+
+/// <summary>Velocity response: momentum along the normal, restitution, kept tangential part, static partners.</summary>
+public sealed class ContactResponseTests
+{
+    [Fact]
+    public void BallBallConservesMomentumAndAppliesTheRestitutionOverRandomContacts()
+    {
+        var random = new Random(42);
+        for (int trial = 0; trial < 2000; trial++)
+        {
+            var match = TestMatches.Balls(string.Empty, -60f, 0f, 0f, 0f, 60f, 0f, 0f, 0f);
+            var a = match.World.Balls[0];
+            var b = match.World.Balls[1];
+            float angle = (float)(random.NextDouble() * Math.PI * 2);
+            Vector2 n = new(MathF.Cos(angle), MathF.Sin(angle));
+            a.Position = new Vector2(0f, 0f) + (n * 57f);
+            b.Position = new Vector2(0f, 0f) - (n * 57f);
+            a.Velocity = new Vector2((float)(random.NextDouble() * 2000 - 1000), (float)(random.NextDouble() * 2000 - 1000));
+            b.Velocity = new Vector2((float)(random.NextDouble() * 2000 - 1000), (float)(random.NextDouble() * 2000 - 1000));
+            Vector2 momentum = a.Velocity + b.Velocity;
+            float approach = Vector2.Dot(a.Velocity - b.Velocity, n);
+            Vector2 tangent = new(-n.Y, n.X);
+            float tangentA = Vector2.Dot(a.Velocity, tangent);
+            float tangentB = Vector2.Dot(b.Velocity, tangent);
+            var pair = new CandidatePair(PairKind.BallBall, 0, 1, 58f);
+            Hit hit = PairDetector.Detect(match.World, pair);
+            Assert.True(hit.Intersect);
+            new ContactResponse(match.World).Apply(pair, hit);
+
+            Assert.Equal(momentum.X, (a.Velocity + b.Velocity).X, 0.05f);
+            Assert.Equal(momentum.Y, (a.Velocity + b.Velocity).Y, 0.05f);
+            Assert.Equal(tangentA, Vector2.Dot(a.Velocity, tangent), 0.05f);
+            Assert.Equal(tangentB, Vector2.Dot(b.Velocity, tangent), 0.05f);
+            float after = Vector2.Dot(a.Velocity - b.Velocity, n);
+            float expected = approach < 0f ? -0.005f * approach : approach;
+            Assert.Equal(expected, after, 0.05f);
+            Assert.True(Vector2.Distance(a.Position, b.Position) >= 116f - 0.01f, "the balls are apart after the correction");
+        }
+    }
+
+    [Fact]
+    public void FishBallConservesLinearMomentumAndSeparates()
+    {
+        var random = new Random(7);
+        for (int trial = 0; trial < 300; trial++)
+        {
+            var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"strategy":"idle"}],"balls":[{"position":[600,0]}]}""");
+            var fish = match.World.Fish[0];
+            var ball = match.World.Balls[0];
+            float angle = (float)(random.NextDouble() * Math.PI * 2);
+            ball.Position = new Vector2(MathF.Cos(angle), MathF.Sin(angle)) * (float)(60 + (random.NextDouble() * 200));
+            fish.Velocity = new Vector2((float)(random.NextDouble() * 600 - 300), (float)(random.NextDouble() * 600 - 300));
+            fish.AngularVelocity = (float)(random.NextDouble() - 0.5);
+            ball.Velocity = new Vector2((float)(random.NextDouble() * 2000 - 1000), 0f);
+            var pair = new CandidatePair(PairKind.FishBall, 0, 0, 60f);
+            Hit hit = PairDetector.Detect(match.World, pair);
+            if (!hit.Intersect)
+            {
+                continue;
+            }
+
+            Vector2 before = (0.8f * fish.Velocity) + (0.49f * ball.Velocity);
+            new ContactResponse(match.World).Apply(pair, hit);
+            Vector2 after = (0.8f * fish.Velocity) + (0.49f * ball.Velocity);
+            Assert.Equal(before.X, after.X, 0.05f);
+            Assert.Equal(before.Y, after.Y, 0.05f);
+            Assert.True(PairDetector.Detect(match.World, pair).Depth <= 0.011f);
+        }
+    }
+
+    [Fact]
+    public void AFishDrivingIntoAWallStopsMovingIntoIt()
+    {
+        // Heading +X at 317 mm/s along z = 600, straight into the lower right goal block (x ≥ 1350, z ≥ 200).
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[1150,600],"decision":{"vcode":15,"tcode":7}}],"balls":[]}""");
+        match.Play(40);
+        var fish = match.World.Fish[0];
+        Assert.Contains(match.Contacts.Cycle.ToArray(), c => c.Pair.Kind == PairKind.FishStatic);
+        Assert.InRange(fish.Velocity.X, -1f, 0.01f);
+        Assert.True(fish.PosedModel.Bounds.Max.X <= 1350f + 0.02f, $"head at {fish.PosedModel.Bounds.Max.X}");
+        Assert.Equal(317f, fish.Speed.Value);
+    }
+
+    [Fact]
+    public void AStaticPartnerNeverMovesAndABallBouncesOffAnObstacleWithRestitutionOneTenth()
+    {
+        var match = TestMatches.Balls(""","obstacles":[{"type":"round","center":[0,0],"radius":58}]""", -200f, 0f, 1000f, 0f);
+        match.Step();
+        var contact = Assert.Single(match.Contacts.Cycle.ToArray());
+        Assert.Equal(PairKind.BallStatic, contact.Pair.Kind);
+        Assert.Equal(new Vector2(0f, 0f), match.World.Statics[0].Circle.Center);
+        // −0.1 × 1000 mm/s after the hit, then drag of 25 mm/s² × 0.1 s at 100 mm/s.
+        Assert.Equal(-100f + 25f, match.World.Balls[0].Velocity.X, 0.1f);
+    }
+}
