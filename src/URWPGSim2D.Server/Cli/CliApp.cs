@@ -34,6 +34,8 @@ internal sealed class CliApp
     [
         new RunCommand(),
         new CollideCommand(),
+        new ShapesCommand(),
+        new RenderCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>
