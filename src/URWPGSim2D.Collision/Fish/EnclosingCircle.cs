@@ -6,7 +6,8 @@ namespace URWPGSim2D.Collision.Fish;
 
 /// <summary>
 /// Bounding circles for the fish's tree: the minimum enclosing circle of a few points
-/// (incremental Welzl, no allocation). Every
+/// (incremental Welzl, no allocation; used once per fish size), and circles about a given
+/// centre that reach the farthest point (used at every pose). Every
 /// circle returned is grown by a few parts per million so that round-off never leaves a
 /// point of what it bounds outside it.
 /// </summary>

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Fish;
@@ -8,7 +9,7 @@ namespace URWPGSim2D.Collision.Fish;
 public sealed partial class FishModel
 {
     /// <summary>
-    /// Moves the model to <paramref name="pose"/>: every leaf vertex, normal and axis is its
+    /// Moves the model to <paramref name="pose"/>: every leaf vertex and normal is its
     /// frame-local value rotated by the frame's angle and moved to the frame's origin (body:
     /// P and θ; tail segment i: Sᵢ and θ + φᵢ with S1 = P − (L/2)·u, Sᵢ₊₁ = Sᵢ − Lᵢ·dᵢ), then
     /// the leaf 8-DOPs, <see cref="Bounds"/> and the three circles are rebuilt. Allocates nothing.
@@ -17,54 +18,48 @@ public sealed partial class FishModel
     public void SetPose(in FishPose pose)
     {
         var size = _template.Size;
-        Span<Vector2> origin = stackalloc Vector2[FishLeafLayout.FrameCount];
-        Span<Vector2> rotation = stackalloc Vector2[FishLeafLayout.FrameCount];
-        rotation[0] = Direction(pose.Heading);
-        rotation[1] = Direction(pose.Heading + pose.Joint1);
-        rotation[2] = Direction(pose.Heading + pose.Joint2);
-        rotation[3] = Direction(pose.Heading + pose.Joint3);
-        origin[0] = pose.Position;
-        origin[1] = pose.Position - 0.5f * size.Length * rotation[0];
-        origin[2] = origin[1] - size.Joint1 * rotation[1];
-        origin[3] = origin[2] - size.Joint2 * rotation[2];
+        Vector2 r0 = Direction(pose.Heading);
+        Vector2 r1 = Direction(pose.Heading + pose.Joint1);
+        Vector2 r2 = Direction(pose.Heading + pose.Joint2);
+        Vector2 r3 = Direction(pose.Heading + pose.Joint3);
+        Vector2 o0 = pose.Position;
+        Vector2 o1 = o0 - _template.HalfLength * r0;
+        Vector2 o2 = o1 - size.Joint1 * r1;
+        Vector2 o3 = o2 - size.Joint2 * r2;
+        PlaceFrame(0, o0, r0);
+        PlaceFrame(1, o1, r1);
+        PlaceFrame(2, o2, r2);
+        PlaceFrame(3, o3, r3);
 
-        var localV = _template.Vertices;
-        var localN = _template.Normals;
-        var localA = _template.Axes;
-        Vector4 allMin = new(float.PositiveInfinity), allMax = new(float.NegativeInfinity);
+        Vector4 bodyMin = new(float.PositiveInfinity), bodyMax = new(float.NegativeInfinity);
+        Vector4 tailMin = bodyMin, tailMax = bodyMax;
         for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
         {
-            int frame = FishLeafLayout.Frame(leaf);
-            Vector2 o = origin[frame], r = rotation[frame];
-            int at = FishLeafLayout.Offset(leaf), end = at + FishLeafLayout.Count(leaf);
-            for (int i = at; i < end; i++)
-            {
-                _vertices[i] = o + Rotate(r, localV[i]);
-                _normals[i] = Rotate(r, localN[i]);
-            }
-
-            for (int i = at, axesEnd = at + _template.AxisCount(leaf); i < axesEnd; i++)
-            {
-                _axes[i] = Rotate(r, localA[i]);
-            }
-
-            KDop8.Slabs(_vertices.AsSpan(at, end - at), out Vector4 min, out Vector4 max);
+            FloatSlabs.Of(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
             _slabMin[leaf] = min;
             _slabMax[leaf] = max;
-            allMin = Vector4.Min(allMin, min);
-            allMax = Vector4.Max(allMax, max);
+            if (leaf < FishLeafLayout.BodyGroupEnd)
+            {
+                bodyMin = Vector4.Min(bodyMin, min);
+                bodyMax = Vector4.Max(bodyMax, max);
+            }
+            else
+            {
+                tailMin = Vector4.Min(tailMin, min);
+                tailMax = Vector4.Max(tailMax, max);
+            }
         }
 
+        Vector4 allMin = Vector4.Min(bodyMin, tailMin), allMax = Vector4.Max(bodyMax, tailMax);
         Pose = pose;
-        Forward = rotation[0];
-        HeadTip = pose.Position + (0.5f * size.Length + size.Head) * rotation[0];
+        Forward = r0;
+        HeadTip = pose.Position + _template.HeadReach * r0;
         Bounds = new Aabb(new Vector2(allMin.X, allMin.Y), new Vector2(allMax.X, allMax.Y));
-        RebuildCircles(origin[0], rotation[0]);
+        RebuildCircles(o0, r0, tailMin, tailMax, allMin, allMax);
     }
 
     /// <summary>R(α)·(a, b) = (a·cos α − b·sin α, a·sin α + b·cos α), with r = (cos α, sin α).</summary>
-    internal static Vector2 Rotate(Vector2 r, Vector2 local) =>
-        new(local.X * r.X - local.Y * r.Y, local.X * r.Y + local.Y * r.X);
+    internal static Vector2 Rotate(Vector2 r, Vector2 local) => RigidTransform.Rotate(r, local);
 
     private static Vector2 Direction(float angle)
     {
@@ -72,24 +67,26 @@ public sealed partial class FishModel
         return new Vector2(cos, sin);
     }
 
-    private void RebuildCircles(Vector2 position, Vector2 bodyRotation)
+    private void PlaceFrame(int frame, Vector2 origin, Vector2 rotation)
     {
-        var body = _template.BodyGroup;
-        BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
-
-        TailGroup = MinimumCircle(_template.TailOrder);
-        Root = MinimumCircle(_template.AllOrder);
+        int start = FishLeafLayout.FrameStart(frame), count = FishLeafLayout.FrameStart(frame + 1) - start;
+        RigidTransform.Place(_template.Vertices.Slice(start, count), _vertices.AsSpan(start, count), origin, rotation);
+        RigidTransform.Turn(_template.Normals.Slice(start, count), _normals.AsSpan(start, count), rotation);
     }
 
-    // The minimum enclosing circle of the vertices listed in `order` (likely boundary points first).
-    private Circle MinimumCircle(ReadOnlySpan<int> order)
+    // Body group: rigid, its minimum circle moves with the body. Tail group and root: centred at
+    // the centre of the smallest fixed-axis octagon around their slabs, radius to the farthest
+    // vertex: at most 1/cos 22.5° of the minimum radius (see OctagonCentre). The root holds every
+    // leaf but not necessarily the group circles, which bulge past the fish (holding them would
+    // cost up to 1.28 times the minimum even with the best circle around both).
+    private void RebuildCircles(Vector2 position, Vector2 bodyRotation, Vector4 tailMin, Vector4 tailMax, Vector4 allMin, Vector4 allMax)
     {
-        var points = _orderedPoints.AsSpan(0, order.Length);
-        for (int i = 0; i < order.Length; i++)
-        {
-            points[i] = _vertices[order[i]];
-        }
-
-        return EnclosingCircle.Minimum(points);
+        var body = _template.BodyGroup;
+        var bodyCircle = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
+        var tailVertices = _vertices.AsSpan(FishLeafLayout.TailGroupFirstVertex);
+        var tailCircle = EnclosingCircle.Enclosing(tailVertices, OctagonCentre.Of(tailMin, tailMax));
+        BodyGroup = bodyCircle;
+        TailGroup = tailCircle;
+        Root = EnclosingCircle.Enclosing(_vertices, OctagonCentre.Of(allMin, allMax));
     }
 }

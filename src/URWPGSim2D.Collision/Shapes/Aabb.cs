@@ -11,7 +11,6 @@ namespace URWPGSim2D.Collision.Shapes;
 public readonly struct Aabb
 {
     private static readonly Vector2[] EdgeNormals = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
-    private static readonly Vector2[] SatAxes = [new(1f, 0f), new(0f, 1f)];
 
     /// <summary>Creates a box from its corners, validating them.</summary>
     /// <param name="min">Lower corner (smallest x and z), mm.</param>
@@ -68,5 +67,5 @@ public readonly struct Aabb
     }
 
     /// <summary>A view of the box over the four corners written by <see cref="WriteVertices"/>.</summary>
-    internal static ConvexView View(ReadOnlySpan<Vector2> corners) => new(corners, EdgeNormals, SatAxes);
+    internal static ConvexView View(ReadOnlySpan<Vector2> corners) => new(corners, EdgeNormals);
 }
