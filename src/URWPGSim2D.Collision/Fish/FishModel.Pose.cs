@@ -1,5 +1,7 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
 
@@ -31,30 +33,48 @@ public sealed partial class FishModel
         PlaceFrame(2, o2, r2);
         PlaceFrame(3, o3, r3);
 
-        Vector4 bodyMin = new(float.PositiveInfinity), bodyMax = new(float.NegativeInfinity);
-        Vector4 tailMin = bodyMin, tailMax = bodyMax;
-        for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
+        Vector4 bodyMin, bodyMax, tailMin, tailMax;
+        if (Vector128.IsHardwareAccelerated)
         {
-            FloatSlabs.Of(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
-            _slabMin[leaf] = min;
-            _slabMax[leaf] = max;
-            if (leaf < FishLeafLayout.BodyGroupEnd)
+            // One outward pad for every leaf: no vertex has |x| + |z| beyond |Px| + |Pz| + √2·reach.
+            var outward = FloatSlabs.Outward(MathF.Abs(pose.Position.X) + MathF.Abs(pose.Position.Y) + _template.SlabReach);
+            var bodyLo = LeafSlabs(0, outward, out var bodyHi);
+            bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(1, outward, out var hi));
+            bodyHi = Vector128.MaxNative(bodyHi, hi);
+            bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(2, outward, out hi));
+            bodyHi = Vector128.MaxNative(bodyHi, hi);
+            var tailLo = LeafSlabs(3, outward, out var tailHi);
+            tailLo = Vector128.MinNative(tailLo, LeafSlabs(4, outward, out hi));
+            tailHi = Vector128.MaxNative(tailHi, hi);
+            tailLo = Vector128.MinNative(tailLo, LeafSlabs(5, outward, out hi));
+            tailHi = Vector128.MaxNative(tailHi, hi);
+            tailLo = Vector128.MinNative(tailLo, LeafSlabs(6, outward, out hi));
+            tailHi = Vector128.MaxNative(tailHi, hi);
+            tailLo = Vector128.MinNative(tailLo, LeafSlabs(7, outward, out hi));
+            tailHi = Vector128.MaxNative(tailHi, hi);
+            (bodyMin, bodyMax, tailMin, tailMax) = (bodyLo.AsVector4(), bodyHi.AsVector4(), tailLo.AsVector4(), tailHi.AsVector4());
+        }
+        else
+        {
+            bodyMin = tailMin = new(float.PositiveInfinity);
+            bodyMax = tailMax = new(float.NegativeInfinity);
+            for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
             {
-                bodyMin = Vector4.Min(bodyMin, min);
-                bodyMax = Vector4.Max(bodyMax, max);
-            }
-            else
-            {
-                tailMin = Vector4.Min(tailMin, min);
-                tailMax = Vector4.Max(tailMax, max);
+                FloatSlabs.OfScalar(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
+                _slabMin[leaf] = min;
+                _slabMax[leaf] = max;
+                bool body = leaf < FishLeafLayout.BodyGroupEnd;
+                (body ? ref bodyMin : ref tailMin) = Vector4.Min(body ? bodyMin : tailMin, min);
+                (body ? ref bodyMax : ref tailMax) = Vector4.Max(body ? bodyMax : tailMax, max);
             }
         }
 
-        Vector4 allMin = Vector4.Min(bodyMin, tailMin), allMax = Vector4.Max(bodyMax, tailMax);
+        Vector4 allMin = Vector128.MinNative(bodyMin.AsVector128(), tailMin.AsVector128()).AsVector4();
+        Vector4 allMax = Vector128.MaxNative(bodyMax.AsVector128(), tailMax.AsVector128()).AsVector4();
         Pose = pose;
         Forward = r0;
         HeadTip = pose.Position + _template.HeadReach * r0;
-        Bounds = new Aabb(new Vector2(allMin.X, allMin.Y), new Vector2(allMax.X, allMax.Y));
+        Bounds = Aabb.Trusted(new Vector2(allMin.X, allMin.Y), new Vector2(allMax.X, allMax.Y));
         RebuildCircles(o0, r0, tailMin, tailMax, allMin, allMax);
     }
 
@@ -67,11 +87,25 @@ public sealed partial class FishModel
         return new Vector2(cos, sin);
     }
 
+    // The padded slabs of one leaf, stored; returns them (lower, and upper in hi).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private Vector128<float> LeafSlabs(int leaf, Vector128<float> outward, out Vector128<float> hi)
+    {
+        FloatSlabs.Projections(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out var lo, out hi);
+        lo -= outward;
+        hi += outward;
+        _slabMin[leaf] = lo.AsVector4();
+        _slabMax[leaf] = hi.AsVector4();
+        return lo;
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private void PlaceFrame(int frame, Vector2 origin, Vector2 rotation)
     {
         int start = FishLeafLayout.FrameStart(frame), count = FishLeafLayout.FrameStart(frame + 1) - start;
-        RigidTransform.Place(_template.Vertices.Slice(start, count), _vertices.AsSpan(start, count), origin, rotation);
-        RigidTransform.Turn(_template.Normals.Slice(start, count), _normals.AsSpan(start, count), rotation);
+        RigidTransform.PlaceAndTurn(
+            _template.Vertices.Slice(start, count), _template.Normals.Slice(start, count),
+            _vertices.AsSpan(start, count), _normals.AsSpan(start, count), origin, rotation);
     }
 
     // Body group: rigid, its minimum circle moves with the body. Tail group and root: centred at

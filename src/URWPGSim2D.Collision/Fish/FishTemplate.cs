@@ -37,7 +37,16 @@ internal sealed class FishTemplate
         BodyGroup = EnclosingCircle.Minimum(_vertices.AsSpan(0, FishLeafLayout.TailGroupFirstVertex));
         HalfLength = 0.5f * size.Length;
         HeadReach = 0.5f * size.Length + size.Head;
+
+        // Every vertex lies within the body frame's reach of P, or within L/2 + L1 + L2 plus
+        // frame 3's reach (the caudal fin); |dx| + |dz| ≤ √2 times that distance (1.5: room for round-off).
+        float reach = MaxLength(_vertices.AsSpan(0, FishLeafLayout.FrameStart(1)));
+        float tailReach = HalfLength + size.Joint1 + size.Joint2 + MaxLength(_vertices.AsSpan(FishLeafLayout.FrameStart(3)));
+        SlabReach = 1.5f * MathF.Max(reach, MathF.Max(tailReach, HalfLength + size.Joint1 + MaxLength(_vertices.AsSpan(FishLeafLayout.FrameStart(1), 8))));
     }
+
+    /// <summary>A bound on |x − Px| + |z − Pz| over every vertex at every pose, mm (sets the float slabs' outward pad).</summary>
+    public float SlabReach { get; }
 
     /// <summary>The size this template was built for.</summary>
     public FishSize Size { get; }
@@ -56,4 +65,15 @@ internal sealed class FishTemplate
 
     /// <summary>The body group's minimum enclosing circle in the body frame (centre relative to P).</summary>
     public Circle BodyGroup { get; }
+
+    private static float MaxLength(ReadOnlySpan<Vector2> points)
+    {
+        float max = 0f;
+        foreach (var p in points)
+        {
+            max = MathF.Max(max, p.Length());
+        }
+
+        return max;
+    }
 }

@@ -1,5 +1,8 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Geometry;
@@ -25,6 +28,9 @@ internal static class OctagonCentre
 {
     private const float Half = KDop8.Diagonal;
 
+    // √2 = 1 / √½.
+    private const float Root2 = 1.41421356237309505f;
+
     // 1 / (1 + √2): the weights of a triple are √½, 1, √½.
     private const float TripleScale = 0.41421356237309505f;
 
@@ -34,22 +40,27 @@ internal static class OctagonCentre
     private static readonly float[] Sin = [0f, Half, 1f, Half, 0f, -Half, -1f, -Half];
 
     /// <summary>The centre for slabs minᵢ ≤ p·aᵢ ≤ maxᵢ on the four 8-DOP axes (a non-empty set).</summary>
-    public static Vector2 Of(Vector4 min, Vector4 max)
-    {
-        // Relative to the box centre, so that large coordinates do not cost precision.
-        Vector2 m = new(0.5f * (min.X + max.X), 0.5f * (min.Y + max.Y));
-        Vector4 pm = KDop8.Project(m);
-        Vector4 lo = min - pm, hi = max - pm;
-        Span<float> s = stackalloc float[8];
-        s[0] = hi.X;
-        s[1] = hi.Z;
-        s[2] = hi.Y;
-        s[3] = -lo.W;
-        s[4] = -lo.X;
-        s[5] = -lo.Z;
-        s[6] = -lo.Y;
-        s[7] = hi.W;
+    public static Vector2 Of(in Vector4 min, in Vector4 max) =>
+        Vector256.IsHardwareAccelerated ? OfVector(min, max) : OfScalar(min, max);
 
+    /// <summary>
+    /// The same centre without vector hardware: the supports sⱼ relative to the box centre m (so
+    /// that large coordinates cost no precision), the binding candidate, then its centre.
+    /// </summary>
+    internal static Vector2 OfScalar(in Vector4 min, in Vector4 max)
+    {
+        Vector2 m = BoxCentre(min, max, out Vector4 above, out Vector4 below);
+        Span<float> s = stackalloc float[8];
+        s[0] = above.X;
+        s[1] = above.Z;
+        s[2] = above.Y;
+        s[3] = below.W;
+        s[4] = below.X;
+        s[5] = below.Z;
+        s[6] = below.Y;
+        s[7] = above.W;
+
+        // The least apothem and what binds it; the first candidate in this order wins a tie.
         float rho = float.NegativeInfinity;
         int binding = 0;
         for (int j = 0; j < 4; j++)
@@ -72,38 +83,87 @@ internal static class OctagonCentre
             }
         }
 
-        Vector2 c = binding < 8 ? OnMidLine(s, binding, rho) : Meet(s, binding - 8, rho);
-        return m + c;
+        return m + (binding < 8 ? OnMidLine(s, binding, rho) : Meet(s, binding - 8, rho));
     }
 
-    // The binding width is along e_k: c = mid·e_k + t·e_{k+2}; each other constraint eᵢ·c ≥ sᵢ − ρ bounds t.
+    /// <summary>
+    /// The centre with the eight supports in one 256-bit vector: every candidate's value, and
+    /// the centre for every possible binding candidate (four mid-lines, eight triples), lane by
+    /// lane with the scalar path's arithmetic; the binding one is then picked. No branch and no
+    /// memory round trip: which candidate binds changes from one pose to the next.
+    /// </summary>
+    internal static Vector2 OfVector(in Vector4 min, in Vector4 max)
+    {
+        Vector2 m = BoxCentre(min, max, out Vector4 above, out Vector4 below);
+
+        // s = (above.X, above.Z, above.Y, below.W, below.X, below.Z, below.Y, above.W); rₖ: s turned by k lanes.
+        var s = Vector256.Shuffle(Vector256.Create(above.AsVector128(), below.AsVector128()), Vector256.Create(0, 2, 1, 7, 4, 6, 5, 3));
+        var r1 = Vector256.Shuffle(s, Vector256.Create(1, 2, 3, 4, 5, 6, 7, 0));
+        var r2 = Vector256.Shuffle(s, Vector256.Create(2, 3, 4, 5, 6, 7, 0, 1));
+        var r3 = Vector256.Shuffle(s, Vector256.Create(3, 4, 5, 6, 7, 0, 1, 2));
+        var r4 = Vector256.Shuffle(s, Vector256.Create(4, 5, 6, 7, 0, 1, 2, 3));
+        var r5 = Vector256.Shuffle(s, Vector256.Create(5, 6, 7, 0, 1, 2, 3, 4));
+        var r6 = Vector256.Shuffle(s, Vector256.Create(6, 7, 0, 1, 2, 3, 4, 5));
+        var r7 = Vector256.Shuffle(s, Vector256.Create(7, 0, 1, 2, 3, 4, 5, 6));
+        var half = Vector256.Create(Half);
+        var root2 = Vector256.Create(Root2);
+
+        // Candidates: widths in lanes 0..3 (4..7 repeat them), triples in lanes 0..7.
+        var widths = Vector256.Create(0.5f) * (s + r4);
+        var triples = ((half * s) + r3 + (half * r6)) * Vector256.Create(TripleScale);
+        var best = Vector256.MaxNative(widths, triples);
+        best = Vector256.MaxNative(best, Vector256.Shuffle(best, Vector256.Create(4, 5, 6, 7, 0, 1, 2, 3)));
+        best = Vector256.MaxNative(best, Vector256.Shuffle(best, Vector256.Create(2, 3, 0, 1, 6, 7, 4, 5)));
+        var rho = Vector256.MaxNative(best, Vector256.Shuffle(best, Vector256.Create(1, 0, 3, 2, 5, 4, 7, 6)));
+        uint found = (Vector256.Equals(widths, rho).ExtractMostSignificantBits() & 0xF)
+            | (Vector256.Equals(triples, rho).ExtractMostSignificantBits() << 8);
+        int binding = BitOperations.TrailingZeroCount(found);
+
+        // Mid-line centres, lane k (lanes 0..3 are used).
+        var mid = Vector256.Create(0.5f) * (s - r4);
+        var slant = mid * half;
+        var tLo = Vector256.MaxNative(Vector256.MaxNative((r1 - rho - slant) * root2, r2 - rho), (r3 - rho + slant) * root2);
+        var tHi = Vector256.MinNative(Vector256.MinNative((rho - r5 - slant) * root2, rho - r6), (rho - r7 + slant) * root2);
+        var t = Vector256.Create(0.5f) * (tLo + tHi);
+        var cos = Vector256.Create(1f, Half, 0f, -Half, -1f, -Half, 0f, Half);
+        var sin = Vector256.Create(0f, Half, 1f, Half, 0f, -Half, -1f, -Half);
+        var midX = (mid * cos) - (t * sin);
+        var midY = (mid * sin) + (t * cos);
+
+        // Triple centres, lane j: e_j·c = s_j − ρ and e_{j+3}·c = s_{j+3} − ρ.
+        var b1 = s - rho;
+        var b2 = r3 - rho;
+        var cos3 = Vector256.Create(-Half, -1f, -Half, 0f, Half, 1f, Half, 0f);
+        var sin3 = Vector256.Create(Half, 0f, -Half, -1f, -Half, 0f, Half, 1f);
+        var meetX = ((b1 * sin3) - (sin * b2)) * root2;
+        var meetY = ((cos * b2) - (b1 * cos3)) * root2;
+
+        var onMidLine = Vector256.Create(binding < 8 ? -1 : 0).AsSingle();
+        var x = Vector256.ConditionalSelect(onMidLine, midX, meetX);
+        var y = Vector256.ConditionalSelect(onMidLine, midY, meetY);
+        return m + new Vector2(x.GetElement(binding & 7), y.GetElement(binding & 7));
+    }
+
+    private static Vector2 BoxCentre(in Vector4 min, in Vector4 max, out Vector4 above, out Vector4 below)
+    {
+        Vector2 m = new(0.5f * (min.X + max.X), 0.5f * (min.Y + max.Y));
+        Vector4 pm = new(m.X, m.Y, (m.X + m.Y) * Half, (m.X - m.Y) * Half);
+        above = max - pm;
+        below = pm - min;
+        return m;
+    }
+
+    // The binding width is along e_k (k < 4): c = mid·e_k + t·e_{k+2}. Each other constraint
+    // eᵢ·c ≥ sᵢ − ρ with eᵢ·e_{k+2} = cos((i − k − 2)·45°) ∈ {√½, 1, √½, −√½, −1, −√½} bounds t
+    // from below (i = k+1..k+3) or above (i = k+5..k+7); t is the middle of what is left.
     private static Vector2 OnMidLine(ReadOnlySpan<float> s, int k, float rho)
     {
-        float mid = 0.5f * (s[k] - s[k + 4]);
-        float tLo = float.NegativeInfinity, tHi = float.PositiveInfinity;
-        for (int step = 1; step < 8; step++)
-        {
-            if (step == 4)
-            {
-                continue;
-            }
-
-            int i = (k + step) & 7;
-            float along = Cos[(step - 2) & 7];
-            float bound = (s[i] - rho - (mid * Cos[step])) / along;
-            if (along > 0f)
-            {
-                tLo = MathF.Max(tLo, bound);
-            }
-            else
-            {
-                tHi = MathF.Min(tHi, bound);
-            }
-        }
-
+        float mid = 0.5f * (s[k] - s[k + 4]), slant = mid * Half;
+        float tLo = Max(Max((s[k + 1] - rho - slant) * Root2, s[k + 2] - rho), (s[k + 3] - rho + slant) * Root2);
+        float tHi = Min(Min((rho - s[(k + 5) & 7] - slant) * Root2, rho - s[(k + 6) & 7]), (rho - s[(k + 7) & 7] + slant) * Root2);
         float t = 0.5f * (tLo + tHi);
-        int p = (k + 2) & 7;
-        return new Vector2((mid * Cos[k]) + (t * Cos[p]), (mid * Sin[k]) + (t * Sin[p]));
+        float cos = Cos[k], sin = Sin[k];
+        return new Vector2((mid * cos) - (t * sin), (mid * sin) + (t * cos));
     }
 
     // The binding triple j, j+3, j+6: the point where e_j·c = s_j − ρ and e_{j+3}·c = s_{j+3} − ρ (determinant sin 135° = √½).
@@ -111,8 +171,11 @@ internal static class OctagonCentre
     {
         int i = (j + 3) & 7;
         float b1 = s[j] - rho, b2 = s[i] - rho;
-        float x = ((b1 * Sin[i]) - (Sin[j] * b2)) / Half;
-        float y = ((Cos[j] * b2) - (b1 * Cos[i])) / Half;
-        return new Vector2(x, y);
+        return new Vector2(((b1 * Sin[i]) - (Sin[j] * b2)) * Root2, ((Cos[j] * b2) - (b1 * Cos[i])) * Root2);
     }
+
+    // The plain maximum and minimum of two finite numbers, as the vector path takes them.
+    private static float Max(float a, float b) => a > b ? a : b;
+
+    private static float Min(float a, float b) => a < b ? a : b;
 }

@@ -34,6 +34,14 @@ public readonly struct Aabb
         Max = max;
     }
 
+    // Trusted corners from the library's own arithmetic (finite, min ≤ max): no checks.
+    private Aabb(Vector2 min, Vector2 max, bool trusted)
+    {
+        _ = trusted;
+        Min = min;
+        Max = max;
+    }
+
     /// <summary>Lower corner (smallest x, smallest z), mm.</summary>
     public Vector2 Min { get; }
 
@@ -56,6 +64,9 @@ public readonly struct Aabb
     /// <param name="offset">Translation in mm.</param>
     /// <returns>The translated box.</returns>
     public Aabb Translated(Vector2 offset) => new(Min + offset, Max + offset);
+
+    /// <summary>A box from corners the library computed itself (finite, min ≤ max on both axes); not validated.</summary>
+    internal static Aabb Trusted(Vector2 min, Vector2 max) => new(min, max, true);
 
     /// <summary>Writes the four corners counter-clockwise (in x–z coordinates), starting at <see cref="Min"/>.</summary>
     internal void WriteVertices(Span<Vector2> destination)

@@ -112,6 +112,29 @@ public class FishBoundingVolumeTests
     }
 
     [Fact]
+    public void FarthestSquaredEqualsThePointByPointMaximum()
+    {
+        var rng = new Random(27);
+        for (int trial = 0; trial < 2000; trial++)
+        {
+            var points = new Vector2[trial % 33];
+            for (int i = 0; i < points.Length; i++)
+            {
+                points[i] = FishTestKit.Point(rng, 2000f);
+            }
+
+            Vector2 c = FishTestKit.Point(rng, 2000f);
+            float expected = 0f;
+            foreach (var p in points)
+            {
+                expected = MathF.Max(expected, Vector2.DistanceSquared(p, c));
+            }
+
+            Assert.Equal(expected, EnclosingCircle.FarthestSquared(points, c));
+        }
+    }
+
+    [Fact]
     public void OriginalRadiiWouldMissTheCaudalTipsButOursDoNot()
     {
         // The reference notes the original's root radius (L + L1 + L2 + L3)/2 = 184 does not reach

@@ -10,6 +10,25 @@ public sealed class FloatSlabsTests
     private static readonly double Half = Math.Sqrt(0.5);
 
     [Fact]
+    public void VectorAndScalarPathsAgree()
+    {
+        var rng = new Random(72);
+        for (int trial = 0; trial < 2000; trial++)
+        {
+            var points = new Vector2[rng.Next(1, 12)];
+            for (int i = 0; i < points.Length; i++)
+            {
+                points[i] = new Vector2((float)((rng.NextDouble() * 3000) - 1500), (float)((rng.NextDouble() * 3000) - 1500));
+            }
+
+            FloatSlabs.Of(points, out Vector4 min, out Vector4 max);
+            FloatSlabs.OfScalar(points, out Vector4 scalarMin, out Vector4 scalarMax);
+            Assert.Equal(scalarMin, min);
+            Assert.Equal(scalarMax, max);
+        }
+    }
+
+    [Fact]
     public void EveryPointIsInsideAndTheDiagonalPadIsAFewFloatSteps()
     {
         var rng = new Random(71);

@@ -27,6 +27,18 @@ public sealed class OctagonCentreTests
     }
 
     [Fact]
+    public void VectorAndScalarPathsAgreeBitForBit()
+    {
+        var rng = new Random(63);
+        for (int trial = 0; trial < 4000; trial++)
+        {
+            var points = RandomPoints(rng, trial);
+            FloatSlabs.Of(points, out Vector4 min, out Vector4 max);
+            Assert.Equal(OctagonCentre.OfScalar(min, max), OctagonCentre.OfVector(min, max));
+        }
+    }
+
+    [Fact]
     public void FarthestPointIsWithinTheOctagonBoundOfTheSmallestCircle()
     {
         var rng = new Random(61);
