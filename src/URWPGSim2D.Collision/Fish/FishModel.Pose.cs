@@ -28,45 +28,17 @@ public sealed partial class FishModel
         Vector2 o1 = o0 - _template.HalfLength * r0;
         Vector2 o2 = o1 - size.Joint1 * r1;
         Vector2 o3 = o2 - size.Joint2 * r2;
-        PlaceFrame(0, o0, r0);
-        PlaceFrame(1, o1, r1);
-        PlaceFrame(2, o2, r2);
-        PlaceFrame(3, o3, r3);
-
+        PlaceFrames(o0, r0, o1, r1, o2, r2, o3, r3);
         Vector4 bodyMin, bodyMax, tailMin, tailMax;
         if (Vector128.IsHardwareAccelerated)
         {
             // One outward pad for every leaf: no vertex has |x| + |z| beyond |Px| + |Pz| + √2·reach.
             var outward = FloatSlabs.Outward(MathF.Abs(pose.Position.X) + MathF.Abs(pose.Position.Y) + _template.SlabReach);
-            var bodyLo = LeafSlabs(0, outward, out var bodyHi);
-            bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(1, outward, out var hi));
-            bodyHi = Vector128.MaxNative(bodyHi, hi);
-            bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(2, outward, out hi));
-            bodyHi = Vector128.MaxNative(bodyHi, hi);
-            var tailLo = LeafSlabs(3, outward, out var tailHi);
-            tailLo = Vector128.MinNative(tailLo, LeafSlabs(4, outward, out hi));
-            tailHi = Vector128.MaxNative(tailHi, hi);
-            tailLo = Vector128.MinNative(tailLo, LeafSlabs(5, outward, out hi));
-            tailHi = Vector128.MaxNative(tailHi, hi);
-            tailLo = Vector128.MinNative(tailLo, LeafSlabs(6, outward, out hi));
-            tailHi = Vector128.MaxNative(tailHi, hi);
-            tailLo = Vector128.MinNative(tailLo, LeafSlabs(7, outward, out hi));
-            tailHi = Vector128.MaxNative(tailHi, hi);
-            (bodyMin, bodyMax, tailMin, tailMax) = (bodyLo.AsVector4(), bodyHi.AsVector4(), tailLo.AsVector4(), tailHi.AsVector4());
+            AllLeafSlabs(outward, out bodyMin, out bodyMax, out tailMin, out tailMax);
         }
         else
         {
-            bodyMin = tailMin = new(float.PositiveInfinity);
-            bodyMax = tailMax = new(float.NegativeInfinity);
-            for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
-            {
-                FloatSlabs.OfScalar(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
-                _slabMin[leaf] = min;
-                _slabMax[leaf] = max;
-                bool body = leaf < FishLeafLayout.BodyGroupEnd;
-                (body ? ref bodyMin : ref tailMin) = Vector4.Min(body ? bodyMin : tailMin, min);
-                (body ? ref bodyMax : ref tailMax) = Vector4.Max(body ? bodyMax : tailMax, max);
-            }
+            AllLeafSlabsScalar(out bodyMin, out bodyMax, out tailMin, out tailMax);
         }
 
         Vector4 allMin = Vector128.MinNative(bodyMin.AsVector128(), tailMin.AsVector128()).AsVector4();
@@ -87,6 +59,45 @@ public sealed partial class FishModel
         return new Vector2(cos, sin);
     }
 
+    // The four frames; each is inlined with its constant vertex range.
+    private void PlaceFrames(Vector2 o0, Vector2 r0, Vector2 o1, Vector2 r1, Vector2 o2, Vector2 r2, Vector2 o3, Vector2 r3)
+    {
+        PlaceFrame(0, o0, r0);
+        PlaceFrame(1, o1, r1);
+        PlaceFrame(2, o2, r2);
+        PlaceFrame(3, o3, r3);
+    }
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private void PlaceFrame(int frame, Vector2 origin, Vector2 rotation)
+    {
+        int start = FishLeafLayout.FrameStart(frame), count = FishLeafLayout.FrameStart(frame + 1) - start;
+        RigidTransform.PlaceAndTurn(
+            _template.Vertices.Slice(start, count), _template.Normals.Slice(start, count),
+            _vertices.AsSpan(start, count), _normals.AsSpan(start, count), origin, rotation);
+    }
+
+    // Every leaf's slabs, stored, and the union over each group (not padded: only centres come from them).
+    private void AllLeafSlabs(Vector128<float> outward, out Vector4 bodyMin, out Vector4 bodyMax, out Vector4 tailMin, out Vector4 tailMax)
+    {
+        var bodyLo = LeafSlabs(0, outward, out var bodyHi);
+        bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(1, outward, out var hi));
+        bodyHi = Vector128.MaxNative(bodyHi, hi);
+        bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(2, outward, out hi));
+        bodyHi = Vector128.MaxNative(bodyHi, hi);
+        var tailLo = LeafSlabs(3, outward, out var tailHi);
+        for (int leaf = 4; leaf < FishLeafLayout.LeafCount; leaf++)
+        {
+            tailLo = Vector128.MinNative(tailLo, LeafSlabs(leaf, outward, out hi));
+            tailHi = Vector128.MaxNative(tailHi, hi);
+        }
+
+        bodyMin = bodyLo.AsVector4();
+        bodyMax = bodyHi.AsVector4();
+        tailMin = tailLo.AsVector4();
+        tailMax = tailHi.AsVector4();
+    }
+
     // The padded slabs of one leaf, stored; returns them (lower, and upper in hi).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private Vector128<float> LeafSlabs(int leaf, Vector128<float> outward, out Vector128<float> hi)
@@ -99,13 +110,26 @@ public sealed partial class FishModel
         return lo;
     }
 
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private void PlaceFrame(int frame, Vector2 origin, Vector2 rotation)
+    private void AllLeafSlabsScalar(out Vector4 bodyMin, out Vector4 bodyMax, out Vector4 tailMin, out Vector4 tailMax)
     {
-        int start = FishLeafLayout.FrameStart(frame), count = FishLeafLayout.FrameStart(frame + 1) - start;
-        RigidTransform.PlaceAndTurn(
-            _template.Vertices.Slice(start, count), _template.Normals.Slice(start, count),
-            _vertices.AsSpan(start, count), _normals.AsSpan(start, count), origin, rotation);
+        bodyMin = tailMin = new(float.PositiveInfinity);
+        bodyMax = tailMax = new(float.NegativeInfinity);
+        for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
+        {
+            FloatSlabs.OfScalar(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
+            _slabMin[leaf] = min;
+            _slabMax[leaf] = max;
+            if (leaf < FishLeafLayout.BodyGroupEnd)
+            {
+                bodyMin = Vector4.Min(bodyMin, min);
+                bodyMax = Vector4.Max(bodyMax, max);
+            }
+            else
+            {
+                tailMin = Vector4.Min(tailMin, min);
+                tailMax = Vector4.Max(tailMax, max);
+            }
+        }
     }
 
     // Body group: rigid, its minimum circle moves with the body. Tail group and root: centred at
@@ -116,11 +140,10 @@ public sealed partial class FishModel
     private void RebuildCircles(Vector2 position, Vector2 bodyRotation, Vector4 tailMin, Vector4 tailMax, Vector4 allMin, Vector4 allMax)
     {
         var body = _template.BodyGroup;
-        var bodyCircle = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
-        var tailVertices = _vertices.AsSpan(FishLeafLayout.TailGroupFirstVertex);
-        var tailCircle = EnclosingCircle.Enclosing(tailVertices, OctagonCentre.Of(tailMin, tailMax));
-        BodyGroup = bodyCircle;
-        TailGroup = tailCircle;
-        Root = EnclosingCircle.Enclosing(_vertices, OctagonCentre.Of(allMin, allMax));
+        BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
+        Vector2 tailCentre = OctagonCentre.Of(tailMin, tailMax);
+        Vector2 rootCentre = OctagonCentre.Of(allMin, allMax);
+        TailGroup = EnclosingCircle.Enclosing(_vertices.AsSpan(FishLeafLayout.TailGroupFirstVertex), tailCentre);
+        Root = EnclosingCircle.Enclosing(_vertices, rootCentre);
     }
 }

@@ -40,6 +40,7 @@ internal static class OctagonCentre
     private static readonly float[] Sin = [0f, Half, 1f, Half, 0f, -Half, -1f, -Half];
 
     /// <summary>The centre for slabs minᵢ ≤ p·aᵢ ≤ maxᵢ on the four 8-DOP axes (a non-empty set).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Vector2 Of(in Vector4 min, in Vector4 max) =>
         Vector256.IsHardwareAccelerated ? OfVector(min, max) : OfScalar(min, max);
 
@@ -92,6 +93,7 @@ internal static class OctagonCentre
     /// lane with the scalar path's arithmetic; the binding one is then picked. No branch and no
     /// memory round trip: which candidate binds changes from one pose to the next.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static Vector2 OfVector(in Vector4 min, in Vector4 max)
     {
         Vector2 m = BoxCentre(min, max, out Vector4 above, out Vector4 below);
@@ -144,6 +146,7 @@ internal static class OctagonCentre
         return m + new Vector2(x.GetElement(binding & 7), y.GetElement(binding & 7));
     }
 
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static Vector2 BoxCentre(in Vector4 min, in Vector4 max, out Vector4 above, out Vector4 below)
     {
         Vector2 m = new(0.5f * (min.X + max.X), 0.5f * (min.Y + max.Y));
