@@ -148,7 +148,9 @@ public static partial class FishCollision
         ArgumentNullException.ThrowIfNull(b);
         var sink = default(DeepestSink);
         FishTree.Descend(a, b, ref sink);
-        return sink.Best;
+        return sink.Found
+            ? FishContact.OfLeaves(ConvexSat.Complete(a.LeafView(sink.LeafA), b.LeafView(sink.LeafB), sink.Best), sink.LeafA, sink.LeafB)
+            : FishContact.None;
     }
 
     /// <summary>Fish against a shape of any kind: dispatches to the overload for its kind.</summary>
@@ -177,6 +179,8 @@ public static partial class FishCollision
     {
         var sink = default(DeepestSink);
         FishTree.Descend(fish, ref partner, ref sink);
-        return sink.Best;
+        return sink.Found
+            ? FishContact.OfLeafA(partner.Complete(fish.LeafView(sink.LeafA), sink.Best), sink.LeafA)
+            : FishContact.None;
     }
 }

@@ -7,7 +7,8 @@ namespace URWPGSim2D.Collision.Fish;
 /// The descent of the fish's bounding-volume tree: root circle, then each group circle, then
 /// each leaf 8-DOP, and the exact leaf test only where every bounding volume above it may
 /// overlap the partner. All bounding tests are conservative (they prune only what is
-/// strictly apart), so the contacts found are exactly those of a test of every leaf.
+/// strictly apart), so the contacts found are exactly those of a test of every leaf. A sink
+/// that takes depths gets the first half of each exact test only (see <see cref="DeepestSink"/>).
 /// </summary>
 internal static class FishTree
 {
@@ -66,9 +67,18 @@ internal static class FishTree
     {
         for (int leaf = first; leaf < end; leaf++)
         {
-            if (Slabs.MayOverlap(fish.LeafMin(leaf), fish.LeafMax(leaf), partner.Min, partner.Max))
+            if (!Slabs.MayOverlap(fish.LeafMin(leaf), fish.LeafMax(leaf), partner.Min, partner.Max))
+            {
+                continue;
+            }
+
+            if (!sink.TakesDepths)
             {
                 sink.Add(partner.Detect(fish.LeafView(leaf)), leaf, -1);
+            }
+            else if (partner.Depth(fish.LeafView(leaf), out ContactDepth depth))
+            {
+                sink.Offer(depth, leaf, -1);
             }
         }
     }
@@ -91,9 +101,18 @@ internal static class FishTree
 
             for (int lb = firstB; lb < endB; lb++)
             {
-                if (Slabs.MayOverlap(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)))
+                if (!Slabs.MayOverlap(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)))
+                {
+                    continue;
+                }
+
+                if (!sink.TakesDepths)
                 {
                     sink.Add(ConvexSat.Detect(a.LeafView(la), b.LeafView(lb)), la, lb);
+                }
+                else if (ConvexSat.Depth(a.LeafView(la), b.LeafView(lb), out ContactDepth depth))
+                {
+                    sink.Offer(depth, la, lb);
                 }
             }
         }

@@ -105,6 +105,63 @@ internal static class FaceSeparation
     }
 
     /// <summary>
+    /// The face whose line <paramref name="p"/> lies farthest outside, sᵢ = nᵢ·(p − vᵢ) (the
+    /// first face wins a tie); false as soon as some sᵢ ≥ <paramref name="limit"/>. Four faces
+    /// at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
+    /// </summary>
+    public static bool Farthest(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float limit, out int face, out float distance)
+    {
+        int count = normals.Length;
+        face = 0;
+        distance = float.NegativeInfinity;
+        if (!Vector128.IsHardwareAccelerated)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                float s = Vector2.Dot(normals[i], p - vertices[i]);
+                if (s >= limit)
+                {
+                    return false;
+                }
+
+                if (s > distance)
+                {
+                    distance = s;
+                    face = i;
+                }
+            }
+
+            return true;
+        }
+
+        var px = Vector128.Create(p.X);
+        var pz = Vector128.Create(p.Y);
+        var bound = Vector128.Create(limit);
+        for (int start = 0; start < count; start += 4)
+        {
+            int at = count >= 4 ? Math.Min(start, count - 4) : 0;
+            Lanes(normals, at, out var nx, out var nz);
+            Lanes(vertices, at, out var vx, out var vz);
+            var s = (nx * (px - vx)) + (nz * (pz - vz));
+            if (Vector128.GreaterThanOrEqualAny(s, bound))
+            {
+                return false;
+            }
+
+            var best = Vector128.MaxNative(s, Vector128.Shuffle(s, Vector128.Create(2, 3, 0, 1)));
+            best = Vector128.MaxNative(best, Vector128.Shuffle(best, Vector128.Create(1, 0, 3, 2)));
+            float groupBest = best.ToScalar();
+            if (groupBest > distance)
+            {
+                distance = groupBest;
+                face = Math.Min(at + BitOperations.TrailingZeroCount(Vector128.Equals(s, best).ExtractMostSignificantBits()), count - 1);
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>
     /// Whether n·(p − v) ≤ <paramref name="tolerance"/> for every face (normal n through vertex
     /// v, relative coordinates): p inside the convex shape, or within the tolerance of it.
     /// Four faces at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
