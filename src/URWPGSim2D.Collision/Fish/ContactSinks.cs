@@ -18,6 +18,9 @@ internal interface IContactSink
 
     /// <summary>Takes the normal and depth of one overlapping leaf (pair); leafB is −1 when b is not a fish.</summary>
     void Offer(in ContactDepth depth, int leafA, int leafB);
+
+    /// <summary>True when the sink holds a contact strictly deeper than <paramref name="bound"/> mm, so no contact of at most that depth can change what it keeps.</summary>
+    bool IsDeeperThan(float bound);
 }
 
 /// <summary>
@@ -47,6 +50,8 @@ internal struct DeepestSink : IContactSink
 
     public readonly void Add(in CollisionDetectionResult result, int leafA, int leafB) =>
         throw new InvalidOperationException("the deepest-contact sink takes depths only");
+
+    public readonly bool IsDeeperThan(float bound) => Found && Best.Depth > bound;
 
     public void Offer(in ContactDepth depth, int leafA, int leafB)
     {
@@ -83,6 +88,8 @@ internal ref struct SpanSink : IContactSink
 
     public readonly void Offer(in ContactDepth depth, int leafA, int leafB) =>
         throw new InvalidOperationException("the span sink takes finished results only");
+
+    public readonly bool IsDeeperThan(float bound) => false;
 
     public void Add(in CollisionDetectionResult result, int leafA, int leafB)
     {

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -174,6 +175,8 @@ public static partial class FishCollision
     /// <exception cref="ArgumentNullException"><paramref name="b"/> is null.</exception>
     public static FishContact Detect(in Shape a, FishModel b) => Detect(b, a).Swapped();
 
+    // Not inlined: the callers' early exits (a root-circle miss) then pay for no stack set-up.
+    [MethodImpl(MethodImplOptions.NoInlining)]
     private static FishContact Deepest<TPartner>(FishModel fish, scoped ref TPartner partner)
         where TPartner : ILeafPartner, allows ref struct
     {
