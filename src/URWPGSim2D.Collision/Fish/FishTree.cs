@@ -10,7 +10,6 @@ namespace URWPGSim2D.Collision.Fish;
 /// each leaf 8-DOP, and the exact leaf test only where every bounding volume above it may
 /// overlap the partner. All bounding tests are conservative (they prune only what is
 /// strictly apart), so the contacts found are exactly those of a test of every leaf. A sink
-/// that takes depths gets the first half of each exact test only (see <see cref="DeepestSink"/>). A sink
 /// that takes depths gets the first half of each exact test only (see <see cref="DeepestSink"/>).
 /// </summary>
 internal static class FishTree
@@ -65,7 +64,7 @@ internal static class FishTree
                 Circle circleB = gb == 0 ? b.BodyGroup : b.TailGroup;
                 if (Slabs.MayOverlap(circleA, circleB))
                 {
-                    count = LeafPairs(a, b, ga, gb, circleB, candidates, count);
+                    count = LeafPairs(a, b, ga, gb, circleB, candidates, count, sink.TakesDepths);
                 }
             }
         }
@@ -155,8 +154,8 @@ internal static class FishTree
         }
     }
 
-    // The leaf pairs of groups (groupA, groupB) whose 8-DOPs overlap, appended at `count`.
-    private static int LeafPairs(FishModel a, FishModel b, int groupA, int groupB, in Circle circleB, Span<LeafPair> candidates, int count)
+    // The leaf pairs of groups (groupA, groupB) whose 8-DOPs overlap, appended at `count` (with depth bounds if asked).
+    private static int LeafPairs(FishModel a, FishModel b, int groupA, int groupB, in Circle circleB, Span<LeafPair> candidates, int count, bool bounds)
     {
         Slabs.OfCircle(circleB, out var circleMin, out var circleMax);
         int firstB = groupB == 0 ? 0 : FishLeafLayout.BodyGroupEnd;
@@ -175,7 +174,7 @@ internal static class FishTree
             {
                 if (Slabs.MayOverlap(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)))
                 {
-                    candidates[count++] = new LeafPair((byte)la, (byte)lb, DepthBound(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)));
+                    candidates[count++] = new LeafPair((byte)la, (byte)lb, bounds ? DepthBound(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)) : 0f);
                 }
             }
         }
