@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
@@ -95,6 +96,12 @@ internal static class ContactRegion
         if (v.Length == 2)
         {
             SegmentCrossing(v[0], v[1], p, u, out lo, out hi);
+            return;
+        }
+
+        if (Vector128.IsHardwareAccelerated)
+        {
+            FaceSeparation.LineInterval(v, view.Normals, p, u, out lo, out hi);
             return;
         }
 
