@@ -105,9 +105,14 @@ internal static class ContactRegion
             return;
         }
 
+        PolygonLineInterval(v, view.Normals, p, u, out lo, out hi);
+    }
+
+    /// <summary>The interval of a line in a polygon (three or more vertices), one face at a time: the reference for the vector path.</summary>
+    internal static void PolygonLineInterval(ReadOnlySpan<Vector2> v, ReadOnlySpan<Vector2> nrm, Vector2 p, Vector2 u, out float lo, out float hi)
+    {
         lo = float.NegativeInfinity;
         hi = float.PositiveInfinity;
-        var nrm = view.Normals;
         for (int i = 0; i < v.Length; i++)
         {
             float s = Vector2.Dot(nrm[i], p - v[i]);
