@@ -19,6 +19,7 @@ public class FishCollisionBenchmarks
 {
     private readonly FishPose[] _poses = new FishPose[16];
     private readonly FishPose[] _swim = new FishPose[64];
+    private readonly FishPose[] _bracket = new FishPose[64];
     private FishModel _fish = null!;
     private FishModel _nearMiss = null!;
     private FishModel _crossing = null!;
@@ -65,6 +66,14 @@ public class FishCollisionBenchmarks
             _swim[i] = new FishPose(p, heading, 0.25f * MathF.Sin(w), 0.3f * MathF.Sin(w + 1.4f), 0.35f * MathF.Sin(w + 2.4f));
         }
 
+        // Within one cycle: the tail pose is fixed while sub-steps and the search for the time of
+        // first contact move the fish back and forth along its path (position and heading only).
+        for (int i = 0; i < _bracket.Length; i++)
+        {
+            float s = (i * 37 % 64) / 64f;
+            _bracket[i] = new FishPose(new Vector2(300f + 20f * s, -200f + 5f * s), 0.7f + 0.05f * s, 0.21f, -0.13f, 0.33f);
+        }
+
         Console.WriteLine($"// near miss contacts: {FishCollision.DetectAll(_fish, _nearMiss, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _nearMiss)}");
         Console.WriteLine($"// crossing contacts: {FishCollision.DetectAll(_fish, _crossing, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _crossing)}");
         Console.WriteLine($"// deep overlap, optimised = baseline: {FishCollision.Detect(_fish, _crossing) == DeepestBaseline(_fish, _crossing)}");
@@ -107,6 +116,20 @@ public class FishCollisionBenchmarks
     {
         _updated.SetPose(_swim[_next++ & 63]);
         return _updated.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateSameJoints()
+    {
+        _updated.SetPose(_bracket[_next++ & 63]);
+        return _updated.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateSameJointsBaseline()
+    {
+        _baselinePose.SetPose(_bracket[_next++ & 63]);
+        return _baselinePose.Root;
     }
 
     [Benchmark]
