@@ -19,10 +19,12 @@ public class FishCollisionBenchmarks
 {
     private readonly FishPose[] _poses = new FishPose[16];
     private readonly FishPose[] _swim = new FishPose[64];
+    private readonly FishPose[] _bracket = new FishPose[64];
     private FishModel _fish = null!;
     private FishModel _nearMiss = null!;
     private FishModel _crossing = null!;
     private FishModel _updated = null!;
+    private FishPoseBaseline _baselinePose = null!;
     private Circle _ballA;
     private Circle _ballApart;
     private Circle _ballOverlapping;
@@ -42,6 +44,7 @@ public class FishCollisionBenchmarks
         // A fish crossing the first one's body at right angles: several leaf pairs overlap.
         _crossing = new FishModel(FishSize.Default, new FishPose(new Vector2(10f, -40f), MathF.PI / 2f, 0.3f, 0.2f, -0.1f));
         _updated = new FishModel(FishSize.Default, default);
+        _baselinePose = new FishPoseBaseline(FishSize.Default);
 
         _ballA = new Circle(new Vector2(0f, 0f), 58f);
         _ballApart = new Circle(new Vector2(300f, 40f), 58f);
@@ -63,8 +66,17 @@ public class FishCollisionBenchmarks
             _swim[i] = new FishPose(p, heading, 0.25f * MathF.Sin(w), 0.3f * MathF.Sin(w + 1.4f), 0.35f * MathF.Sin(w + 2.4f));
         }
 
+        // Within one cycle: the tail pose is fixed while sub-steps and the search for the time of
+        // first contact move the fish back and forth along its path (position and heading only).
+        for (int i = 0; i < _bracket.Length; i++)
+        {
+            float s = (i * 37 % 64) / 64f;
+            _bracket[i] = new FishPose(new Vector2(300f + 20f * s, -200f + 5f * s), 0.7f + 0.05f * s, 0.21f, -0.13f, 0.33f);
+        }
+
         Console.WriteLine($"// near miss contacts: {FishCollision.DetectAll(_fish, _nearMiss, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _nearMiss)}");
         Console.WriteLine($"// crossing contacts: {FishCollision.DetectAll(_fish, _crossing, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _crossing)}");
+        Console.WriteLine($"// deep overlap, optimised = baseline: {FishCollision.Detect(_fish, _crossing) == DeepestBaseline(_fish, _crossing)}");
         Console.WriteLine($"// ball at tail hits: {FishCollision.Detect(_fish, _ballAtTail)}, far ball root overlap: {_fish.Root.Overlaps(_ballFar)}");
     }
 
@@ -104,6 +116,73 @@ public class FishCollisionBenchmarks
     {
         _updated.SetPose(_swim[_next++ & 63]);
         return _updated.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateSameJoints()
+    {
+        _updated.SetPose(_bracket[_next++ & 63]);
+        return _updated.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateSameJointsBaseline()
+    {
+        _baselinePose.SetPose(_bracket[_next++ & 63]);
+        return _baselinePose.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateRandomBaseline()
+    {
+        _baselinePose.SetPose(_poses[_next++ & 15]);
+        return _baselinePose.Root;
+    }
+
+    [Benchmark]
+    public Circle PoseUpdateSwimmingBaseline()
+    {
+        _baselinePose.SetPose(_swim[_next++ & 63]);
+        return _baselinePose.Root;
+    }
+
+    /// <summary>The deepest fish–fish contact as it was computed before: every candidate leaf pair's full SAT (frozen baseline), deepest kept.</summary>
+    [Benchmark]
+    public FishContact FishVsFishDeepOverlapBaseline() => DeepestBaseline(_fish, _crossing);
+
+    // The pre-optimisation fish–fish query: same bounding-volume descent, full frozen-baseline SAT
+    // (MTV and action point) for every candidate leaf pair, deepest kept (ties to the lower pair).
+    private static FishContact DeepestBaseline(FishModel a, FishModel b)
+    {
+        if (!Slabs.MayOverlap(a.Root, b.Root))
+        {
+            return FishContact.None;
+        }
+
+        var best = FishContact.None;
+        float bestDepth2 = -1f;
+        for (int la = 0; la < 8; la++)
+        {
+            Circle ga = la < 3 ? a.BodyGroup : a.TailGroup;
+            for (int lb = 0; lb < 8; lb++)
+            {
+                Circle gb = lb < 3 ? b.BodyGroup : b.TailGroup;
+                if (!Slabs.MayOverlap(ga, gb) || !Slabs.MayOverlap(a.LeafMin(la), a.LeafMax(la), b.LeafMin(lb), b.LeafMax(lb)))
+                {
+                    continue;
+                }
+
+                var r = ConvexSatBaseline.Detect(a.LeafView(la), b.LeafView(lb));
+                float d2 = r.MinimumTranslationVector.LengthSquared();
+                if (r.Intersect && d2 > bestDepth2)
+                {
+                    bestDepth2 = d2;
+                    best = new FishContact(r, (FishPart)la, (FishPart)lb);
+                }
+            }
+        }
+
+        return best;
     }
 
     // Leaf pairs that reach the exact test: group circles and both leaf 8-DOPs overlap.

@@ -14,7 +14,9 @@ public sealed partial class FishModel
     /// Moves the model to <paramref name="pose"/>: every leaf vertex and normal is its
     /// frame-local value rotated by the frame's angle and moved to the frame's origin (body:
     /// P and θ; tail segment i: Sᵢ and θ + φᵢ with S1 = P − (L/2)·u, Sᵢ₊₁ = Sᵢ − Lᵢ·dᵢ), then
-    /// the leaf 8-DOPs, <see cref="Bounds"/> and the three circles are rebuilt. Allocates nothing.
+    /// the leaf 8-DOPs and <see cref="Bounds"/> are rebuilt and the three circles moved with the
+    /// body (the tail group and root circles are recomputed in the body frame only when a joint
+    /// angle changed). Allocates nothing.
     /// </summary>
     /// <param name="pose">The new pose (validated by its constructor).</param>
     public void SetPose(in FishPose pose)
@@ -29,25 +31,23 @@ public sealed partial class FishModel
         Vector2 o2 = o1 - size.Joint1 * r1;
         Vector2 o3 = o2 - size.Joint2 * r2;
         PlaceFrames(o0, r0, o1, r1, o2, r2, o3, r3);
-        Vector4 bodyMin, bodyMax, tailMin, tailMax;
+        Vector4 allMin, allMax;
         if (Vector128.IsHardwareAccelerated)
         {
             // One outward pad for every leaf: no vertex has |x| + |z| beyond |Px| + |Pz| + √2·reach.
             var outward = FloatSlabs.Outward(MathF.Abs(pose.Position.X) + MathF.Abs(pose.Position.Y) + _template.SlabReach);
-            AllLeafSlabs(outward, out bodyMin, out bodyMax, out tailMin, out tailMax);
+            AllLeafSlabs(outward, out allMin, out allMax);
         }
         else
         {
-            AllLeafSlabsScalar(out bodyMin, out bodyMax, out tailMin, out tailMax);
+            AllLeafSlabsScalar(out allMin, out allMax);
         }
 
-        Vector4 allMin = Vector128.MinNative(bodyMin.AsVector128(), tailMin.AsVector128()).AsVector4();
-        Vector4 allMax = Vector128.MaxNative(bodyMax.AsVector128(), tailMax.AsVector128()).AsVector4();
         Pose = pose;
         Forward = r0;
         HeadTip = pose.Position + _template.HeadReach * r0;
         Bounds = Aabb.Trusted(new Vector2(allMin.X, allMin.Y), new Vector2(allMax.X, allMax.Y));
-        RebuildCircles(o0, r0, tailMin, tailMax, allMin, allMax);
+        RebuildCircles(pose, r0);
     }
 
     /// <summary>R(α)·(a, b) = (a·cos α − b·sin α, a·sin α + b·cos α), with r = (cos α, sin α).</summary>
@@ -77,25 +77,18 @@ public sealed partial class FishModel
             _vertices.AsSpan(start, count), _normals.AsSpan(start, count), origin, rotation);
     }
 
-    // Every leaf's slabs, stored, and the union over each group (not padded: only centres come from them).
-    private void AllLeafSlabs(Vector128<float> outward, out Vector4 bodyMin, out Vector4 bodyMax, out Vector4 tailMin, out Vector4 tailMax)
+    // Every leaf's slabs, stored, and their union (whose x and z slabs are exact: Bounds).
+    private void AllLeafSlabs(Vector128<float> outward, out Vector4 allMin, out Vector4 allMax)
     {
-        var bodyLo = LeafSlabs(0, outward, out var bodyHi);
-        bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(1, outward, out var hi));
-        bodyHi = Vector128.MaxNative(bodyHi, hi);
-        bodyLo = Vector128.MinNative(bodyLo, LeafSlabs(2, outward, out hi));
-        bodyHi = Vector128.MaxNative(bodyHi, hi);
-        var tailLo = LeafSlabs(3, outward, out var tailHi);
-        for (int leaf = 4; leaf < FishLeafLayout.LeafCount; leaf++)
+        var lo = LeafSlabs(0, outward, out var hi);
+        for (int leaf = 1; leaf < FishLeafLayout.LeafCount; leaf++)
         {
-            tailLo = Vector128.MinNative(tailLo, LeafSlabs(leaf, outward, out hi));
-            tailHi = Vector128.MaxNative(tailHi, hi);
+            lo = Vector128.MinNative(lo, LeafSlabs(leaf, outward, out var leafHi));
+            hi = Vector128.MaxNative(hi, leafHi);
         }
 
-        bodyMin = bodyLo.AsVector4();
-        bodyMax = bodyHi.AsVector4();
-        tailMin = tailLo.AsVector4();
-        tailMax = tailHi.AsVector4();
+        allMin = lo.AsVector4();
+        allMax = hi.AsVector4();
     }
 
     // The padded slabs of one leaf, stored; returns them (lower, and upper in hi).
@@ -110,40 +103,41 @@ public sealed partial class FishModel
         return lo;
     }
 
-    private void AllLeafSlabsScalar(out Vector4 bodyMin, out Vector4 bodyMax, out Vector4 tailMin, out Vector4 tailMax)
+    private void AllLeafSlabsScalar(out Vector4 allMin, out Vector4 allMax)
     {
-        bodyMin = tailMin = new(float.PositiveInfinity);
-        bodyMax = tailMax = new(float.NegativeInfinity);
+        allMin = new(float.PositiveInfinity);
+        allMax = new(float.NegativeInfinity);
         for (int leaf = 0; leaf < FishLeafLayout.LeafCount; leaf++)
         {
             FloatSlabs.OfScalar(_vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf)), out Vector4 min, out Vector4 max);
             _slabMin[leaf] = min;
             _slabMax[leaf] = max;
-            if (leaf < FishLeafLayout.BodyGroupEnd)
-            {
-                bodyMin = Vector4.Min(bodyMin, min);
-                bodyMax = Vector4.Max(bodyMax, max);
-            }
-            else
-            {
-                tailMin = Vector4.Min(tailMin, min);
-                tailMax = Vector4.Max(tailMax, max);
-            }
+            allMin = Vector4.Min(allMin, min);
+            allMax = Vector4.Max(allMax, max);
         }
     }
 
-    // Body group: rigid, its minimum circle moves with the body. Tail group and root: centred at
-    // the centre of the smallest fixed-axis octagon around their slabs, radius to the farthest
-    // vertex: at most 1/cos 22.5° of the minimum radius (see OctagonCentre). The root holds every
-    // leaf but not necessarily the group circles, which bulge past the fish (holding them would
-    // cost up to 1.28 times the minimum even with the best circle around both).
-    private void RebuildCircles(Vector2 position, Vector2 bodyRotation, Vector4 tailMin, Vector4 tailMax, Vector4 allMin, Vector4 allMax)
+    // The three circles move rigidly with the body frame: the body group's minimum circle
+    // (fixed per size) and the tail group and root circles of the current joint angles (see
+    // FishShapeCircles). The world leaves are placed through the frames' own angles θ + φᵢ, not by
+    // this rigid move, so the radii grow by a bound on that difference: the rounding of θ + φᵢ
+    // and of the sines and cosines, times the reach (2⁻²⁰·(4 + |θ| + max |φᵢ|) radians, ample).
+    // The root holds every leaf but not necessarily the group circles, which bulge past the fish
+    // (holding them would cost up to 1.28 times the minimum even with the best circle around both).
+    private void RebuildCircles(in FishPose pose, Vector2 bodyRotation)
     {
+        Vector2 position = pose.Position;
         var body = _template.BodyGroup;
         BodyGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, body.Center), body.Radius);
-        Vector2 tailCentre = OctagonCentre.Of(tailMin, tailMax);
-        Vector2 rootCentre = OctagonCentre.Of(allMin, allMax);
-        TailGroup = EnclosingCircle.Enclosing(_vertices.AsSpan(FishLeafLayout.TailGroupFirstVertex), tailCentre);
-        Root = EnclosingCircle.Enclosing(_vertices, rootCentre);
+        _shape.Update(pose.Joint1, pose.Joint2, pose.Joint3);
+        float angles = 4f + MathF.Abs(pose.Heading) + MathF.Max(MathF.Abs(pose.Joint1), MathF.Max(MathF.Abs(pose.Joint2), MathF.Abs(pose.Joint3)));
+        float turn = _shape.Reach * AngleRoundOff * angles;
+        var tail = _shape.Tail;
+        var root = _shape.Root;
+        TailGroup = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, tail.Center), tail.Radius + turn);
+        Root = EnclosingCircle.WithSlack(position + Rotate(bodyRotation, root.Center), root.Radius + turn);
     }
+
+    // 2⁻²⁰: radians of angle round-off per radian of |θ| + |φ| (plus 4 for the sines and cosines).
+    private const float AngleRoundOff = 1f / 1048576f;
 }

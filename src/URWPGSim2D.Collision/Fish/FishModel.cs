@@ -18,15 +18,19 @@ namespace URWPGSim2D.Collision.Fish;
 /// is tight: the body group circle is the minimum enclosing circle of its leaves (rigid); the
 /// tail group and root circles are at most 1/cos 22.5° ≈ 1.083 times the minimum (each is
 /// centred on the smallest fixed-axis octagon around its leaves' slabs and reaches the farthest
-/// vertex, see <c>OctagonCentre</c>). Each is grown by a few µm against round-off. The root
-/// need not enclose the group circles themselves, which bulge past the fish; the descent only
-/// needs each volume to hold its leaves.
+/// vertex, see <c>OctagonCentre</c>). The fish's shape in its body frame depends on the joint
+/// angles only, so those two circles are computed in the body frame when a joint angle changes
+/// and moved with the body otherwise; all three are a function of the pose alone. Each is grown
+/// by a few µm against round-off (more for headings of hundreds of radians, whose sums θ + φᵢ
+/// round coarsely). The root need not enclose the group circles themselves, which bulge past the
+/// fish; the descent only needs each volume to hold its leaves.
 /// Each leaf's 8-DOP holds its polygon; its diagonal slabs may lie a few float steps outside
 /// the exact projections. Not thread-safe while a pose is being set.
 /// </remarks>
 public sealed partial class FishModel
 {
     private readonly FishTemplate _template;
+    private readonly FishShapeCircles _shape;
     private readonly Vector2[] _vertices = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector2[] _normals = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector4[] _slabMin = new Vector4[FishLeafLayout.LeafCount];
@@ -44,6 +48,7 @@ public sealed partial class FishModel
         }
 
         _template = new FishTemplate(size);
+        _shape = new FishShapeCircles(_template);
         SetPose(pose);
     }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
@@ -98,9 +99,20 @@ internal static class ContactRegion
             return;
         }
 
+        if (Vector128.IsHardwareAccelerated)
+        {
+            FaceSeparation.LineInterval(v, view.Normals, p, u, out lo, out hi);
+            return;
+        }
+
+        PolygonLineInterval(v, view.Normals, p, u, out lo, out hi);
+    }
+
+    /// <summary>The interval of a line in a polygon (three or more vertices), one face at a time: the reference for the vector path.</summary>
+    internal static void PolygonLineInterval(ReadOnlySpan<Vector2> v, ReadOnlySpan<Vector2> nrm, Vector2 p, Vector2 u, out float lo, out float hi)
+    {
         lo = float.NegativeInfinity;
         hi = float.PositiveInfinity;
-        var nrm = view.Normals;
         for (int i = 0; i < v.Length; i++)
         {
             float s = Vector2.Dot(nrm[i], p - v[i]);

@@ -242,6 +242,48 @@ internal static class FaceSeparation
         return index;
     }
 
+    /// <summary>
+    /// The interval [lo, hi] of t for which p + t·u lies in the convex polygon (at least three
+    /// vertices; empty: lo &gt; hi), four faces at a time: for each face, s = n·(p − v) and
+    /// d = n·u bound t by −s/d from above (d &gt; 0) or below (d &lt; 0); a face parallel to u with
+    /// p outside it (d = 0, s &gt; 0) empties it. The roundings are those of the scalar loop in
+    /// <see cref="ContactRegion.LineInterval"/>.
+    /// </summary>
+    public static void LineInterval(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, Vector2 u, out float lo, out float hi)
+    {
+        int count = normals.Length;
+        var px = Vector128.Create(p.X);
+        var pz = Vector128.Create(p.Y);
+        var ux = Vector128.Create(u.X);
+        var uz = Vector128.Create(u.Y);
+        var low = Vector128.Create(float.NegativeInfinity);
+        var high = Vector128.Create(float.PositiveInfinity);
+        for (int start = 0; start < count; start += 4)
+        {
+            int at = count >= 4 ? Math.Min(start, count - 4) : 0;
+            Lanes(normals, at, out var nx, out var nz);
+            Lanes(vertices, at, out var vx, out var vz);
+            var s = (nx * (px - vx)) + (nz * (pz - vz));
+            var d = (nx * ux) + (nz * uz);
+            var zero = Vector128<float>.Zero;
+            if (Vector128.EqualsAny(d, zero) && Vector128.GreaterThanAny(Vector128.ConditionalSelect(Vector128.Equals(d, zero), s, zero), zero))
+            {
+                lo = float.PositiveInfinity;
+                hi = float.NegativeInfinity;
+                return;
+            }
+
+            var t = -s / d;
+            high = Vector128.MinNative(high, Vector128.ConditionalSelect(Vector128.GreaterThan(d, zero), t, Vector128.Create(float.PositiveInfinity)));
+            low = Vector128.MaxNative(low, Vector128.ConditionalSelect(Vector128.LessThan(d, zero), t, Vector128.Create(float.NegativeInfinity)));
+        }
+
+        high = Vector128.MinNative(high, Vector128.Shuffle(high, Vector128.Create(2, 3, 0, 1)));
+        low = Vector128.MaxNative(low, Vector128.Shuffle(low, Vector128.Create(2, 3, 0, 1)));
+        hi = MathF.Min(high.GetElement(0), high.GetElement(1));
+        lo = MathF.Max(low.GetElement(0), low.GetElement(1));
+    }
+
     // The x and z coordinates of points at, at+1, at+2, at+3 in four lanes each (a span shorter
     // than four repeats its last point).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -31,6 +31,53 @@ public class FishBoundingVolumeTests
     }
 
     [Fact]
+    public void CirclesEncloseTheirLeavesAtHugeHeadingsAndFarAway()
+    {
+        // The tail group and root circles are computed in the body frame and moved rigidly; the
+        // leaves are placed through each frame's own angle θ + φᵢ. Large |θ| makes that sum round
+        // coarsely, far positions make every coordinate round coarsely: the circles must still hold.
+        var rng = new Random(28);
+        var fish = new FishModel(FishSize.Default, default);
+        float[] headings = [1000f, -1000f, 123456f, 6.2831855f, -3.1415927f];
+        for (int trial = 0; trial < 5000; trial++)
+        {
+            if (trial % 500 == 499)
+            {
+                fish = new FishModel(FishTestKit.Size(rng), default);
+            }
+
+            var random = FishTestKit.Pose(rng, MathF.PI, trial % 2 == 0 ? 25000f : 1500f);
+            float heading = trial % 3 == 0 ? headings[rng.Next(headings.Length)] + random.Heading : random.Heading;
+            fish.SetPose(new FishPose(random.Position, heading, random.Joint1, random.Joint2, random.Joint3));
+            AssertEncloses(fish.BodyGroup, fish, BodyParts, trial);
+            AssertEncloses(fish.TailGroup, fish, TailParts, trial);
+            AssertEncloses(fish.Root, fish, FishTestKit.AllParts, trial);
+        }
+    }
+
+    [Fact]
+    public void CirclesDependOnThePoseOnlyNotOnThePosesBefore()
+    {
+        // The tail and root circles are kept between poses with the same joint angles: a model that
+        // went through other poses first must end up bit for bit like a fresh one.
+        var rng = new Random(29);
+        var travelled = new FishModel(FishSize.Default, default);
+        for (int trial = 0; trial < 2000; trial++)
+        {
+            var pose = FishTestKit.Pose(rng, 1f, 1500f);
+            var sameJoints = new FishPose(FishTestKit.Point(rng, 1500f), FishTestKit.Range(rng, -3f, 3f), pose.Joint1, pose.Joint2, pose.Joint3);
+            travelled.SetPose(trial % 2 == 0 ? sameJoints : FishTestKit.Pose(rng, 1f, 1500f));
+            travelled.SetPose(pose);
+            var fresh = new FishModel(FishSize.Default, pose);
+            Assert.Equal(fresh.Root.Center, travelled.Root.Center);
+            Assert.Equal(fresh.Root.Radius, travelled.Root.Radius);
+            Assert.Equal(fresh.TailGroup.Center, travelled.TailGroup.Center);
+            Assert.Equal(fresh.TailGroup.Radius, travelled.TailGroup.Radius);
+            Assert.Equal(fresh.BodyGroup.Center, travelled.BodyGroup.Center);
+        }
+    }
+
+    [Fact]
     public void CirclesAreWithinThirtyPercentOfTheSmallestEnclosingCircle()
     {
         // Against the exhaustive smallest circle (slow: a few hundred poses).

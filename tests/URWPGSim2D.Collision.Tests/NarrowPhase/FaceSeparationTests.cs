@@ -77,6 +77,39 @@ public sealed class FaceSeparationTests
     }
 
     [Fact]
+    public void VectorAndScalarLineIntervalsAgreeBitForBit()
+    {
+        var rng = new Random(94);
+        int crossing = 0;
+        for (int trial = 0; trial < 20000; trial++)
+        {
+            Vector2[] a = Shape(rng, out Vector2[] na);
+            if (trial % 10 == 0)
+            {
+                // An axis-aligned box: lines along x or z are parallel to two of its faces.
+                a = [new(-40f, -30f), new(50f, -30f), new(50f, 20f), new(-40f, 20f)];
+                na = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
+            }
+
+            if (a.Length < 3)
+            {
+                continue;
+            }
+
+            Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
+            float angle = trial % 5 == 0 ? rng.Next(4) * MathF.PI / 2f : FishTestKit.Range(rng, 0f, 6.3f);
+            Vector2 u = trial % 5 == 0 ? new Vector2(MathF.Round(MathF.Cos(angle)), MathF.Round(MathF.Sin(angle))) : new Vector2(MathF.Cos(angle), MathF.Sin(angle));
+            FaceSeparation.LineInterval(a, na, p, u, out float lo, out float hi);
+            ContactRegion.PolygonLineInterval(a, na, p, u, out float scalarLo, out float scalarHi);
+            Assert.Equal(scalarLo, lo);
+            Assert.Equal(scalarHi, hi);
+            crossing += lo <= hi ? 1 : 0;
+        }
+
+        Assert.InRange(crossing, 1000, 19000);
+    }
+
+    [Fact]
     public void DepthThenCompleteEqualsDetect()
     {
         // The deepest-contact queries complete only the winner later; it must be the same answer.
