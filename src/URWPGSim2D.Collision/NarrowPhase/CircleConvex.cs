@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// <summary>
 /// Circle against any convex polygon-like view by Voronoi regions. The edge of greatest
 /// separation s = n·(c − v) is found in one pass (four edges at a time, see
-/// <see cref="FaceSeparation.Farthest"/>); when s ≤ 0 the centre is inside and the MTV
+/// <see cref="FaceLoops.Farthest"/>); when s ≤ 0 the centre is inside and the MTV
 /// leaves through that edge (depth r − s); otherwise the centre lies in the region of that edge
 /// or of one of its two end vertices (decided by two dot products, no angles), which is exact
 /// for convex polygons.
@@ -38,7 +38,7 @@ internal static class CircleConvex
         }
         else
         {
-            if (!FaceSeparation.Farthest(v, nrm, c, r, out int edge, out float maxSep))
+            if (!FaceLoops.Farthest(v, nrm, c, r, out int edge, out float maxSep))
             {
                 return false;
             }

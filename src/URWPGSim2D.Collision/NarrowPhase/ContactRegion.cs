@@ -101,7 +101,7 @@ internal static class ContactRegion
 
         if (Vector128.IsHardwareAccelerated)
         {
-            FaceSeparation.LineInterval(v, view.Normals, p, u, out lo, out hi);
+            FaceLoops.LineInterval(v, view.Normals, p, u, out lo, out hi);
             return;
         }
 

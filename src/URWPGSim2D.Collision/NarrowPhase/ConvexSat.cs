@@ -19,7 +19,7 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// normal, containment included.
 /// </summary>
 /// <remarks>
-/// <see cref="Depth"/> is the test without the action point (see <see cref="FaceSeparation"/>
+/// <see cref="Depth"/> is the test without the action point (see <see cref="FaceLoops"/>
 /// for the vectorised loop); <see cref="Complete"/> adds the action point; <see cref="Detect"/>
 /// is both. All arithmetic is relative to a's first vertex.
 /// </remarks>
@@ -69,8 +69,8 @@ internal static class ConvexSat
     // Both shapes' greatest face separations (relative coordinates); false when some face separates.
     private static bool Separations(ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> na, ReadOnlySpan<Vector2> rb, ReadOnlySpan<Vector2> nb, out ContactDepth depth)
     {
-        if (!FaceSeparation.Greatest(ra, na, rb, out int faceA, out float sepA)
-            || !FaceSeparation.Greatest(rb, nb, ra, out int faceB, out float sepB))
+        if (!FaceLoops.GreatestSeparation(ra, na, rb, out int faceA, out float sepA)
+            || !FaceLoops.GreatestSeparation(rb, nb, ra, out int faceB, out float sepB))
         {
             depth = default;
             return false;
@@ -154,7 +154,7 @@ internal static class ConvexSat
         Vector2 n = referenceNormals[face];
         Vector2 v1 = reference[face];
         Vector2 v2 = reference[face + 1 == reference.Length ? 0 : face + 1];
-        int edge = FaceSeparation.LeastDot(incidentNormals, n);
+        int edge = FaceLoops.LeastDot(incidentNormals, n);
 
         Vector2 p1 = incident[edge];
         Vector2 p2 = incident[edge + 1 == incident.Length ? 0 : edge + 1];
@@ -215,5 +215,5 @@ internal static class ConvexSat
     }
 
     private static bool InsideBoth(ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> na, ReadOnlySpan<Vector2> rb, ReadOnlySpan<Vector2> nb, Vector2 p) =>
-        ra.Length >= 3 && rb.Length >= 3 && FaceSeparation.Inside(ra, na, p, InsideTolerance) && FaceSeparation.Inside(rb, nb, p, InsideTolerance);
+        ra.Length >= 3 && rb.Length >= 3 && FaceLoops.Inside(ra, na, p, InsideTolerance) && FaceLoops.Inside(rb, nb, p, InsideTolerance);
 }

@@ -8,7 +8,7 @@ using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
-public sealed class FaceSeparationTests
+public sealed class FaceLoopsTests
 {
     [Fact]
     public void VectorAndScalarSeparationsAgreeBitForBit()
@@ -20,8 +20,8 @@ public sealed class FaceSeparationTests
         for (int trial = 0; trial < 20000; trial++)
         {
             Vector2[] a = Shape(rng, out Vector2[] na), b = Shape(rng, out _);
-            bool vector = FaceSeparation.GreatestVector(a, na, b, out int face, out float separation);
-            bool scalar = FaceSeparation.GreatestScalar(a, na, b, out int scalarFace, out float scalarSeparation);
+            bool vector = FaceLoops.GreatestSeparationVector(a, na, b, out int face, out float separation);
+            bool scalar = FaceLoops.GreatestSeparationScalar(a, na, b, out int scalarFace, out float scalarSeparation);
             Assert.Equal(scalar, vector);
             if (scalar)
             {
@@ -41,11 +41,11 @@ public sealed class FaceSeparationTests
         Vector2[] square = [new(-5f, -5f), new(5f, -5f), new(5f, 5f), new(-5f, 5f)];
         Vector2[] normals = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
         Vector2[] centre = [Vector2.Zero];
-        Assert.True(FaceSeparation.GreatestVector(square, normals, centre, out int face, out float separation));
+        Assert.True(FaceLoops.GreatestSeparationVector(square, normals, centre, out int face, out float separation));
         Assert.Equal(0, face);
         Assert.Equal(-5f, separation);
-        Assert.Equal(0, FaceSeparation.LeastDot(normals, new Vector2(0f, 0f)));
-        Assert.Equal(1, FaceSeparation.LeastDot([new(1f, 0f), new(-1f, 0f), new(-1f, 0f), new(0f, 1f), new(-1f, 0f)], Vector2.UnitX));
+        Assert.Equal(0, FaceLoops.LeastDot(normals, new Vector2(0f, 0f)));
+        Assert.Equal(1, FaceLoops.LeastDot([new(1f, 0f), new(-1f, 0f), new(-1f, 0f), new(0f, 1f), new(-1f, 0f)], Vector2.UnitX));
     }
 
     [Fact]
@@ -62,7 +62,7 @@ public sealed class FaceSeparationTests
                 inside &= Vector2.Dot(na[i], p - a[i]) <= 1e-3f;
             }
 
-            Assert.Equal(inside, FaceSeparation.Inside(a, na, p, 1e-3f));
+            Assert.Equal(inside, FaceLoops.Inside(a, na, p, 1e-3f));
             if (na.Length > 0)
             {
                 int least = 0;
@@ -71,7 +71,7 @@ public sealed class FaceSeparationTests
                     least = Vector2.Dot(na[j], p) < Vector2.Dot(na[least], p) ? j : least;
                 }
 
-                Assert.Equal(least, FaceSeparation.LeastDot(na, p));
+                Assert.Equal(least, FaceLoops.LeastDot(na, p));
             }
         }
     }
@@ -99,7 +99,7 @@ public sealed class FaceSeparationTests
             Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
             float angle = trial % 5 == 0 ? rng.Next(4) * MathF.PI / 2f : FishTestKit.Range(rng, 0f, 6.3f);
             Vector2 u = trial % 5 == 0 ? new Vector2(MathF.Round(MathF.Cos(angle)), MathF.Round(MathF.Sin(angle))) : new Vector2(MathF.Cos(angle), MathF.Sin(angle));
-            FaceSeparation.LineInterval(a, na, p, u, out float lo, out float hi);
+            FaceLoops.LineInterval(a, na, p, u, out float lo, out float hi);
             ContactRegion.PolygonLineInterval(a, na, p, u, out float scalarLo, out float scalarHi);
             Assert.Equal(scalarLo, lo);
             Assert.Equal(scalarHi, hi);

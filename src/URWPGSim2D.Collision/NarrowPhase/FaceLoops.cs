@@ -7,18 +7,22 @@ using System.Runtime.Intrinsics;
 namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>
-/// The inner loop of the face-by-face separating-axis test: for every face i of a reference
-/// shape (outward unit normal nᵢ through vertex vᵢ), sᵢ = min over the other shape's vertices w
-/// of nᵢ·w − nᵢ·vᵢ, and the greatest sᵢ. All points are relative to one common origin.
+/// The loops over a convex shape's faces (outward unit normal nᵢ through vertex vᵢ) that the
+/// pair tests spend their time in: the separating-axis test's separations sᵢ = min over the other
+/// shape's vertices w of nᵢ·w − nᵢ·vᵢ and their greatest, a point's farthest face line (circle
+/// against polygon), whether a point is inside, the face most anti-parallel to a direction, and
+/// where a line enters and leaves the shape.
 /// </summary>
 /// <remarks>
 /// With vector hardware four faces share a 128-bit vector (their normals and vertices are
 /// gathered into x and z lanes) and each of the other shape's vertices is broadcast against
 /// them: four dot products per two multiplications and one addition. Every lane does the same
 /// roundings as <see cref="Vector2.Dot"/> in the scalar loop, and ties go to the lowest face
-/// index in both, so the two paths agree bit for bit.
+/// index in both, so the two paths agree bit for bit. The loops are never inlined: inlined
+/// into a caller that inlines the rest of a pair test, they exhaust the JIT's inlining budget and
+/// leave small helpers (vector constructors) as calls.
 /// </remarks>
-internal static class FaceSeparation
+internal static class FaceLoops
 {
     /// <summary>
     /// The greatest separation of <paramref name="other"/> from the faces of
@@ -26,13 +30,13 @@ internal static class FaceSeparation
     /// sᵢ ≥ 0 (apart or touching). A reference with no faces (a single point): face −1,
     /// separation −∞.
     /// </summary>
-    public static bool Greatest(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation) =>
+    public static bool GreatestSeparation(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation) =>
         Vector128.IsHardwareAccelerated
-            ? GreatestVector(reference, normals, other, out face, out separation)
-            : GreatestScalar(reference, normals, other, out face, out separation);
+            ? GreatestSeparationVector(reference, normals, other, out face, out separation)
+            : GreatestSeparationScalar(reference, normals, other, out face, out separation);
 
     /// <summary>The same answer one face at a time (no vector hardware).</summary>
-    internal static bool GreatestScalar(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
+    internal static bool GreatestSeparationScalar(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
     {
         face = -1;
         separation = float.NegativeInfinity;
@@ -63,7 +67,8 @@ internal static class FaceSeparation
     }
 
     /// <summary>The same answer four faces at a time.</summary>
-    internal static bool GreatestVector(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    internal static bool GreatestSeparationVector(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
     {
         face = -1;
         separation = float.NegativeInfinity;
@@ -109,6 +114,7 @@ internal static class FaceSeparation
     /// first face wins a tie); false as soon as some sᵢ ≥ <paramref name="limit"/>. Four faces
     /// at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
     public static bool Farthest(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float limit, out int face, out float distance)
     {
         int count = normals.Length;
@@ -166,6 +172,7 @@ internal static class FaceSeparation
     /// v, relative coordinates): p inside the convex shape, or within the tolerance of it.
     /// Four faces at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
     public static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float tolerance)
     {
         int count = normals.Length;
@@ -203,6 +210,7 @@ internal static class FaceSeparation
     /// The index of the direction with the least dot product with <paramref name="d"/> (the first
     /// one on a tie; at least one direction): e.g. the edge most anti-parallel to a face.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
     public static int LeastDot(ReadOnlySpan<Vector2> directions, Vector2 d)
     {
         int count = directions.Length, index = 0;
@@ -249,6 +257,7 @@ internal static class FaceSeparation
     /// p outside it (d = 0, s &gt; 0) empties it. The roundings are those of the scalar loop in
     /// <see cref="ContactRegion.LineInterval"/>.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
     public static void LineInterval(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, Vector2 u, out float lo, out float hi)
     {
         int count = normals.Length;
