@@ -1,0 +1,215 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.BroadPhase;
+
+/// <summary>
+/// Sweep and prune on the x axis. The proxies are kept sorted by the left edge of their box; the
+/// order is repaired by insertion sort before each query, which is nearly linear when the boxes
+/// moved little since the last one (temporal coherence). <see cref="FindPairs"/> sweeps the sorted
+/// list: each proxy is tested against the following ones until their left edge passes its right
+/// edge, and the x-overlapping pairs are then tested on z. The pairs are finally put in the common
+/// order (counting sort by the smaller index, insertion sort within). With n objects of similar size
+/// spread over a square area, about n^1.5 pairs overlap on x alone, so its cost grows faster
+/// than linearly.
+/// </summary>
+public sealed class SweepAndPrune : IBroadPhase
+{
+    private readonly ProxyStore _store = new();
+    private int[] _order = new int[16];
+    private ProxyPair[] _unsorted = new ProxyPair[64];
+    private int[] _start = new int[17];
+    private float _widest;
+    private bool _dirty;
+
+    /// <inheritdoc/>
+    public int Count => _store.Count;
+
+    /// <inheritdoc/>
+    public int MovingCount => _store.MovingCount;
+
+    /// <inheritdoc/>
+    public void Reset(ReadOnlySpan<Aabb> boxes, int movingCount)
+    {
+        int previous = _store.Count;
+        _store.Reset(boxes, movingCount);
+        int n = _store.Count;
+        if (_order.Length < n)
+        {
+            Array.Resize(ref _order, Math.Max(n, _order.Length * 2));
+        }
+
+        if (previous != n)
+        {
+            for (int i = 0; i < n; i++)
+            {
+                _order[i] = i;
+            }
+        }
+
+        _dirty = true;
+    }
+
+    /// <inheritdoc/>
+    public void Move(int proxy, in Aabb box)
+    {
+        _store.Move(proxy, box);
+        _dirty = true;
+    }
+
+    /// <inheritdoc/>
+    public Aabb Box(int proxy) => _store.Box(proxy);
+
+    /// <inheritdoc/>
+    public void FindPairs(PairList pairs)
+    {
+        ArgumentNullException.ThrowIfNull(pairs);
+        Repair();
+        pairs.Clear();
+        var min = _store.Min;
+        var max = _store.Max;
+        int n = _store.Count;
+        int count = 0;
+        for (int i = 0; i < n; i++)
+        {
+            int a = _order[i];
+            Vector2 minA = min[a], maxA = max[a];
+            for (int j = i + 1; j < n; j++)
+            {
+                int b = _order[j];
+                if (min[b].X > maxA.X)
+                {
+                    break;
+                }
+
+                if (minA.Y <= max[b].Y && min[b].Y <= maxA.Y && _store.Pairable(a, b))
+                {
+                    if (count == _unsorted.Length)
+                    {
+                        Array.Resize(ref _unsorted, _unsorted.Length * 2);
+                    }
+
+                    _unsorted[count++] = a < b ? new ProxyPair(a, b) : new ProxyPair(b, a);
+                }
+            }
+        }
+
+        SortInto(count, pairs);
+    }
+
+    /// <inheritdoc/>
+    public void Query(in Aabb box, IndexList result)
+    {
+        ArgumentNullException.ThrowIfNull(result);
+        Repair();
+        result.Clear();
+        var min = _store.Min;
+        var max = _store.Max;
+        int n = _store.Count;
+
+        // Candidates have a left edge in [box.Min.X − widest, box.Max.X]: binary search the start.
+        float from = box.Min.X - _widest;
+        int lo = 0, hi = n;
+        while (lo < hi)
+        {
+            int mid = (lo + hi) >>> 1;
+            if (min[_order[mid]].X < from)
+            {
+                lo = mid + 1;
+            }
+            else
+            {
+                hi = mid;
+            }
+        }
+
+        for (int i = lo; i < n; i++)
+        {
+            int p = _order[i];
+            if (min[p].X > box.Max.X)
+            {
+                break;
+            }
+
+            if (ProxyBox.Overlap(box.Min, box.Max, min[p], max[p]))
+            {
+                result.Add(p);
+            }
+        }
+
+        result.SortFrom(0);
+    }
+
+    // Insertion sort of the order by left edge (stable, nearly linear when little moved); widest box.
+    private void Repair()
+    {
+        if (!_dirty)
+        {
+            return;
+        }
+
+        var min = _store.Min;
+        var max = _store.Max;
+        int n = _store.Count;
+        float widest = 0f;
+        for (int i = 0; i < n; i++)
+        {
+            int p = _order[i];
+            float key = min[p].X;
+            widest = MathF.Max(widest, max[p].X - key);
+            int j = i - 1;
+            while (j >= 0 && min[_order[j]].X > key)
+            {
+                _order[j + 1] = _order[j];
+                j--;
+            }
+
+            _order[j + 1] = p;
+        }
+
+        _widest = widest;
+        _dirty = false;
+    }
+
+    // Counting sort by A, then insertion sort by B within each A.
+    private void SortInto(int count, PairList pairs)
+    {
+        int n = _store.Count;
+        if (_start.Length < n + 1)
+        {
+            _start = new int[Math.Max(n + 1, _start.Length * 2)];
+        }
+
+        Array.Clear(_start, 0, n + 1);
+        for (int k = 0; k < count; k++)
+        {
+            _start[_unsorted[k].A + 1]++;
+        }
+
+        for (int a = 0; a < n; a++)
+        {
+            _start[a + 1] += _start[a];
+        }
+
+        Span<ProxyPair> output = pairs.Resize(count);
+        for (int k = 0; k < count; k++)
+        {
+            ProxyPair p = _unsorted[k];
+            output[_start[p.A]++] = p;
+        }
+
+        for (int i = 1; i < count; i++)
+        {
+            ProxyPair v = output[i];
+            int j = i - 1;
+            while (j >= 0 && output[j].A == v.A && output[j].B > v.B)
+            {
+                output[j + 1] = output[j];
+                j--;
+            }
+
+            output[j + 1] = v;
+        }
+    }
+}
