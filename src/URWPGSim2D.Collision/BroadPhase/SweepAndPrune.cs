@@ -18,8 +18,7 @@ public sealed class SweepAndPrune : IBroadPhase
 {
     private readonly ProxyStore _store = new();
     private int[] _order = new int[16];
-    private ProxyPair[] _unsorted = new ProxyPair[64];
-    private int[] _start = new int[17];
+    private readonly PairSorter _sorter = new();
     private float _widest;
     private bool _dirty;
 
@@ -70,7 +69,7 @@ public sealed class SweepAndPrune : IBroadPhase
         var min = _store.Min;
         var max = _store.Max;
         int n = _store.Count;
-        int count = 0;
+        _sorter.Clear();
         for (int i = 0; i < n; i++)
         {
             int a = _order[i];
@@ -85,17 +84,12 @@ public sealed class SweepAndPrune : IBroadPhase
 
                 if (minA.Y <= max[b].Y && min[b].Y <= maxA.Y && _store.Pairable(a, b))
                 {
-                    if (count == _unsorted.Length)
-                    {
-                        Array.Resize(ref _unsorted, _unsorted.Length * 2);
-                    }
-
-                    _unsorted[count++] = a < b ? new ProxyPair(a, b) : new ProxyPair(b, a);
+                    _sorter.Add(Math.Min(a, b), Math.Max(a, b));
                 }
             }
         }
 
-        SortInto(count, pairs);
+        _sorter.SortInto(n, pairs);
     }
 
     /// <inheritdoc/>
@@ -170,46 +164,5 @@ public sealed class SweepAndPrune : IBroadPhase
 
         _widest = widest;
         _dirty = false;
-    }
-
-    // Counting sort by A, then insertion sort by B within each A.
-    private void SortInto(int count, PairList pairs)
-    {
-        int n = _store.Count;
-        if (_start.Length < n + 1)
-        {
-            _start = new int[Math.Max(n + 1, _start.Length * 2)];
-        }
-
-        Array.Clear(_start, 0, n + 1);
-        for (int k = 0; k < count; k++)
-        {
-            _start[_unsorted[k].A + 1]++;
-        }
-
-        for (int a = 0; a < n; a++)
-        {
-            _start[a + 1] += _start[a];
-        }
-
-        Span<ProxyPair> output = pairs.Resize(count);
-        for (int k = 0; k < count; k++)
-        {
-            ProxyPair p = _unsorted[k];
-            output[_start[p.A]++] = p;
-        }
-
-        for (int i = 1; i < count; i++)
-        {
-            ProxyPair v = output[i];
-            int j = i - 1;
-            while (j >= 0 && output[j].A == v.A && output[j].B > v.B)
-            {
-                output[j + 1] = output[j];
-                j--;
-            }
-
-            output[j + 1] = v;
-        }
     }
 }

@@ -6,45 +6,56 @@ using URWPGSim2D.Collision.Shapes;
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>
-/// A uniform grid broad phase (spatial hashing). The plane is cut into square cells of side
-/// <see cref="CellSize"/>; cell (i, j) holds x ∈ [i·s, (i + 1)·s), z ∈ [j·s, (j + 1)·s). Each proxy
-/// is listed in every cell its box touches (a hash table of cell chains, so the world needs no
-/// bounds), and two proxies are tested only when they share a cell. A pair that shares several
-/// cells is reported once, from the cell holding the lower corner of the two boxes' intersection
-/// (max of the two minima). A proxy touching more than <see cref="MaxCellsPerProxy"/> cells is kept in
-/// a separate list and tested against everything. With objects of similar size and a cell about
-/// their size, a proxy touches at most four cells and meets a handful of others, so
-/// <see cref="FindPairs"/> costs O(n + pairs); <see cref="Move"/> only re-lists a proxy whose cell
-/// range changed (stale entries are skipped by a generation stamp and swept out on the next
-/// rebuild).
+/// A uniform grid broad phase. The plane is cut into square cells of side <see cref="CellSize"/>,
+/// at least as large as the boxes it holds; each proxy is listed once, in the cell of its box's
+/// lower corner (min x, min z). A box b of extent ≤ s that overlaps a box a has its lower corner in
+/// [a.min − s, a.max] on each axis, so a query reads only the cells of that range: 3 × 3 cells for
+/// a box the size of a cell. <see cref="Reset"/> lays the grid over the boxes' lower corners (at
+/// most about four cells per proxy) and counting-sorts the proxies by cell, so the boxes of a row
+/// of cells are contiguous in memory; <see cref="FindPairs"/> walks the cells in order, which keeps
+/// what it reads in cache, and sorts the pairs at the end (counting sort). Corners outside the grid
+/// fall into its border cells, which keeps every answer exact. A proxy moved to another cell by
+/// <see cref="Move"/> leaves the sorted arrays for a per-cell list until the next reset; boxes
+/// larger than a cell (the occasional outlier: a very fast object's swept box, a long static wall)
+/// are kept in a separate list and tested against everything. With objects of similar size,
+/// <see cref="FindPairs"/> costs O(n + pairs) and <see cref="Move"/> O(1).
 /// </summary>
-public sealed class UniformGrid : IBroadPhase
+public sealed partial class UniformGrid : IBroadPhase
 {
-    /// <summary>A proxy touching more cells than this is not listed in cells but tested against everything.</summary>
-    public const int MaxCellsPerProxy = 64;
-
-    private const int MaxCellsPerQuery = 256;
-    private const int NoEntry = -1;
+    private const int Empty = -1;
+    private const int MaxCellsPerQuery = 1024;
 
     private readonly ProxyStore _store = new();
     private readonly float _fixedCellSize;
     private readonly float _cellScale;
-    private readonly IndexList _scratch = new();
-    private float _inverse = 1f;
-    private int[] _generation = new int[16];
-    private CellRange[] _range = new CellRange[16];
-    private int[] _head = new int[64];
-    private int _mask = 63;
-    private Entry[] _entries = new Entry[256];
-    private int _entryCount;
-    private int _liveEntries;
-    private Entry[] _oversize = new Entry[16];
+    private readonly PairSorter _sorter = new();
+    private double _inverse = 1.0;
+    private float _fit = 1f;
+    private double _originX;
+    private double _originY;
+    private int _columns = 1;
+    private int _rows = 1;
+    private int[] _cellStart = new int[2];
+    private int[] _slotProxy = new int[16];
+    private Vector2[] _slotMin = new Vector2[16];
+    private Vector2[] _slotMax = new Vector2[16];
+    private int[] _slotOf = new int[16];
+    private int[] _cellOf = new int[16];
+    private int[] _movedHead = [Empty];
+    private int[] _movedNext = new int[16];
+    private int _movedCount;
+    private int _movedHeadsDirty;
+    private int[] _oversize = new int[16];
     private int _oversizeCount;
 
     /// <summary>Creates a grid.</summary>
     /// <param name="cellSize">A fixed cell side (mm), or 0 to choose it at every <see cref="Reset"/>.</param>
-    /// <param name="cellScale">When the side is chosen: this many times the mean extent (larger of width and height) of the moving proxies.</param>
-    /// <exception cref="ArgumentException">A parameter is negative or not finite, or <paramref name="cellScale"/> is 0.</exception>
+    /// <param name="cellScale">
+    /// When the side is chosen: this many times the largest extent (larger of width and height) of
+    /// the moving boxes, outliers beyond four times the mean extent left out (they go to the
+    /// oversize list), plus half a percent (a listed box is at most 99.5 % of a cell).
+    /// </param>
+    /// <exception cref="ArgumentException">A parameter is negative or not finite, or <paramref name="cellScale"/> is below 1.</exception>
     public UniformGrid(float cellSize = 0f, float cellScale = 1f)
     {
         if (!float.IsFinite(cellSize) || cellSize < 0f)
@@ -52,9 +63,9 @@ public sealed class UniformGrid : IBroadPhase
             throw new ArgumentException($"must be a finite number ≥ 0, got {cellSize}", nameof(cellSize));
         }
 
-        if (!float.IsFinite(cellScale) || !(cellScale > 0f))
+        if (!float.IsFinite(cellScale) || !(cellScale >= 1f))
         {
-            throw new ArgumentException($"must be a finite number > 0, got {cellScale}", nameof(cellScale));
+            throw new ArgumentException($"must be a finite number ≥ 1, got {cellScale}", nameof(cellScale));
         }
 
         _fixedCellSize = cellSize;
@@ -64,6 +75,9 @@ public sealed class UniformGrid : IBroadPhase
 
     /// <summary>The side of a cell, mm.</summary>
     public float CellSize { get; private set; }
+
+    /// <summary>Number of proxies larger than a cell (tested against everything).</summary>
+    public int OversizeCount => _oversizeCount;
 
     /// <inheritdoc/>
     public int Count => _store.Count;
@@ -76,39 +90,55 @@ public sealed class UniformGrid : IBroadPhase
     {
         _store.Reset(boxes, movingCount);
         int n = _store.Count;
-        if (_generation.Length < n)
+        if (_slotOf.Length < n)
         {
-            int size = Math.Max(n, _generation.Length * 2);
-            _generation = new int[size];
-            _range = new CellRange[size];
+            int size = Math.Max(n, _slotOf.Length * 2);
+            _slotProxy = new int[size];
+            _slotMin = new Vector2[size];
+            _slotMax = new Vector2[size];
+            _slotOf = new int[size];
+            _cellOf = new int[size];
+            _movedNext = new int[size];
+            _oversize = new int[size];
         }
 
         CellSize = _fixedCellSize > 0f ? _fixedCellSize : ChooseCellSize();
-        _inverse = 1f / CellSize;
-        Rebuild(4 * n);
+        LayOut();
+        SortIntoCells();
     }
 
     /// <inheritdoc/>
     public void Move(int proxy, in Aabb box)
     {
         _store.Move(proxy, box);
-        CellRange range = RangeOf(box.Min, box.Max);
-        ref CellRange old = ref _range[proxy];
-        bool wasOversize = old.Oversize;
-        if (range.Oversize ? wasOversize : (!wasOversize && range.SameCells(old)))
+        int cell = CellIndex(box.Min, box.Max);
+        int slot = _slotOf[proxy];
+        if (slot != Empty)
+        {
+            if (cell == _cellOf[proxy])
+            {
+                _slotMin[slot] = box.Min;
+                _slotMax[slot] = box.Max;
+                return;
+            }
+
+            _slotProxy[slot] = Empty;
+            _slotOf[proxy] = Empty;
+        }
+        else if (cell == _cellOf[proxy])
         {
             return;
         }
-
-        _liveEntries -= wasOversize ? 0 : old.Cells;
-        _generation[proxy]++;
-        if (_entryCount + range.Cells > _entries.Length && _liveEntries + range.Cells <= _entries.Length / 2)
+        else if (_cellOf[proxy] == Empty)
         {
-            Rebuild(_head.Length);
-            return;
+            RemoveOversize(proxy);
+        }
+        else
+        {
+            RemoveMoved(proxy);
         }
 
-        Insert(proxy, range);
+        Place(proxy, cell);
     }
 
     /// <inheritdoc/>
@@ -118,37 +148,25 @@ public sealed class UniformGrid : IBroadPhase
     public void FindPairs(PairList pairs)
     {
         ArgumentNullException.ThrowIfNull(pairs);
-        pairs.Clear();
-        var min = _store.Min;
-        var max = _store.Max;
-        int n = _store.Count;
-        for (int a = 0; a < _store.MovingCount; a++)
+        _sorter.Clear();
+        PairListedProxies();
+        if (_movedCount > 0)
         {
-            _scratch.Clear();
-            Vector2 minA = min[a], maxA = max[a];
-            CellRange ra = _range[a];
-            if (ra.Oversize)
+            for (int a = 0; a < _store.Count; a++)
             {
-                for (int b = a + 1; b < n; b++)
+                if (_slotOf[a] == Empty && _cellOf[a] != Empty)
                 {
-                    if (ProxyBox.Overlap(minA, maxA, min[b], max[b]))
-                    {
-                        _scratch.Add(b);
-                    }
+                    PairMoved(a);
                 }
             }
-            else
-            {
-                CollectFromCells(ra, minA, maxA, a);
-                CollectOversize(minA, maxA, a);
-                _scratch.SortFrom(0);
-            }
-
-            foreach (int b in _scratch.Items)
-            {
-                pairs.Add(a, b);
-            }
         }
+
+        for (int i = 0; i < _oversizeCount; i++)
+        {
+            PairOversize(_oversize[i]);
+        }
+
+        _sorter.SortInto(_store.Count, pairs);
     }
 
     /// <inheritdoc/>
@@ -156,14 +174,13 @@ public sealed class UniformGrid : IBroadPhase
     {
         ArgumentNullException.ThrowIfNull(result);
         result.Clear();
-        CellRange range = RangeOf(box.Min, box.Max);
-        if (range.CellsLong > MaxCellsPerQuery)
+        Vector2 lo = box.Min, hi = box.Max;
+        long cells = ((long)Column(hi.X) - Column(lo.X - CellSize) + 1) * ((long)Row(hi.Y) - Row(lo.Y - CellSize) + 1);
+        if (cells > MaxCellsPerQuery)
         {
-            var min = _store.Min;
-            var max = _store.Max;
             for (int p = 0; p < _store.Count; p++)
             {
-                if (ProxyBox.Overlap(box.Min, box.Max, min[p], max[p]))
+                if (ProxyBox.Overlap(lo, hi, _store.Min[p], _store.Max[p]))
                 {
                     result.Add(p);
                 }
@@ -172,169 +189,83 @@ public sealed class UniformGrid : IBroadPhase
             return;
         }
 
-        _scratch.Clear();
-        CollectFromCells(range, box.Min, box.Max, -1);
-        CollectOversize(box.Min, box.Max, -1);
-        _scratch.SortFrom(0);
-        foreach (int p in _scratch.Items)
+        int start = result.Count;
+        var sink = new QuerySink(result);
+        Scan(lo, hi, -1, ref sink);
+        result.SortFrom(start);
+    }
+
+    // Every listed proxy p > after whose box overlaps [lo, hi]: its lower corner lies in the cells
+    // of [lo − s, hi] (s plus a little against rounding), plus the oversize ones.
+    private void Scan<TSink>(Vector2 lo, Vector2 hi, int after, ref TSink sink)
+        where TSink : struct, ISink
+    {
+        int x0 = Column(lo.X - CellSize), x1 = Column(hi.X);
+        int y0 = Row(lo.Y - CellSize), y1 = Row(hi.Y);
+        int[] cellStart = _cellStart;
+        int[] slotProxy = _slotProxy;
+        Vector2[] slotMin = _slotMin;
+        Vector2[] slotMax = _slotMax;
+        for (int y = y0; y <= y1; y++)
         {
-            result.Add(p);
+            int row = y * _columns;
+            int end = cellStart[row + x1 + 1];
+            for (int s = cellStart[row + x0]; s < end; s++)
+            {
+                int p = slotProxy[s];
+                if (p > after && ProxyBox.Overlap(lo, hi, slotMin[s], slotMax[s]))
+                {
+                    sink.Add(p);
+                }
+            }
+        }
+
+        if (_movedCount > 0)
+        {
+            ScanMoved(lo, hi, after, x0, x1, y0, y1, ref sink);
+        }
+
+        var min = _store.Min;
+        var max = _store.Max;
+        for (int i = 0; i < _oversizeCount; i++)
+        {
+            int p = _oversize[i];
+            if (p > after && ProxyBox.Overlap(lo, hi, min[p], max[p]))
+            {
+                sink.Add(p);
+            }
         }
     }
 
-    // Every listed proxy p > after whose box overlaps [lo, hi], found once: in the cell holding the
-    // lower corner of the intersection, max(range.X0, p's X0), max(range.Y0, p's Y0).
-    private void CollectFromCells(CellRange range, Vector2 lo, Vector2 hi, int after)
+    private void ScanMoved<TSink>(Vector2 lo, Vector2 hi, int after, int x0, int x1, int y0, int y1, ref TSink sink)
+        where TSink : struct, ISink
     {
         var min = _store.Min;
         var max = _store.Max;
-        var entries = _entries;
-        for (int y = range.Y0; y <= range.Y1; y++)
+        for (int y = y0; y <= y1; y++)
         {
-            for (int x = range.X0; x <= range.X1; x++)
+            for (int x = x0; x <= x1; x++)
             {
-                for (int e = _head[Hash(x, y) & _mask]; e != NoEntry; e = entries[e].Next)
+                for (int p = _movedHead[(y * _columns) + x]; p != Empty; p = _movedNext[p])
                 {
-                    ref Entry entry = ref entries[e];
-                    int p = entry.Proxy;
-                    if (p <= after || entry.X != x || entry.Y != y || entry.Generation != _generation[p])
+                    if (p > after && ProxyBox.Overlap(lo, hi, min[p], max[p]))
                     {
-                        continue;
-                    }
-
-                    ref CellRange rp = ref _range[p];
-                    if (Math.Max(range.X0, rp.X0) != x || Math.Max(range.Y0, rp.Y0) != y)
-                    {
-                        continue;
-                    }
-
-                    if (ProxyBox.Overlap(lo, hi, min[p], max[p]))
-                    {
-                        _scratch.Add(p);
+                        sink.Add(p);
                     }
                 }
             }
         }
     }
 
-    private void CollectOversize(Vector2 lo, Vector2 hi, int after)
+    /// <summary>Receives the proxies a scan finds (a struct, so the scan is specialised and inlined).</summary>
+    private interface ISink
     {
-        var min = _store.Min;
-        var max = _store.Max;
-        for (int i = 0; i < _oversizeCount; i++)
-        {
-            int p = _oversize[i].Proxy;
-            if (p > after && _oversize[i].Generation == _generation[p] && ProxyBox.Overlap(lo, hi, min[p], max[p]))
-            {
-                _scratch.Add(p);
-            }
-        }
+        void Add(int proxy);
     }
 
-    private float ChooseCellSize()
+    private readonly struct QuerySink(IndexList list) : ISink
     {
-        int to = _store.MovingCount > 0 ? _store.MovingCount : _store.Count;
-        double sum = 0;
-        for (int i = 0; i < to; i++)
-        {
-            Vector2 size = _store.Max[i] - _store.Min[i];
-            sum += MathF.Max(size.X, size.Y);
-        }
-
-        float mean = to > 0 ? (float)(sum / to) : 0f;
-        float cell = mean * _cellScale;
-        return float.IsFinite(cell) && cell > 1e-3f ? cell : 1f;
+        public void Add(int proxy) => list.Add(proxy);
     }
 
-    // Clears the table (sized for about `expectedEntries`) and lists every proxy again.
-    private void Rebuild(int expectedEntries)
-    {
-        int size = 64;
-        while (size < expectedEntries)
-        {
-            size *= 2;
-        }
-
-        if (_head.Length != size)
-        {
-            _head = new int[size];
-        }
-
-        _mask = size - 1;
-        Array.Fill(_head, NoEntry);
-        _entryCount = 0;
-        _liveEntries = 0;
-        _oversizeCount = 0;
-        for (int p = 0; p < _store.Count; p++)
-        {
-            _generation[p] = 0;
-            Insert(p, RangeOf(_store.Min[p], _store.Max[p]));
-        }
-    }
-
-    private void Insert(int proxy, CellRange range)
-    {
-        _range[proxy] = range;
-        int generation = _generation[proxy];
-        if (range.Oversize)
-        {
-            if (_oversizeCount == _oversize.Length)
-            {
-                Array.Resize(ref _oversize, _oversize.Length * 2);
-            }
-
-            _oversize[_oversizeCount++] = new Entry { Proxy = proxy, Generation = generation };
-            return;
-        }
-
-        if (_entryCount + range.Cells > _entries.Length)
-        {
-            Array.Resize(ref _entries, Math.Max(_entries.Length * 2, _entryCount + range.Cells));
-        }
-
-        _liveEntries += range.Cells;
-        for (int y = range.Y0; y <= range.Y1; y++)
-        {
-            for (int x = range.X0; x <= range.X1; x++)
-            {
-                int h = Hash(x, y) & _mask;
-                _entries[_entryCount] = new Entry { Proxy = proxy, Generation = generation, Next = _head[h], X = x, Y = y };
-                _head[h] = _entryCount++;
-            }
-        }
-    }
-
-    private CellRange RangeOf(Vector2 min, Vector2 max) =>
-        new(CellOf(min.X), CellOf(min.Y), CellOf(max.X), CellOf(max.Y));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private int CellOf(float v) => (int)MathF.Floor(Math.Clamp(v * _inverse, -1e9f, 1e9f));
-
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int Hash(int x, int y) => (int)(((uint)x * 0x9E3779B1u) ^ ((uint)y * 0x85EBCA77u) ^ ((uint)y >> 7));
-
-    private struct Entry
-    {
-        public int Proxy;
-        public int Generation;
-        public int Next;
-        public int X;
-        public int Y;
-    }
-
-    private readonly struct CellRange(int x0, int y0, int x1, int y1)
-    {
-        public readonly int X0 = x0;
-        public readonly int Y0 = y0;
-        public readonly int X1 = x1;
-        public readonly int Y1 = y1;
-
-        public long CellsLong => ((long)X1 - X0 + 1) * ((long)Y1 - Y0 + 1);
-
-        public bool Oversize => CellsLong > MaxCellsPerProxy;
-
-        public int Cells => (int)Math.Min(CellsLong, int.MaxValue);
-
-        public bool SameCells(in CellRange other) => X0 == other.X0 && Y0 == other.Y0 && X1 == other.X1 && Y1 == other.Y1;
-    }
 }

@@ -58,7 +58,7 @@ public sealed class BroadPhaseContractTests
     {
         ArgumentAssert.Throws("cellSize", () => new UniformGrid(cellSize: -1f), "got -1");
         ArgumentAssert.Throws("cellSize", () => new UniformGrid(cellSize: float.NaN), "got NaN");
-        ArgumentAssert.Throws("cellScale", () => new UniformGrid(cellScale: 0f), "got 0");
+        ArgumentAssert.Throws("cellScale", () => new UniformGrid(cellScale: 0.5f), "≥ 1", "got 0.5");
         ArgumentAssert.Throws("marginScale", () => new DynamicAabbTree(marginScale: -0.5f), "got -0.5");
         ArgumentAssert.Throws("capacity", () => new PairList(-1), "got -1");
         ArgumentAssert.Throws("capacity", () => new IndexList(-2), "got -2");
@@ -69,7 +69,7 @@ public sealed class BroadPhaseContractTests
     {
         var grid = new UniformGrid(cellScale: 2f);
         grid.Reset([Box(0, 0, 100, 40), Box(0, 0, 300, 300), Box(0, 0, 5000, 5000)], movingCount: 2);
-        Assert.Equal(400f, grid.CellSize, 1e-3f); // 2 × mean(100, 300); the static box is ignored
+        Assert.Equal(600f / 0.995f, grid.CellSize, 1e-3f); // 2 × the larger moving extent (300), +0.5 %; the static box is ignored
         var fixedGrid = new UniformGrid(cellSize: 250f);
         fixedGrid.Reset([Box(0, 0, 1, 1)], 1);
         Assert.Equal(250f, fixedGrid.CellSize);

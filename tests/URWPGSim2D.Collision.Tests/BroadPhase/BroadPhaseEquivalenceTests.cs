@@ -15,13 +15,14 @@ public sealed class BroadPhaseEquivalenceTests
 {
     private const int Worlds = 150;
 
-    public static TheoryData<string> Kinds() => new() { "grid", "grid-fine", "grid-coarse", "sap", "tree" };
+    public static TheoryData<string> Kinds() => new() { "grid", "grid-fine", "grid-coarse", "grid-tiny", "sap", "tree" };
 
     internal static IBroadPhase Create(string kind) => kind switch
     {
         "grid" => new UniformGrid(),
-        "grid-fine" => new UniformGrid(cellSize: 7f),
+        "grid-fine" => new UniformGrid(cellSize: 40f),
         "grid-coarse" => new UniformGrid(cellScale: 6f),
+        "grid-tiny" => new UniformGrid(cellSize: 0.5f),
         "sap" => new SweepAndPrune(),
         "tree" => new DynamicAabbTree(),
         _ => throw new ArgumentException(kind),

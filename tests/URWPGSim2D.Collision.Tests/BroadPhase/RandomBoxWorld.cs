@@ -49,12 +49,19 @@ internal sealed class RandomBoxWorld(int seed)
         return new Aabb(center - (size * 0.5f), center + (size * 0.5f));
     }
 
-    /// <summary>The box moved by a small (coherent) or a large (teleporting) step, sometimes resized.</summary>
+    /// <summary>
+    /// The box moved by a small (coherent) or a large (teleporting) step, sometimes resized,
+    /// sometimes far outside the region the world started in.
+    /// </summary>
     public Aabb Moved(in Aabb box, float halfSize)
     {
-        if (_random.Next(8) == 0)
+        switch (_random.Next(16))
         {
-            return Box(halfSize);
+            case 0:
+            case 1:
+                return Box(halfSize);
+            case 2:
+                return Box(halfSize * 10f);
         }
 
         Vector2 step = new(((float)_random.NextDouble() - 0.5f) * 60f, ((float)_random.NextDouble() - 0.5f) * 60f);
