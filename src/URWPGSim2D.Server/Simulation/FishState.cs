@@ -15,6 +15,9 @@ namespace URWPGSim2D.Server.Simulation;
 /// </summary>
 internal sealed class FishState
 {
+    private RigidFrame _frame;
+    private bool _frameValid;
+
     public FishState(int index, int team, FishSize size, Vector2 position, float heading)
     {
         Index = index;
@@ -96,6 +99,9 @@ internal sealed class FishState
     /// <summary>Heading at the stepper's last committed time.</summary>
     public float BaseHeading;
 
+    /// <summary>The stepper's last committed time for this fish (cycle fraction 0 … 1).</summary>
+    public double BaseTime;
+
     /// <summary>Forward unit vector u = (cos θ, sin θ).</summary>
     public Vector2 Forward => new(MathF.Cos(Heading), MathF.Sin(Heading));
 
@@ -146,12 +152,12 @@ internal sealed class FishState
     /// <summary>Whether <see cref="Model"/> lags behind the pose fields (it is rebuilt only when a test needs it).</summary>
     public bool ModelStale { get; private set; }
 
-    /// <summary>The collision model at the current pose (rebuilt first if stale).</summary>
+    /// <summary>The collision model exactly at the current pose (rebuilt first if it lags behind).</summary>
     public FishModel PosedModel
     {
         get
         {
-            if (ModelStale)
+            if (ModelStale && !(JointsCurrent && Frame.IsIdentity))
             {
                 SyncModel();
             }
@@ -160,21 +166,100 @@ internal sealed class FishState
         }
     }
 
-    /// <summary>Rebuilds the collision model at the current position, heading and joints.</summary>
-    public void SyncModel()
+    /// <summary>
+    /// The collision model with the current joint angles, rebuilt only when they changed: it may
+    /// sit at an older position and heading, related to the fish by <see cref="Frame"/>.
+    /// </summary>
+    public FishModel RigidModel
     {
-        Model.SetPose(new FishPose(Position, Heading, Joint1, Joint2, Joint3));
-        ModelStale = false;
+        get
+        {
+            if (!JointsCurrent)
+            {
+                SyncModel();
+            }
+
+            return Model;
+        }
     }
 
-    /// <summary>Marks the pose fields as changed; the model is rebuilt when next needed.</summary>
-    public void Invalidate() => ModelStale = true;
+    /// <summary>The rigid motion from <see cref="Model"/>'s pose to the fish's current position and heading.</summary>
+    public RigidFrame Frame
+    {
+        get
+        {
+            if (!_frameValid)
+            {
+                FishPose posed = Model.Pose;
+                _frame = new RigidFrame(posed.Position, posed.Heading, Position, Heading);
+                _frameValid = true;
+            }
+
+            return _frame;
+        }
+    }
+
+    /// <summary>Whether the model was built with the current joint angles.</summary>
+    public bool JointsCurrent
+    {
+        get
+        {
+            FishPose posed = Model.Pose;
+            return posed.Joint1 == Joint1 && posed.Joint2 == Joint2 && posed.Joint3 == Joint3;
+        }
+    }
+
+    /// <summary>Rebuilds the collision model at the current position, heading and joints.</summary>
+    public void SyncModel() => SyncModelAt(Position, Heading);
+
+    /// <summary>
+    /// Rebuilds the collision model with the current joints at the given position and heading (for
+    /// example the fish's pose in another fish's model frame); <see cref="Frame"/> then carries it onto the fish.
+    /// </summary>
+    public void SyncModelAt(Vector2 position, float heading)
+    {
+        Model.SetPose(new FishPose(position, heading, Joint1, Joint2, Joint3));
+        ModelStale = position != Position || heading != Heading;
+        _frameValid = false;
+    }
+
+    /// <summary>Marks the pose fields as changed; the model is rebuilt or moved when next needed.</summary>
+    public void Invalidate()
+    {
+        ModelStale = true;
+        _frameValid = false;
+    }
+
+    /// <summary>
+    /// Two circles whose union holds the fish at its current pose, without rebuilding the model:
+    /// the model's body group and tail group circles carried by <see cref="Frame"/>; after a joint
+    /// change, twice the circle of <see cref="MaxReach"/> around the centre.
+    /// </summary>
+    public void Groups(out Disc body, out Disc tail)
+    {
+        if (!JointsCurrent)
+        {
+            body = tail = new Disc(Position, MaxReach);
+            return;
+        }
+
+        Circle b = Model.BodyGroup, t = Model.TailGroup;
+        if (!ModelStale)
+        {
+            body = new Disc(b.Center, b.Radius);
+            tail = new Disc(t.Center, t.Radius);
+            return;
+        }
+
+        RigidFrame frame = Frame;
+        body = new Disc(frame.ToWorld(b.Center), b.Radius);
+        tail = new Disc(frame.ToWorld(t.Center), t.Radius);
+    }
 
     /// <summary>
     /// A circle enclosing the fish at its current pose without rebuilding the model: the model's
-    /// root circle moved by the position change since the model was built, grown by the arc its
-    /// farthest point sweeps for the heading change ; after a joint change, the circle of
-    /// <see cref="MaxReach"/> around the centre.
+    /// root circle carried by <see cref="Frame"/> (exact, the fish is rigid within a cycle); after a
+    /// joint change, the circle of <see cref="MaxReach"/> around the centre.
     /// </summary>
     public Circle Bound()
     {
@@ -184,14 +269,11 @@ internal sealed class FishState
             return root;
         }
 
-        FishPose posed = Model.Pose;
-        if (posed.Joint1 != Joint1 || posed.Joint2 != Joint2 || posed.Joint3 != Joint3)
+        if (!JointsCurrent)
         {
             return new Circle(Position, MaxReach);
         }
 
-        float reach = Vector2.Distance(root.Center, posed.Position) + root.Radius;
-        float turn = MathF.Abs(Angles.Wrap(Heading - posed.Heading));
-        return new Circle(root.Center + (Position - posed.Position), root.Radius + (turn * reach));
+        return new Circle(Frame.ToWorld(root.Center), root.Radius);
     }
 }

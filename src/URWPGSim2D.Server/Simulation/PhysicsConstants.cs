@@ -36,8 +36,11 @@ internal static class PhysicsConstants
     /// <summary>Bisection stops when nothing involved moves more than this (mm) inside the bracket.</summary>
     public const float TimeOfImpactTolerance = 0.25f;
 
-    /// <summary>Largest number of contact events (each with its own time of first contact) per cycle.</summary>
-    public const int MaximumEventsPerCycle = 64;
+    /// <summary>
+    /// Contact events a body may take part in per cycle with a refined time of first contact; its
+    /// later events in that cycle are resolved where they are found (bounds the work in a jam).
+    /// </summary>
+    public const int MaximumEventsPerBody = 64;
 
     /// <summary>Position corrections a fish may take in one cycle before its move is rejected.</summary>
     public const int MaximumCorrectionsPerFish = 8;
