@@ -34,6 +34,7 @@ internal sealed class CliApp
     [
         new RunCommand(),
         new CollideCommand(),
+        new MergeCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>
