@@ -34,6 +34,8 @@ internal sealed class CliApp
     [
         new RunCommand(),
         new CollideCommand(),
+        new ShapesCommand(),
+        new RenderCommand(),
         new MergeCommand(),
     ];
 

@@ -6,7 +6,8 @@ namespace URWPGSim2D.Server.Json;
 /// <summary>
 /// One element of the <c>collide</c> output: a <see cref="CollisionDetectionResult"/> with each
 /// vector written as [x, z] (its X and Z; Y is always 0), mm. Properties are written in
-/// declaration order; properties left null are omitted (room for later per-part fields).
+/// declaration order. This is the element of a pair without a fish, unchanged since before fish
+/// existed; a pair with a fish is written as <see cref="FishCollisionResultDto"/>.
 /// </summary>
 internal sealed class CollisionResultDto
 {

@@ -60,6 +60,23 @@ internal readonly struct FieldReader(string objectPath)
         return v;
     }
 
+    /// <summary>A required array of exactly <paramref name="count"/> numbers (joint angles in rad, lengths in mm).</summary>
+    /// <param name="value">The deserialized array.</param>
+    /// <param name="field">The JSON field name.</param>
+    /// <param name="count">How many numbers the field holds.</param>
+    /// <param name="form">The expected form for the message, e.g. <c>[φ1, φ2, φ3]</c>.</param>
+    /// <returns>The numbers (not yet checked for finiteness).</returns>
+    public float[] Numbers(float[]? value, string field, int count, string form)
+    {
+        var v = value ?? throw Missing(field);
+        if (v.Length != count)
+        {
+            throw new CliInputException(PathOf(field), $"must be an array of {count} numbers {form}, got {v.Length}");
+        }
+
+        return v;
+    }
+
     /// <summary>A required array of points <c>[[x, z], ...]</c> (any count; the library checks the count).</summary>
     /// <param name="value">The deserialized array.</param>
     /// <param name="field">The JSON field name.</param>

@@ -11,4 +11,5 @@ namespace URWPGSim2D.Server.Json;
 /// </summary>
 [JsonSourceGenerationOptions(NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals)]
 [JsonSerializable(typeof(PairDto[]))]
+[JsonSerializable(typeof(ShapeDto[]))]
 internal sealed partial class InputJsonContext : JsonSerializerContext;

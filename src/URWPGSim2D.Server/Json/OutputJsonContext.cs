@@ -10,4 +10,6 @@ namespace URWPGSim2D.Server.Json;
 /// </summary>
 [JsonSourceGenerationOptions(WriteIndented = false, DefaultIgnoreCondition = JsonIgnoreCondition.WhenWritingNull)]
 [JsonSerializable(typeof(CollisionResultDto[]))]
+[JsonSerializable(typeof(FishCollisionResultDto))]
+[JsonSerializable(typeof(ShapePiecesDto[]))]
 internal sealed partial class OutputJsonContext : JsonSerializerContext;

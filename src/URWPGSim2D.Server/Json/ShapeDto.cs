@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Json;
 /// </summary>
 internal sealed class ShapeDto
 {
-    /// <summary>The shape kind: circle, aabb, kdop8, polygon or segment.</summary>
+    /// <summary>The shape kind: circle, aabb, kdop8, polygon, segment or fish.</summary>
     [JsonPropertyName("type")]
     public string? Type { get; init; }
 
@@ -40,4 +40,20 @@ internal sealed class ShapeDto
     /// <summary>segment: the second end point [x, z], mm.</summary>
     [JsonPropertyName("b")]
     public float[]? B { get; init; }
+
+    /// <summary>fish: the centre of the body rectangle [x, z], mm.</summary>
+    [JsonPropertyName("position")]
+    public float[]? Position { get; init; }
+
+    /// <summary>fish: the heading θ, rad, from +X toward +Z.</summary>
+    [JsonPropertyName("heading")]
+    public float? Heading { get; init; }
+
+    /// <summary>fish: the three tail joint angles [φ1, φ2, φ3], rad, each from the body axis.</summary>
+    [JsonPropertyName("joints")]
+    public float[]? Joints { get; init; }
+
+    /// <summary>fish: the dimensions; absent or null for the deployed 160 × 45, head 30, joints 88 / 66 / 55.</summary>
+    [JsonPropertyName("size")]
+    public FishSizeDto? Size { get; init; }
 }

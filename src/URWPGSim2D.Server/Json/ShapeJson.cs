@@ -10,8 +10,9 @@ namespace URWPGSim2D.Server.Json;
 /// shape formats (docs/cli.md). Each type reads its fields with <see cref="FieldReader"/> and
 /// lets the library validate the values; every failure is a <see cref="CliInputException"/>
 /// whose path names the field (<c>pairs[12].b.vertices</c>). To add a type: a constant, a case
-/// in <see cref="ToShape"/>, a reader method, and its fields in <see cref="ShapeDto"/> and
-/// <see cref="ShapeSchema"/>.
+/// in <see cref="Read"/>, a reader method, and its fields in <see cref="ShapeDto"/> and
+/// <see cref="ShapeSchema"/>. The fish, which is not a library <see cref="Shape"/>, is read by
+/// <see cref="FishJson"/>.
 /// </summary>
 internal static class ShapeJson
 {
@@ -30,6 +31,9 @@ internal static class ShapeJson
     /// <summary><c>{"type":"segment","a":[x,z],"b":[x,z]}</c>.</summary>
     public const string SegmentType = "segment";
 
+    /// <summary><c>{"type":"fish","position":[x,z],"heading":θ,"joints":[φ1,φ2,φ3]}</c>, optional <c>"size"</c> (see <see cref="FishJson"/>).</summary>
+    public const string FishType = "fish";
+
     // Library constructor parameter → JSON field, per type (the names agree today; the tables
     // keep the mapping explicit and checked by the tests).
     private static readonly Dictionary<string, string> CircleFields = new() { ["center"] = "center", ["radius"] = "radius" };
@@ -37,12 +41,12 @@ internal static class ShapeJson
     private static readonly Dictionary<string, string> PolygonFields = new() { ["vertices"] = "vertices" };
     private static readonly Dictionary<string, string> SegmentFields = new() { ["a"] = "a", ["b"] = "b" };
 
-    /// <summary>Builds the library shape described by <paramref name="dto"/>.</summary>
+    /// <summary>Builds the library shape or fish described by <paramref name="dto"/>.</summary>
     /// <param name="dto">The deserialized SHAPE object; null when it was absent or null.</param>
     /// <param name="path">The path of the SHAPE object, e.g. <c>pairs[3].a</c>.</param>
     /// <returns>The validated shape.</returns>
     /// <exception cref="CliInputException">A field is missing, has the wrong length, or holds a value the library rejects.</exception>
-    public static Shape ToShape(ShapeDto? dto, string path)
+    public static InputShape Read(ShapeDto? dto, string path)
     {
         if (dto is null)
         {
@@ -53,11 +57,12 @@ internal static class ShapeJson
         string type = fields.String(dto.Type, "type");
         return type switch
         {
-            CircleType => ReadCircle(dto, fields),
-            AabbType => ReadAabb(dto, fields),
-            KDop8Type => ReadKDop8(dto, fields),
-            PolygonType => ReadPolygon(dto, fields),
-            SegmentType => ReadSegment(dto, fields),
+            CircleType => InputShape.Of(ReadCircle(dto, fields)),
+            AabbType => InputShape.Of(ReadAabb(dto, fields)),
+            KDop8Type => InputShape.Of(ReadKDop8(dto, fields)),
+            PolygonType => InputShape.Of(ReadPolygon(dto, fields)),
+            SegmentType => InputShape.Of(ReadSegment(dto, fields)),
+            FishType => InputShape.Of(FishJson.Read(dto, fields)),
             _ => throw new CliInputException(fields.PathOf("type"), $"unknown shape type {CliText.Quote(type)}"),
         };
     }

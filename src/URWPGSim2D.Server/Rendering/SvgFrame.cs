@@ -1,8 +1,6 @@
 using System;
 using System.Globalization;
-using System.IO;
 using System.Numerics;
-using System.Text;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Simulation;
@@ -24,13 +22,10 @@ internal static class SvgFrame
         var field = world.Field;
         float l = field.Length;
         float w = field.Width;
-        var s = new StringBuilder();
-        s.Append("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"")
-            .Append(N(-l / 2 - 20)).Append(' ').Append(N(-w / 2 - 90)).Append(' ').Append(N(l + 40)).Append(' ').Append(N(w + 110))
-            .Append("\" width=\"").Append(N((l + 40) / 3)).Append("\" height=\"").Append(N((w + 110) / 3)).Append("\">\n");
-        s.Append("  <text x=\"").Append(N(-l / 2)).Append("\" y=\"").Append(N(-w / 2 - 30)).Append("\" font-size=\"50\" font-family=\"sans-serif\">cycle ")
-            .Append(world.Cycle.ToString(CultureInfo.InvariantCulture)).Append(" — team 0: ").Append(world.Goals[0].ToString(CultureInfo.InvariantCulture))
-            .Append(", team 1: ").Append(world.Goals[1].ToString(CultureInfo.InvariantCulture)).Append("</text>\n");
+        var s = new SvgWriter("0.##");
+        s.StartDocument(-l / 2 - 20, -w / 2 - 90, l + 40, w + 110, (l + 40) / 3, (w + 110) / 3);
+        s.Element("text").Attribute("x", -l / 2).Attribute("y", -w / 2 - 30).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
+            .Content("text", string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — team 0: {world.Goals[0]}, team 1: {world.Goals[1]}"));
         Rect(s, new Vector2(-l / 2, -w / 2), new Vector2(l / 2, w / 2), "#cfe8f7", "#1b3a4b");
         float mouth = Field.GoalWidth / 2;
         Rect(s, new Vector2(-l / 2, -mouth), new Vector2(-l / 2 + Field.GoalDepth, mouth), "#f6f2c4", "none");
@@ -70,36 +65,19 @@ internal static class SvgFrame
             }
         }
 
-        s.Append("</svg>\n");
-        return s.ToString();
+        return s.EndDocument().ToString();
     }
 
-    /// <summary>Writes the frame to a file (temporary name, then renamed).</summary>
-    public static void Write(World world, string path)
-    {
-        string full = Path.GetFullPath(path);
-        string temporary = full + ".partial";
-        File.WriteAllText(temporary, Render(world), new UTF8Encoding(false));
-        File.Move(temporary, full, overwrite: true);
-    }
+    /// <summary>Writes the frame to a file (temporary name, then renamed; see <see cref="AtomicFile"/>).</summary>
+    public static void Write(World world, string path) => AtomicFile.WriteAllText(path, Render(world));
 
-    private static void Rect(StringBuilder s, Vector2 min, Vector2 max, string fill, string stroke) =>
-        s.Append("  <rect x=\"").Append(N(min.X)).Append("\" y=\"").Append(N(min.Y)).Append("\" width=\"").Append(N(max.X - min.X))
-            .Append("\" height=\"").Append(N(max.Y - min.Y)).Append("\" fill=\"").Append(fill).Append("\" stroke=\"").Append(stroke).Append("\" stroke-width=\"4\"/>\n");
+    private static void Rect(SvgWriter s, Vector2 min, Vector2 max, string fill, string stroke) =>
+        s.Element("rect").Attribute("x", min.X).Attribute("y", min.Y).Attribute("width", max.X - min.X).Attribute("height", max.Y - min.Y)
+            .Attribute("fill", fill).Attribute("stroke", stroke).Attribute("stroke-width", "4").End();
 
-    private static void Circle(StringBuilder s, Vector2 c, float r, string fill) =>
-        s.Append("  <circle cx=\"").Append(N(c.X)).Append("\" cy=\"").Append(N(c.Y)).Append("\" r=\"").Append(N(r)).Append("\" fill=\"").Append(fill).Append("\"/>\n");
+    private static void Circle(SvgWriter s, Vector2 c, float r, string fill) =>
+        s.Element("circle").Attribute("cx", c.X).Attribute("cy", c.Y).Attribute("r", r).Attribute("fill", fill).End();
 
-    private static void Polygon(StringBuilder s, ReadOnlySpan<Vector2> points, string fill)
-    {
-        s.Append("  <polygon points=\"");
-        for (int i = 0; i < points.Length; i++)
-        {
-            s.Append(i == 0 ? string.Empty : " ").Append(N(points[i].X)).Append(',').Append(N(points[i].Y));
-        }
-
-        s.Append("\" fill=\"").Append(fill).Append("\" stroke=\"#222\" stroke-width=\"1\"/>\n");
-    }
-
-    private static string N(float v) => v.ToString("0.##", CultureInfo.InvariantCulture);
+    private static void Polygon(SvgWriter s, ReadOnlySpan<Vector2> points, string fill) =>
+        s.Element("polygon").Points(points).Attribute("fill", fill).Attribute("stroke", "#222").Attribute("stroke-width", "1").End();
 }

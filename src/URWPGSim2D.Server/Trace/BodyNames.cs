@@ -1,4 +1,5 @@
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Trace;
@@ -6,13 +7,11 @@ namespace URWPGSim2D.Server.Trace;
 /// <summary>The trace's ids (fishN, ballN, obstacleN, wall, goalBlockN) and fish part names.</summary>
 internal static class BodyNames
 {
-    private static readonly string[] Parts = ["leftPectoral", "body", "rightPectoral", "tail1", "tail2", "tail3", "leftCaudal", "rightCaudal"];
-
     /// <summary>The name of a fish part (−1 → null).</summary>
-    public static string? Part(sbyte part) => part < 0 ? null : Parts[part];
+    public static string? Part(sbyte part) => part < 0 ? null : FishPartNames.Of((FishPart)part);
 
     /// <summary>The name of a fish part.</summary>
-    public static string Part(FishPart part) => Parts[(int)part];
+    public static string Part(FishPart part) => FishPartNames.Of(part);
 
     /// <summary>Id of body A of a pair.</summary>
     public static string A(in CandidatePair pair) => pair.Kind switch

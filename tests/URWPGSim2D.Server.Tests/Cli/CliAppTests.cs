@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, merge; --help for details)";
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, shapes, render, merge; --help for details)";
     private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
 
     [Theory]
@@ -23,6 +23,8 @@ public sealed class CliAppTests
         Assert.StartsWith("URWPGSim2D.Server: command-line front end", run.Stdout, StringComparison.Ordinal);
         Assert.Matches(@"\n  URWPGSim2D\.Server run \[--scenario FILE\] \[options\] +Play a match", run.Stdout);
         Assert.Matches(@"\n  URWPGSim2D\.Server collide FILE +Test pairs of shapes", run.Stdout);
+        Assert.Matches(@"\n  URWPGSim2D\.Server shapes FILE +Write the exact collision pieces", run.Stdout);
+        Assert.Matches(@"\n  URWPGSim2D\.Server render FILE --svg OUT +Draw shapes or pairs", run.Stdout);
         Assert.Matches(@"\n  URWPGSim2D\.Server --help +Show this help\.", run.Stdout);
         Assert.Contains("Exit codes: 0 success; 2 bad input", run.Stdout, StringComparison.Ordinal);
         Assert.EndsWith("\n", run.Stdout, StringComparison.Ordinal);
@@ -36,12 +38,30 @@ public sealed class CliAppTests
         Assert.Equal(0, run.ExitCode);
         Assert.Equal(string.Empty, run.Stderr);
         Assert.StartsWith(CollideUsage + "\n", run.Stdout, StringComparison.Ordinal);
-        foreach (var type in new[] { "circle", "aabb", "kdop8", "polygon", "segment" })
+        foreach (var type in new[] { "circle", "aabb", "kdop8", "polygon", "segment", "fish" })
         {
             Assert.Contains($"{{\"type\":\"{type}\"", run.Stdout, StringComparison.Ordinal);
         }
 
         Assert.Contains("{\"intersect\":bool,\"mtv\":[x,z],\"normal\":[x,z],\"actionPoint\":[x,z]}", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("\"partA\" and \"partB\"", run.Stdout, StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("shapes", "Usage: URWPGSim2D.Server shapes FILE\n", "\"leaves\":{\"leftPectoral\"")]
+    [InlineData("render", "Usage: URWPGSim2D.Server render FILE --svg OUT\n", "MTV")]
+    public void ShapesAndRenderHelpDescribeTheFormats(string command, string usageLine, string detail)
+    {
+        var run = CliRun.Of(string.Empty, command, "--help");
+
+        Assert.Equal((0, string.Empty), (run.ExitCode, run.Stderr));
+        Assert.StartsWith(usageLine, run.Stdout, StringComparison.Ordinal);
+        foreach (var type in new[] { "circle", "aabb", "kdop8", "polygon", "segment", "fish" })
+        {
+            Assert.Contains($"{{\"type\":\"{type}\"", run.Stdout, StringComparison.Ordinal);
+        }
+
+        Assert.Contains(detail, run.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -79,6 +99,10 @@ public sealed class CliAppTests
     [InlineData(new[] { "collide", "-", "--help" }, "collide: expected one FILE argument (- for stdin), got 2. " + CollideUsage)]
     [InlineData(new[] { "collide", "--pretty" }, "collide: unknown option \"--pretty\". " + CollideUsage)]
     [InlineData(new[] { "collide", "" }, "collide: FILE is empty. " + CollideUsage)]
+    [InlineData(new[] { "shapes" }, "shapes: expected one FILE argument (- for stdin), got 0. Usage: URWPGSim2D.Server shapes FILE")]
+    [InlineData(new[] { "shapes", "a.json", "b.json" }, "shapes: expected one FILE argument (- for stdin), got 2. Usage: URWPGSim2D.Server shapes FILE")]
+    [InlineData(new[] { "shapes", "--pretty" }, "shapes: unknown option \"--pretty\". Usage: URWPGSim2D.Server shapes FILE")]
+    [InlineData(new[] { "shapes", "" }, "shapes: FILE is empty. Usage: URWPGSim2D.Server shapes FILE")]
     public void WrongArgumentsGiveOneUsageLine(string[] args, string expectedLine)
     {
         var run = CliRun.Of("[]", args);

@@ -18,4 +18,7 @@ internal sealed record CliRun(int ExitCode, string Stdout, string Stderr)
 
     /// <summary>Runs <c>collide -</c> with <paramref name="json"/> on stdin.</summary>
     public static CliRun Collide(string json) => Of(json, "collide", "-");
+
+    /// <summary>Runs <c>shapes -</c> with <paramref name="json"/> on stdin.</summary>
+    public static CliRun Shapes(string json) => Of(json, "shapes", "-");
 }

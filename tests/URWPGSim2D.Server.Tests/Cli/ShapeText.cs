@@ -30,6 +30,21 @@ internal static class ShapeText
     public static string Segment(double ax, double az, double bx, double bz) =>
         $$"""{"type":"segment","a":[{{Num(ax)}},{{Num(az)}}],"b":[{{Num(bx)}},{{Num(bz)}}]}""";
 
+    /// <summary>A fish SHAPE (deployed size unless <paramref name="size"/> is given as {length, width, head, L1, L2, L3}).</summary>
+    public static string Fish(double x, double z, double heading, double j1 = 0, double j2 = 0, double j3 = 0, double[]? size = null)
+    {
+        string text = $$"""{"type":"fish","position":[{{Num(x)}},{{Num(z)}}],"heading":{{Num(heading)}},"joints":[{{Num(j1)}},{{Num(j2)}},{{Num(j3)}}]""";
+        if (size is not null)
+        {
+            text += $$""","size":{"length":{{Num(size[0])}},"width":{{Num(size[1])}},"head":{{Num(size[2])}},"joints":[{{Num(size[3])}},{{Num(size[4])}},{{Num(size[5])}}]}""";
+        }
+
+        return text + "}";
+    }
+
+    /// <summary>A JSON array of SHAPE objects.</summary>
+    public static string Shapes(params string[] shapes) => "[" + string.Join(",", shapes) + "]";
+
     public static string Pair(string a, string b) => $$"""{"a":{{a}},"b":{{b}}}""";
 
     public static string Pairs(params string[] pairs) => "[" + string.Join(",", pairs) + "]";

@@ -1,0 +1,144 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using URWPGSim2D.Server.Json;
+using URWPGSim2D.Server.Rendering;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>render FILE --svg OUT</c>: draws the SHAPEs, or the <c>{"a", "b"}</c> pairs and their
+/// collision results, of FILE as an SVG picture (<see cref="ShapeFigure"/>). The whole input is
+/// validated and the picture built in memory first; OUT is then written through a temporary
+/// file and a rename, so on any error nothing is written. <c>--svg -</c> writes the SVG to stdout.
+/// </summary>
+internal sealed class RenderCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public string Name => "render";
+
+    /// <inheritdoc />
+    public string Synopsis => "render FILE --svg OUT";
+
+    /// <inheritdoc />
+    public string Summary => "Draw shapes or pairs (fish trees, outer circles, MTV, normal, action point) as an SVG file.";
+
+    private string Usage => $"{CliApp.ProgramName} {Synopsis}";
+
+    /// <inheritdoc />
+    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    {
+        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        {
+            console.Out.Write(HelpText());
+            return ExitCodes.Success;
+        }
+
+        var (file, output) = ParseArguments(arguments);
+        string text = InputText.Read(file, console.In);
+        string svg = RenderInputKind.IsPairs(text) ? RenderPairs(text) : RenderShapes(text);
+        if (output == InputText.StandardInput)
+        {
+            console.Out.Write(svg);
+            return ExitCodes.Success;
+        }
+
+        try
+        {
+            AtomicFile.WriteAllText(output, svg);
+        }
+        catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
+        {
+            throw new CliInputException(output, $"cannot write file: {ex.Message.ReplaceLineEndings(" ")}");
+        }
+
+        return ExitCodes.Success;
+    }
+
+    private static string RenderShapes(string text)
+    {
+        var shapes = ShapesInput.Read(text);
+        var items = new FigureShape[shapes.Length];
+        for (int i = 0; i < shapes.Length; i++)
+        {
+            items[i] = new FigureShape(shapes[i], $"{ShapesInput.RootName}[{i}]", FigureRole.Single);
+        }
+
+        return ShapeFigure.Render(items, []);
+    }
+
+    private static string RenderPairs(string text)
+    {
+        var pairs = CollideCommand.ReadPairs(text);
+        var items = new List<FigureShape>(2 * pairs.Length);
+        var contacts = new FigureContact[pairs.Length];
+        for (int i = 0; i < pairs.Length; i++)
+        {
+            string label = $"{CollideCommand.RootName}[{i}]";
+            var (a, b) = pairs[i];
+            items.Add(new FigureShape(b, label + ".b", FigureRole.B));
+            items.Add(new FigureShape(a, label + ".a", FigureRole.A));
+            contacts[i] = new FigureContact(InputCollision.Detect(a, b), label, InputCollision.HasParts(a, b));
+        }
+
+        return ShapeFigure.Render(items, contacts);
+    }
+
+    private (string File, string Output) ParseArguments(ReadOnlySpan<string> arguments)
+    {
+        string? file = null, output = null;
+        int files = 0;
+        for (int i = 0; i < arguments.Length; i++)
+        {
+            string argument = arguments[i];
+            if (argument == "--svg")
+            {
+                if (output is not null)
+                {
+                    throw new CliUsageException("render: --svg given twice", Usage);
+                }
+
+                if (i + 1 >= arguments.Length || arguments[i + 1].Length == 0)
+                {
+                    throw new CliUsageException("render: --svg needs a file name (- for stdout)", Usage);
+                }
+
+                output = arguments[++i];
+                continue;
+            }
+
+            file = FileArgument.Check(Name, argument, Usage);
+            files++;
+        }
+
+        if (files != 1)
+        {
+            throw new CliUsageException($"render: expected one FILE argument (- for stdin), got {files}", Usage);
+        }
+
+        if (output is null)
+        {
+            throw new CliUsageException("render: --svg OUT is required", Usage);
+        }
+
+        return (file!, output);
+    }
+
+    private string HelpText() =>
+        ($$"""
+        Usage: {{Usage}}
+
+        Reads FILE (- for stdin): a JSON array of SHAPEs, or a JSON array of {"a": SHAPE, "b": SHAPE} pairs as for
+        collide (it is read as pairs when its first element has an "a" or "b" field and no "type" field).
+        Coordinates [x, z] in mm. SHAPE is one of:
+
+        """ + ShapeGrammar.HelpLines + """
+        Writes an SVG picture to OUT (- for stdout), +X right, +Z down, fitted to the content, with a legend:
+        a fish's eight leaf polygons, leaf 8-DOPs and root / body group / tail group circles; other shapes and
+        their outer circles; for each intersecting pair the MTV (true length, from the action point), the
+        normal (from b toward a) and the action point. Labels are the input paths (shapes[2], pairs[0].a).
+        OUT is written through a temporary file and a rename; on bad input nothing is written.
+        Bad input: one line "PATH: problem" on stderr (e.g. pairs[0].a.size.width: must be > 0, got 0), exit code 2.
+
+        """).ReplaceLineEndings("\n");
+}

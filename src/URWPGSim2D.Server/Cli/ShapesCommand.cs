@@ -1,0 +1,63 @@
+using System;
+using System.Text.Json;
+using URWPGSim2D.Server.Json;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>shapes FILE</c>: reads a JSON array of SHAPEs and writes, in the same order, one compact
+/// JSON array of their exact collision pieces in world coordinates (<see cref="ShapePiecesDto"/>):
+/// a fish's eight leaf polygons and tree circles, another shape's polygon or circle and outer
+/// circle. Every SHAPE is validated before anything is written.
+/// </summary>
+internal sealed class ShapesCommand : ICliCommand
+{
+    /// <inheritdoc />
+    public string Name => "shapes";
+
+    /// <inheritdoc />
+    public string Synopsis => "shapes FILE";
+
+    /// <inheritdoc />
+    public string Summary => "Write the exact collision pieces (polygons, circles, fish leaves and tree) of shapes as JSON.";
+
+    private string Usage => $"{CliApp.ProgramName} {Synopsis}";
+
+    /// <inheritdoc />
+    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    {
+        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        {
+            console.Out.Write(HelpText());
+            return ExitCodes.Success;
+        }
+
+        string file = FileArgument.Parse(Name, arguments, Usage);
+        var shapes = ShapesInput.Read(InputText.Read(file, console.In));
+        var pieces = Array.ConvertAll(shapes, ShapePiecesDto.From);
+        console.Out.Write(JsonSerializer.Serialize(pieces, OutputJsonContext.Default.ShapePiecesDtoArray) + "\n");
+        return ExitCodes.Success;
+    }
+
+    private string HelpText() =>
+        ($$"""
+        Usage: {{Usage}}
+
+        Reads FILE (- for stdin): a JSON array of SHAPEs, coordinates [x, z] in mm. SHAPE is one of:
+
+        """ + ShapeGrammar.HelpLines + """
+        Writes to stdout one line: a JSON array with, for each SHAPE in input order, its exact collision
+        pieces in world coordinates (vertices counter-clockwise in (x, z), i.e. clockwise on a +Z-down screen):
+          {"type":"circle","center":[x,z],"radius":r,"outer":CIRCLE}
+          {"type":"aabb","min":[x,z],"max":[x,z],"vertices":[4 corners],"outer":CIRCLE}
+          {"type":"kdop8","min":[4 slabs],"max":[4 slabs],"vertices":[1 to 8],"outer":CIRCLE}   slabs tightened
+          {"type":"polygon","vertices":[[x,z],...],"outer":CIRCLE}
+          {"type":"segment","a":[x,z],"b":[x,z],"vertices":[a,b],"outer":CIRCLE}
+          {"type":"fish","leaves":{"leftPectoral":[[x,z],...],"body":...,"rightPectoral":...,"tail1":...,
+            "tail2":...,"tail3":...,"leftCaudal":...,"rightCaudal":...},"bounds":{"root":CIRCLE,"body":CIRCLE,"tail":CIRCLE}}
+        where CIRCLE is {"center":[x,z],"radius":r}.
+        Bad input: one line "PATH: problem" on stderr (e.g. shapes[3].joints: must be an array of 3 numbers
+        [φ1, φ2, φ3], got 2), exit code 2.
+
+        """).ReplaceLineEndings("\n");
+}
