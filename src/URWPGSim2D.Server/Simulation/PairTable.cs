@@ -41,6 +41,9 @@ internal sealed class PairTable
     /// <summary>Last time (cycle fraction) the pair was planned or sampled apart.</summary>
     public double[] LastFree { get; private set; } = new double[64];
 
+    /// <summary>Whether the pair was seen apart at <see cref="LastFree"/> (a pair planned while its bounds overlap was not).</summary>
+    public bool[] ApartAtLastFree { get; private set; } = new bool[64];
+
     /// <summary>Changes each time the slot is freed.</summary>
     public int[] Generation { get; private set; } = new int[64];
 
@@ -150,6 +153,7 @@ internal sealed class PairTable
             Rate = Resized(Rate, size);
             Step = Resized(Step, size);
             LastFree = Resized(LastFree, size);
+            ApartAtLastFree = Resized(ApartAtLastFree, size);
             Generation = Resized(Generation, size);
             Alive = Resized(Alive, size);
             _moverA = Resized(_moverA, size);

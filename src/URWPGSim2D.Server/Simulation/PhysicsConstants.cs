@@ -42,6 +42,12 @@ internal static class PhysicsConstants
     /// </summary>
     public const int MaximumEventsPerBody = 64;
 
+    /// <summary>Passes of immediate re-resolution after a contact when a correction pushes a body into a third one.</summary>
+    public const int RelaxationPasses = 8;
+
+    /// <summary>Passes of the settling without motion at the end of a cycle (and after goals).</summary>
+    public const int SettlePasses = 8;
+
     /// <summary>Position corrections a fish may take in one cycle before its move is rejected.</summary>
     public const int MaximumCorrectionsPerFish = 8;
 

@@ -5,8 +5,9 @@ namespace URWPGSim2D.Server.Simulation;
 /// <content>Time of first contact, bodies and their clocks, the bounding-circle pre-test.</content>
 internal sealed partial class Stepper
 {
-    // Bisection between the last time all hits were apart and the sample that found them.
-    private double FirstContact(double free, double hit)
+    // Bisection between the last time all hits were apart and the sample that found them (checked
+    // first unless the hits are known to be apart then).
+    private double FirstContact(double free, double hit, bool knownApart)
     {
         float rate = 0f;
         for (int i = 0; i < _hitCount; i++)
@@ -14,10 +15,13 @@ internal sealed partial class Stepper
             rate = MathF.Max(rate, _table.Rate[_hitSlots[i]]);
         }
 
-        MoveInvolved(free);
-        if (AnyHitIntersects())
+        if (!knownApart)
         {
-            return free;
+            MoveInvolved(free);
+            if (AnyHitIntersects())
+            {
+                return free;
+            }
         }
 
         double lo = free;

@@ -35,13 +35,13 @@ internal sealed partial class Stepper
         return deepest;
     }
 
-    // Up to four passes over the pairs of `set` at the end of the cycle: overlaps are resolved and
+    // Up to SettlePasses passes over the pairs of `set` at the end of the cycle: overlaps are resolved and
     // the bodies that moved are checked again; returns the deepest overlap left among them.
     private float SettleMovers(MoverSet set)
     {
         MoverSet current = set;
         MoverSet next = _involved;
-        for (int pass = 0; pass < 4; pass++)
+        for (int pass = 0; pass < PhysicsConstants.SettlePasses; pass++)
         {
             next.Clear();
             _collector.Clear();

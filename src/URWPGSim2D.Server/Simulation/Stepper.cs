@@ -41,6 +41,8 @@ internal sealed partial class Stepper
     private int[] _hitSlots = new int[64];
     private Hit[] _hitValues = new Hit[64];
     private int _hitCount;
+    private int[] _pending = new int[16];
+    private int _pendingCount;
 
     public Stepper(World world, ContactLog log, IBroadPhase? broadPhase = null)
     {
@@ -79,6 +81,7 @@ internal sealed partial class Stepper
         _queue.Clear();
         _unsettled.Clear();
         _scheduler.Time = 0.0;
+        _scheduler.Settling = false;
         _planner.PlanAll(0.0, _scheduler);
         float deepest = 0f;
         int tick;
@@ -156,6 +159,7 @@ internal sealed partial class Stepper
             }
 
             _table.LastFree[slot] = time;
+            _table.ApartAtLastFree[slot] = true;
             if (tick < Ticks)
             {
                 Schedule(slot, tick, time, gap);
@@ -208,32 +212,94 @@ internal sealed partial class Stepper
         _involved.Clear();
         double lo = found;
         bool refine = true;
+        float deepest = 0f;
         for (int i = 0; i < _hitCount; i++)
         {
             int slot = _hitSlots[i];
             lo = Math.Min(lo, _table.LastFree[slot]);
+            deepest = MathF.Max(deepest, _hitValues[i].Depth);
             MarkInvolved(_table.Pair[slot]);
+        }
+
+        // Each hit sampled apart was apart at its last sample; all were apart at lo if they share it.
+        bool apartAtLo = true;
+        for (int i = 0; i < _hitCount; i++)
+        {
+            apartAtLo &= _table.LastFree[_hitSlots[i]] == lo && _table.ApartAtLastFree[_hitSlots[i]];
         }
 
         foreach (int m in _involved.Items)
         {
+            apartAtLo &= BaseTime(m) <= lo;
             lo = Math.Max(lo, BaseTime(m));
             refine &= _eventsOf[m] < PhysicsConstants.MaximumEventsPerBody;
         }
 
-        double contact = refine && lo < found ? FirstContact(lo, found) : found;
+        // An overlap no deeper than the time-of-impact tolerance is already at the contact.
+        refine &= deepest > PhysicsConstants.TimeOfImpactTolerance;
+        double contact = refine && lo < found ? FirstContact(lo, found, apartAtLo) : found;
         MoveInvolved(contact);
         ResolveHits(contact);
         Events++;
         foreach (int m in _involved.Items)
         {
             _eventsOf[m]++;
-            Rebase(m, contact);
-            _table.RemoveAllOf(m);
         }
 
-        _scheduler.Time = contact;
-        _planner.PlanFor(_involved.Items, _involved.Marks, contact, _scheduler);
+        Relax(contact);
+    }
+
+    // Commits the involved bodies at the contact time and plans their pairs again. A correction can
+    // push a body into a third one (a ball squeezed between two fish): pairs that overlap right
+    // away are resolved at once, their bodies planned again, a few passes over (position
+    // relaxation); what is left is sampled as usual.
+    private void Relax(double contact)
+    {
+        for (int pass = 0; ; pass++)
+        {
+            foreach (int m in _involved.Items)
+            {
+                Rebase(m, contact);
+                _table.RemoveAllOf(m);
+            }
+
+            _pendingCount = 0;
+            _scheduler.Time = contact;
+            _scheduler.Settling = pass < PhysicsConstants.RelaxationPasses;
+            _planner.PlanFor(_involved.Items, _involved.Marks, contact, _scheduler);
+            _scheduler.Settling = false;
+            if (_pendingCount == 0)
+            {
+                return;
+            }
+
+            _involved.Clear();
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                MarkInvolved(_table.Pair[_pending[i]]);
+            }
+
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                CandidatePair pair = _table.Pair[_pending[i]];
+                Hit hit = PairDetector.Detect(_world, pair);
+                if (hit.Depth > PhysicsConstants.ContactSlop)
+                {
+                    ContactKind kind = _response.Apply(pair, hit);
+                    _log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point, contact), kind);
+                }
+            }
+        }
+    }
+
+    private void AddPending(int slot)
+    {
+        if (_pendingCount == _pending.Length)
+        {
+            Array.Resize(ref _pending, _pendingCount * 2);
+        }
+
+        _pending[_pendingCount++] = slot;
     }
 
     private void ResolveHits(double time)
@@ -252,9 +318,15 @@ internal sealed partial class Stepper
 
     // Stores a planned pair and schedules its first sample after the plan time; a pair planned at
     // the very end of the cycle cannot be sampled any more: its movers are settled instead.
+    // Stores a planned pair and schedules its first sample after the plan time. While settling
+    // (after a contact) a pair whose bounds overlap is tested at once, and one that overlaps is
+    // handed back as pending. A pair planned at the very end of the cycle cannot be sampled any
+    // more: unless it is known to be apart, its movers are settled at the end.
     private sealed class Scheduler(Stepper owner) : IPairSink
     {
         public double Time;
+
+        public bool Settling;
 
         public void Add(in CandidatePair pair, int moverA, int moverB, float rate)
         {
@@ -262,19 +334,35 @@ internal sealed partial class Stepper
             int slot = table.Add(pair, moverA, moverB, rate);
             table.Step[slot] = StepTicks(pair.Limit, rate);
             table.LastFree[slot] = Time;
-            if (Time >= 1.0)
+
+            // The partner may sit at another time of the cycle: both bodies are placed at the plan time.
+            owner.MoveBodies(pair, Time);
+            float gap = PairGap.LowerBound(owner._world, pair);
+            bool apart = gap > 0f;
+            if (!apart && Settling)
+            {
+                if (PairDetector.Detect(owner._world, pair).Depth > PhysicsConstants.ContactSlop)
+                {
+                    owner.AddPending(slot);
+                    return;
+                }
+
+                apart = true;
+            }
+
+            table.ApartAtLastFree[slot] = apart;
+            if (Time < 1.0)
+            {
+                owner.Schedule(slot, (int)Math.Floor(Time * Ticks), Time, gap);
+            }
+            else if (!apart)
             {
                 owner._unsettled.Add(moverA);
                 if (moverB >= 0)
                 {
                     owner._unsettled.Add(moverB);
                 }
-
-                return;
             }
-
-            int tick = (int)Math.Floor(Time * Ticks);
-            owner.Schedule(slot, tick, Time, PairGap.LowerBound(owner._world, pair));
         }
 
         // Largest power of two (in ticks) during which the pair moves at most its limit.
