@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -75,6 +76,9 @@ public class FishCollisionBenchmarks
 
     [Benchmark]
     public CollisionDetectionResult LeafVsLeafSat() => ConvexSat.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
+
+    [Benchmark]
+    public CollisionDetectionResult LeafVsLeafSatBaseline() => ConvexSatBaseline.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
 
     [Benchmark]
     public FishContact FishVsBallRootMiss() => FishCollision.Detect(_fish, _ballFar);

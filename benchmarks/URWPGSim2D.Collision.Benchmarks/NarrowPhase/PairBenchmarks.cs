@@ -11,6 +11,7 @@ namespace URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 /// SAT measured in the same run.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class PairBenchmarks
 {
     private Circle _circleA, _circleB;
@@ -48,9 +49,17 @@ public class PairBenchmarks
     [Benchmark]
     public CollisionDetectionResult BoxBox() => CollisionDetector.Detect(_boxA, _boxB);
 
+    /// <summary>The same two boxes through the frozen pre-vectorisation SAT (<see cref="ConvexSatBaseline"/>).</summary>
+    [Benchmark]
+    public CollisionDetectionResult BoxBoxBaseline() => ConvexSatBaseline.Detect(_boxA.View(), _boxB.View());
+
     /// <summary>Two regular octagons as general polygons.</summary>
     [Benchmark]
     public CollisionDetectionResult OctagonOctagon() => CollisionDetector.Detect(_octA, _octB);
+
+    /// <summary>The same two octagons through the frozen pre-vectorisation SAT.</summary>
+    [Benchmark]
+    public CollisionDetectionResult OctagonOctagonBaseline() => ConvexSatBaseline.Detect(_octA.View(), _octB.View());
 
     /// <summary>Circle against hexagon by Voronoi regions.</summary>
     [Benchmark]

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -148,7 +149,9 @@ public static partial class FishCollision
         ArgumentNullException.ThrowIfNull(b);
         var sink = default(DeepestSink);
         FishTree.Descend(a, b, ref sink);
-        return sink.Best;
+        return sink.Found
+            ? FishContact.OfLeaves(ConvexSat.Complete(a.LeafView(sink.LeafA), b.LeafView(sink.LeafB), sink.Best), sink.LeafA, sink.LeafB)
+            : FishContact.None;
     }
 
     /// <summary>Fish against a shape of any kind: dispatches to the overload for its kind.</summary>
@@ -172,11 +175,15 @@ public static partial class FishCollision
     /// <exception cref="ArgumentNullException"><paramref name="b"/> is null.</exception>
     public static FishContact Detect(in Shape a, FishModel b) => Detect(b, a).Swapped();
 
+    // Not inlined: the callers' early exits (a root-circle miss) then pay for no stack set-up.
+    [MethodImpl(MethodImplOptions.NoInlining)]
     private static FishContact Deepest<TPartner>(FishModel fish, scoped ref TPartner partner)
         where TPartner : ILeafPartner, allows ref struct
     {
         var sink = default(DeepestSink);
         FishTree.Descend(fish, ref partner, ref sink);
-        return sink.Best;
+        return sink.Found
+            ? FishContact.OfLeafA(partner.Complete(fish.LeafView(sink.LeafA), sink.Best), sink.LeafA)
+            : FishContact.None;
     }
 }

@@ -23,6 +23,8 @@ internal static class FishLeafLayout
     /// <summary>Number of rigid frames: the body, then tail segments 1, 2, 3.</summary>
     public const int FrameCount = 4;
 
+    private static ReadOnlySpan<byte> FrameStarts => [0, 13, 17, 21, 31];
+
     private static ReadOnlySpan<byte> Offsets => [0, 4, 9, 13, 17, 21, 25, 28];
 
     private static ReadOnlySpan<byte> Counts => [4, 5, 4, 4, 4, 4, 3, 3];
@@ -38,6 +40,9 @@ internal static class FishLeafLayout
 
     /// <summary>The rigid frame (0 body, 1..3 tail segment) the leaf is fixed in.</summary>
     public static int Frame(int leaf) => Frames[leaf];
+
+    /// <summary>First packed vertex carried by a frame (frame 4: the end of the buffer); each frame's vertices are contiguous.</summary>
+    public static int FrameStart(int frame) => FrameStarts[frame];
 
     /// <summary>Checks a part value and returns it as a leaf index.</summary>
     /// <exception cref="ArgumentException">The value is not one of the eight parts.</exception>

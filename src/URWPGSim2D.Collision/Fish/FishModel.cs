@@ -14,20 +14,23 @@ namespace URWPGSim2D.Collision.Fish;
 /// </summary>
 /// <remarks>
 /// Every buffer is allocated here, once; <see cref="SetPose"/> rebuilds the leaves and all
-/// bounding volumes in place without allocating. Each circle is the minimum enclosing circle
-/// of the leaves below it, grown by a few µm against round-off: it encloses every leaf below
-/// it (the root need not enclose the group circles themselves, which bulge past the fish; the
-/// descent only needs each volume to hold its leaves). Not thread-safe while a pose is being set.
+/// bounding volumes in place without allocating. Every circle encloses every leaf below it and
+/// is tight: the body group circle is the minimum enclosing circle of its leaves (rigid); the
+/// tail group and root circles are at most 1/cos 22.5° ≈ 1.083 times the minimum (each is
+/// centred on the smallest fixed-axis octagon around its leaves' slabs and reaches the farthest
+/// vertex, see <c>OctagonCentre</c>). Each is grown by a few µm against round-off. The root
+/// need not enclose the group circles themselves, which bulge past the fish; the descent only
+/// needs each volume to hold its leaves.
+/// Each leaf's 8-DOP holds its polygon; its diagonal slabs may lie a few float steps outside
+/// the exact projections. Not thread-safe while a pose is being set.
 /// </remarks>
 public sealed partial class FishModel
 {
     private readonly FishTemplate _template;
     private readonly Vector2[] _vertices = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector2[] _normals = new Vector2[FishLeafLayout.VertexCount];
-    private readonly Vector2[] _axes = new Vector2[FishLeafLayout.VertexCount];
     private readonly Vector4[] _slabMin = new Vector4[FishLeafLayout.LeafCount];
     private readonly Vector4[] _slabMax = new Vector4[FishLeafLayout.LeafCount];
-    private readonly Vector2[] _orderedPoints;
 
     /// <summary>Creates the model of a fish of the given size at the given pose.</summary>
     /// <param name="size">The fish's dimensions (a validated <see cref="FishSize"/>; not <c>default</c>).</param>
@@ -41,7 +44,6 @@ public sealed partial class FishModel
         }
 
         _template = new FishTemplate(size);
-        _orderedPoints = new Vector2[_template.AllOrder.Length];
         SetPose(pose);
     }
 
@@ -51,13 +53,13 @@ public sealed partial class FishModel
     /// <summary>The pose the model was last built for.</summary>
     public FishPose Pose { get; private set; }
 
-    /// <summary>Encloses the whole fish: the minimum enclosing circle of all leaves at this pose.</summary>
+    /// <summary>Encloses the whole fish (every leaf), within 1.083 times the smallest enclosing circle at this pose.</summary>
     public Circle Root { get; private set; }
 
     /// <summary>Encloses the body and both pectoral fins: their minimum enclosing circle (rigid, computed once per size).</summary>
     public Circle BodyGroup { get; private set; }
 
-    /// <summary>Encloses the three tail segments and the caudal fin: their minimum enclosing circle at this pose.</summary>
+    /// <summary>Encloses the three tail segments and the caudal fin, within 1.083 times their smallest enclosing circle at this pose.</summary>
     public Circle TailGroup { get; private set; }
 
     /// <summary>The extreme coordinates of all leaves: the smallest box containing the fish, mm.</summary>
@@ -79,7 +81,7 @@ public sealed partial class FishModel
         return _vertices.AsSpan(FishLeafLayout.Offset(leaf), FishLeafLayout.Count(leaf));
     }
 
-    /// <summary>The tight 8-DOP around one leaf polygon (its vertices' projections on the four 8-DOP axes).</summary>
+    /// <summary>The 8-DOP around one leaf polygon: its vertices' projections on the four 8-DOP axes (diagonals padded outward by a few float steps).</summary>
     /// <param name="part">Which leaf.</param>
     /// <returns>The leaf's bounding 8-DOP.</returns>
     /// <exception cref="ArgumentException"><paramref name="part"/> is not one of the eight parts.</exception>
@@ -89,14 +91,11 @@ public sealed partial class FishModel
         return KDop8.Build(_slabMin[leaf], _slabMax[leaf]);
     }
 
-    /// <summary>The exact leaf polygon as a view for the narrow phase (vertices, normals, merged axes).</summary>
+    /// <summary>The exact leaf polygon as a view for the narrow phase (vertices and edge normals).</summary>
     internal ConvexView LeafView(int leaf)
     {
-        int at = FishLeafLayout.Offset(leaf);
-        return new ConvexView(
-            _vertices.AsSpan(at, FishLeafLayout.Count(leaf)),
-            _normals.AsSpan(at, FishLeafLayout.Count(leaf)),
-            _axes.AsSpan(at, _template.AxisCount(leaf)));
+        int at = FishLeafLayout.Offset(leaf), count = FishLeafLayout.Count(leaf);
+        return new ConvexView(_vertices.AsSpan(at, count), _normals.AsSpan(at, count));
     }
 
     /// <summary>Lower slab values of the leaf's 8-DOP along the four axes.</summary>

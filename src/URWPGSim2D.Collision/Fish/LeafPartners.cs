@@ -25,6 +25,12 @@ internal interface ILeafPartner
 
     /// <summary>The exact contact of a leaf (moved by the MTV) with the partner.</summary>
     CollisionDetectionResult Detect(in ConvexView leaf);
+
+    /// <summary>The first half of <see cref="Detect"/>: whether they overlap, and the normal and depth.</summary>
+    bool Depth(in ConvexView leaf, out ContactDepth depth);
+
+    /// <summary>The second half: the finished contact for a depth that <see cref="Depth"/> found for this leaf.</summary>
+    CollisionDetectionResult Complete(in ConvexView leaf, in ContactDepth depth);
 }
 
 /// <summary>Slab helpers shared by the partners and the fish–fish descent.</summary>
@@ -76,6 +82,11 @@ internal readonly struct CirclePartner : ILeafPartner
     public bool MayOverlap(in Circle bound) => Slabs.MayOverlap(_circle, bound);
 
     public CollisionDetectionResult Detect(in ConvexView leaf) => CircleConvex.Detect(_circle, leaf).Swapped();
+
+    // The depth is the circle's (its normal points toward the circle); |MTV| is the same either way.
+    public bool Depth(in ConvexView leaf, out ContactDepth depth) => CircleConvex.Depth(_circle, leaf, out depth);
+
+    public CollisionDetectionResult Complete(in ConvexView leaf, in ContactDepth depth) => CircleConvex.Complete(_circle, leaf, depth).Swapped();
 }
 
 /// <summary>A polygon-like partner (box, 8-DOP, polygon, segment): slab tests on the tree, SAT at the leaves.</summary>
@@ -111,4 +122,8 @@ internal readonly ref struct ConvexPartner : ILeafPartner
     }
 
     public CollisionDetectionResult Detect(in ConvexView leaf) => ConvexSat.Detect(leaf, _view);
+
+    public bool Depth(in ConvexView leaf, out ContactDepth depth) => ConvexSat.Depth(leaf, _view, out depth);
+
+    public CollisionDetectionResult Complete(in ConvexView leaf, in ContactDepth depth) => ConvexSat.Complete(leaf, _view, depth);
 }

@@ -5,21 +5,20 @@ namespace URWPGSim2D.Collision.Geometry;
 
 /// <summary>
 /// A borrowed look at any convex "polygon-like" shape: its vertices in counter-clockwise order
-/// (positive signed area in x–z coordinates), the outward unit normal of each edge
-/// (edge i runs from vertex i to vertex i+1), and the axes a separating-axis test must try.
+/// (positive signed area in x–z coordinates) and the outward unit normal of each edge
+/// (edge i runs from vertex i to vertex i+1), which are also the axes a separating-axis test tries.
 /// </summary>
 /// <remarks>
-/// A segment is the two-vertex case (edges A→B and B→A, normals n and −n, one axis); a
+/// A segment is the two-vertex case (edges A→B and B→A, normals n and −n); a
 /// degenerate 8-DOP may even be a single point (no edges, no normals). Views never own memory:
 /// they point into a shape or into the caller's stack.
 /// </remarks>
 internal readonly ref struct ConvexView
 {
-    public ConvexView(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> axes)
+    public ConvexView(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals)
     {
         Vertices = vertices;
         Normals = normals;
-        Axes = axes;
     }
 
     /// <summary>Vertices, counter-clockwise, mm.</summary>
@@ -27,9 +26,6 @@ internal readonly ref struct ConvexView
 
     /// <summary>Outward unit normal of edge i (vertex i → vertex i+1); empty for a single point.</summary>
     public ReadOnlySpan<Vector2> Normals { get; }
-
-    /// <summary>Unsigned unit axes that the separating-axis test must try for this shape.</summary>
-    public ReadOnlySpan<Vector2> Axes { get; }
 
     /// <summary>Projects the vertices, taken relative to <paramref name="origin"/>, on <paramref name="axis"/>.</summary>
     public void Project(Vector2 axis, Vector2 origin, out float min, out float max)

@@ -7,7 +7,8 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>
 /// Circle against any convex polygon-like view by Voronoi regions. The edge of greatest
-/// separation s = n·(c − v) is found in one pass; when s ≤ 0 the centre is inside and the MTV
+/// separation s = n·(c − v) is found in one pass (four edges at a time, see
+/// <see cref="FaceSeparation.Farthest"/>); when s ≤ 0 the centre is inside and the MTV
 /// leaves through that edge (depth r − s); otherwise the centre lies in the region of that edge
 /// or of one of its two end vertices (decided by two dot products, no angles), which is exact
 /// for convex polygons.
@@ -15,38 +16,31 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 internal static class CircleConvex
 {
     /// <summary>The MTV moves the circle; its normal points from the polygon toward the circle.</summary>
-    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon)
+    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon) =>
+        Depth(circle, polygon, out ContactDepth depth) ? Complete(circle, polygon, depth) : CollisionDetectionResult.None;
+
+    /// <summary>Whether the circle and the polygon overlap and, if so, the normal and depth (no action point).</summary>
+    public static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth)
     {
         Vector2 c = circle.Center;
         float r = circle.Radius;
         var v = polygon.Vertices;
         var nrm = polygon.Normals;
         Vector2 normal;
-        float depth;
+        float distance;
+        depth = default;
         if (v.Length == 1)
         {
-            if (!PointRegion(c, r, v[0], out normal, out depth))
+            if (!PointRegion(c, r, v[0], out normal, out distance))
             {
-                return CollisionDetectionResult.None;
+                return false;
             }
         }
         else
         {
-            int edge = 0;
-            float maxSep = float.NegativeInfinity;
-            for (int i = 0; i < v.Length; i++)
+            if (!FaceSeparation.Farthest(v, nrm, c, r, out int edge, out float maxSep))
             {
-                float s = Vector2.Dot(nrm[i], c - v[i]);
-                if (s >= r)
-                {
-                    return CollisionDetectionResult.None;
-                }
-
-                if (s > maxSep)
-                {
-                    maxSep = s;
-                    edge = i;
-                }
+                return false;
             }
 
             Vector2 v1 = v[edge];
@@ -54,31 +48,36 @@ internal static class CircleConvex
             if (maxSep <= 0f && v.Length >= 3)
             {
                 normal = nrm[edge];
-                depth = r - maxSep;
+                distance = r - maxSep;
             }
             else if (Vector2.Dot(c - v1, v2 - v1) <= 0f)
             {
-                if (!PointRegion(c, r, v1, out normal, out depth))
+                if (!PointRegion(c, r, v1, out normal, out distance))
                 {
-                    return CollisionDetectionResult.None;
+                    return false;
                 }
             }
             else if (Vector2.Dot(c - v2, v1 - v2) <= 0f)
             {
-                if (!PointRegion(c, r, v2, out normal, out depth))
+                if (!PointRegion(c, r, v2, out normal, out distance))
                 {
-                    return CollisionDetectionResult.None;
+                    return false;
                 }
             }
             else
             {
                 normal = nrm[edge];
-                depth = r - maxSep;
+                distance = r - maxSep;
             }
         }
 
-        return CollisionDetectionResult.FromPlane(normal, depth, ActionPoint(polygon, c, r, normal, depth));
+        depth = new ContactDepth(normal, distance);
+        return true;
     }
+
+    /// <summary>The finished contact for a <paramref name="depth"/> that <see cref="Depth"/> found for the same circle and polygon.</summary>
+    public static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth) =>
+        CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, ActionPoint(polygon, circle.Center, circle.Radius, depth.Normal, depth.Depth));
 
     // Circle against a single vertex: overlap when |c − p| < r, pushed along (c − p).
     private static bool PointRegion(Vector2 c, float r, Vector2 p, out Vector2 normal, out float depth)

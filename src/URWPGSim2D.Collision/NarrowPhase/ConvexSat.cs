@@ -1,6 +1,10 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 
@@ -14,6 +18,11 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// their Minkowski difference, and −sᵢ is that difference's support distance along the face
 /// normal, containment included.
 /// </summary>
+/// <remarks>
+/// <see cref="Depth"/> is the test without the action point (see <see cref="FaceSeparation"/>
+/// for the vectorised loop); <see cref="Complete"/> adds the action point; <see cref="Detect"/>
+/// is both. All arithmetic is relative to a's first vertex.
+/// </remarks>
 internal static class ConvexSat
 {
     /// <summary>Tolerance (mm) for accepting the fast action point as inside both shapes.</summary>
@@ -22,25 +31,63 @@ internal static class ConvexSat
     /// <summary>Separations (mm) closer than this count as a tie between the two shapes' faces.</summary>
     private const float TieTolerance = 1e-4f;
 
-    /// <summary>The MTV moves <paramref name="a"/>; all arithmetic is relative to a's first vertex.</summary>
+    /// <summary>The MTV moves <paramref name="a"/>.</summary>
     public static CollisionDetectionResult Detect(in ConvexView a, in ConvexView b)
     {
         Vector2 origin = a.Vertices[0];
-        Span<Vector2> ra = stackalloc Vector2[a.Vertices.Length];
-        Span<Vector2> rb = stackalloc Vector2[b.Vertices.Length];
-        Relative(a.Vertices, origin, ra);
-        Relative(b.Vertices, origin, rb);
-        if (!MaxSeparation(ra, a.Normals, rb, out int faceA, out float sepA)
-            || !MaxSeparation(rb, b.Normals, ra, out int faceB, out float sepB))
+        Span<Vector2> ra = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        Span<Vector2> rb = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        ra = Relative(a.Vertices, origin, ra);
+        rb = Relative(b.Vertices, origin, rb);
+        return Separations(ra, a.Normals, rb, b.Normals, out ContactDepth depth)
+            ? Finish(a, b, ra, rb, origin, depth)
+            : CollisionDetectionResult.None;
+    }
+
+    /// <summary>Whether the shapes overlap and, if so, the normal and depth of the contact (no action point).</summary>
+    public static bool Depth(in ConvexView a, in ConvexView b, out ContactDepth depth)
+    {
+        Vector2 origin = a.Vertices[0];
+        Span<Vector2> ra = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        Span<Vector2> rb = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        ra = Relative(a.Vertices, origin, ra);
+        rb = Relative(b.Vertices, origin, rb);
+        return Separations(ra, a.Normals, rb, b.Normals, out depth);
+    }
+
+    /// <summary>The finished contact for a <paramref name="depth"/> that <see cref="Depth"/> found for the same two views.</summary>
+    public static CollisionDetectionResult Complete(in ConvexView a, in ConvexView b, in ContactDepth depth)
+    {
+        Vector2 origin = a.Vertices[0];
+        Span<Vector2> ra = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        Span<Vector2> rb = stackalloc Vector2[ConvexPolygon.MaxVertices];
+        ra = Relative(a.Vertices, origin, ra);
+        rb = Relative(b.Vertices, origin, rb);
+        return Finish(a, b, ra, rb, origin, depth);
+    }
+
+    // Both shapes' greatest face separations (relative coordinates); false when some face separates.
+    private static bool Separations(ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> na, ReadOnlySpan<Vector2> rb, ReadOnlySpan<Vector2> nb, out ContactDepth depth)
+    {
+        if (!FaceSeparation.Greatest(ra, na, rb, out int faceA, out float sepA)
+            || !FaceSeparation.Greatest(rb, nb, ra, out int faceB, out float sepB))
         {
-            return CollisionDetectionResult.None;
+            depth = default;
+            return false;
         }
 
         // The reference face: the greater separation (the smaller push); ties go to a.
         bool referenceIsA = faceA >= 0 && (faceB < 0 || sepA >= sepB);
-        Vector2 normal = referenceIsA ? -a.Normals[faceA] : b.Normals[faceB];
-        float depth = referenceIsA ? -sepA : -sepB;
+        Vector2 normal = referenceIsA ? -na[faceA] : nb[faceB];
+        depth = new ContactDepth(normal, referenceIsA ? -sepA : -sepB, faceA, sepA, faceB, sepB);
+        return true;
+    }
 
+    // The action point (relative coordinates ra, rb from origin) and the result.
+    private static CollisionDetectionResult Finish(in ConvexView a, in ConvexView b, ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> rb, Vector2 origin, in ContactDepth depth)
+    {
+        int faceA = depth.FaceA, faceB = depth.FaceB;
+        bool referenceIsA = faceA >= 0 && (faceB < 0 || depth.SeparationA >= depth.SeparationB);
         bool found = referenceIsA
             ? FacePoint(ra, a.Normals, faceA, rb, b.Normals, out Vector2 point, out Vector2 onIncident)
             : FacePoint(rb, b.Normals, faceB, ra, a.Normals, out point, out onIncident);
@@ -50,53 +97,42 @@ internal static class ConvexSat
             // incident points themselves lie on its boundary. Not on a tie between a face of a and
             // a face of b: which one is the reference would then depend on the argument order,
             // and the answer must not. Failing that, the exact centroid.
-            bool tie = faceA >= 0 && faceB >= 0 && MathF.Abs(sepA - sepB) <= TieTolerance;
+            bool tie = faceA >= 0 && faceB >= 0 && MathF.Abs(depth.SeparationA - depth.SeparationB) <= TieTolerance;
             point = found && !tie && InsideBoth(ra, a.Normals, rb, b.Normals, onIncident)
                 ? onIncident
-                : ContactRegion.IntersectionCentroid(a, b, origin, normal) - origin;
+                : ContactRegion.IntersectionCentroid(a, b, origin, depth.Normal) - origin;
         }
 
-        return CollisionDetectionResult.FromPlane(normal, depth, origin + point);
+        return CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, origin + point);
     }
 
-    private static void Relative(ReadOnlySpan<Vector2> vertices, Vector2 origin, Span<Vector2> relative)
+    // vertices − origin into the buffer (four at a time where the hardware allows); returns the filled part.
+    private static Span<Vector2> Relative(ReadOnlySpan<Vector2> vertices, Vector2 origin, Span<Vector2> buffer)
     {
-        for (int i = 0; i < vertices.Length; i++)
+        var relative = buffer[..vertices.Length];
+        int i = 0;
+        if (Vector256.IsHardwareAccelerated && vertices.Length >= 4)
+        {
+            ref float src = ref Unsafe.As<Vector2, float>(ref MemoryMarshal.GetReference(vertices));
+            ref float dst = ref Unsafe.As<Vector2, float>(ref MemoryMarshal.GetReference(relative));
+            var o = Vector256.Create(origin.X, origin.Y, origin.X, origin.Y, origin.X, origin.Y, origin.X, origin.Y);
+            for (int at = 0; ; at += 4)
+            {
+                at = Math.Min(at, vertices.Length - 4);
+                (Vector256.LoadUnsafe(ref src, (nuint)(2 * at)) - o).StoreUnsafe(ref dst, (nuint)(2 * at));
+                if (at == vertices.Length - 4)
+                {
+                    return relative;
+                }
+            }
+        }
+
+        for (; i < vertices.Length; i++)
         {
             relative[i] = vertices[i] - origin;
         }
-    }
 
-    // Greatest separation of `other` from the faces of `reference`; false when some face separates.
-    // A single point has no faces: face −1, separation −∞ (the other shape's faces decide).
-    private static bool MaxSeparation(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation)
-    {
-        face = -1;
-        separation = float.NegativeInfinity;
-        for (int i = 0; i < normals.Length; i++)
-        {
-            Vector2 n = normals[i];
-            float lowest = float.PositiveInfinity;
-            foreach (Vector2 w in other)
-            {
-                float d = Vector2.Dot(n, w);
-                lowest = d < lowest ? d : lowest;
-            }
-
-            float s = lowest - Vector2.Dot(n, reference[i]);
-            if (s >= 0f)
-            {
-                return false;
-            }
-
-            if (s > separation)
-            {
-                separation = s;
-                face = i;
-            }
-        }
-
-        return true;
+        return relative;
     }
 
     /// <summary>
@@ -118,17 +154,7 @@ internal static class ConvexSat
         Vector2 n = referenceNormals[face];
         Vector2 v1 = reference[face];
         Vector2 v2 = reference[face + 1 == reference.Length ? 0 : face + 1];
-        int edge = 0;
-        float mostAnti = float.PositiveInfinity;
-        for (int j = 0; j < incidentNormals.Length; j++)
-        {
-            float d = Vector2.Dot(incidentNormals[j], n);
-            if (d < mostAnti)
-            {
-                mostAnti = d;
-                edge = j;
-            }
-        }
+        int edge = FaceSeparation.LeastDot(incidentNormals, n);
 
         Vector2 p1 = incident[edge];
         Vector2 p2 = incident[edge + 1 == incident.Length ? 0 : edge + 1];
@@ -189,24 +215,5 @@ internal static class ConvexSat
     }
 
     private static bool InsideBoth(ReadOnlySpan<Vector2> ra, ReadOnlySpan<Vector2> na, ReadOnlySpan<Vector2> rb, ReadOnlySpan<Vector2> nb, Vector2 p) =>
-        Inside(ra, na, p) && Inside(rb, nb, p);
-
-    // Whether p lies inside a convex view with ≥ 3 vertices, within InsideTolerance.
-    private static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p)
-    {
-        if (vertices.Length < 3)
-        {
-            return false;
-        }
-
-        for (int i = 0; i < normals.Length; i++)
-        {
-            if (Vector2.Dot(normals[i], p - vertices[i]) > InsideTolerance)
-            {
-                return false;
-            }
-        }
-
-        return true;
-    }
+        ra.Length >= 3 && rb.Length >= 3 && FaceSeparation.Inside(ra, na, p, InsideTolerance) && FaceSeparation.Inside(rb, nb, p, InsideTolerance);
 }

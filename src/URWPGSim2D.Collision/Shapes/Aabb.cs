@@ -11,7 +11,6 @@ namespace URWPGSim2D.Collision.Shapes;
 public readonly struct Aabb
 {
     private static readonly Vector2[] EdgeNormals = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
-    private static readonly Vector2[] SatAxes = [new(1f, 0f), new(0f, 1f)];
 
     /// <summary>Creates a box from its corners, validating them.</summary>
     /// <param name="min">Lower corner (smallest x and z), mm.</param>
@@ -31,6 +30,14 @@ public readonly struct Aabb
             throw new ArgumentException($"min z ({min.Y}) is greater than max z ({max.Y})", nameof(min));
         }
 
+        Min = min;
+        Max = max;
+    }
+
+    // Trusted corners from the library's own arithmetic (finite, min ≤ max): no checks.
+    private Aabb(Vector2 min, Vector2 max, bool trusted)
+    {
+        _ = trusted;
         Min = min;
         Max = max;
     }
@@ -58,6 +65,9 @@ public readonly struct Aabb
     /// <returns>The translated box.</returns>
     public Aabb Translated(Vector2 offset) => new(Min + offset, Max + offset);
 
+    /// <summary>A box from corners the library computed itself (finite, min ≤ max on both axes); not validated.</summary>
+    internal static Aabb Trusted(Vector2 min, Vector2 max) => new(min, max, true);
+
     /// <summary>Writes the four corners counter-clockwise (in x–z coordinates), starting at <see cref="Min"/>.</summary>
     internal void WriteVertices(Span<Vector2> destination)
     {
@@ -68,5 +78,5 @@ public readonly struct Aabb
     }
 
     /// <summary>A view of the box over the four corners written by <see cref="WriteVertices"/>.</summary>
-    internal static ConvexView View(ReadOnlySpan<Vector2> corners) => new(corners, EdgeNormals, SatAxes);
+    internal static ConvexView View(ReadOnlySpan<Vector2> corners) => new(corners, EdgeNormals);
 }

@@ -115,7 +115,7 @@ public readonly struct ConvexPolygon
         return new ConvexPolygon(moved);
     }
 
-    /// <summary>A view of the polygon: its own vertices, normals, and its normals as SAT axes.</summary>
+    /// <summary>A view of the polygon: its own vertices and edge normals.</summary>
     internal ConvexView View()
     {
         if (_vertices is null)
@@ -123,7 +123,7 @@ public readonly struct ConvexPolygon
             throw new InvalidOperationException("the polygon is default(ConvexPolygon) and has no vertices");
         }
 
-        return new ConvexView(_vertices, _normals, _normals);
+        return new ConvexView(_vertices, _normals);
     }
 
     /// <summary>Twice the signed area (positive for counter-clockwise in x–z coordinates).</summary>

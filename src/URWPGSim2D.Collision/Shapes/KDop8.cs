@@ -24,7 +24,7 @@ public readonly struct KDop8
     /// <summary>√½, the component of the diagonal axes.</summary>
     internal const float Diagonal = 0.70710678118654752f;
 
-    private static readonly Vector2[] SatAxes = [new(1f, 0f), new(0f, 1f), new(Diagonal, Diagonal), new(Diagonal, -Diagonal)];
+    private static readonly Vector2[] SlabAxes = [new(1f, 0f), new(0f, 1f), new(Diagonal, Diagonal), new(Diagonal, -Diagonal)];
 
     private readonly Vector4 _min;
     private readonly Vector4 _max;
@@ -77,7 +77,7 @@ public readonly struct KDop8
     /// <summary>The unit axis aᵢ (i = 0..3) along which slab i is measured.</summary>
     /// <param name="index">0: (1, 0); 1: (0, 1); 2: (√½, √½); 3: (√½, −√½).</param>
     /// <returns>The axis as a plane vector.</returns>
-    public static Vector2 Axis(int index) => SatAxes[index];
+    public static Vector2 Axis(int index) => SlabAxes[index];
 
     /// <summary>The tight 8-DOP of a set of points (their projections on the four axes).</summary>
     /// <param name="points">At least one finite point, mm.</param>
@@ -171,10 +171,10 @@ public readonly struct KDop8
 
     internal Vector4 MaxSlabs => _max;
 
-    /// <summary>A view over the inline vertices and normals, with the four fixed axes for SAT.</summary>
+    /// <summary>A view over the inline vertices and their edge normals.</summary>
     [UnscopedRef]
     internal ConvexView View() =>
-        new(Vertices, ((ReadOnlySpan<Vector2>)_normals)[..(_count >= 2 ? _count : 0)], SatAxes);
+        new(Vertices, ((ReadOnlySpan<Vector2>)_normals)[..(_count >= 2 ? _count : 0)]);
 
     /// <summary>p·a₀..a₃ of one point in float (for conservative pre-tests; exact slabs use double).</summary>
     internal static Vector4 Project(Vector2 p) => new(p.X, p.Y, (p.X + p.Y) * Diagonal, (p.X - p.Y) * Diagonal);

@@ -38,7 +38,7 @@ public readonly struct Segment
     /// <returns>The translated segment.</returns>
     public Segment Translated(Vector2 offset) => new(A + offset, B + offset);
 
-    /// <summary>Writes the view data: the two ends, the normals of A→B and B→A, and the single SAT axis.</summary>
+    /// <summary>Writes the view data: the two ends and the normals of A→B and B→A.</summary>
     internal void WriteView(Span<Vector2> vertices, Span<Vector2> normals)
     {
         vertices[0] = A;
@@ -50,5 +50,5 @@ public readonly struct Segment
 
     /// <summary>A view over data written by <see cref="WriteView"/>.</summary>
     internal static ConvexView View(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals) =>
-        new(vertices, normals, normals[..1]);
+        new(vertices, normals);
 }

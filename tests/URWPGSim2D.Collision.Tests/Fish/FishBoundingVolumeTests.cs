@@ -33,10 +33,11 @@ public class FishBoundingVolumeTests
     [Fact]
     public void CirclesAreWithinThirtyPercentOfTheSmallestEnclosingCircle()
     {
+        // Against the exhaustive smallest circle (slow: a few hundred poses).
         var rng = new Random(22);
         var fish = new FishModel(FishSize.Default, default);
-        double worstRoot = 0, worstGroup = 0;
-        for (int trial = 0; trial < 400; trial++)
+        var worst = new Ratios();
+        for (int trial = 0; trial < 300; trial++)
         {
             if (trial % 100 == 99)
             {
@@ -45,16 +46,39 @@ public class FishBoundingVolumeTests
 
             // Half the poses swim (joints within ±0.6 rad), half bend anyhow (±π, even folded back).
             fish.SetPose(FishTestKit.Pose(rng, trial % 2 == 0 ? 0.6f : MathF.PI, 1500f));
-            double body = ExhaustiveMinimumRadius(Points(fish, BodyParts));
-            double tail = ExhaustiveMinimumRadius(Points(fish, TailParts));
-            double all = ExhaustiveMinimumRadius(Points(fish, FishTestKit.AllParts));
-            worstGroup = Math.Max(worstGroup, Math.Max(fish.BodyGroup.Radius / body, fish.TailGroup.Radius / tail));
-            worstRoot = Math.Max(worstRoot, fish.Root.Radius / all);
+            worst.Add(fish, ExhaustiveMinimumRadius);
         }
 
-        // The bound asked for is 30 %; the circles are minimum enclosing circles up to µm slack.
-        Assert.True(worstGroup <= 1.0001, $"group circle ratio {worstGroup}");
-        Assert.True(worstRoot <= 1.0001, $"root circle ratio {worstRoot}");
+        worst.AssertWithinBounds();
+    }
+
+    [Fact]
+    public void CirclesStayTightOverThousandsOfPosesIncludingExtremeJoints()
+    {
+        // Against the library's exact incremental search (itself checked against exhaustion below):
+        // random sizes, joints anywhere, at ±90° and ±180° exactly, and far from the origin.
+        var rng = new Random(25);
+        float[] extremes = [MathF.PI / 2f, -MathF.PI / 2f, MathF.PI, -MathF.PI, 0f];
+        var fish = new FishModel(FishSize.Default, default);
+        var worst = new Ratios();
+        for (int trial = 0; trial < 6000; trial++)
+        {
+            if (trial % 500 == 499)
+            {
+                fish = new FishModel(FishTestKit.Size(rng), default);
+            }
+
+            var pose = FishTestKit.Pose(rng, trial % 3 == 0 ? 0.6f : MathF.PI, trial % 7 == 0 ? 20000f : 1500f);
+            if (trial % 4 == 1)
+            {
+                pose = new FishPose(pose.Position, pose.Heading, Pick(rng, extremes), Pick(rng, extremes), Pick(rng, extremes));
+            }
+
+            fish.SetPose(pose);
+            worst.Add(fish, points => EnclosingCircle.Minimum(points).Radius);
+        }
+
+        worst.AssertWithinBounds();
     }
 
     [Fact]
@@ -84,6 +108,29 @@ public class FishBoundingVolumeTests
 
             double exact = n == 1 ? 0 : ExhaustiveMinimumRadius(points);
             Assert.True(circle.Radius <= (exact * (1 + 1e-4)) + 1e-2, $"trial {trial}: radius {circle.Radius} vs minimum {exact}");
+        }
+    }
+
+    [Fact]
+    public void FarthestSquaredEqualsThePointByPointMaximum()
+    {
+        var rng = new Random(27);
+        for (int trial = 0; trial < 2000; trial++)
+        {
+            var points = new Vector2[trial % 33];
+            for (int i = 0; i < points.Length; i++)
+            {
+                points[i] = FishTestKit.Point(rng, 2000f);
+            }
+
+            Vector2 c = FishTestKit.Point(rng, 2000f);
+            float expected = 0f;
+            foreach (var p in points)
+            {
+                expected = MathF.Max(expected, Vector2.DistanceSquared(p, c));
+            }
+
+            Assert.Equal(expected, EnclosingCircle.FarthestSquared(points, c));
         }
     }
 
@@ -206,6 +253,33 @@ public class FishBoundingVolumeTests
         }
 
         return [.. list];
+    }
+
+    private static float Pick(Random rng, float[] values) => values[rng.Next(values.Length)];
+
+    /// <summary>The worst ratio of each circle to the smallest circle around its leaves' vertices.</summary>
+    private sealed class Ratios
+    {
+        // Tail group and root circles are centred on the smallest fixed-axis octagon: at most
+        // 1/cos 22.5° = 1.08239 times the minimum (plus µm slack); the issue asks for 1.30.
+        private const double OctagonBound = 1.0825;
+
+        private double _body, _tail, _root;
+
+        public void Add(FishModel fish, Func<Vector2[], double> minimumRadius)
+        {
+            _body = Math.Max(_body, fish.BodyGroup.Radius / minimumRadius(Points(fish, BodyParts)));
+            _tail = Math.Max(_tail, fish.TailGroup.Radius / minimumRadius(Points(fish, TailParts)));
+            _root = Math.Max(_root, fish.Root.Radius / minimumRadius(Points(fish, FishTestKit.AllParts)));
+        }
+
+        public void AssertWithinBounds()
+        {
+            Assert.True(_body <= 1.0001, $"body group circle ratio {_body}: it is the minimum circle, moved rigidly");
+            Assert.True(_tail <= OctagonBound, $"tail group circle ratio {_tail}");
+            Assert.True(_root <= OctagonBound, $"root circle ratio {_root}");
+            Assert.True(_root > 1.0, $"root ratio {_root}: the measurement is suspicious (the root is not a minimum circle)");
+        }
     }
 
     private static void AssertEncloses(Circle circle, FishModel fish, FishPart[] parts, int trial)

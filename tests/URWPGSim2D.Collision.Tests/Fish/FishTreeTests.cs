@@ -71,6 +71,63 @@ public class FishTreeTests
         (f, b, s) => FishCollision.DetectAll(f, b, s), (b, f, s) => FishCollision.DetectAll(b, f, s));
 
     [Fact]
+    public void DeepestFishContactEqualsBruteForceWhenManyLeafPairsOverlapAlike()
+    {
+        // Fish almost on top of each other, near the origin and 20 m away: many leaf pairs
+        // overlap with close depths, the case where stopping early on the depth bound could go wrong.
+        var rng = new Random(37);
+        var a = new FishModel(FishSize.Default, default);
+        var b = new FishModel(FishSize.Default, default);
+        for (int trial = 0; trial < 3000; trial++)
+        {
+            if (trial % 500 == 499)
+            {
+                var size = FishTestKit.Size(rng);
+                a = new FishModel(size, default);
+                b = new FishModel(size, default);
+            }
+
+            Vector2 far = trial % 2 == 0 ? Vector2.Zero : new Vector2(20000f, -15000f);
+            var pose = FishTestKit.Pose(rng, trial % 3 == 0 ? MathF.PI : 0.5f, 50f).Translated(far);
+            float shift = trial % 4 == 0 ? 0f : FishTestKit.Range(rng, 0f, 20f);
+            var other = new FishPose(pose.Position + FishTestKit.Point(rng, shift), pose.Heading + FishTestKit.Range(rng, -0.2f, 0.2f), pose.Joint1, pose.Joint2 + 0.1f, pose.Joint3);
+            if (trial % 5 == 0)
+            {
+                // Axis-aligned and straight, shifted along x: depths equal to slab overlaps.
+                pose = new FishPose(pose.Position, 0f);
+                other = new FishPose(pose.Position + new Vector2(FishTestKit.Range(rng, -30f, 30f), 0f), trial % 10 == 0 ? 0f : MathF.PI);
+            }
+
+            a.SetPose(pose);
+            b.SetPose(other);
+            var expected = FishContact.None;
+            float best = -1f;
+            for (int la = 0; la < 8; la++)
+            {
+                for (int lb = 0; lb < 8; lb++)
+                {
+                    var r = ConvexSat.Detect(a.LeafView(la), b.LeafView(lb));
+                    if (r.Intersect && r.MinimumTranslationVector.LengthSquared() > best)
+                    {
+                        best = r.MinimumTranslationVector.LengthSquared();
+                        expected = new FishContact(r, (FishPart)la, (FishPart)lb);
+                    }
+
+                    if (r.Intersect)
+                    {
+                        // The bound the search stops on holds every computed depth.
+                        float bound = FishTree.DepthBound(a.LeafMin(la), a.LeafMax(la), b.LeafMin(lb), b.LeafMax(lb));
+                        Assert.True(r.Depth <= bound, $"trial {trial} {la}/{lb}: depth {r.Depth} above its bound {bound}");
+                    }
+                }
+            }
+
+            var tree = FishCollision.Detect(a, b);
+            Assert.True(expected == tree, $"trial {trial}: tree {tree} vs brute force {expected}");
+        }
+    }
+
+    [Fact]
     public void FishQueriesEqualBruteForce()
     {
         var rng = new Random(36);

@@ -30,10 +30,17 @@ public sealed class ConvexViewTests
     }
 
     [Fact]
-    public void PolygonViewUsesItsNormalsAsAxes()
+    public void PolygonViewHasOneOutwardUnitNormalPerEdge()
     {
         var view = Triangle.View();
         Assert.Equal(3, view.Vertices.Length);
-        Assert.Equal(view.Normals.ToArray(), view.Axes.ToArray());
+        Assert.Equal(3, view.Normals.Length);
+        for (int i = 0; i < 3; i++)
+        {
+            Vector2 edge = view.Vertices[(i + 1) % 3] - view.Vertices[i];
+            Assert.Equal(1f, view.Normals[i].Length(), 1e-6f);
+            Assert.Equal(0f, Vector2.Dot(view.Normals[i], edge), 1e-5f);
+            Assert.True(Vector2.Dot(view.Normals[i], view.Vertices[(i + 2) % 3] - view.Vertices[i]) < 0f, "normal points outward");
+        }
     }
 }
