@@ -25,6 +25,9 @@ internal sealed class FishState
     private readonly float _bodyGroupRadius;
     private RigidFrame _frame;
     private bool _frameValid;
+    private Disc _bodyDisc;
+    private Disc _tailDisc;
+    private bool _groupsValid;
 
     public FishState(int index, int team, FishSize size, Vector2 position, float heading)
     {
@@ -259,6 +262,7 @@ internal sealed class FishState
         Model.SetPose(new FishPose(position, heading, Joint1, Joint2, Joint3));
         ModelStale = position != Position || heading != Heading;
         _frameValid = false;
+        _groupsValid = false;
     }
 
     /// <summary>Marks the pose fields as changed; the model is rebuilt or moved when next needed.</summary>
@@ -266,6 +270,7 @@ internal sealed class FishState
     {
         ModelStale = true;
         _frameValid = false;
+        _groupsValid = false;
     }
 
     /// <summary>
@@ -275,6 +280,18 @@ internal sealed class FishState
     /// <see cref="TailSkeleton"/> circle.
     /// </summary>
     public void Groups(out Disc body, out Disc tail)
+    {
+        if (!_groupsValid)
+        {
+            ComputeGroups(out _bodyDisc, out _tailDisc);
+            _groupsValid = true;
+        }
+
+        body = _bodyDisc;
+        tail = _tailDisc;
+    }
+
+    private void ComputeGroups(out Disc body, out Disc tail)
     {
         if (!JointsCurrent)
         {

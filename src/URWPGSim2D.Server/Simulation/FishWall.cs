@@ -4,6 +4,7 @@ using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -25,6 +26,17 @@ internal static class FishWall
         if (frame.IsIdentity)
         {
             return Hit.From(field.Contain(model));
+        }
+
+        // The model's box carried by the frame (its four corners' box holds every leaf): inside the pool, no contact.
+        Aabb box = model.Bounds;
+        Vector2 c0 = frame.ToWorld(box.Min), c1 = frame.ToWorld(box.Max);
+        Vector2 c2 = frame.ToWorld(new Vector2(box.Min.X, box.Max.Y)), c3 = frame.ToWorld(new Vector2(box.Max.X, box.Min.Y));
+        Vector2 lo = Vector2.Min(Vector2.Min(c0, c1), Vector2.Min(c2, c3)), hi = Vector2.Max(Vector2.Max(c0, c1), Vector2.Max(c2, c3));
+        Aabb pool = field.Bounds;
+        if (lo.X >= pool.Min.X && lo.Y >= pool.Min.Y && hi.X <= pool.Max.X && hi.Y <= pool.Max.Y)
+        {
+            return Hit.From(CollisionDetectionResult.None);
         }
 
         Span<Vector2> points = stackalloc Vector2[MaxVertices];
