@@ -1,6 +1,6 @@
 using System;
 using System.Threading;
-using System.Threading.Tasks;
+using System.Runtime.ExceptionServices;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Batch;
@@ -22,37 +22,75 @@ internal static class BatchRunner
     {
         int count = header.ShardMatches;
         var results = new MatchResult[count];
+        int next = -1;
         int reported = 0;
         var gate = new object();
-        var options = new ParallelOptions { MaxDegreeOfParallelism = Math.Max(1, threads) };
-        Parallel.For(0, count, options, position =>
+        Exception? failure = null;
+
+        // Each worker takes the next match as soon as it is free (one match at a time, so the load
+        // stays even however long the matches are).
+        void Work()
         {
-            int index = header.ShardIndex + (position * header.ShardCount);
-            ulong seed = header.FirstSeed + (ulong)index;
-            Match match = build(seed);
             try
             {
-                for (int k = 0; k < header.Cycles; k++)
+                int position;
+                while ((position = Interlocked.Increment(ref next)) < count && Volatile.Read(ref failure) is null)
                 {
-                    match.Step();
+                    int index = header.ShardIndex + (position * header.ShardCount);
+                    ulong seed = header.FirstSeed + (ulong)index;
+                    Volatile.Write(ref results[position], Play(build(seed), index, seed, header.Cycles));
+                    lock (gate)
+                    {
+                        while (reported < count && results[reported] is { } done)
+                        {
+                            report(done);
+                            reported++;
+                        }
+                    }
                 }
             }
-            finally
+            catch (Exception e)
             {
-                match.Strategies.Stop();
+                Interlocked.CompareExchange(ref failure, e, null);
             }
+        }
 
-            Volatile.Write(ref results[position], MatchResult.Of(index, seed, match));
-            lock (gate)
-            {
-                while (reported < count && results[reported] is { } done)
-                {
-                    report(done);
-                    reported++;
-                }
-            }
-        });
+        int workers = Math.Clamp(threads, 1, Math.Max(1, count));
+        var pool = new Thread[workers - 1];
+        for (int w = 0; w < pool.Length; w++)
+        {
+            pool[w] = new Thread(Work) { IsBackground = true, Name = $"batch worker {w + 1}" };
+            pool[w].Start();
+        }
+
+        Work();
+        foreach (var thread in pool)
+        {
+            thread.Join();
+        }
+
+        if (failure is not null)
+        {
+            ExceptionDispatchInfo.Capture(failure).Throw();
+        }
 
         return results;
+    }
+
+    private static MatchResult Play(Match match, int index, ulong seed, int cycles)
+    {
+        try
+        {
+            for (int k = 0; k < cycles; k++)
+            {
+                match.Step();
+            }
+        }
+        finally
+        {
+            match.Strategies.Stop();
+        }
+
+        return MatchResult.Of(index, seed, match);
     }
 }
