@@ -41,6 +41,7 @@ internal sealed partial class Stepper
     private int[] _hitSlots = new int[64];
     private Hit[] _hitValues = new Hit[64];
     private int _hitCount;
+    private readonly FoundHits _found = new();
     private int[] _pending = new int[16];
     private int _pendingCount;
 
@@ -97,7 +98,7 @@ internal sealed partial class Stepper
             deepest = MathF.Max(deepest, Sample(tick));
             if (_hitCount > 0)
             {
-                HandleEvent((double)tick / Ticks);
+                HandleHits((double)tick / Ticks);
             }
         }
 
@@ -203,6 +204,48 @@ internal sealed partial class Stepper
 
         _hitSlots[_hitCount] = slot;
         _hitValues[_hitCount++] = hit;
+    }
+
+    // The hits of one sample fall into clusters that share no body (a fish pushing a ball here, two
+    // balls meeting there): each is its own event, taken in the order of its estimated time of first
+    // contact, so one contact does not pull unrelated bodies back in time. A cluster whose pair was
+    // planned again by an earlier one (a relaxation moved its body) is left to its new schedule.
+    private void HandleHits(double found)
+    {
+        int count = _hitCount;
+        _found.Load(_hitSlots, _hitValues, count, _table);
+        for (int i = 0; i < count; i++)
+        {
+            _found.Estimate[i] = EstimatedContact(i, found);
+        }
+
+        _found.Cluster(_planner.FishCount);
+        foreach (int cluster in _found.ClustersByTime())
+        {
+            _hitCount = 0;
+            for (int i = 0; i < count; i++)
+            {
+                int slot = _found.Slot[i];
+                if (_found.Label[i] == cluster && _table.Alive[slot] && _table.Generation[slot] == _found.Generation[i])
+                {
+                    AddHit(slot, _found.Value[i]);
+                }
+            }
+
+            if (_hitCount > 0)
+            {
+                HandleEvent(found);
+            }
+        }
+    }
+
+    // False-position estimate of a hit's time of first contact (its last free time when unknown).
+    private double EstimatedContact(int i, double found)
+    {
+        int slot = _found.Slot[i];
+        float closing = PairMotion.ClosingRate(_world, _table.Pair[slot], _found.Value[i]);
+        double guess = closing > 0f ? found - (_found.Value[i].Depth / closing) : _table.LastFree[slot];
+        return Math.Clamp(guess, _table.LastFree[slot], found);
     }
 
     // The hits' bodies go back to the last time all were apart, the time of first contact is
