@@ -1,11 +1,81 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using BenchmarkDotNet.Reports;
 using BenchmarkDotNet.Running;
+using URWPGSim2D.Collision.Benchmarks.Scaling;
 
 namespace URWPGSim2D.Collision.Benchmarks;
 
-/// <summary>Entry point: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter '*'</c>.</summary>
+/// <summary>
+/// Entry point: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter '*'</c>.
+/// Everything after <c>--</c> goes to BenchmarkDotNet's switcher, except <c>--plot FILE</c>: after
+/// the run, the scaling and broad-phase results (medians per cycle) are drawn into FILE as SVG.
+/// </summary>
 public static class Program
 {
-    /// <summary>Runs the benchmarks chosen on the command line (BenchmarkDotNet's switcher).</summary>
-    /// <param name="args">BenchmarkDotNet arguments, e.g. <c>--filter *Pair*</c> or <c>--job dry</c>.</param>
-    public static void Main(string[] args) => BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+    /// <summary>Runs the benchmarks chosen on the command line.</summary>
+    /// <param name="args">BenchmarkDotNet arguments, e.g. <c>--filter *Pair*</c> or <c>--job dry</c>, plus <c>--plot FILE</c>.</param>
+    public static void Main(string[] args)
+    {
+        int at = Array.IndexOf(args, "--plot");
+        string? plot = at >= 0 && at + 1 < args.Length ? args[at + 1] : null;
+        string[] rest = at >= 0 ? [.. args[..at], .. args[Math.Min(args.Length, at + 2)..]] : args;
+        var summaries = BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(rest).ToArray();
+        if (plot is not null)
+        {
+            var series = Series(summaries);
+            if (series.Count == 0)
+            {
+                Console.Error.WriteLine("--plot: no ScalingBenchmarks or BroadPhaseBenchmarks results to draw");
+                return;
+            }
+
+            ScalingPlot.Write(plot, "Cost per cycle against object count (median, this machine)", series);
+            Console.WriteLine($"plot written to {plot}");
+        }
+    }
+
+    // One series per (benchmark class, method) of the scaling and broad-phase benchmarks.
+    private static List<ScalingPlot.Series> Series(IEnumerable<Summary> summaries)
+    {
+        var lines = new Dictionary<string, List<(double, double)>>();
+        foreach (var summary in summaries)
+        {
+            foreach (var report in summary.Reports)
+            {
+                var c = report.BenchmarkCase;
+                string type = c.Descriptor.Type.Name;
+                string? label = type switch
+                {
+                    nameof(ScalingBenchmarks) => "whole cycle: " + (c.Descriptor.WorkloadMethod.Name == "Grid" ? "grid" : "brute force"),
+                    "BroadPhaseBenchmarks" => "broad phase alone: " + c.Descriptor.WorkloadMethod.Name switch
+                    {
+                        "Grid" => "grid",
+                        "SweepAndPrune" => "sweep and prune",
+                        "DynamicTree" => "AABB tree",
+                        _ => "brute force",
+                    },
+                    _ => null,
+                };
+                var stats = report.ResultStatistics;
+                var objects = c.Parameters.Items.FirstOrDefault(p => p.Name == "Objects")?.Value;
+                if (label is null || stats is null || objects is null)
+                {
+                    continue;
+                }
+
+                if (!lines.TryGetValue(label, out var points))
+                {
+                    lines[label] = points = [];
+                }
+
+                points.Add((Convert.ToDouble(objects, System.Globalization.CultureInfo.InvariantCulture), stats.Median));
+            }
+        }
+
+        // The whole cycle on the grid first: it sets the slope-1 guide.
+        return lines.OrderBy(l => l.Key == "whole cycle: grid" ? 0 : l.Key.StartsWith("whole", StringComparison.Ordinal) ? 1 : 2).ThenBy(l => l.Key, StringComparer.Ordinal)
+            .Select(l => new ScalingPlot.Series(l.Key, l.Value)).ToList();
+    }
 }

@@ -36,6 +36,7 @@ internal sealed class CliApp
         new CollideCommand(),
         new ShapesCommand(),
         new RenderCommand(),
+        new MergeCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>

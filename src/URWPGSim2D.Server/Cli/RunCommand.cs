@@ -1,6 +1,9 @@
 using System;
 using System.Diagnostics;
+using System.Globalization;
 using System.IO;
+using System.Security.Cryptography;
+using System.Text;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -37,9 +40,10 @@ internal sealed class RunCommand : ICliCommand
         }
 
         ScenarioDefinition scenario;
+        string scene;
         try
         {
-            scenario = options.Scenario is null ? DefaultScenario.Load() : ScenarioParser.Parse(ReadScenario(options.Scenario, console));
+            (scenario, scene) = LoadScene(options, console);
         }
         catch (ScenarioException e)
         {
@@ -47,21 +51,20 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.BadInput;
         }
 
-        var teams = new TeamStrategy?[2];
-        for (int t = 0; t < 2; t++)
+        TeamStrategy?[] teams;
+        try
         {
-            if (options.Strategies[t] is { } spec)
-            {
-                try
-                {
-                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyLoader.Load(spec), Isolated: true);
-                }
-                catch (StrategyLoadException e)
-                {
-                    console.Error.WriteLine($"--strategy {t}: {e.Message}");
-                    return ExitCodes.BadInput;
-                }
-            }
+            teams = LoadTeams(options);
+        }
+        catch (StrategyLoadException e)
+        {
+            console.Error.WriteLine(e.Message);
+            return ExitCodes.BadInput;
+        }
+
+        if (options.Batch is not null)
+        {
+            return BatchRun.Run(options, scenario, scene, console);
         }
 
         var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs);
@@ -86,11 +89,58 @@ internal sealed class RunCommand : ICliCommand
         progress?.Clear();
         if (options.Svg is not null)
         {
+            foreach (var fish in match.World.Fish)
+            {
+                fish.SyncModel(); // the picture shows every leaf exactly where the fish is
+            }
+
             SvgFrame.Write(match.World, options.Svg);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));
         return ExitCodes.Success;
+    }
+
+    /// <summary>The strategy assemblies of the command line, loaded (a fresh instance each call).</summary>
+    /// <exception cref="StrategyLoadException">An assembly cannot be used; the message starts with the option.</exception>
+    public static TeamStrategy?[] LoadTeams(RunOptions options)
+    {
+        var teams = new TeamStrategy?[2];
+        for (int t = 0; t < 2; t++)
+        {
+            if (options.Strategies[t] is { } spec)
+            {
+                try
+                {
+                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyLoader.Load(spec), Isolated: true);
+                }
+                catch (StrategyLoadException e)
+                {
+                    throw new StrategyLoadException($"--strategy {t}: {e.Message}");
+                }
+            }
+        }
+
+        return teams;
+    }
+
+    // The scene and its name in result files: default, crowd N, or the file's name and SHA-256.
+    private static (ScenarioDefinition Scenario, string Scene) LoadScene(RunOptions options, CliConsole console)
+    {
+        if (options.Crowd is int movers)
+        {
+            return (CrowdScenario.Create(movers), string.Create(CultureInfo.InvariantCulture, $"crowd {movers}"));
+        }
+
+        if (options.Scenario is null)
+        {
+            return (DefaultScenario.Load(), "default");
+        }
+
+        string text = ReadScenario(options.Scenario, console);
+        string hash = Convert.ToHexStringLower(SHA256.HashData(Encoding.UTF8.GetBytes(text)));
+        string name = options.Scenario == "-" ? "stdin" : Path.GetFileName(options.Scenario);
+        return (ScenarioParser.Parse(text), $"file {name} sha256 {hash}");
     }
 
     private static string ReadScenario(string path, CliConsole console)
@@ -109,7 +159,10 @@ internal sealed class RunCommand : ICliCommand
         $"Usage: {CliApp.ProgramName} {RunOptions.Usage}\n\n" +
         "Plays a match of 100 ms cycles and prints cycles, simulated and wall time, goals per team, contacts by pair\n" +
         "kind, sub-steps, the largest leftover overlap and strategy faults. Without --scenario it plays the embedded\n" +
-        "default match. --strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context,\n" +
-        "--strategy-timeout ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
-        "Formats: docs/scenario.md, docs/simulation.md.\n";
+        "default match; --crowd N generates a crowded scene of N fish and balls at the default density.\n" +
+        "--strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context, --strategy-timeout\n" +
+        "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
+        "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
+        "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
+        "Formats: docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
 }

@@ -11,10 +11,31 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--scenario FILE] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE]";
+    public const string Usage = "run [--scenario FILE | --crowd N] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--batch N [--shard I/K] [--threads P] [--results FILE]]";
+
+    /// <summary>Largest batch.</summary>
+    public const int MaximumBatch = 100_000_000;
 
     /// <summary>Scenario file, or null for the embedded default match.</summary>
     public string? Scenario { get; private set; }
+
+    /// <summary>Fish and balls of a generated crowd scene (<c>--crowd N</c>), or null.</summary>
+    public int? Crowd { get; private set; }
+
+    /// <summary>Number of matches of a batch (<c>--batch N</c>), or null for a single match.</summary>
+    public int? Batch { get; private set; }
+
+    /// <summary>This process's shard of the batch: index 0 … count − 1.</summary>
+    public int ShardIndex { get; private set; }
+
+    /// <summary>How many shards the batch is split into (1: the whole batch here).</summary>
+    public int ShardCount { get; private set; } = 1;
+
+    /// <summary>Matches played at once (<c>--threads P</c>); default: every core.</summary>
+    public int? Threads { get; private set; }
+
+    /// <summary>JSON Lines result file of a batch, or null.</summary>
+    public string? Results { get; private set; }
 
     /// <summary>Cycle count override.</summary>
     public int? Cycles { get; private set; }
@@ -73,6 +94,11 @@ internal sealed class RunOptions
             switch (name)
             {
                 case "--scenario": o.Scenario = value; break;
+                case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Server.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
+                case "--batch": o.Batch = (int)Number(name, value, 1, MaximumBatch); break;
+                case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
+                case "--results": o.Results = value; break;
+                case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
@@ -95,7 +121,48 @@ internal sealed class RunOptions
             }
         }
 
+        o.Check();
         return o;
+    }
+
+    // "I/K" with 0 ≤ I < K.
+    private void ParseShard(string value)
+    {
+        int slash = value.IndexOf('/', StringComparison.Ordinal);
+        if (slash <= 0
+            || !int.TryParse(value.AsSpan(0, slash), NumberStyles.None, CultureInfo.InvariantCulture, out int index)
+            || !int.TryParse(value.AsSpan(slash + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int count)
+            || count < 1 || index >= count)
+        {
+            throw UsageError($"--shard must be I/K with 0 <= I < K (e.g. 0/4), got {CliText.Quote(value)}");
+        }
+
+        ShardIndex = index;
+        ShardCount = count;
+    }
+
+    // Options that do not go together.
+    private void Check()
+    {
+        if (Help)
+        {
+            return;
+        }
+
+        if (Scenario is not null && Crowd is not null)
+        {
+            throw UsageError("--scenario and --crowd both choose the scene; give one");
+        }
+
+        if (Batch is null && (ShardCount > 1 || Threads is not null || Results is not null))
+        {
+            throw UsageError("--shard, --threads and --results belong to --batch N");
+        }
+
+        if (Batch is not null && (Trace is not null || Svg is not null))
+        {
+            throw UsageError("--trace and --svg record one match; they do not go with --batch");
+        }
     }
 
     private static long Number(string name, string value, long min, long max)

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Simulation;
@@ -24,7 +25,8 @@ internal static class MatchBuilder
     /// <param name="seed">Seed override, or null for the scenario's.</param>
     /// <param name="noise">Noise override, or null for the scenario's.</param>
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs)
+    /// <param name="broadPhase">The stepper's broad phase (the default grid when null).</param>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, IBroadPhase? broadPhase = null)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var fish = new FishState[scenario.Fish.Count];
@@ -59,7 +61,7 @@ internal static class MatchBuilder
 
         var world = new World(field, fish, balls, views, statics);
         var host = new StrategyHost(Slots(scenario, teamStrategies ?? new TeamStrategy?[2]), strategyTimeoutMs);
-        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed);
+        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase);
     }
 
     private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams)

@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using System.Numerics;
+using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Strategies;
 
 namespace URWPGSim2D.Server.Simulation;
@@ -16,12 +17,18 @@ internal sealed class Match
     private readonly SeededRandom? _motionNoise;
     private readonly SeededRandom? _viewNoise;
 
-    public Match(World world, StrategyHost strategies, bool noise, ulong seed)
+    /// <summary>Creates a match.</summary>
+    /// <param name="world">The pool and its bodies.</param>
+    /// <param name="strategies">Who decides for the fish.</param>
+    /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
+    /// <param name="seed">Seed of the noise generators.</param>
+    /// <param name="broadPhase">The stepper's broad phase (a <see cref="UniformGrid"/> when null); any broad phase gives the same match.</param>
+    public Match(World world, StrategyHost strategies, bool noise, ulong seed, IBroadPhase? broadPhase = null)
     {
         World = world;
         Strategies = strategies;
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
-        Stepper = new Stepper(world, Contacts);
+        Stepper = new Stepper(world, Contacts, broadPhase);
         if (noise)
         {
             _motionNoise = new SeededRandom(seed);

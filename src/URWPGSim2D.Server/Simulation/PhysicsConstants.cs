@@ -36,8 +36,17 @@ internal static class PhysicsConstants
     /// <summary>Bisection stops when nothing involved moves more than this (mm) inside the bracket.</summary>
     public const float TimeOfImpactTolerance = 0.25f;
 
-    /// <summary>Largest number of contact events (each with its own time of first contact) per cycle.</summary>
-    public const int MaximumEventsPerCycle = 64;
+    /// <summary>
+    /// Contact events a body may take part in per cycle with a refined time of first contact; its
+    /// later events in that cycle are resolved where they are found (bounds the work in a jam).
+    /// </summary>
+    public const int MaximumEventsPerBody = 64;
+
+    /// <summary>Passes of immediate re-resolution after a contact when a correction pushes a body into a third one.</summary>
+    public const int RelaxationPasses = 8;
+
+    /// <summary>Passes of the settling without motion at the end of a cycle (and after goals).</summary>
+    public const int SettlePasses = 8;
 
     /// <summary>Position corrections a fish may take in one cycle before its move is rejected.</summary>
     public const int MaximumCorrectionsPerFish = 8;

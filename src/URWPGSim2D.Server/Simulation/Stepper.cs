@@ -1,45 +1,64 @@
 using System;
-using System.Numerics;
+using URWPGSim2D.Collision.BroadPhase;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// Motion interpolation for one cycle (the paper's pseudo-continuous detection, done properly).
-/// The cycle is cut into the sub-steps the <see cref="SweepPlanner"/> asks for (one when nothing
-/// moves fast). Bodies move linearly in time (fish also turn at their angular velocity; tail joints
-/// keep the cycle's pose throughout). At the first sub-step where a candidate pair overlaps, the
-/// bodies involved go back to the last free state and the time of first contact is refined by
-/// bisection; there the contacts are resolved (<see cref="ContactResponse"/>), and the rest of the
-/// cycle is planned again with the new velocities. After
-/// <see cref="PhysicsConstants.MaximumEventsPerCycle"/> events the rest of the cycle resolves
-/// overlaps at sub-step ends without bisection.
+/// Every body moves linearly in time from its last committed state (fish also turn; tail joints
+/// keep the cycle's pose). Each candidate pair (<see cref="SweepPlanner"/>) is sampled on its own
+/// clock, in ticks of 1/2,048 cycle: its step is the largest power-of-two number of ticks in which
+/// the pair cannot move, relative to each other, more than its limit, so neither body can pass
+/// through the other between two samples; and while its bounding circles are apart by a gap g
+/// (<see cref="PairGap"/>), its next sample waits until it could have closed the gap (g / its
+/// relative travel rate), so a pair that is far apart or moves slowly costs one cheap test or none.
+/// Samples are taken in time order (<see cref="TickQueue"/>). At the first sample where pairs overlap, their
+/// bodies go back to the last time they were apart and the time of first contact is refined by
+/// bisection; there the contacts are resolved (<see cref="ContactResponse"/>), those bodies are
+/// committed and only their pairs are planned again, with the new velocities: a contact costs
+/// work in proportion to the bodies involved, not to the world. A body with
+/// <see cref="PhysicsConstants.MaximumEventsPerBody"/> events in a cycle has its later contacts
+/// resolved where they are found. Pairs changed at the very end of the cycle are settled without
+/// motion.
 /// </summary>
-internal sealed class Stepper
+internal sealed partial class Stepper
 {
+    private const int Ticks = TickQueue.Ticks;
+
     private readonly World _world;
     private readonly SweepPlanner _planner;
+    private readonly PairTable _table;
+    private readonly TickQueue _queue = new();
     private readonly ContactLog _log;
     private readonly ContactResponse _response;
-    private readonly int[] _hits;
-    private readonly Hit[] _hitValues;
-    private readonly bool[] _fishInvolved;
-    private readonly bool[] _ballInvolved;
+    private readonly Scheduler _scheduler;
+    private readonly PairCollector _collector = new();
+    private readonly int[] _eventsOf;
+    private readonly MoverSet _involved;
+    private readonly MoverSet _unsettled;
+    private int[] _due = new int[256];
+    private int _dueCount;
+    private int[] _hitSlots = new int[64];
+    private Hit[] _hitValues = new Hit[64];
     private int _hitCount;
-    private double _baseTime;
+    private readonly FoundHits _found = new();
+    private int[] _pending = new int[16];
+    private int _pendingCount;
 
-    public Stepper(World world, ContactLog log)
+    public Stepper(World world, ContactLog log, IBroadPhase? broadPhase = null)
     {
         _world = world;
         _log = log;
-        _planner = new SweepPlanner(world);
+        _planner = new SweepPlanner(world, broadPhase ?? new UniformGrid());
+        _table = new PairTable(_planner.Movers);
         _response = new ContactResponse(world);
-        _hits = new int[_planner.Capacity];
-        _hitValues = new Hit[_planner.Capacity];
-        _fishInvolved = new bool[world.Fish.Length];
-        _ballInvolved = new bool[world.Balls.Length];
+        _scheduler = new Scheduler(this);
+        _eventsOf = new int[_planner.Movers];
+        _involved = new MoverSet(_planner.Movers);
+        _unsettled = new MoverSet(_planner.Movers);
     }
 
-    /// <summary>Sub-steps taken in the last cycle (bisection probes not counted).</summary>
+    /// <summary>Distinct sample times (ticks) processed in the last cycle.</summary>
     public int SubSteps { get; private set; }
 
     /// <summary>Contact events (times of first contact) in the last cycle.</summary>
@@ -53,216 +72,284 @@ internal sealed class Stepper
     {
         SubSteps = 0;
         Events = 0;
-        double t = 0.0;
-        Commit(0.0);
-        double h = 1.0 / _planner.Plan(1f);
-        while (true)
+        for (int m = 0; m < _planner.Movers; m++)
         {
-            double t1 = t + h;
-            if (t1 > 1.0 - 1e-9)
-            {
-                t1 = 1.0;
-            }
+            Rebase(m, 0.0);
+            _eventsOf[m] = 0;
+        }
 
-            MoveAll(t1);
-            SubSteps++;
-            float deepest = FindHits();
-            if (_hitCount == 0)
+        _table.Clear();
+        _queue.Clear();
+        _unsettled.Clear();
+        _scheduler.Time = 0.0;
+        _scheduler.Settling = false;
+        _planner.PlanAll(0.0, _scheduler);
+        float deepest = 0f;
+        int tick;
+        while ((tick = _queue.NextTick()) >= 0)
+        {
+            TakeDue(tick);
+            if (_dueCount == 0)
             {
-                Commit(t1);
-                t = t1;
-                if (t >= 1.0)
-                {
-                    LeftoverOverlap = deepest;
-                    return;
-                }
-
                 continue;
             }
 
-            double contact = t1;
-            if (Events < PhysicsConstants.MaximumEventsPerCycle)
+            SubSteps++;
+            deepest = MathF.Max(deepest, Sample(tick));
+            if (_hitCount > 0)
             {
-                contact = FirstContact(t, t1);
-                MoveAll(contact);
+                HandleHits((double)tick / Ticks);
             }
-
-            ResolveHits(contact);
-            Events++;
-            Commit(contact);
-            t = contact;
-            if (t >= 1.0)
-            {
-                break;
-            }
-
-            h = (1.0 - t) / _planner.Plan((float)(1.0 - t));
         }
 
-        Settle();
+        for (int m = 0; m < _planner.Movers; m++)
+        {
+            MoveTo(m, 1.0);
+        }
+
+        if (_unsettled.Count > 0)
+        {
+            deepest = MathF.Max(deepest, SettleMovers(_unsettled));
+        }
+
+        LeftoverOverlap = deepest;
     }
 
-    /// <summary>
-    /// Resolves overlaps left by a discontinuous change (a ball put back at its start, a fish's
-    /// rejected move, the last contact of a cycle) without motion: a few passes of position correction and impulses, then measures the leftover.
-    /// </summary>
-    public void Settle()
+    // The live entries of a tick.
+    private void TakeDue(int tick)
     {
-        Commit(_baseTime);
-        for (int pass = 0; pass < 4; pass++)
+        _dueCount = 0;
+        for (int node = _queue.Take(tick); node >= 0; node = _queue.Next(node))
         {
-            _planner.Plan(0f);
-            float deepest = FindHits();
-            if (_hitCount == 0)
+            int slot = _queue.SlotOf(node);
+            if (_table.Alive[slot] && _table.Generation[slot] == _queue.GenerationOf(node))
             {
-                LeftoverOverlap = deepest;
+                if (_dueCount == _due.Length)
+                {
+                    Array.Resize(ref _due, _due.Length * 2);
+                }
+
+                _due[_dueCount++] = slot;
+            }
+        }
+    }
+
+    // Tests every due pair at the tick's time: a pair whose bounding circles are apart is not tested
+    // exactly and waits until it could touch; apart pairs are scheduled again, overlapping ones
+    // become hits. Returns the deepest overlap seen among pairs sampled at the end of the cycle.
+    private float Sample(int tick)
+    {
+        double time = (double)tick / Ticks;
+        for (int i = 0; i < _dueCount; i++)
+        {
+            MoveBodies(_table.Pair[_due[i]], time);
+        }
+
+        _hitCount = 0;
+        float deepest = 0f;
+        for (int i = 0; i < _dueCount; i++)
+        {
+            int slot = _due[i];
+            CandidatePair pair = _table.Pair[slot];
+            float gap = PairGap.LowerBound(_world, pair);
+            Hit hit = gap > 0f ? default : PairDetector.Detect(_world, pair);
+            if (hit.Depth > PhysicsConstants.ContactSlop)
+            {
+                AddHit(slot, hit);
+                continue;
+            }
+
+            _table.LastFree[slot] = time;
+            _table.ApartAtLastFree[slot] = true;
+            if (tick < Ticks)
+            {
+                Schedule(slot, tick, time, gap);
+            }
+            else
+            {
+                deepest = MathF.Max(deepest, hit.Depth);
+            }
+        }
+
+        return deepest;
+    }
+
+    // The next sample: one step on (the pair cannot pass through itself in a step), or later when
+    // the pair is apart by a gap it cannot close before then (none when it cannot close it in the cycle).
+    private void Schedule(int slot, int tick, double time, float gap)
+    {
+        long next = (long)tick + _table.Step[slot];
+        if (gap > 0f)
+        {
+            float rate = _table.Rate[slot];
+            double touch = rate > 0f ? time + (gap / rate) : double.PositiveInfinity;
+            if (touch >= 1.0)
+            {
                 return;
             }
 
-            ResolveHits(_baseTime);
+            next = Math.Max(next, (long)Math.Floor(touch * Ticks));
         }
 
-        LeftoverOverlap = MeasureOverlap();
+        _queue.Push((int)Math.Min(next, Ticks), slot, _table.Generation[slot]);
     }
 
-    /// <summary>Deepest overlap among all pairs the broad phase finds now (no motion), mm.</summary>
-    public float MeasureOverlap()
+    private void AddHit(int slot, in Hit hit)
     {
-        Commit(_baseTime);
-        _planner.Plan(0f);
-        float deepest = 0f;
-        foreach (ref readonly var pair in _planner.Pairs)
+        if (_hitCount == _hitSlots.Length)
         {
-            deepest = MathF.Max(deepest, PairDetector.Detect(_world, pair).Depth);
+            Array.Resize(ref _hitSlots, _hitCount * 2);
+            Array.Resize(ref _hitValues, _hitCount * 2);
         }
 
-        return deepest;
+        _hitSlots[_hitCount] = slot;
+        _hitValues[_hitCount++] = hit;
     }
 
-    private float FindHits()
+    // The hits of one sample fall into clusters that share no body (a fish pushing a ball here, two
+    // balls meeting there): each is its own event, taken in the order of its estimated time of first
+    // contact, so one contact does not pull unrelated bodies back in time. A cluster whose pair was
+    // planned again by an earlier one (a relaxation moved its body) is left to its new schedule.
+    private void HandleHits(double found)
     {
-        _hitCount = 0;
-        float deepest = 0f;
-        var pairs = _planner.Pairs;
-        for (int k = 0; k < pairs.Length; k++)
+        int count = _hitCount;
+        _found.Load(_hitSlots, _hitValues, count, _table);
+        for (int i = 0; i < count; i++)
         {
-            Hit hit = PairDetector.Detect(_world, pairs[k]);
-            deepest = MathF.Max(deepest, hit.Depth);
-            if (hit.Depth > PhysicsConstants.ContactSlop)
+            _found.Estimate[i] = EstimatedContact(i, found);
+        }
+
+        _found.Cluster(_planner.FishCount);
+        foreach (int cluster in _found.ClustersByTime())
+        {
+            _hitCount = 0;
+            for (int i = 0; i < count; i++)
             {
-                _hitValues[_hitCount] = hit;
-                _hits[_hitCount++] = k;
+                int slot = _found.Slot[i];
+                if (_found.Label[i] == cluster && _table.Alive[slot] && _table.Generation[slot] == _found.Generation[i])
+                {
+                    AddHit(slot, _found.Value[i]);
+                }
+            }
+
+            if (_hitCount > 0)
+            {
+                HandleEvent(found);
             }
         }
-
-        return deepest;
     }
 
-    private double FirstContact(double free, double hit)
+    // False-position estimate of a hit's time of first contact (its last free time when unknown).
+    private double EstimatedContact(int i, double found)
     {
-        Array.Clear(_fishInvolved);
-        Array.Clear(_ballInvolved);
-        float rate = 0f;
-        var pairs = _planner.Pairs;
+        int slot = _found.Slot[i];
+        float closing = PairMotion.ClosingRate(_world, _table.Pair[slot], _found.Value[i]);
+        double guess = closing > 0f ? found - (_found.Value[i].Depth / closing) : _table.LastFree[slot];
+        return Math.Clamp(guess, _table.LastFree[slot], found);
+    }
+
+    // The hits' bodies go back to the last time all were apart, the time of first contact is
+    // refined, the contacts are resolved there, and those bodies are committed and planned again.
+    private void HandleEvent(double found)
+    {
+        _involved.Clear();
+        double lo = found;
+        bool refine = true;
+        float deepest = 0f;
         for (int i = 0; i < _hitCount; i++)
         {
-            ref readonly var p = ref pairs[_hits[i]];
-            Mark(p);
-            rate = MathF.Max(rate, _planner.PairRate(p));
+            int slot = _hitSlots[i];
+            lo = Math.Min(lo, _table.LastFree[slot]);
+            deepest = MathF.Max(deepest, _hitValues[i].Depth);
+            MarkInvolved(_table.Pair[slot]);
         }
 
-        MoveInvolved(free);
-        if (AnyHitIntersects())
-        {
-            return free;
-        }
-
-        double lo = free;
-        double hi = hit;
-        Guess(ref lo, ref hi, rate);
-        for (int iteration = 0; iteration < 48 && (hi - lo) * rate > PhysicsConstants.TimeOfImpactTolerance; iteration++)
-        {
-            double mid = 0.5 * (lo + hi);
-            MoveInvolved(mid);
-            if (AnyHitIntersects())
-            {
-                hi = mid;
-            }
-            else
-            {
-                lo = mid;
-            }
-        }
-
-        return hi;
-    }
-
-    // False position before bisection: the deepest hit's depth shrinks at the pair's closing rate,
-    // so it reached zero near hi − depth / rate. Probe there, and just after it, to bracket the time
-    // of first contact tightly (exact for translation; bisection refines what turning leaves).
-    private void Guess(ref double lo, ref double hi, float rate)
-    {
-        int deepest = 0;
-        for (int i = 1; i < _hitCount; i++)
-        {
-            deepest = _hitValues[i].Depth > _hitValues[deepest].Depth ? i : deepest;
-        }
-
-        float closing = PairMotion.ClosingRate(_world, _planner.Pairs[_hits[deepest]], _hitValues[deepest]);
-        if (!(closing > 0f) || rate <= 0f)
-        {
-            return;
-        }
-
-        double guess = hi - (_hitValues[deepest].Depth / closing);
-        if (!(guess > lo && guess < hi))
-        {
-            return;
-        }
-
-        MoveInvolved(guess);
-        if (AnyHitIntersects())
-        {
-            hi = guess;
-            return;
-        }
-
-        lo = guess;
-        double next = lo + (0.5 * PhysicsConstants.TimeOfImpactTolerance / rate);
-        if (next < hi)
-        {
-            MoveInvolved(next);
-            if (AnyHitIntersects())
-            {
-                hi = next;
-            }
-            else
-            {
-                lo = next;
-            }
-        }
-    }
-
-    private bool AnyHitIntersects()
-    {
-        var pairs = _planner.Pairs;
+        // Each hit sampled apart was apart at its last sample; all were apart at lo if they share it.
+        bool apartAtLo = true;
         for (int i = 0; i < _hitCount; i++)
         {
-            if (PairDetector.Detect(_world, pairs[_hits[i]]).Depth > PhysicsConstants.ContactSlop)
-            {
-                return true;
-            }
+            apartAtLo &= _table.LastFree[_hitSlots[i]] == lo && _table.ApartAtLastFree[_hitSlots[i]];
         }
 
-        return false;
+        foreach (int m in _involved.Items)
+        {
+            apartAtLo &= BaseTime(m) <= lo;
+            lo = Math.Max(lo, BaseTime(m));
+            refine &= _eventsOf[m] < PhysicsConstants.MaximumEventsPerBody;
+        }
+
+        // An overlap no deeper than the time-of-impact tolerance is already at the contact.
+        refine &= deepest > PhysicsConstants.TimeOfImpactTolerance;
+        double contact = refine && lo < found ? FirstContact(lo, found, apartAtLo) : found;
+        MoveInvolved(contact);
+        ResolveHits(contact);
+        Events++;
+        foreach (int m in _involved.Items)
+        {
+            _eventsOf[m]++;
+        }
+
+        Relax(contact);
+    }
+
+    // Commits the involved bodies at the contact time and plans their pairs again. A correction can
+    // push a body into a third one (a ball squeezed between two fish): pairs that overlap right
+    // away are resolved at once, their bodies planned again, a few passes over (position
+    // relaxation); what is left is sampled as usual.
+    private void Relax(double contact)
+    {
+        for (int pass = 0; ; pass++)
+        {
+            foreach (int m in _involved.Items)
+            {
+                Rebase(m, contact);
+                _table.RemoveAllOf(m);
+            }
+
+            _pendingCount = 0;
+            _scheduler.Time = contact;
+            _scheduler.Settling = pass < PhysicsConstants.RelaxationPasses;
+            _planner.PlanFor(_involved.Items, _involved.Marks, contact, _scheduler);
+            _scheduler.Settling = false;
+            if (_pendingCount == 0)
+            {
+                return;
+            }
+
+            _involved.Clear();
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                MarkInvolved(_table.Pair[_pending[i]]);
+            }
+
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                CandidatePair pair = _table.Pair[_pending[i]];
+                Hit hit = PairDetector.Detect(_world, pair);
+                if (hit.Depth > PhysicsConstants.ContactSlop)
+                {
+                    ContactKind kind = _response.Apply(pair, hit);
+                    _log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point, contact), kind);
+                }
+            }
+        }
+    }
+
+    private void AddPending(int slot)
+    {
+        if (_pendingCount == _pending.Length)
+        {
+            Array.Resize(ref _pending, _pendingCount * 2);
+        }
+
+        _pending[_pendingCount++] = slot;
     }
 
     private void ResolveHits(double time)
     {
-        var pairs = _planner.Pairs;
         for (int i = 0; i < _hitCount; i++)
         {
-            ref readonly var pair = ref pairs[_hits[i]];
+            CandidatePair pair = _table.Pair[_hitSlots[i]];
             Hit hit = PairDetector.Detect(_world, pair);
             if (hit.Depth > PhysicsConstants.ContactSlop)
             {
@@ -272,94 +359,70 @@ internal sealed class Stepper
         }
     }
 
-    private void Mark(in CandidatePair p)
+    // Stores a planned pair and schedules its first sample after the plan time; a pair planned at
+    // the very end of the cycle cannot be sampled any more: its movers are settled instead.
+    // Stores a planned pair and schedules its first sample after the plan time. While settling
+    // (after a contact) a pair whose bounds overlap is tested at once, and one that overlaps is
+    // handed back as pending. A pair planned at the very end of the cycle cannot be sampled any
+    // more: unless it is known to be apart, its movers are settled at the end.
+    private sealed class Scheduler(Stepper owner) : IPairSink
     {
-        switch (p.Kind)
-        {
-            case PairKind.FishFish:
-                _fishInvolved[p.A] = true;
-                _fishInvolved[p.B] = true;
-                break;
-            case PairKind.FishBall:
-                _fishInvolved[p.A] = true;
-                _ballInvolved[p.B] = true;
-                break;
-            case PairKind.BallBall:
-                _ballInvolved[p.A] = true;
-                _ballInvolved[p.B] = true;
-                break;
-            case PairKind.FishStatic:
-            case PairKind.FishWall:
-                _fishInvolved[p.A] = true;
-                break;
-            default:
-                _ballInvolved[p.A] = true;
-                break;
-        }
-    }
+        public double Time;
 
-    private void Commit(double time)
-    {
-        _baseTime = time;
-        foreach (var f in _world.Fish)
-        {
-            f.BasePosition = f.Position;
-            f.BaseHeading = f.Heading;
-        }
+        public bool Settling;
 
-        foreach (var b in _world.Balls)
+        public void Add(in CandidatePair pair, int moverA, int moverB, float rate)
         {
-            b.BasePosition = b.Position;
-        }
-    }
+            var table = owner._table;
+            int slot = table.Add(pair, moverA, moverB, rate);
+            table.Step[slot] = StepTicks(pair.Limit, rate);
+            table.LastFree[slot] = Time;
 
-    private void MoveAll(double time)
-    {
-        float span = (float)((time - _baseTime) * PhysicsConstants.CycleSeconds);
-        foreach (var f in _world.Fish)
-        {
-            MoveFish(f, span);
-        }
-
-        foreach (var b in _world.Balls)
-        {
-            b.Position = b.BasePosition + ((b.Velocity + b.NoiseVelocity) * span);
-        }
-    }
-
-    private void MoveInvolved(double time)
-    {
-        float span = (float)((time - _baseTime) * PhysicsConstants.CycleSeconds);
-        var fish = _world.Fish;
-        for (int i = 0; i < fish.Length; i++)
-        {
-            if (_fishInvolved[i])
+            // The partner may sit at another time of the cycle: both bodies are placed at the plan time.
+            owner.MoveBodies(pair, Time);
+            float gap = PairGap.LowerBound(owner._world, pair);
+            bool apart = gap > 0f;
+            if (!apart && Settling)
             {
-                MoveFish(fish[i], span);
+                if (PairDetector.Detect(owner._world, pair).Depth > PhysicsConstants.ContactSlop)
+                {
+                    owner.AddPending(slot);
+                    return;
+                }
+
+                apart = true;
+            }
+
+            table.ApartAtLastFree[slot] = apart;
+            if (Time < 1.0)
+            {
+                owner.Schedule(slot, (int)Math.Floor(Time * Ticks), Time, gap);
+            }
+            else if (!apart)
+            {
+                owner._unsettled.Add(moverA);
+                if (moverB >= 0)
+                {
+                    owner._unsettled.Add(moverB);
+                }
             }
         }
 
-        var balls = _world.Balls;
-        for (int i = 0; i < balls.Length; i++)
+        // Largest power of two (in ticks) during which the pair moves at most its limit.
+        private static int StepTicks(float limit, float rate)
         {
-            if (_ballInvolved[i])
+            if (!(rate > 0f) || float.IsPositiveInfinity(limit))
             {
-                balls[i].Position = balls[i].BasePosition + ((balls[i].Velocity + balls[i].NoiseVelocity) * span);
+                return Ticks;
             }
-        }
-    }
 
-    private static void MoveFish(FishState f, float span)
-    {
-        Vector2 position = f.BasePosition + ((f.Velocity + f.NoiseVelocity) * span);
-        float heading = Angles.Wrap(f.BaseHeading + ((f.AngularVelocity + f.NoiseAngularVelocity) * span));
-        if (position == f.Position && heading == f.Heading)
-        {
-            return;
-        }
+            double ticks = limit / (double)rate * Ticks;
+            if (ticks >= Ticks)
+            {
+                return Ticks;
+            }
 
-        f.Position = position;
-        f.Heading = heading;
-        f.Invalidate();
+            return ticks < 2.0 ? 1 : 1 << (int)Math.Floor(Math.Log2(ticks));
+        }
     }
 }

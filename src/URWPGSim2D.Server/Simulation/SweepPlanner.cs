@@ -1,176 +1,222 @@
 using System;
 using System.Numerics;
+using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
-/// Broad phase and sub-step sizing for the rest of a cycle. Every mover gets a travel rate (the
-/// most any of its points moves per unit of cycle fraction: |v|·dt, plus |ω|·dt times the reach of
-/// its farthest point for a fish). A pair is a candidate when its bounding circles, grown by that
-/// travel, can meet. Each moving candidate pair may travel (relative to each other) at most half the sum of the pair's
-/// thinnest widths per sub-step (a ball's diameter, a tail segment's end width, an obstacle's
-/// smaller side, a goal block's depth), so neither can pass through the other between two
-/// samples; walls are half-planes and never need more than one sub-step.
+/// Finds the candidate pairs for the rest of a cycle. Every mover (fish i = mover i, ball j =
+/// mover F + j) gets a travel rate from the time it is planned to the end of the cycle: the most
+/// any of its points moves per unit of cycle fraction (|v|·dt, plus |ω|·dt times the reach of its
+/// farthest point for a fish), and a swept circle: its bounding circle grown by that travel. The
+/// broad phase (a <see cref="UniformGrid"/> by default) holds the swept circles' boxes and the static
+/// bodies' boxes; a pair it reports is a candidate when the swept circles (+1 mm), or the swept
+/// circle and the static box, meet. A mover is also paired with the walls when its swept circle
+/// leaves the pool. Each pair gets a limit, half the sum of the two bodies' thinnest widths (a
+/// ball's diameter, a tail segment's end width, an obstacle's smaller side, a goal block's
+/// depth; walls none), and its relative travel rate. A re-planned mover is queried against the
+/// others' registered swept circles, which still cover their motion to the end of the cycle.
 /// </summary>
 internal sealed class SweepPlanner
 {
     private const float Margin = 1f;
 
     private readonly World _world;
-    private readonly CandidatePair[] _pairs;
-    private readonly float[] _fishRate;
-    private readonly float[] _ballRate;
-    private readonly Vector2[] _fishVelocity;
-    private readonly Vector2[] _ballVelocity;
-    private readonly float[] _fishSpin;
-    private readonly Circle[] _fishBound;
-    private int _count;
+    private readonly IBroadPhase _broad;
+    private readonly int _fish;
+    private readonly int _movers;
+    private readonly Aabb[] _boxes;
+    private readonly Vector2[] _velocity;
+    private readonly float[] _spin;
+    private readonly float[] _rate;
+    private readonly Vector2[] _center;
+    private readonly float[] _radius;
+    private readonly float[] _thickness;
+    private readonly PairList _found = new(256);
+    private readonly IndexList _near = new(64);
 
-    public SweepPlanner(World world)
+    public SweepPlanner(World world, IBroadPhase broadPhase)
     {
         _world = world;
-        int f = world.Fish.Length;
-        int b = world.Balls.Length;
-        int s = world.Statics.Length;
-        _pairs = new CandidatePair[(f * (f - 1) / 2) + (f * b) + (b * (b - 1) / 2) + ((f + b) * s) + f + b];
-        _fishRate = new float[f];
-        _ballRate = new float[b];
-        _fishVelocity = new Vector2[f];
-        _ballVelocity = new Vector2[b];
-        _fishSpin = new float[f];
-        _fishBound = new Circle[f];
+        _broad = broadPhase;
+        _fish = world.Fish.Length;
+        _movers = _fish + world.Balls.Length;
+        _boxes = new Aabb[_movers + world.Statics.Length];
+        _velocity = new Vector2[_movers];
+        _spin = new float[_movers];
+        _rate = new float[_movers];
+        _center = new Vector2[_movers];
+        _radius = new float[_movers];
+        _thickness = new float[_movers];
+        for (int s = 0; s < world.Statics.Length; s++)
+        {
+            _boxes[_movers + s] = world.Statics[s].Bounds;
+        }
     }
 
-    /// <summary>Largest possible number of candidate pairs.</summary>
-    public int Capacity => _pairs.Length;
+    /// <summary>Number of movers (fish, then balls).</summary>
+    public int Movers => _movers;
 
-    /// <summary>The candidate pairs of the last plan, in a fixed order.</summary>
-    public ReadOnlySpan<CandidatePair> Pairs => _pairs.AsSpan(0, _count);
-
-    /// <summary>Travel (mm per unit of cycle fraction) of each fish.</summary>
-    public ReadOnlySpan<float> FishRate => _fishRate;
-
-    /// <summary>Travel (mm per unit of cycle fraction) of each ball.</summary>
-    public ReadOnlySpan<float> BallRate => _ballRate;
+    /// <summary>Number of fish (movers below this are fish).</summary>
+    public int FishCount => _fish;
 
     /// <summary>
-    /// Most the two bodies of a pair move relative to each other per unit of cycle fraction, mm:
-    /// |vA − vB|·dt plus what each one's turning sweeps.
+    /// Every candidate pair for the movers at their current poses, from cycle time
+    /// <paramref name="time"/> to the end (1: no motion left), in a fixed order: by first mover, then
+    /// by partner (fish, balls, static bodies), the walls last.
     /// </summary>
-    public float PairRate(in CandidatePair p)
+    public void PlanAll(double time, IPairSink sink)
     {
-        const float dt = PhysicsConstants.CycleSeconds;
-        return p.Kind switch
+        for (int m = 0; m < _movers; m++)
         {
-            PairKind.FishFish => ((_fishVelocity[p.A] - _fishVelocity[p.B]).Length() * dt) + _fishSpin[p.A] + _fishSpin[p.B],
-            PairKind.FishBall => ((_fishVelocity[p.A] - _ballVelocity[p.B]).Length() * dt) + _fishSpin[p.A],
-            PairKind.BallBall => (_ballVelocity[p.A] - _ballVelocity[p.B]).Length() * dt,
-            PairKind.FishStatic or PairKind.FishWall => _fishRate[p.A],
-            _ => _ballRate[p.A],
-        };
+            Measure(m, time);
+        }
+
+        _broad.Reset(_boxes, _movers);
+        _broad.FindPairs(_found);
+        var found = _found.Items;
+        int k = 0;
+        for (int m = 0; m < _movers; m++)
+        {
+            for (; k < found.Length && found[k].A == m; k++)
+            {
+                TryPair(m, found[k].B, sink);
+            }
+
+            TryWall(m, sink);
+        }
     }
 
-    /// <summary>Plans the remaining <paramref name="remaining"/> fraction of the cycle; returns the number of sub-steps.</summary>
-    public int Plan(float remaining)
+    /// <summary>
+    /// Measures the given movers again from <paramref name="time"/> (their poses and velocities
+    /// changed) and reports every candidate pair they are part of. Pairs between two of them are
+    /// reported once (from the one with the smaller index).
+    /// </summary>
+    public void PlanFor(ReadOnlySpan<int> movers, ReadOnlySpan<bool> isListed, double time, IPairSink sink)
     {
-        var world = _world;
-        var fish = world.Fish;
-        var balls = world.Balls;
-        var statics = world.Statics;
-        const float dt = PhysicsConstants.CycleSeconds;
-        for (int i = 0; i < fish.Length; i++)
+        foreach (int m in movers)
         {
-            var f = fish[i];
+            Measure(m, time);
+            _broad.Move(m, _boxes[m]);
+        }
+
+        foreach (int m in movers)
+        {
+            _broad.Query(_boxes[m], _near);
+            foreach (int b in _near.Items)
+            {
+                if (b == m || (b < _movers && isListed[b] && b < m))
+                {
+                    continue;
+                }
+
+                if (b < _movers && b < m)
+                {
+                    TryPair(b, m, sink);
+                }
+                else
+                {
+                    TryPair(m, b, sink);
+                }
+            }
+
+            TryWall(m, sink);
+        }
+    }
+
+    /// <summary>Relative travel rate of two movers u &lt; v (mm per unit of cycle fraction).</summary>
+    public float PairRate(int u, int v) =>
+        ((_velocity[u] - _velocity[v]).Length() * PhysicsConstants.CycleSeconds) + _spin[u] + _spin[v];
+
+    // A mover's motion from `time` to the end of the cycle and its swept box.
+    private void Measure(int m, double time)
+    {
+        const float dt = PhysicsConstants.CycleSeconds;
+        float remaining = (float)Math.Max(0.0, 1.0 - time);
+        if (m < _fish)
+        {
+            var f = _world.Fish[m];
             Circle bound = f.Bound();
             float reach = Vector2.Distance(bound.Center, f.Position) + bound.Radius;
-            _fishVelocity[i] = f.Velocity + f.NoiseVelocity;
-            _fishSpin[i] = MathF.Abs(f.AngularVelocity + f.NoiseAngularVelocity) * reach * dt;
-            _fishRate[i] = (_fishVelocity[i].Length() * dt) + _fishSpin[i];
-            _fishBound[i] = bound;
+            _velocity[m] = f.Velocity + f.NoiseVelocity;
+            _spin[m] = MathF.Abs(f.AngularVelocity + f.NoiseAngularVelocity) * reach * dt;
+            _rate[m] = (_velocity[m].Length() * dt) + _spin[m];
+            _center[m] = bound.Center;
+            _radius[m] = bound.Radius + (_rate[m] * remaining);
+            _thickness[m] = f.Thickness;
         }
-
-        for (int i = 0; i < balls.Length; i++)
+        else
         {
-            _ballVelocity[i] = balls[i].Velocity + balls[i].NoiseVelocity;
-            _ballRate[i] = _ballVelocity[i].Length() * dt;
+            var b = _world.Balls[m - _fish];
+            _velocity[m] = b.Velocity + b.NoiseVelocity;
+            _spin[m] = 0f;
+            _rate[m] = _velocity[m].Length() * dt;
+            _center[m] = b.Position;
+            _radius[m] = b.Radius + (_rate[m] * remaining);
+            _thickness[m] = 2f * b.Radius;
         }
 
-        _count = 0;
-        float worst = 0f;
-        Aabb pool = world.Field.Bounds;
-        for (int i = 0; i < fish.Length; i++)
-        {
-            Circle a = _fishBound[i];
-            float ra = a.Radius + (_fishRate[i] * remaining) + Margin;
-            float ta = fish[i].Thickness;
-            for (int j = i + 1; j < fish.Length; j++)
-            {
-                Circle b = _fishBound[j];
-                AddIfNear(PairKind.FishFish, i, j, a.Center, ra, b.Center, b.Radius + (_fishRate[j] * remaining), ta + fish[j].Thickness, PairRate(new CandidatePair(PairKind.FishFish, i, j, 0f)) * remaining, ref worst);
-            }
-
-            for (int j = 0; j < balls.Length; j++)
-            {
-                AddIfNear(PairKind.FishBall, i, j, a.Center, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), PairRate(new CandidatePair(PairKind.FishBall, i, j, 0f)) * remaining, ref worst);
-            }
-
-            AddStatics(PairKind.FishStatic, i, a.Center, ra, ta, _fishRate[i] * remaining, statics, ref worst);
-            if (!Inside(pool, a.Center, ra))
-            {
-                _pairs[_count++] = new CandidatePair(PairKind.FishWall, i, 0, float.PositiveInfinity);
-            }
-        }
-
-        for (int i = 0; i < balls.Length; i++)
-        {
-            float ra = balls[i].Radius + (_ballRate[i] * remaining) + Margin;
-            float ta = 2f * balls[i].Radius;
-            for (int j = i + 1; j < balls.Length; j++)
-            {
-                AddIfNear(PairKind.BallBall, i, j, balls[i].Position, ra, balls[j].Position, balls[j].Radius + (_ballRate[j] * remaining), ta + (2f * balls[j].Radius), PairRate(new CandidatePair(PairKind.BallBall, i, j, 0f)) * remaining, ref worst);
-            }
-
-            AddStatics(PairKind.BallStatic, i, balls[i].Position, ra, ta, _ballRate[i] * remaining, statics, ref worst);
-            if (!Inside(pool, balls[i].Position, ra))
-            {
-                _pairs[_count++] = new CandidatePair(PairKind.BallWall, i, 0, float.PositiveInfinity);
-            }
-        }
-
-        return (int)Math.Clamp(MathF.Ceiling(worst), 1f, PhysicsConstants.MaximumSubSteps);
+        Vector2 half = new(_radius[m] + Margin);
+        _boxes[m] = new Aabb(_center[m] - half, _center[m] + half);
     }
 
-    private void AddIfNear(PairKind kind, int a, int b, Vector2 ca, float ra, Vector2 cb, float rb, float thicknessSum, float travel, ref float worst)
+    // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers).
+    private void TryPair(int u, int v, IPairSink sink)
     {
-        float reach = ra + rb;
-        if (Vector2.DistanceSquared(ca, cb) >= reach * reach)
+        if (v >= _movers)
+        {
+            TryStatic(u, v - _movers, sink);
+            return;
+        }
+
+        float reach = _radius[u] + _radius[v] + Margin;
+        if (Vector2.DistanceSquared(_center[u], _center[v]) >= reach * reach)
         {
             return;
         }
 
-        float limit = 0.5f * thicknessSum;
-        _pairs[_count++] = new CandidatePair(kind, a, b, limit);
-        worst = MathF.Max(worst, travel / limit);
+        float limit = 0.5f * (_thickness[u] + _thickness[v]);
+        CandidatePair pair = u >= _fish
+            ? new CandidatePair(PairKind.BallBall, u - _fish, v - _fish, limit)
+            : v >= _fish
+                ? new CandidatePair(PairKind.FishBall, u, v - _fish, limit)
+                : new CandidatePair(PairKind.FishFish, u, v, limit);
+        sink.Add(pair, u, v, PairRate(u, v));
     }
 
-    private void AddStatics(PairKind kind, int a, Vector2 center, float radius, float thickness, float travel, StaticBody[] statics, ref float worst)
+    private void TryStatic(int m, int s, IPairSink sink)
     {
-        for (int s = 0; s < statics.Length; s++)
+        var body = _world.Statics[s];
+        Aabb box = body.Bounds;
+        Vector2 c = _center[m];
+        float r = _radius[m] + Margin;
+        Vector2 d = Vector2.Max(Vector2.Max(box.Min - c, c - box.Max), Vector2.Zero);
+        if (d.LengthSquared() >= r * r)
         {
-            Aabb box = statics[s].Bounds;
-            Vector2 d = Vector2.Max(Vector2.Max(box.Min - center, center - box.Max), Vector2.Zero);
-            if (d.LengthSquared() >= radius * radius)
-            {
-                continue;
-            }
-
-            float limit = 0.5f * (thickness + statics[s].Thickness);
-            _pairs[_count++] = new CandidatePair(kind, a, s, limit);
-            worst = MathF.Max(worst, travel / limit);
+            return;
         }
+
+        float limit = 0.5f * (_thickness[m] + body.Thickness);
+        CandidatePair pair = m < _fish
+            ? new CandidatePair(PairKind.FishStatic, m, s, limit)
+            : new CandidatePair(PairKind.BallStatic, m - _fish, s, limit);
+        sink.Add(pair, m, -1, _rate[m]);
     }
 
-    private static bool Inside(in Aabb pool, Vector2 c, float r) =>
-        c.X - r > pool.Min.X && c.X + r < pool.Max.X && c.Y - r > pool.Min.Y && c.Y + r < pool.Max.Y;
+    private void TryWall(int m, IPairSink sink)
+    {
+        Aabb pool = _world.Field.Bounds;
+        Vector2 c = _center[m];
+        float r = _radius[m] + Margin;
+        if (c.X - r > pool.Min.X && c.X + r < pool.Max.X && c.Y - r > pool.Min.Y && c.Y + r < pool.Max.Y)
+        {
+            return;
+        }
+
+        CandidatePair pair = m < _fish
+            ? new CandidatePair(PairKind.FishWall, m, 0, float.PositiveInfinity)
+            : new CandidatePair(PairKind.BallWall, m - _fish, 0, float.PositiveInfinity);
+        sink.Add(pair, m, -1, _rate[m]);
+    }
 }

@@ -19,6 +19,7 @@ internal sealed class IsolatedStrategyRunner
     private int[] _fish = [];
     private Exception? _error;
     private bool _pending;
+    private volatile bool _stopped;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team)
     {
@@ -77,11 +78,23 @@ internal sealed class IsolatedStrategyRunner
         return Outcome.Decided;
     }
 
+    /// <summary>Lets the strategy's thread end once its current call (if any) returns; the runner is not used afterwards.</summary>
+    public void Stop()
+    {
+        _stopped = true;
+        _start.Release();
+    }
+
     private void Loop()
     {
         while (true)
         {
             _start.Wait();
+            if (_stopped)
+            {
+                return;
+            }
+
             try
             {
                 _strategy.Decide(_snapshot!, _fish, _work);

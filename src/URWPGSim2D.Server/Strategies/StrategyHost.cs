@@ -31,6 +31,15 @@ internal sealed class StrategyHost(StrategySlot[] slots, int timeoutMs)
         }
     }
 
+    /// <summary>Ends the threads of the isolated strategies (after the match).</summary>
+    public void Stop()
+    {
+        foreach (var slot in Slots)
+        {
+            slot.Runner?.Stop();
+        }
+    }
+
     /// <summary>Runs every strategy on <paramref name="snapshot"/> and writes the fish's decisions.</summary>
     public void Decide(MatchSnapshot snapshot, FishState[] fish)
     {

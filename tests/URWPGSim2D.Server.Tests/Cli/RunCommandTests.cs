@@ -106,7 +106,7 @@ public sealed class RunCommandTests : IDisposable
         var run = CliRun.Of(string.Empty, args);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
-        Assert.StartsWith(start + ". Usage: URWPGSim2D.Server run [--scenario FILE] [--cycles N]", run.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith(start + ". Usage: URWPGSim2D.Server run [--scenario FILE | --crowd N] [--cycles N]", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
     }
 

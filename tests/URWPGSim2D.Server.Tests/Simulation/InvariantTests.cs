@@ -44,6 +44,45 @@ public sealed class InvariantTests
         }
     }
 
+    [Theory]
+    [InlineData(2UL, 400)]
+    [InlineData(7UL, 400)]
+    [InlineData(12UL, 1130)] // a ball squeezed between fish at cycle 1125 (7.8 mm left without the relaxation passes)
+    public void TheDefaultMatchKeepsItsJamsApart(ulong seed, int cycles)
+    {
+        // Chase-ball makes every fish fight for the same balls: balls squeezed between fish, fish
+        // against goal blocks. The stepper's own measure every cycle, the audit every 25th.
+        var match = MatchBuilder.Build(DefaultScenario.Load(), seed: seed);
+        for (int k = 1; k <= cycles; k++)
+        {
+            match.Step();
+            Assert.True(match.Stepper.LeftoverOverlap <= 1f, $"seed {seed}, cycle {k}: {match.Stepper.LeftoverOverlap} mm left");
+            if (k % 25 == 0)
+            {
+                float deepest = OverlapAudit.DeepestOverlap(match.World, out string where);
+                Assert.True(deepest <= 1f, $"seed {seed}, cycle {k}: {where} overlaps {deepest} mm");
+            }
+        }
+    }
+
+    [Theory]
+    [InlineData(300, 1UL)]
+    [InlineData(300, 2UL)]
+    public void ACrowdedSceneKeepsEverythingApart(int movers, ulong seed)
+    {
+        var match = MatchBuilder.Build(CrowdScenario.Create(movers, seed));
+        for (int k = 1; k <= 60; k++)
+        {
+            match.Step();
+            Assert.True(match.Stepper.LeftoverOverlap <= 1f, $"cycle {k}: {match.Stepper.LeftoverOverlap} mm left");
+            if (k % 15 == 0)
+            {
+                float deepest = OverlapAudit.DeepestOverlap(match.World, out string where);
+                Assert.True(deepest <= 1f, $"cycle {k}: {where} overlaps {deepest} mm");
+            }
+        }
+    }
+
     [Fact]
     public void TheAuditSeesOverlapsAndEscapesAndTheScenariosCoverEveryKind()
     {

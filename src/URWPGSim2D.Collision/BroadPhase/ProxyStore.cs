@@ -1,0 +1,66 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.BroadPhase;
+
+/// <summary>The proxies' boxes (as min and max corner arrays) and the argument checks every broad phase shares.</summary>
+internal sealed class ProxyStore
+{
+    public Vector2[] Min = new Vector2[16];
+    public Vector2[] Max = new Vector2[16];
+
+    public int Count { get; private set; }
+
+    public int MovingCount { get; private set; }
+
+    /// <summary>Copies the boxes in, growing the arrays when needed.</summary>
+    public void Reset(ReadOnlySpan<Aabb> boxes, int movingCount)
+    {
+        if ((uint)movingCount > (uint)boxes.Length)
+        {
+            throw new ArgumentException($"must be 0 … {boxes.Length} (the number of boxes), got {movingCount}", nameof(movingCount));
+        }
+
+        if (Min.Length < boxes.Length)
+        {
+            int size = Math.Max(boxes.Length, Min.Length * 2);
+            Min = new Vector2[size];
+            Max = new Vector2[size];
+        }
+
+        for (int i = 0; i < boxes.Length; i++)
+        {
+            Min[i] = boxes[i].Min;
+            Max[i] = boxes[i].Max;
+        }
+
+        Count = boxes.Length;
+        MovingCount = movingCount;
+    }
+
+    /// <summary>Stores a proxy's new box.</summary>
+    public void Move(int proxy, in Aabb box)
+    {
+        Check(proxy, nameof(proxy));
+        Min[proxy] = box.Min;
+        Max[proxy] = box.Max;
+    }
+
+    public Aabb Box(int proxy)
+    {
+        Check(proxy, nameof(proxy));
+        return new Aabb(Min[proxy], Max[proxy]);
+    }
+
+    /// <summary>Whether the pair (a, b) may be reported: not both static.</summary>
+    public bool Pairable(int a, int b) => a < MovingCount || b < MovingCount;
+
+    public void Check(int proxy, string name)
+    {
+        if ((uint)proxy >= (uint)Count)
+        {
+            throw new ArgumentException($"must be a proxy index 0 … {Count - 1}, got {proxy}", name);
+        }
+    }
+}

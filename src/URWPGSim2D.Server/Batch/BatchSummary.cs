@@ -1,0 +1,88 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+
+namespace URWPGSim2D.Server.Batch;
+
+/// <summary>
+/// The text a batch prints: one line per match and the aggregate (goals per team: mean, sample
+/// standard deviation, range, total; outcomes; largest leftover overlap; strategy faults). The
+/// same results give the same text, whether they come from one run or a merge of shards.
+/// </summary>
+internal static class BatchSummary
+{
+    private static readonly CultureInfo C = CultureInfo.InvariantCulture;
+
+    /// <summary>The line of one match.</summary>
+    public static string Line(MatchResult r) =>
+        string.Create(C, $"match {r.Index} (seed {r.Seed}): goals {r.Goals0}-{r.Goals1}, contacts {r.TotalContacts}, events {r.Events}, sub-steps {r.SubSteps}, overlap {r.LeftoverOverlap:0.000} mm, faults {r.StrategyFaults}\n");
+
+    /// <summary>The aggregate of <paramref name="results"/> (in match order), several lines ending in a newline.</summary>
+    public static string Aggregate(BatchHeader header, IReadOnlyList<MatchResult> results)
+    {
+        var s = new StringBuilder();
+        string share = header.ShardCount > 1
+            ? string.Create(C, $"{results.Count} of {header.Matches} matches (shard {header.ShardIndex}/{header.ShardCount})")
+            : string.Create(C, $"{results.Count} matches");
+        s.Append(C, $"batch: {share}, seeds {header.FirstSeed} to {header.FirstSeed + (ulong)header.Matches - 1}, {header.Cycles} cycles each, scene {header.Scene}\n");
+        string[] teams = header.Teams.Split(';');
+        for (int team = 0; team < 2; team++)
+        {
+            var goals = new double[results.Count];
+            for (int i = 0; i < results.Count; i++)
+            {
+                goals[i] = team == 0 ? results[i].Goals0 : results[i].Goals1;
+            }
+
+            var (mean, sd, min, max, total) = Stats(goals);
+            string label = team < teams.Length ? teams[team] : "?";
+            s.Append(C, $"goals team {team} ({label}): mean {mean:0.000}, sd {sd:0.000}, min {min}, max {max}, total {total}\n");
+        }
+
+        int won0 = 0, won1 = 0, drawn = 0, faults = 0, worst = -1;
+        for (int i = 0; i < results.Count; i++)
+        {
+            var r = results[i];
+            won0 += r.Goals0 > r.Goals1 ? 1 : 0;
+            won1 += r.Goals1 > r.Goals0 ? 1 : 0;
+            drawn += r.Goals0 == r.Goals1 ? 1 : 0;
+            faults += r.StrategyFaults;
+            worst = worst < 0 || r.LeftoverOverlap > results[worst].LeftoverOverlap ? i : worst;
+        }
+
+        s.Append(C, $"outcomes: team 0 won {won0}, team 1 won {won1}, drawn {drawn}\n");
+        s.Append(worst < 0
+            ? "largest leftover overlap: none\n"
+            : string.Create(C, $"largest leftover overlap: {results[worst].LeftoverOverlap:0.000} mm (match {results[worst].Index}, cycle {results[worst].LeftoverCycle})\n"));
+        s.Append(C, $"strategy faults: {faults}\n");
+        return s.ToString();
+    }
+
+    /// <summary>Mean, sample standard deviation (0 for fewer than two values), min, max and total.</summary>
+    public static (double Mean, double Sd, double Min, double Max, double Total) Stats(IReadOnlyList<double> values)
+    {
+        if (values.Count == 0)
+        {
+            return (0, 0, 0, 0, 0);
+        }
+
+        double total = 0, min = double.PositiveInfinity, max = double.NegativeInfinity;
+        foreach (double v in values)
+        {
+            total += v;
+            min = Math.Min(min, v);
+            max = Math.Max(max, v);
+        }
+
+        double mean = total / values.Count;
+        double squares = 0;
+        foreach (double v in values)
+        {
+            squares += (v - mean) * (v - mean);
+        }
+
+        double sd = values.Count > 1 ? Math.Sqrt(squares / (values.Count - 1)) : 0;
+        return (mean, sd, min, max, total);
+    }
+}

@@ -1,0 +1,57 @@
+using System;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Server.Batch;
+
+/// <summary>
+/// What one match of a batch produced: a line of the result file. Only simulation results (no
+/// wall time), so the same match gives the same result on any machine, core count or shard.
+/// </summary>
+/// <param name="Index">Match number in the batch, 0 … N − 1.</param>
+/// <param name="Seed">Its seed (the batch's first seed + index).</param>
+/// <param name="Cycles">Cycles played.</param>
+/// <param name="Goals0">Goals of team 0.</param>
+/// <param name="Goals1">Goals of team 1.</param>
+/// <param name="Contacts">Contacts by kind, in the summary's order (fish-fish … ball-border).</param>
+/// <param name="SubSteps">Sample times over all cycles.</param>
+/// <param name="MostSubSteps">Most sample times in one cycle.</param>
+/// <param name="Events">Contact events.</param>
+/// <param name="LeftoverOverlap">Deepest overlap left at the end of any cycle, mm.</param>
+/// <param name="LeftoverCycle">The cycle that left it (0 if none).</param>
+/// <param name="StrategyFaults">Exceptions and time-outs of all strategies.</param>
+internal sealed record MatchResult(
+    int Index, ulong Seed, int Cycles, int Goals0, int Goals1, long[] Contacts, long SubSteps,
+    int MostSubSteps, long Events, float LeftoverOverlap, int LeftoverCycle, int StrategyFaults)
+{
+    /// <summary>Contact kinds as the result file and the summaries name them.</summary>
+    public static readonly string[] ContactNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
+
+    /// <summary>The result of a finished match.</summary>
+    public static MatchResult Of(int index, ulong seed, Match match)
+    {
+        var stats = match.Statistics;
+        return new MatchResult(
+            index, seed, stats.Cycles, match.World.Goals[0], match.World.Goals[1], match.Contacts.ByKind.ToArray(),
+            stats.SubSteps, stats.MostSubSteps, stats.Events, stats.LargestLeftoverOverlap, stats.LargestLeftoverCycle,
+            match.Strategies.TotalFaults);
+    }
+
+    /// <summary>All contacts.</summary>
+    public long TotalContacts
+    {
+        get
+        {
+            long sum = 0;
+            foreach (long c in Contacts)
+            {
+                sum += c;
+            }
+
+            return sum;
+        }
+    }
+
+    /// <summary>Field-by-field equality (the contact counts by value).</summary>
+    public bool SameAs(MatchResult other) =>
+        this with { Contacts = Array.Empty<long>() } == other with { Contacts = Array.Empty<long>() } && Contacts.AsSpan().SequenceEqual(other.Contacts);
+}

@@ -1,0 +1,103 @@
+using System;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Scenario;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>run --batch N</c>: plays this process's shard of a batch (every match when there is one
+/// shard) on <c>--threads</c> threads (default: every core), prints one line per match in match
+/// order and the aggregate, and writes <c>--results FILE</c> for <c>merge</c>. See docs/batch.md.
+/// </summary>
+internal static class BatchRun
+{
+    /// <summary>Runs the batch; returns the exit code.</summary>
+    public static int Run(RunOptions options, ScenarioDefinition scenario, string scene, CliConsole console)
+    {
+        int matches = options.Batch!.Value;
+        ulong first = options.Seed ?? scenario.Seed;
+        if (first > long.MaxValue - (ulong)matches)
+        {
+            console.Error.WriteLine($"run: --batch {matches} from seed {first} would need seeds beyond {long.MaxValue}");
+            return ExitCodes.BadInput;
+        }
+
+        if (options.Results is { } path && !CanWrite(path + ".partial", console))
+        {
+            return ExitCodes.BadInput;
+        }
+
+        int cycles = options.Cycles ?? scenario.Cycles;
+        int threads = options.Threads ?? Environment.ProcessorCount;
+        var header = new BatchHeader(
+            scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
+            matches, cycles, options.ShardIndex, options.ShardCount);
+
+        var clock = Stopwatch.StartNew();
+        MatchResult[] results;
+        try
+        {
+            results = BatchRunner.Run(
+                header,
+                threads,
+                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs),
+                r => console.Out.Write(BatchSummary.Line(r)));
+            clock.Stop();
+            if (options.Results is { } file)
+            {
+                ResultFile.Write(file, header, results);
+            }
+        }
+        finally
+        {
+            if (options.Results is { } file && File.Exists(file + ".partial"))
+            {
+                File.Delete(file + ".partial");
+            }
+        }
+
+        console.Out.Write(BatchSummary.Aggregate(header, results));
+        double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
+        double simulated = results.Length * cycles * 0.1;
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {results.Length / seconds:0.00} matches/s, {simulated / seconds:0}x real time\n"));
+        return ExitCodes.Success;
+    }
+
+    private static bool CanWrite(string path, CliConsole console)
+    {
+        try
+        {
+            File.WriteAllText(path, string.Empty);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            console.Error.WriteLine($"--results: cannot write {path} ({e.Message})");
+            return false;
+        }
+    }
+
+    private static string StrategiesText(RunOptions options)
+    {
+        string a = options.Strategies[0] is { } s0 ? "0=" + s0 : string.Empty;
+        string b = options.Strategies[1] is { } s1 ? "1=" + s1 : string.Empty;
+        return a.Length > 0 && b.Length > 0 ? a + ";" + b : a + b;
+    }
+
+    private static string TeamsText(ScenarioDefinition scenario, RunOptions options)
+    {
+        var probe = MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), options.Seed, options.Noise, options.StrategyTimeoutMs);
+        probe.Strategies.Stop();
+        return MatchSummary.TeamLabel(probe, 0) + ";" + MatchSummary.TeamLabel(probe, 1);
+    }
+
+    private static string NoiseText(RunOptions options) => options.Noise switch
+    {
+        true => "on",
+        false => "off",
+        null => "scenario",
+    };
+}

@@ -1,0 +1,157 @@
+using System;
+
+namespace URWPGSim2D.Server.Simulation;
+
+/// <summary>
+/// The overlapping pairs one sample found, grouped into clusters that share no moving body (pairs
+/// linked through a fish or a ball are one cluster; static bodies and walls link nothing), each with
+/// an estimated time of first contact. Buffers grow by doubling and are reused.
+/// </summary>
+internal sealed class FoundHits
+{
+    private int[] _order = new int[16];
+    private double[] _clusterTime = new double[16];
+    private int _clusters;
+    private PairTable? _table;
+
+    /// <summary>Number of hits.</summary>
+    public int Count { get; private set; }
+
+    /// <summary>Pair slot of each hit.</summary>
+    public int[] Slot { get; private set; } = new int[16];
+
+    /// <summary>The slot's generation when the hit was found.</summary>
+    public int[] Generation { get; private set; } = new int[16];
+
+    /// <summary>The contact found.</summary>
+    public Hit[] Value { get; private set; } = new Hit[16];
+
+    /// <summary>Estimated time of first contact of each hit.</summary>
+    public double[] Estimate { get; private set; } = new double[16];
+
+    /// <summary>Cluster label of each hit (the smallest hit index of its cluster).</summary>
+    public int[] Label { get; private set; } = new int[16];
+
+    /// <summary>Copies the hits of a sample.</summary>
+    public void Load(int[] slots, Hit[] values, int count, PairTable table)
+    {
+        if (Slot.Length < count)
+        {
+            int size = Math.Max(count, Slot.Length * 2);
+            Slot = new int[size];
+            Generation = new int[size];
+            Value = new Hit[size];
+            Estimate = new double[size];
+            Label = new int[size];
+            _order = new int[size];
+            _clusterTime = new double[size];
+        }
+
+        Count = count;
+        for (int i = 0; i < count; i++)
+        {
+            Slot[i] = slots[i];
+            Generation[i] = table.Generation[slots[i]];
+            Value[i] = values[i];
+            Label[i] = i;
+        }
+
+        _table = table;
+    }
+
+    /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>
+    public void Cluster(int fishCount)
+    {
+        bool merged = true;
+        while (merged)
+        {
+            merged = false;
+            for (int i = 0; i < Count; i++)
+            {
+                Movers(_table!.Pair[Slot[i]], fishCount, out int a1, out int b1);
+                for (int j = i + 1; j < Count; j++)
+                {
+                    if (Label[i] == Label[j])
+                    {
+                        continue;
+                    }
+
+                    Movers(_table.Pair[Slot[j]], fishCount, out int a2, out int b2);
+                    if (a1 == a2 || a1 == b2 || (b1 >= 0 && (b1 == a2 || b1 == b2)))
+                    {
+                        int label = Math.Min(Label[i], Label[j]);
+                        int other = Math.Max(Label[i], Label[j]);
+                        for (int k = 0; k < Count; k++)
+                        {
+                            Label[k] = Label[k] == other ? label : Label[k];
+                        }
+
+                        merged = true;
+                    }
+                }
+            }
+        }
+
+        _clusters = 0;
+        for (int i = 0; i < Count; i++)
+        {
+            if (Label[i] != i)
+            {
+                continue;
+            }
+
+            double earliest = double.PositiveInfinity;
+            for (int k = 0; k < Count; k++)
+            {
+                earliest = Label[k] == i ? Math.Min(earliest, Estimate[k]) : earliest;
+            }
+
+            _order[_clusters] = i;
+            _clusterTime[_clusters++] = earliest;
+        }
+
+        // Insertion sort by estimated time (ties: lower label first).
+        for (int i = 1; i < _clusters; i++)
+        {
+            int label = _order[i];
+            double time = _clusterTime[i];
+            int j = i - 1;
+            while (j >= 0 && _clusterTime[j] > time)
+            {
+                _order[j + 1] = _order[j];
+                _clusterTime[j + 1] = _clusterTime[j];
+                j--;
+            }
+
+            _order[j + 1] = label;
+            _clusterTime[j + 1] = time;
+        }
+    }
+
+    /// <summary>The cluster labels, earliest estimated contact first.</summary>
+    public ReadOnlySpan<int> ClustersByTime() => _order.AsSpan(0, _clusters);
+
+    // The moving bodies of a pair (b = −1 for a static body or a wall).
+    private static void Movers(in CandidatePair p, int fishCount, out int a, out int b)
+    {
+        switch (p.Kind)
+        {
+            case PairKind.FishFish:
+                (a, b) = (p.A, p.B);
+                break;
+            case PairKind.FishBall:
+                (a, b) = (p.A, fishCount + p.B);
+                break;
+            case PairKind.BallBall:
+                (a, b) = (fishCount + p.A, fishCount + p.B);
+                break;
+            case PairKind.FishStatic:
+            case PairKind.FishWall:
+                (a, b) = (p.A, -1);
+                break;
+            default:
+                (a, b) = (fishCount + p.A, -1);
+                break;
+        }
+    }
+}

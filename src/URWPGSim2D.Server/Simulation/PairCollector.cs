@@ -1,0 +1,29 @@
+using System;
+
+namespace URWPGSim2D.Server.Simulation;
+
+/// <summary>Collects candidate pairs into a reusable list (for the passes without motion: settling and measuring).</summary>
+internal sealed class PairCollector : IPairSink
+{
+    private CandidatePair[] _pairs = new CandidatePair[256];
+
+    /// <summary>Number of pairs collected.</summary>
+    public int Count { get; private set; }
+
+    /// <summary>The pairs, in the order found.</summary>
+    public ReadOnlySpan<CandidatePair> Pairs => _pairs.AsSpan(0, Count);
+
+    /// <summary>Empties the list.</summary>
+    public void Clear() => Count = 0;
+
+    /// <inheritdoc/>
+    public void Add(in CandidatePair pair, int moverA, int moverB, float rate)
+    {
+        if (Count == _pairs.Length)
+        {
+            Array.Resize(ref _pairs, Count * 2);
+        }
+
+        _pairs[Count++] = pair;
+    }
+}

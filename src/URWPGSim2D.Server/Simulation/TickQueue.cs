@@ -1,0 +1,123 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Server.Simulation;
+
+/// <summary>
+/// When each candidate pair is next sampled. A cycle is cut into <see cref="Ticks"/> equal ticks;
+/// a pair with a step of s ticks is sampled at the multiples of s (s a power of two, so a coarse
+/// pair's sample times are also a fine pair's). Each tick has a first-in first-out list of slot
+/// entries (slot and generation: an entry whose slot was freed or reused since is skipped), and a
+/// bit set of the ticks with entries finds the next one. Entries may be added to ticks before the
+/// one being processed (a contact rewinds its bodies to the time of first contact). Cleared every
+/// cycle; storage grows by doubling, never shrinks.
+/// </summary>
+internal sealed class TickQueue
+{
+    /// <summary>Ticks per cycle (the finest sampling: <see cref="PhysicsConstants.MaximumSubSteps"/>).</summary>
+    public const int Ticks = PhysicsConstants.MaximumSubSteps;
+
+    private const int None = -1;
+
+    private readonly int[] _head = new int[Ticks + 1];
+    private readonly int[] _tail = new int[Ticks + 1];
+    private readonly ulong[] _occupied = new ulong[(Ticks + 64) / 64];
+    private int[] _slot = new int[256];
+    private int[] _generation = new int[256];
+    private int[] _next = new int[256];
+    private int _count;
+    private int _lowest = Ticks + 1;
+
+    public TickQueue()
+    {
+        Array.Fill(_head, None);
+    }
+
+    /// <summary>Empties every tick.</summary>
+    public void Clear()
+    {
+        for (int w = 0; w < _occupied.Length; w++)
+        {
+            ulong bits = _occupied[w];
+            while (bits != 0)
+            {
+                int tick = (w * 64) + BitOperations.TrailingZeroCount(bits);
+                _head[tick] = None;
+                bits &= bits - 1;
+            }
+
+            _occupied[w] = 0;
+        }
+
+        _count = 0;
+        _lowest = Ticks + 1;
+    }
+
+    /// <summary>Schedules slot <paramref name="slot"/> (of generation <paramref name="generation"/>) at tick 1 … <see cref="Ticks"/>.</summary>
+    public void Push(int tick, int slot, int generation)
+    {
+        if (_count == _slot.Length)
+        {
+            Array.Resize(ref _slot, _count * 2);
+            Array.Resize(ref _generation, _count * 2);
+            Array.Resize(ref _next, _count * 2);
+        }
+
+        int node = _count++;
+        _slot[node] = slot;
+        _generation[node] = generation;
+        _next[node] = None;
+        if (_head[tick] == None)
+        {
+            _head[tick] = node;
+            _occupied[tick >> 6] |= 1UL << (tick & 63);
+        }
+        else
+        {
+            _next[_tail[tick]] = node;
+        }
+
+        _tail[tick] = node;
+        _lowest = Math.Min(_lowest, tick);
+    }
+
+    /// <summary>The earliest tick with entries, or −1 when none is left.</summary>
+    public int NextTick()
+    {
+        for (int w = _lowest >> 6; w < _occupied.Length; w++)
+        {
+            ulong bits = _occupied[w];
+            if (w == _lowest >> 6)
+            {
+                bits &= ulong.MaxValue << (_lowest & 63);
+            }
+
+            if (bits != 0)
+            {
+                _lowest = (w * 64) + BitOperations.TrailingZeroCount(bits);
+                return _lowest;
+            }
+        }
+
+        _lowest = Ticks + 1;
+        return None;
+    }
+
+    /// <summary>Detaches the entries of <paramref name="tick"/>; returns the first node (follow <see cref="Next"/>), or −1.</summary>
+    public int Take(int tick)
+    {
+        int first = _head[tick];
+        _head[tick] = None;
+        _occupied[tick >> 6] &= ~(1UL << (tick & 63));
+        return first;
+    }
+
+    /// <summary>The slot of a node.</summary>
+    public int SlotOf(int node) => _slot[node];
+
+    /// <summary>The generation a node was scheduled with.</summary>
+    public int GenerationOf(int node) => _generation[node];
+
+    /// <summary>The node after <paramref name="node"/> in its tick, or −1.</summary>
+    public int Next(int node) => _next[node];
+}

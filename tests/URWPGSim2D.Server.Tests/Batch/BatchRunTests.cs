@@ -1,0 +1,127 @@
+using System;
+using System.IO;
+using System.Linq;
+using URWPGSim2D.Server.Tests.Cli;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Batch;
+
+/// <summary>
+/// <c>run --batch</c>: the results depend only on the batch, never on the thread count or on how
+/// the batch is sharded; <c>merge</c> of all shards gives the very file one run writes.
+/// </summary>
+public sealed class BatchRunTests : IDisposable
+{
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-batch-" + Guid.NewGuid().ToString("N"));
+
+    public BatchRunTests() => Directory.CreateDirectory(_folder);
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    [Fact]
+    public void ResultsAreTheSameOnOneThreadAndOnSeveral()
+    {
+        var one = Batch("one", "--threads", "1");
+        var three = Batch("three", "--threads", "3");
+        Assert.Equal(File.ReadAllBytes(one.File), File.ReadAllBytes(three.File));
+        Assert.Equal(WithoutWallTime(one.Run.Stdout), WithoutWallTime(three.Run.Stdout));
+        string[] lines = one.Run.Stdout.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        Assert.Equal(5 + 7, lines.Length);
+        for (int j = 0; j < 5; j++)
+        {
+            Assert.StartsWith($"match {j} (seed {7 + j}): goals ", lines[j], StringComparison.Ordinal);
+        }
+
+        Assert.Equal("batch: 5 matches, seeds 7 to 11, 40 cycles each, scene default", lines[5]);
+        Assert.Matches(@"^goals team 0 \(chase-ball\): mean [0-9.]+, sd [0-9.]+, min [0-9]+, max [0-9]+, total [0-9]+$", lines[6]);
+        Assert.Matches(@"^outcomes: team 0 won [0-9]+, team 1 won [0-9]+, drawn [0-9]+$", lines[8]);
+        Assert.Matches(@"^wall time: [0-9.]+ s on 1 threads, [0-9.]+ matches/s, [0-9]+x real time$", lines[11]);
+        Assert.Equal(6, File.ReadAllLines(one.File).Length);
+    }
+
+    [Fact]
+    public void TheSeedsDifferSoTheMatchesDiffer()
+    {
+        var batch = Batch("seeds", "--threads", "2");
+        string[] matches = File.ReadAllLines(batch.File).Skip(1).Select(l => l[l.IndexOf(",\"cycles\"", StringComparison.Ordinal)..]).ToArray();
+        Assert.True(matches.Distinct().Count() >= 4, string.Join("\n", matches));
+    }
+
+    [Fact]
+    public void MergingEveryShardGivesTheFileOfOneRun()
+    {
+        var whole = Batch("whole");
+        string[] shards = new string[3];
+        for (int i = 0; i < 3; i++)
+        {
+            shards[i] = Batch($"shard{i}", "--shard", $"{i}/3", "--threads", "1").File;
+        }
+
+        string merged = Path.Combine(_folder, "merged.jsonl");
+        var merge = CliRun.Of(string.Empty, ["merge", "--out", merged, shards[2], shards[0], shards[1]]);
+        Assert.Equal(0, merge.ExitCode);
+        Assert.Equal(File.ReadAllBytes(whole.File), File.ReadAllBytes(merged));
+        Assert.Equal(WithoutWallTime(whole.Run.Stdout).Split('\n').Skip(5).ToArray(), merge.Stdout.Split('\n'));
+
+        // Shard 1 of 3 holds matches 1 and 4.
+        string[] shardLines = File.ReadAllLines(shards[1]);
+        Assert.Contains("\"shard\":1,\"shards\":3", shardLines[0], StringComparison.Ordinal);
+        Assert.Equal(new[] { 1, 4 }, shardLines.Skip(1).Select(l => int.Parse(l.Split("\"index\":")[1].Split(',')[0], System.Globalization.CultureInfo.InvariantCulture)));
+    }
+
+    [Fact]
+    public void MergeRefusesIncompleteOrForeignShards()
+    {
+        string s0 = Batch("a0", "--shard", "0/2").File;
+        string s1 = Batch("a1", "--shard", "1/2").File;
+        string other = Batch("b1", seed: 8, "--shard", "1/2").File;
+        string bad = Path.Combine(_folder, "bad.jsonl");
+        File.WriteAllText(bad, File.ReadAllLines(s1)[0] + "\n{\"kind\":\"match\",\"index\":1}\n");
+
+        AssertError(CliRun.Of(string.Empty, "merge", s0), "missing shard 1 of 2 (give every shard's result file)");
+        AssertError(CliRun.Of(string.Empty, "merge", s0, s0), $"{s0}: shard 0/2 is also in {s0}");
+        AssertError(CliRun.Of(string.Empty, "merge", s0, other), $"{other}: belongs to another batch than {s0} (first seed 7 vs 8)");
+        AssertError(CliRun.Of(string.Empty, "merge", s0, bad), $"{bad}:2: missing field \"seed\"");
+        AssertError(CliRun.Of(string.Empty, "merge", Path.Combine(_folder, "none.jsonl")), "cannot read the result file");
+        Assert.Equal(0, CliRun.Of(string.Empty, "merge", s1, s0).ExitCode);
+    }
+
+    [Theory]
+    [InlineData("--shard 2/2", "run: --shard must be I/K with 0 <= I < K (e.g. 0/4), got \"2/2\"")]
+    [InlineData("--shard one", "run: --shard must be I/K with 0 <= I < K (e.g. 0/4), got \"one\"")]
+    [InlineData("--batch 0", "run: --batch must be an integer 1..100000000, got \"0\"")]
+    [InlineData("--threads 2", "run: --shard, --threads and --results belong to --batch N")]
+    [InlineData("--batch 2 --trace t.jsonl", "run: --trace and --svg record one match; they do not go with --batch")]
+    [InlineData("--crowd 100 --scenario s.json", "run: --scenario and --crowd both choose the scene; give one")]
+    [InlineData("--crowd 5", "run: --crowd must be an integer 13..1000000, got \"5\"")]
+    public void BadBatchOptionsAreOneUsageLine(string arguments, string message)
+    {
+        var run = CliRun.Of(string.Empty, ["run", .. arguments.Split(' ')]);
+        Assert.Equal(2, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stdout);
+        Assert.StartsWith(message + ". Usage: URWPGSim2D.Server run ", run.Stderr, StringComparison.Ordinal);
+    }
+
+    private (CliRun Run, string File) Batch(string name, params string[] extra) => Batch(name, 7, extra);
+
+    private (CliRun Run, string File) Batch(string name, int seed, params string[] extra)
+    {
+        string file = Path.Combine(_folder, name + ".jsonl");
+        string[] args = ["run", "--batch", "5", "--cycles", "40", "--seed", seed.ToString(System.Globalization.CultureInfo.InvariantCulture), "--results", file, .. extra];
+        var run = CliRun.Of(string.Empty, args);
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        Assert.False(File.Exists(file + ".partial"));
+        return (run, file);
+    }
+
+    private static string WithoutWallTime(string stdout) =>
+        string.Join('\n', stdout.Split('\n').Where(l => !l.StartsWith("wall time:", StringComparison.Ordinal)));
+
+    private static void AssertError(CliRun run, string message)
+    {
+        Assert.Equal(2, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stdout);
+        Assert.Contains(message, run.Stderr, StringComparison.Ordinal);
+        Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
+    }
+}

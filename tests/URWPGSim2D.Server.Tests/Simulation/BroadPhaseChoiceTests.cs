@@ -1,0 +1,85 @@
+using System;
+using System.IO;
+using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Trace;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Simulation;
+
+/// <summary>
+/// The stepper finds its candidate pairs through a broad phase, at the start of each cycle and for
+/// every body re-planned after a contact. Brute force (every pair of boxes) is the reference: the
+/// grid, sweep and prune and the tree must give byte-identical traces over random scenarios, so
+/// they found exactly the same pairs in the same order.
+/// </summary>
+public sealed class BroadPhaseChoiceTests
+{
+    public static TheoryData<int> Scenarios()
+    {
+        var data = new TheoryData<int>();
+        for (int i = 0; i < 24; i += 3)
+        {
+            data.Add(i);
+        }
+
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(Scenarios))]
+    public void EveryBroadPhaseGivesTheBruteForceTrace(int index)
+    {
+        var scenario = ScenarioParser.Parse(RandomScenarios.Json(index));
+        byte[] truth = Trace(scenario, new BruteForceBroadPhase());
+        Assert.Equal(truth, Trace(scenario, new UniformGrid()));
+        Assert.Equal(truth, Trace(scenario, new SweepAndPrune()));
+        Assert.Equal(truth, Trace(scenario, new DynamicAabbTree()));
+    }
+
+    [Theory]
+    [InlineData(150, 1UL)]
+    [InlineData(400, 2UL)]
+    public void ACrowdedSceneIsTheSameWithEveryBroadPhase(int movers, ulong seed)
+    {
+        var scenario = CrowdScenario.Create(movers, seed);
+        byte[] truth = Trace(scenario, new BruteForceBroadPhase(), cycles: 30);
+        Assert.Equal(truth, Trace(scenario, new UniformGrid(), cycles: 30));
+        Assert.Equal(truth, Trace(scenario, new SweepAndPrune(), cycles: 30));
+        Assert.Equal(truth, Trace(scenario, new DynamicAabbTree(), cycles: 30));
+    }
+
+    [Fact]
+    public void TheDefaultMatchIsTheSameWithBruteForce()
+    {
+        var scenario = DefaultScenario.Load();
+        Assert.Equal(Trace(scenario, new BruteForceBroadPhase(), cycles: 150), Trace(scenario, null, cycles: 150));
+    }
+
+    private static byte[] Trace(ScenarioDefinition scenario, IBroadPhase? broadPhase, int cycles = 60)
+    {
+        string path = Path.Combine(Path.GetTempPath(), $"urwpg-bp-{Guid.NewGuid():N}.jsonl");
+        try
+        {
+            var match = MatchBuilder.Build(scenario, broadPhase: broadPhase);
+            using (var trace = new TraceWriter(path))
+            {
+                trace.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
+                for (int k = 0; k < cycles; k++)
+                {
+                    match.Step();
+                    trace.WriteCycle(match.World, match.Contacts.Cycle);
+                }
+
+                trace.Complete();
+            }
+
+            return File.ReadAllBytes(path);
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+}
