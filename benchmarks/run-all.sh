@@ -4,17 +4,17 @@
 #      which also draws docs/figures/scaling.svg from the scaling and broad-phase results;
 #   2. the batch speed-up from the command line (16 default matches on 1 and on 2 threads);
 #   3. the default match end to end (the README's main job).
-# Extra arguments go to BenchmarkDotNet (e.g. --filter '*Scaling*' to run part of it).
+# Arguments go to BenchmarkDotNet instead of --filter '*' (e.g. --filter '*Scaling*' to run part of it).
 # Results: BenchmarkDotNet.Artifacts/results/*.md (tables) and benchmarks/last-run.txt (everything printed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 log=benchmarks/last-run.txt
 {
   echo "# $(date -u +%FT%TZ) on $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | xargs), $(dotnet --version)"
-  filter=('*')
-  [ "$#" -gt 0 ] && filter=()
+  args=("$@")
+  [ "${#args[@]}" -eq 0 ] && args=(--filter '*')
   dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- \
-    --filter "${filter[@]}" --job short --plot docs/figures/scaling.svg "$@"
+    --job short --plot docs/figures/scaling.svg "${args[@]}"
   server=(dotnet run -c Release --project src/URWPGSim2D.Server --)
   for threads in 1 2; do
     echo "## run --batch 16 --threads $threads"

@@ -13,6 +13,7 @@ internal sealed class FoundHits
     private double[] _clusterTime = new double[16];
     private int _clusters;
     private PairTable? _table;
+    private int[] _firstHitOf = [-1, -1, -1, -1, -1, -1, -1, -1];
 
     /// <summary>Number of hits.</summary>
     public int Count { get; private set; }
@@ -62,34 +63,26 @@ internal sealed class FoundHits
     /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>
     public void Cluster(int fishCount)
     {
-        bool merged = true;
-        while (merged)
+        // Union-find over the hits: each mover remembers the first hit it was seen in.
+        for (int i = 0; i < Count; i++)
         {
-            merged = false;
-            for (int i = 0; i < Count; i++)
+            Label[i] = i;
+        }
+
+        for (int i = 0; i < Count; i++)
+        {
+            Movers(_table!.Pair[Slot[i]], fishCount, out int a, out int b);
+            Join(i, a);
+            if (b >= 0)
             {
-                Movers(_table!.Pair[Slot[i]], fishCount, out int a1, out int b1);
-                for (int j = i + 1; j < Count; j++)
-                {
-                    if (Label[i] == Label[j])
-                    {
-                        continue;
-                    }
-
-                    Movers(_table.Pair[Slot[j]], fishCount, out int a2, out int b2);
-                    if (a1 == a2 || a1 == b2 || (b1 >= 0 && (b1 == a2 || b1 == b2)))
-                    {
-                        int label = Math.Min(Label[i], Label[j]);
-                        int other = Math.Max(Label[i], Label[j]);
-                        for (int k = 0; k < Count; k++)
-                        {
-                            Label[k] = Label[k] == other ? label : Label[k];
-                        }
-
-                        merged = true;
-                    }
-                }
+                Join(i, b);
             }
+        }
+
+        for (int i = 0; i < Count; i++)
+        {
+            Label[i] = Root(i);
+            Forget(_table!.Pair[Slot[i]], fishCount);
         }
 
         _clusters = 0;
@@ -125,6 +118,55 @@ internal sealed class FoundHits
 
             _order[j + 1] = label;
             _clusterTime[j + 1] = time;
+        }
+    }
+
+    // Links hit i with the first hit that mover m was seen in (the root is always the smallest index).
+    private void Join(int i, int mover)
+    {
+        EnsureMovers(mover);
+        int first = _firstHitOf[mover];
+        if (first < 0)
+        {
+            _firstHitOf[mover] = i;
+            return;
+        }
+
+        int a = Root(i), b = Root(first);
+        if (a != b)
+        {
+            Label[Math.Max(a, b)] = Math.Min(a, b);
+        }
+    }
+
+    private int Root(int i)
+    {
+        while (Label[i] != i)
+        {
+            Label[i] = Label[Label[i]];
+            i = Label[i];
+        }
+
+        return i;
+    }
+
+    private void Forget(in CandidatePair pair, int fishCount)
+    {
+        Movers(pair, fishCount, out int a, out int b);
+        _firstHitOf[a] = -1;
+        if (b >= 0)
+        {
+            _firstHitOf[b] = -1;
+        }
+    }
+
+    private void EnsureMovers(int mover)
+    {
+        if (mover >= _firstHitOf.Length)
+        {
+            int old = _firstHitOf.Length;
+            Array.Resize(ref _firstHitOf, Math.Max(mover + 1, old * 2));
+            Array.Fill(_firstHitOf, -1, old, _firstHitOf.Length - old);
         }
     }
 
