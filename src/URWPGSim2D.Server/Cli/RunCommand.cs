@@ -41,7 +41,7 @@ internal sealed class RunCommand : ICliCommand
 
         OutputFile.Check("--trace", options.Trace);
         OutputFile.Check("--svg", options.Svg);
-        OutputFile.Check("--results", options.Results);
+        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try

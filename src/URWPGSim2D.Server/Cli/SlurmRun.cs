@@ -103,7 +103,7 @@ internal static class SlurmRun
         if (process.ExitCode != 0)
         {
             string message = error.Result.Trim();
-            console.Error.WriteLine($"slurm: submitting failed (bash {ShellWord.Quote(script)} exited {process.ExitCode}){(message.Length > 0 ? ": " + message : string.Empty)}");
+            console.ErrorLine($"slurm: submitting failed (bash {ShellWord.Quote(script)} exited {process.ExitCode}){(message.Length > 0 ? ": " + message : string.Empty)}");
             return ExitCodes.InternalError;
         }
 
@@ -131,7 +131,7 @@ internal static class SlurmRun
 
     private static int Refuse(CliConsole console, string message)
     {
-        console.Error.WriteLine("run: " + message);
+        console.ErrorLine("run: " + message);
         return ExitCodes.BadInput;
     }
 }
