@@ -43,7 +43,7 @@ internal sealed class RunCommand : ICliCommand
         OutputFile.Check("--trace", options.Trace);
         OutputFile.Check("--html", options.Html);
         OutputFile.Check("--svg", options.Svg);
-        OutputFile.Check("--results", options.Results);
+        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try
@@ -198,5 +198,7 @@ internal sealed class RunCommand : ICliCommand
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
+        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
+        "--submit submits them; asked again, only the shards without results are played.\n" +
         "Formats: docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
 }
