@@ -51,7 +51,7 @@ internal sealed class IsolatedStrategyRunner
         error = null;
         if (_pending)
         {
-            if (!_done.Wait(0))
+            if (!_clock.AbandonedCallReturned(_done))
             {
                 return Outcome.TimedOut;
             }

@@ -14,6 +14,7 @@ internal sealed class ManualStrategyClock : StrategyClock
     private readonly ManualResetEventSlim _released = new(false);
     private long _usedTicks;
     private long _budgetTicks = long.MaxValue;
+    private volatile bool _hung;
 
     /// <summary>Charges time to the current call (call it from the strategy).</summary>
     /// <param name="time">Time the strategy "used".</param>
@@ -29,6 +30,7 @@ internal sealed class ManualStrategyClock : StrategyClock
     /// <summary>Makes the current call use unbounded time: blocks the strategy's thread until <see cref="Release"/>.</summary>
     public void Hang()
     {
+        _hung = true;
         Interlocked.Exchange(ref _usedTicks, long.MaxValue / 2);
         _overrun.Set();
         _released.Wait();
@@ -42,7 +44,21 @@ internal sealed class ManualStrategyClock : StrategyClock
     {
         Volatile.Write(ref _budgetTicks, budget.Ticks);
         Interlocked.Exchange(ref _usedTicks, 0);
+        _hung = false;
         _overrun.Reset();
+    }
+
+    /// <summary>A hung call is still busy; any other late call has all its time spent and returns: wait for it.</summary>
+    /// <param name="done">Released once when the abandoned call returns.</param>
+    public override bool AbandonedCallReturned(SemaphoreSlim done)
+    {
+        if (_hung && !_released.IsSet)
+        {
+            return done.Wait(0);
+        }
+
+        done.Wait();
+        return true;
     }
 
     /// <inheritdoc/>

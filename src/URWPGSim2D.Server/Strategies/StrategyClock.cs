@@ -17,6 +17,13 @@ internal abstract class StrategyClock
     {
     }
 
+    /// <summary>
+    /// On the host's thread, at the next call after a call that missed its deadline: true when that call
+    /// has returned by now (its answer is dropped and a new call may start), false while it is still busy.
+    /// </summary>
+    /// <param name="done">Released once when the abandoned call returns.</param>
+    public virtual bool AbandonedCallReturned(SemaphoreSlim done) => done.Wait(0);
+
     /// <summary>On the strategy's thread, just before the call.</summary>
     public abstract void CallStarting();
 

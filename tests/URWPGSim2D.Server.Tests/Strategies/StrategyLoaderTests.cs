@@ -51,7 +51,7 @@ public sealed class StrategyLoaderTests
 
         string empty = StrategyAssemblyBuilder.Build("Empty", "namespace Nothing { public sealed class Here { } }");
         var none = Assert.Throws<StrategyLoadException>(() => StrategyResolver.Load(empty));
-        Assert.EndsWith("Empty.dll has no public IStrategy class with a parameterless constructor", none.Message, System.StringComparison.Ordinal);
+        Assert.EndsWith("Empty.dll has no public strategy class (IStrategy of URWPGSim2D.Strategies or URWPGSim2D.StrategyLoader) with a parameterless constructor", none.Message, System.StringComparison.Ordinal);
 
         string notDll = Path.Combine(Path.GetTempPath(), $"urwpg-not-a-dll-{System.Guid.NewGuid():N}.dll");
         File.WriteAllText(notDll, "hello");
@@ -73,7 +73,7 @@ public sealed class StrategyLoaderTests
         string source = SprinterSource + "\nnamespace UserTeam { public sealed class Idle : URWPGSim2D.Strategies.IStrategy { public string TeamName => \"i\"; public void Decide(URWPGSim2D.Strategies.MatchSnapshot s, System.ReadOnlySpan<int> f, System.Span<URWPGSim2D.Strategies.Decision> d) { } } }";
         string dll = StrategyAssemblyBuilder.Build("Two", source);
         var e = Assert.Throws<StrategyLoadException>(() => StrategyResolver.Load(dll));
-        Assert.Contains("has several IStrategy classes (UserTeam.Idle, UserTeam.Sprinter): pick one with", e.Message, System.StringComparison.Ordinal);
+        Assert.Contains("has several strategy classes (UserTeam.Idle, UserTeam.Sprinter): pick one with", e.Message, System.StringComparison.Ordinal);
         Assert.Equal("i", StrategyResolver.Load(dll + "#UserTeam.Idle").TeamName);
     }
 }
