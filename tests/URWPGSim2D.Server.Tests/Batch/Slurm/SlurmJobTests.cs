@@ -63,6 +63,21 @@ public sealed class SlurmJobTests : IDisposable
     }
 
     [Fact]
+    public void WhereTheBatchWasAskedFromIsNotOnTheNodeTheTaskSaysSoAndRunsInTheFolder()
+    {
+        var job = Job(["--batch", "8"]) with { WorkingDirectory = Path.Combine(_root, "gone 'x'") };
+        string script = Write(SlurmJob.ShardScriptName, job.ShardScript());
+
+        var (code, _, stderr) = Bash.Run(script, "/", new() { ["RECORD"] = _record, ["SLURM_ARRAY_TASK_ID"] = "1" });
+
+        Assert.True(code == 0, stderr);
+        Assert.Equal(
+            $"shards.sbatch: {Path.Combine(_root, "gone 'x'")} (where the batch was asked from) is not on this node: running in {_folder}, where relative paths of the options are not found\n",
+            stderr);
+        Assert.Equal(_folder, Assert.Single(Bash.Records(_record))[0]);
+    }
+
+    [Fact]
     public void TheTaskScriptOutsideAJobArrayStopsWithoutStartingTheServer()
     {
         string script = Write(SlurmJob.ShardScriptName, Job(["--batch", "8"]).ShardScript());
