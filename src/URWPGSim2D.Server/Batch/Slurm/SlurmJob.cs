@@ -122,11 +122,11 @@ internal sealed partial record SlurmJob(
                 .Append(" --cpus-per-task=").Append(Cpus.ToString(CultureInfo.InvariantCulture)).Append(limits)
                 .Append(" --chdir=\"$folder\" --output=").Append(LogFolder).Append("/shard-%a.txt \"$folder/").Append(ShardScriptName).Append("\")\n");
             s.Append("array=${array%%;*}\n");
+            s.Append("echo \"array job $array: shards ").Append(array).Append(" of ").Append(shards)
+                .Append(", results in $folder/shard-I.jsonl, logs in $folder/").Append(LogFolder).Append("/shard-I.txt\"\n");
             s.Append("merge=$(sbatch --parsable --job-name=urwpg-merge --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes")
                 .Append(limits).Append(" --chdir=\"$folder\" --output=").Append(LogFolder).Append("/merge.txt \"$folder/").Append(MergeScriptName).Append("\")\n");
             s.Append("merge=${merge%%;*}\n");
-            s.Append("echo \"array job $array: shards ").Append(array).Append(" of ").Append(shards)
-                .Append(", results in $folder/shard-I.jsonl, logs in $folder/").Append(LogFolder).Append("/shard-I.txt\"\n");
             s.Append("echo \"merge job $merge: after array job $array succeeds, writes \"").Append(results).Append('\n');
         }
         else

@@ -137,10 +137,22 @@ public sealed class SlurmJobTests : IDisposable
     [Fact]
     public void ARefusedSubmissionStopsTheScript()
     {
-        var (code, _, _) = RunSubmit(Job(["--batch", "8"]), "exit 1\n");
+        var (code, stdout, _) = RunSubmit(Job(["--batch", "8"]), "exit 1\n");
 
         Assert.NotEqual(0, code);
         Assert.Single(Bash.Records(_record)); // the merge job is not submitted
+        Assert.Equal(string.Empty, stdout);
+    }
+
+    [Fact]
+    public void WhenOnlyTheMergeIsRefusedTheArrayJobIsStillReported()
+    {
+        var (code, stdout, _) = RunSubmit(Job(["--batch", "8"]), "[ -e \"$RECORD.n\" ] && exit 1\ntouch \"$RECORD.n\"\necho 41\n");
+
+        Assert.NotEqual(0, code);
+        Assert.Equal(2, Bash.Records(_record).Count);
+        Assert.StartsWith("array job 41: shards 0-3 of 4, ", stdout, StringComparison.Ordinal);
+        Assert.DoesNotContain("merge job", stdout, StringComparison.Ordinal);
     }
 
     [Theory]
