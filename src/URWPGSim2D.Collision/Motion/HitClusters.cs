@@ -1,13 +1,13 @@
 using System;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// The overlapping pairs one sample found, grouped into clusters that share no moving body (pairs
-/// linked through a fish or a ball are one cluster; static bodies and walls link nothing), each with
+/// linked through a moving body are one cluster; static bodies and walls link nothing), each with
 /// an estimated time of first contact. Buffers grow by doubling and are reused.
 /// </summary>
-internal sealed class FoundHits
+internal sealed class HitClusters
 {
     private int[] _order = new int[16];
     private double[] _clusterTime = new double[16];
@@ -61,7 +61,7 @@ internal sealed class FoundHits
     }
 
     /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>
-    public void Cluster(int fishCount)
+    public void Cluster()
     {
         // Union-find over the hits: each mover remembers the first hit it was seen in.
         for (int i = 0; i < Count; i++)
@@ -71,7 +71,7 @@ internal sealed class FoundHits
 
         for (int i = 0; i < Count; i++)
         {
-            Movers(_table!.Pair[Slot[i]], fishCount, out int a, out int b);
+            Movers(_table!.Pair[Slot[i]], out int a, out int b);
             Join(i, a);
             if (b >= 0)
             {
@@ -82,7 +82,7 @@ internal sealed class FoundHits
         for (int i = 0; i < Count; i++)
         {
             Label[i] = Root(i);
-            Forget(_table!.Pair[Slot[i]], fishCount);
+            Forget(_table!.Pair[Slot[i]]);
         }
 
         _clusters = 0;
@@ -150,9 +150,9 @@ internal sealed class FoundHits
         return i;
     }
 
-    private void Forget(in CandidatePair pair, int fishCount)
+    private void Forget(in PlannedPair pair)
     {
-        Movers(pair, fishCount, out int a, out int b);
+        Movers(pair, out int a, out int b);
         _firstHitOf[a] = -1;
         if (b >= 0)
         {
@@ -173,27 +173,6 @@ internal sealed class FoundHits
     /// <summary>The cluster labels, earliest estimated contact first.</summary>
     public ReadOnlySpan<int> ClustersByTime() => _order.AsSpan(0, _clusters);
 
-    // The moving bodies of a pair (b = −1 for a static body or a wall).
-    private static void Movers(in CandidatePair p, int fishCount, out int a, out int b)
-    {
-        switch (p.Kind)
-        {
-            case PairKind.FishFish:
-                (a, b) = (p.A, p.B);
-                break;
-            case PairKind.FishBall:
-                (a, b) = (p.A, fishCount + p.B);
-                break;
-            case PairKind.BallBall:
-                (a, b) = (fishCount + p.A, fishCount + p.B);
-                break;
-            case PairKind.FishStatic:
-            case PairKind.FishWall:
-                (a, b) = (p.A, -1);
-                break;
-            default:
-                (a, b) = (fishCount + p.A, -1);
-                break;
-        }
-    }
+    // The moving bodies of a pair (b = −1 for a static body or the walls).
+    private static void Movers(in PlannedPair p, out int a, out int b) => (a, b) = (p.MoverA, p.MoverB);
 }
