@@ -39,6 +39,9 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.Success;
         }
 
+        OutputFile.Check("--trace", options.Trace);
+        OutputFile.Check("--svg", options.Svg);
+        OutputFile.Check("--results", options.Results);
         ScenarioDefinition scenario;
         string scene;
         try
@@ -47,7 +50,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (ScenarioException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -58,7 +61,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (StrategyLoadException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
