@@ -77,11 +77,20 @@ internal sealed class RunCommand : ICliCommand
         var clock = Stopwatch.StartNew();
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            trace?.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
+            var lines = trace is null ? null : new TraceLine(match);
+            if (lines is not null)
+            {
+                trace!.WriteLine(lines.Write(ReadOnlySpan<ContactRecord>.Empty));
+            }
+
             for (int k = 0; k < cycles; k++)
             {
                 match.Step();
-                trace?.WriteCycle(match.World, match.Contacts.Cycle);
+                if (lines is not null)
+                {
+                    trace!.WriteLine(lines.Write(match.Contacts.Cycle));
+                }
+
                 progress?.Update(k + 1);
             }
 
