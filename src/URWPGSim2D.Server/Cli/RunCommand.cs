@@ -41,7 +41,7 @@ internal sealed class RunCommand : ICliCommand
 
         OutputFile.Check("--trace", options.Trace);
         OutputFile.Check("--svg", options.Svg);
-        OutputFile.Check("--results", options.Results);
+        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try
@@ -176,5 +176,7 @@ internal sealed class RunCommand : ICliCommand
         "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
+        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
+        "--submit submits them; asked again, only the shards without results are played.\n" +
         "Formats: docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
 }
