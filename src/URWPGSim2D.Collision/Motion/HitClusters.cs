@@ -33,8 +33,30 @@ internal sealed class HitClusters
     /// <summary>Cluster label of each hit (the smallest hit index of its cluster).</summary>
     public int[] Label { get; private set; } = new int[16];
 
+    /// <summary>Makes room for <paramref name="hits"/> hits of a sample among <paramref name="movers"/> movers.</summary>
+    public void Reserve(int hits, int movers)
+    {
+        Size(hits);
+        EnsureMovers(Math.Max(0, movers - 1));
+    }
+
     /// <summary>Copies the hits of a sample.</summary>
     public void Load(int[] slots, Hit[] values, int count, PairTable table)
+    {
+        Size(count);
+        Count = count;
+        for (int i = 0; i < count; i++)
+        {
+            Slot[i] = slots[i];
+            Generation[i] = table.Generation[slots[i]];
+            Value[i] = values[i];
+            Label[i] = i;
+        }
+
+        _table = table;
+    }
+
+    private void Size(int count)
     {
         if (Slot.Length < count)
         {
@@ -47,17 +69,6 @@ internal sealed class HitClusters
             _order = new int[size];
             _clusterTime = new double[size];
         }
-
-        Count = count;
-        for (int i = 0; i < count; i++)
-        {
-            Slot[i] = slots[i];
-            Generation[i] = table.Generation[slots[i]];
-            Value[i] = values[i];
-            Label[i] = i;
-        }
-
-        _table = table;
     }
 
     /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>

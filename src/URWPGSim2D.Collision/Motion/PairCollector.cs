@@ -13,6 +13,15 @@ internal sealed class PairCollector : IPairSink
     /// <summary>The pairs, in the order found.</summary>
     public ReadOnlySpan<PlannedPair> Pairs => _pairs.AsSpan(0, Count);
 
+    /// <summary>Makes room for at least <paramref name="pairs"/> pairs.</summary>
+    public void Reserve(int pairs)
+    {
+        if (_pairs.Length < pairs)
+        {
+            Array.Resize(ref _pairs, pairs);
+        }
+    }
+
     /// <summary>Empties the list.</summary>
     public void Clear() => Count = 0;
 

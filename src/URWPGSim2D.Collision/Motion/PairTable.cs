@@ -152,25 +152,44 @@ internal sealed class PairTable
         }
     }
 
+    /// <summary>Makes room for at least <paramref name="slots"/> pairs (so a step does not grow the storage).</summary>
+    public void Reserve(int slots)
+    {
+        while (Pair.Length < slots)
+        {
+            GrowStorage();
+        }
+
+        if (_free.Length < slots)
+        {
+            Array.Resize(ref _free, slots);
+        }
+    }
+
     private int Grow()
     {
         if (_used == Pair.Length)
         {
-            int size = Pair.Length * 2;
-            Pair = Resized(Pair, size);
-            Rate = Resized(Rate, size);
-            Interval = Resized(Interval, size);
-            LastFree = Resized(LastFree, size);
-            ApartAtLastFree = Resized(ApartAtLastFree, size);
-            Generation = Resized(Generation, size);
-            Alive = Resized(Alive, size);
-            _moverA = Resized(_moverA, size);
-            _moverB = Resized(_moverB, size);
-            _edgeNext = Resized(_edgeNext, 2 * size);
-            _edgePrev = Resized(_edgePrev, 2 * size);
+            GrowStorage();
         }
 
         return _used++;
+    }
+
+    private void GrowStorage()
+    {
+        int size = Pair.Length * 2;
+        Pair = Resized(Pair, size);
+        Rate = Resized(Rate, size);
+        Interval = Resized(Interval, size);
+        LastFree = Resized(LastFree, size);
+        ApartAtLastFree = Resized(ApartAtLastFree, size);
+        Generation = Resized(Generation, size);
+        Alive = Resized(Alive, size);
+        _moverA = Resized(_moverA, size);
+        _moverB = Resized(_moverB, size);
+        _edgeNext = Resized(_edgeNext, 2 * size);
+        _edgePrev = Resized(_edgePrev, 2 * size);
     }
 
     private static T[] Resized<T>(T[] array, int size)

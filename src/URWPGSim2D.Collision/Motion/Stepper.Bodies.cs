@@ -310,6 +310,17 @@ public sealed partial class Stepper
 
         _planner.Load([.. movers], [.. statics], walls);
         _table.Resize(movers.Count);
+
+        // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
+        int m = movers.Count;
+        _table.Reserve((8 * m) + 64);
+        _queue.Reserve((32 * m) + 1024);
+        _due = new int[(8 * m) + 256];
+        _hitSlots = new int[(2 * m) + 64];
+        _hitValues = new Hit[(2 * m) + 64];
+        _pending = new int[(2 * m) + 16];
+        _clusters.Reserve((2 * m) + 64, m);
+        _collector.Reserve((8 * m) + 256);
         _involved = new BodySet(movers.Count);
         _touched = new BodySet(movers.Count);
         _changed = new BodySet(movers.Count);

@@ -19,7 +19,8 @@ public sealed partial class Stepper
     private int TakeDue(double time)
     {
         _dueCount = 0;
-        for (int node = _queue.Take(time); node >= 0; node = _queue.Next(node))
+        int first = _queue.Take(time);
+        for (int node = first; node >= 0; node = _queue.Next(node))
         {
             int slot = _queue.SlotOf(node);
             if (_table.Alive[slot] && _table.Generation[slot] == _queue.GenerationOf(node))
@@ -33,6 +34,7 @@ public sealed partial class Stepper
             }
         }
 
+        _queue.Recycle(first);
         return _dueCount;
     }
 

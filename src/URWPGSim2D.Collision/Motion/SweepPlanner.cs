@@ -30,8 +30,8 @@ internal sealed class SweepPlanner
     private float[] _rate = [];
     private Vector2[] _center = [];
     private float[] _radius = [];
-    private readonly PairList _found = new(256);
-    private readonly IndexList _near = new(64);
+    private PairList _found = new(256);
+    private IndexList _near = new(64);
 
     public SweepPlanner(IBroadPhase broadPhase) => _broad = broadPhase;
 
@@ -61,6 +61,10 @@ internal sealed class SweepPlanner
         {
             _boxes[m + s] = statics[s].Bounds;
         }
+
+        // Room for a busy step up front (pairs of the whole world, neighbours of one body).
+        _found = new PairList((8 * m) + 256);
+        _near = new IndexList(256);
     }
 
     /// <summary>

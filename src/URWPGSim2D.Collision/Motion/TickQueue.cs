@@ -27,6 +27,7 @@ internal sealed class TickQueue
     private int[] _generation = new int[256];
     private int[] _next = new int[256];
     private int _count;
+    private int _freeNodes = None;
     private int _lowest = Ticks + 1;
 
     public TickQueue()
@@ -51,21 +52,42 @@ internal sealed class TickQueue
         }
 
         _count = 0;
+        _freeNodes = None;
         _lowest = Ticks + 1;
+    }
+
+    /// <summary>Makes room for at least <paramref name="entries"/> entries per step.</summary>
+    public void Reserve(int entries)
+    {
+        if (_slot.Length < entries)
+        {
+            Array.Resize(ref _slot, entries);
+            Array.Resize(ref _generation, entries);
+            Array.Resize(ref _next, entries);
+        }
     }
 
     /// <summary>Schedules slot <paramref name="slot"/> (of generation <paramref name="generation"/>) at grid time <paramref name="time"/> (a multiple of 1 / <see cref="Ticks"/> in (0, 1]).</summary>
     public void Push(double time, int slot, int generation)
     {
         int tick = (int)(time * Ticks);
-        if (_count == _slot.Length)
+        int node = _freeNodes;
+        if (node != None)
         {
-            Array.Resize(ref _slot, _count * 2);
-            Array.Resize(ref _generation, _count * 2);
-            Array.Resize(ref _next, _count * 2);
+            _freeNodes = _next[node];
+        }
+        else
+        {
+            if (_count == _slot.Length)
+            {
+                Array.Resize(ref _slot, _count * 2);
+                Array.Resize(ref _generation, _count * 2);
+                Array.Resize(ref _next, _count * 2);
+            }
+
+            node = _count++;
         }
 
-        int node = _count++;
         _slot[node] = slot;
         _generation[node] = generation;
         _next[node] = None;
@@ -120,6 +142,18 @@ internal sealed class TickQueue
         _head[tick] = None;
         _occupied[tick >> 6] &= ~(1UL << (tick & 63));
         return first;
+    }
+
+    /// <summary>Gives the nodes of a taken chain (from <see cref="Take(double)"/>) back for reuse, once they have been read.</summary>
+    public void Recycle(int first)
+    {
+        while (first != None)
+        {
+            int next = _next[first];
+            _next[first] = _freeNodes;
+            _freeNodes = first;
+            first = next;
+        }
     }
 
     /// <summary>The slot of a node.</summary>

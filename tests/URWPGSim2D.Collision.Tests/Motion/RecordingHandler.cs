@@ -50,5 +50,11 @@ internal sealed class RecordingHandler(float restitution = 0f) : IContactHandler
         }
     }
 
-    public void OnMoveRejected(Stepper stepper, int body) => Rejected.Add(body);
+    public void OnMoveRejected(Stepper stepper, int body)
+    {
+        if (Record)
+        {
+            Rejected.Add(body);
+        }
+    }
 }
