@@ -88,7 +88,7 @@ internal static class MatchBuilder
                     }
                 }
 
-                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, members.ToArray(), team.Isolated));
+                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, members.ToArray(), team.Isolated, team.Clock));
             }
         }
 
