@@ -159,7 +159,16 @@ internal sealed class RunCommand : ICliCommand
     {
         try
         {
-            return path == "-" ? console.In.ReadToEnd() : File.ReadAllText(path);
+            if (path != "-" && new FileInfo(path).Length is var length && length > InputLimits.InputBytes)
+            {
+                throw new ScenarioException(path, InputLimits.TooLarge(length));
+            }
+
+            return path == "-" ? InputText.ReadLimited(console.In, path) : File.ReadAllText(path);
+        }
+        catch (CliInputException e)
+        {
+            throw new ScenarioException(path, e.Message);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
