@@ -24,10 +24,10 @@ internal static class InputText
 
         try
         {
-            long length = new FileInfo(file).Length;
-            if (length > InputLimits.InputBytes)
+            var info = new FileInfo(file);
+            if (info.Exists && info.Length > InputLimits.InputBytes)
             {
-                throw new CliInputException(file, InputLimits.TooLarge(length));
+                throw new CliInputException(file, InputLimits.TooLarge(info.Length));
             }
 
             return File.ReadAllText(file);

@@ -179,9 +179,9 @@ internal sealed class RunCommand : ICliCommand
     {
         try
         {
-            if (path != "-" && new FileInfo(path).Length is var length && length > InputLimits.InputBytes)
+            if (path != "-" && new FileInfo(path) is { Exists: true, Length: > InputLimits.InputBytes } info)
             {
-                throw new ScenarioException(path, InputLimits.TooLarge(length));
+                throw new ScenarioException(path, InputLimits.TooLarge(info.Length));
             }
 
             return path == "-" ? InputText.ReadLimited(console.In, path) : File.ReadAllText(path);
