@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// <summary>
 /// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
 /// read-only snapshot of the last cycle → fish locomotion → ball locomotion → motion with collision
-/// detection and response (<see cref="Stepper"/>) → rules (goals). Everything iterates by index;
+/// detection and response (<see cref="CycleMotion"/>) → rules (goals). Everything iterates by index;
 /// the noise generators are seeded, so the same scenario and seed replay the same match. After the
 /// first cycles a step allocates nothing (built-in strategies).
 /// </summary>
@@ -28,7 +28,7 @@ internal sealed class Match
         World = world;
         Strategies = strategies;
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
-        Stepper = new Stepper(world, Contacts, broadPhase);
+        Stepper = new CycleMotion(world, Contacts, broadPhase);
         if (noise)
         {
             _motionNoise = new SeededRandom(seed);
@@ -49,7 +49,7 @@ internal sealed class Match
     public ContactLog Contacts { get; } = new();
 
     /// <summary>Motion interpolation and contact handling.</summary>
-    public Stepper Stepper { get; }
+    public CycleMotion Stepper { get; }
 
     /// <summary>Every goal so far.</summary>
     public List<GoalEvent> Goals { get; } = new(64);
