@@ -12,7 +12,7 @@ public sealed class StrategyLoaderTests
 {
     internal const string SprinterSource = """
         using System;
-        using URWPGSim2D.Server.Strategies;
+        using URWPGSim2D.Strategies;
         namespace UserTeam
         {
             public sealed class Sprinter : IStrategy
@@ -70,7 +70,7 @@ public sealed class StrategyLoaderTests
     [Fact]
     public void SeveralStrategiesNeedATypeName()
     {
-        string source = SprinterSource + "\nnamespace UserTeam { public sealed class Idle : URWPGSim2D.Server.Strategies.IStrategy { public string TeamName => \"i\"; public void Decide(URWPGSim2D.Server.Strategies.MatchSnapshot s, System.ReadOnlySpan<int> f, System.Span<URWPGSim2D.Server.Strategies.Decision> d) { } } }";
+        string source = SprinterSource + "\nnamespace UserTeam { public sealed class Idle : URWPGSim2D.Strategies.IStrategy { public string TeamName => \"i\"; public void Decide(URWPGSim2D.Strategies.MatchSnapshot s, System.ReadOnlySpan<int> f, System.Span<URWPGSim2D.Strategies.Decision> d) { } } }";
         string dll = StrategyAssemblyBuilder.Build("Two", source);
         var e = Assert.Throws<StrategyLoadException>(() => StrategyLoader.Load(dll));
         Assert.Contains("has several IStrategy classes (UserTeam.Idle, UserTeam.Sprinter): pick one with", e.Message, System.StringComparison.Ordinal);
