@@ -67,7 +67,7 @@ internal static class RescueLayout
         var fish = new List<FishDefinition>(4);
         foreach (var (position, heading) in Poses(rescuer: 0))
         {
-            fish.Add(new FishDefinition(fish.Count < 2 ? 0 : 1, position, heading, "idle", Decision.Stop));
+            fish.Add(new FishDefinition(fish.Count < 2 ? 0 : 1, position, heading, "demo", Decision.Stop));
         }
 
         var obstacles = new List<ObstacleDefinition>(Walls.Length);
