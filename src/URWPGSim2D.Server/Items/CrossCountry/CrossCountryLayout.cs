@@ -74,7 +74,7 @@ internal static class CrossCountryLayout
             FieldLength = FieldLength,
             FieldWidth = FieldWidth,
             GoalBlocks = false,
-            Fish = [new FishDefinition(0, FishStart, System.MathF.PI, "idle", Decision.Stop)],
+            Fish = [new FishDefinition(0, FishStart, System.MathF.PI, "demo", Decision.Stop)],
             Balls = [new BallDefinition(Balls[0], Vector2.Zero, BallRadius), new BallDefinition(Balls[1], Vector2.Zero, BallRadius)],
             Obstacles = obstacles,
         };

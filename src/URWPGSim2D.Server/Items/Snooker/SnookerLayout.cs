@@ -140,7 +140,7 @@ internal static class SnookerLayout
             FieldLength = FieldLength,
             FieldWidth = FieldWidth,
             GoalBlocks = false,
-            Fish = [new FishDefinition(0, FishStart, 0f, "idle", Decision.Stop)],
+            Fish = [new FishDefinition(0, FishStart, 0f, "demo", Decision.Stop)],
             Balls = balls,
             Obstacles = cushions,
         };
