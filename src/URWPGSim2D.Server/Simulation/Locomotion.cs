@@ -22,6 +22,12 @@ internal static class Locomotion
         foreach (var f in world.Fish)
         {
             f.BeginCycle();
+            if (f.OutOfPlay)
+            {
+                Still(f);
+                continue;
+            }
+
             var d = f.Decision;
             f.Speed.Advance(SpeedTable.TargetSpeed(d.VCode));
             if (f.Speed.Value < PhysicsConstants.MinimumTurningSpeed)
@@ -59,6 +65,17 @@ internal static class Locomotion
                 b.NoiseVelocity = new Vector2(noise.NextSigned(), noise.NextSigned()) / dt;
             }
         }
+    }
+
+    // A fish out of play (parked by an item) holds still: no propulsion, no noise.
+    private static void Still(FishState f)
+    {
+        f.Speed.Reset(0f);
+        f.Turn.Reset(0f);
+        f.Velocity = Vector2.Zero;
+        f.AngularVelocity = 0f;
+        f.NoiseVelocity = Vector2.Zero;
+        f.NoiseAngularVelocity = 0f;
     }
 
     /// <summary>

@@ -22,10 +22,15 @@ internal sealed class TraceWriter : IDisposable
     private readonly string _temporary;
     private readonly FileStream _stream;
     private readonly Utf8JsonWriter _json;
+    private readonly ITraceItemInfo? _item;
     private bool _completed;
 
-    public TraceWriter(string path)
+    /// <summary>Opens the trace (as FILE.partial).</summary>
+    /// <param name="path">The trace file.</param>
+    /// <param name="item">The item's score, events and layout additions, or null for the plain lines.</param>
+    public TraceWriter(string path, ITraceItemInfo? item = null)
     {
+        _item = item;
         _path = Path.GetFullPath(path);
         _temporary = _path + ".partial";
         _stream = new FileStream(_temporary, FileMode.Create, FileAccess.Write, FileShare.None, 1 << 16);
@@ -80,6 +85,11 @@ internal sealed class TraceWriter : IDisposable
         }
 
         w.WriteEndArray();
+        if (_item is not null)
+        {
+            TraceItemLines.Write(w, world, _item);
+        }
+
         w.WriteEndObject();
         w.Flush();
         _stream.Write(NewLine);
