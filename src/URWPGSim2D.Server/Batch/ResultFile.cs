@@ -169,6 +169,11 @@ internal static class ResultFile
         ulong seed = Field(e, "seed").GetUInt64();
         int cycles = Field(e, "cycles").GetInt32();
         var goals = Field(e, "goals");
+        if (goals.ValueKind != JsonValueKind.Array || goals.GetArrayLength() != 2)
+        {
+            throw new ResultFileException($"\"goals\" must be an array of 2 counts (one per team), got {Short(goals.GetRawText())}");
+        }
+
         int goals0 = goals[0].GetInt32(), goals1 = goals[1].GetInt32();
         var contacts = Field(e, "contacts");
         var counts = new long[MatchResult.ContactNames.Length];
@@ -198,6 +203,8 @@ internal static class ResultFile
 
         return result;
     }
+
+    private static string Short(string raw) => raw.Length <= 40 ? raw : raw[..37] + "...";
 
     private static JsonElement Field(JsonElement e, string name) =>
         e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var value) ? value : throw new ResultFileException($"missing field \"{name}\"");

@@ -21,7 +21,7 @@ internal static class BatchRun
         ulong first = options.Seed ?? scenario.Seed;
         if (first > long.MaxValue - (ulong)matches)
         {
-            console.Error.WriteLine($"run: --batch {matches} from seed {first} would need seeds beyond {long.MaxValue}");
+            console.ErrorLine($"run: --batch {matches} from seed {first} would need seeds beyond {long.MaxValue}");
             return ExitCodes.BadInput;
         }
 
@@ -75,7 +75,7 @@ internal static class BatchRun
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
-            console.Error.WriteLine($"--results: cannot write {path} ({e.Message})");
+            console.ErrorLine($"--results: cannot write {path} ({e.Message})");
             return false;
         }
     }

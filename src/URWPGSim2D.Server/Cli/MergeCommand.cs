@@ -71,7 +71,7 @@ internal sealed class MergeCommand : ICliCommand
         }
         catch (ResultFileException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -83,7 +83,7 @@ internal sealed class MergeCommand : ICliCommand
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
             {
-                console.Error.WriteLine($"--out: cannot write {output} ({e.Message})");
+                console.ErrorLine($"--out: cannot write {output} ({e.Message})");
                 return ExitCodes.BadInput;
             }
         }

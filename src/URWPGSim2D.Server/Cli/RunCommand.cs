@@ -49,6 +49,9 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.Success;
         }
 
+        OutputFile.Check("--trace", options.Trace);
+        OutputFile.Check("--svg", options.Svg);
+        OutputFile.Check("--results", options.Results);
         ScenarioDefinition scenario;
         string scene;
         try
@@ -57,7 +60,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (ScenarioException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -68,7 +71,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (StrategyLoadException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 

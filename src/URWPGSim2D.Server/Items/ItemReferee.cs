@@ -113,7 +113,7 @@ internal abstract class ItemReferee : ITraceItemInfo
         {
             if (f.OutOfPlay)
             {
-                f.Decision = Strategies.Decision.Stop;
+                f.Decision = URWPGSim2D.Strategies.Decision.Stop;
             }
         }
     }

@@ -1,5 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Simulation.Kinematics;
 
 namespace URWPGSim2D.Server.Items;
 
@@ -39,13 +40,13 @@ internal static class Placement
         f.Heading = Angles.Wrap(heading);
         f.BasePosition = f.Position;
         f.BaseHeading = f.Heading;
-        f.Speed.Reset(0f);
-        f.Turn.Reset(0f);
+        f.Speed.Reset(0f, SpeedTable.Speeds);
+        f.Turn.Reset(0f, TurnTable.Rates);
         f.Velocity = Vector2.Zero;
         f.AngularVelocity = 0f;
         f.NoiseVelocity = Vector2.Zero;
         f.NoiseAngularVelocity = 0f;
-        f.Decision = Strategies.Decision.Stop;
+        f.Decision = URWPGSim2D.Strategies.Decision.Stop;
         f.Invalidate();
     }
 }

@@ -18,7 +18,7 @@ internal sealed class StrategyLoadContext(string assemblyPath) : AssemblyLoadCon
     protected override Assembly? Load(AssemblyName assemblyName)
     {
         string? name = assemblyName.Name;
-        if (name == typeof(IStrategy).Assembly.GetName().Name || name == "URWPGSim2D.Collision")
+        if (name == typeof(IStrategy).Assembly.GetName().Name || name == typeof(StrategyLoadContext).Assembly.GetName().Name || name == "URWPGSim2D.Collision")
         {
             return null;
         }

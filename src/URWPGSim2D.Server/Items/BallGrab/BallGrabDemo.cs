@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
 
 namespace URWPGSim2D.Server.Items.BallGrab;

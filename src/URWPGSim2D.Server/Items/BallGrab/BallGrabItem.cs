@@ -3,7 +3,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
 
 namespace URWPGSim2D.Server.Items.BallGrab;

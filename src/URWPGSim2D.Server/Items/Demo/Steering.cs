@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation.Kinematics;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Server.Items.Demo;
 

@@ -1,5 +1,5 @@
 using System.Numerics;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Server.Items.Demo;
 

@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>
 /// A team's brain, the shape URWPGSim2D teams know: a team name and, every cycle, one

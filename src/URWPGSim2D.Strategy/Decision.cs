@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>
 /// One fish's command for the next cycle: a speed gear and a turn gear, each 0..15

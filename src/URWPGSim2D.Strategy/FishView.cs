@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>What a strategy sees of one fish (mm, rad, X = world X, Y = world Z).</summary>
 /// <param name="Index">Fish index in the match (the trace's fishN).</param>

@@ -1,6 +1,6 @@
 using System.Numerics;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>What a strategy sees of one ball (mm, mm/s; X = world X, Y = world Z).</summary>
 /// <param name="Index">Ball index (the trace's ballN).</param>

@@ -1,4 +1,4 @@
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>The two obstacle shapes of the original.</summary>
 public enum ObstacleKind

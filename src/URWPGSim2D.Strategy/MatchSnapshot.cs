@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>
 /// The read-only picture of the match that strategies decide from: the state at the end of the

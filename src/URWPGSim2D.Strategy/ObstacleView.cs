@@ -1,7 +1,6 @@
 using System.Numerics;
-using URWPGSim2D.Server.Simulation;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Strategies;
 
 /// <summary>What a strategy sees of one obstacle (mm, rad; X = world X, Y = world Z).</summary>
 /// <param name="Index">Obstacle index (the trace's obstacleN).</param>
