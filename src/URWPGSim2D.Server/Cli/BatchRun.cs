@@ -25,16 +25,21 @@ internal static class BatchRun
             return ExitCodes.BadInput;
         }
 
+        int cycles = options.CyclesFor(scenario);
+        var header = new BatchHeader(
+            scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
+            matches, cycles, options.ShardIndex, options.ShardCount);
+        if (options.Slurm is not null)
+        {
+            return SlurmRun.Run(options, header, console);
+        }
+
         if (options.Results is { } path && !CanWrite(path + ".partial", console))
         {
             return ExitCodes.BadInput;
         }
 
-        int cycles = options.CyclesFor(scenario);
         int threads = options.Threads ?? Environment.ProcessorCount;
-        var header = new BatchHeader(
-            scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
-            matches, cycles, options.ShardIndex, options.ShardCount);
 
         var clock = Stopwatch.StartNew();
         MatchResult[] results;

@@ -51,7 +51,7 @@ internal sealed class RunCommand : ICliCommand
 
         OutputFile.Check("--trace", options.Trace);
         OutputFile.Check("--svg", options.Svg);
-        OutputFile.Check("--results", options.Results);
+        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try
@@ -85,13 +85,22 @@ internal sealed class RunCommand : ICliCommand
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
         var clock = Stopwatch.StartNew();
-        using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace, (ITraceItemInfo?)match.Referee ?? new DefaultTraceInfo(match)))
+        using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            trace?.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
+            var lines = trace is null ? null : new TraceLine(match);
+            if (lines is not null)
+            {
+                trace!.WriteLine(lines.Write(ReadOnlySpan<ContactRecord>.Empty));
+            }
+
             for (int k = 0; k < cycles && !match.IsOver; k++)
             {
                 match.Step();
-                trace?.WriteCycle(match.World, match.Contacts.Cycle);
+                if (lines is not null)
+                {
+                    trace!.WriteLine(lines.Write(match.Contacts.Cycle));
+                }
+
                 progress?.Update(k + 1);
             }
 
@@ -185,5 +194,7 @@ internal sealed class RunCommand : ICliCommand
         "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
+        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
+        "--submit submits them; asked again, only the shards without results are played.\n" +
         "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
 }

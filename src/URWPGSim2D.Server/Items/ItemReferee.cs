@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
-using System.Runtime.InteropServices;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Trace;
@@ -21,7 +20,7 @@ namespace URWPGSim2D.Server.Items;
 internal abstract class ItemReferee : ITraceItemInfo
 {
     private readonly List<ItemEvent> _events = new(32);
-    private int _cycleEventsStart;
+    private int _traced;
     private MatchOutcome _outcome;
 
     /// <summary>Creates the referee.</summary>
@@ -79,16 +78,10 @@ internal abstract class ItemReferee : ITraceItemInfo
     public MatchOutcome Outcome => IsOver ? _outcome : Decide();
 
     /// <inheritdoc/>
-    public string ItemSlug => Item.Slug;
+    string ITraceItemInfo.Slug => Item.Slug;
 
     /// <inheritdoc/>
-    public IReadOnlyList<ItemZone> Zones => Scenario.Zones;
-
-    /// <inheritdoc/>
-    public ReadOnlySpan<int> TeamScores => Scores;
-
-    /// <inheritdoc/>
-    public ReadOnlySpan<ItemEvent> CycleEvents => CollectionsMarshal.AsSpan(_events)[_cycleEventsStart..];
+    IReadOnlyList<TraceZone> ITraceItemInfo.Zones => Scenario.Zones;
 
     /// <summary>Set by an item when its match is decided before the time is up (e.g. all balls in).</summary>
     protected bool MatchDone { get; set; }
@@ -96,8 +89,27 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <summary>Whether the current half is over before its time (e.g. three catches).</summary>
     protected virtual bool HalfDone => false;
 
-    /// <inheritdoc/>
+    /// <summary>The points of a ball in this item, or NaN when balls have no value.</summary>
     public double BallValue(int ball) => ball < Scenario.BallValues.Count ? Scenario.BallValues[ball] : double.NaN;
+
+    /// <inheritdoc/>
+    double? ITraceItemInfo.BallValue(int ball) => ball < Scenario.BallValues.Count ? Scenario.BallValues[ball] : null;
+
+    /// <inheritdoc/>
+    double ITraceItemInfo.Score(int team) => team < Scores.Length ? Scores[team] : 0;
+
+    /// <inheritdoc/>
+    void ITraceItemInfo.AddEvents(int cycle, List<TraceEvent> events)
+    {
+        for (; _traced < _events.Count && _events[_traced].Cycle <= cycle; _traced++)
+        {
+            var e = _events[_traced];
+            if (e.Cycle == cycle)
+            {
+                events.Add(new TraceEvent(e.Kind, e.Text, e.Team >= 0 ? e.Team : null, e.Fish >= 0 ? e.Fish : null, e.Ball >= 0 ? e.Ball : null, double.IsNaN(e.Value) ? null : e.Value));
+            }
+        }
+    }
 
     /// <summary>Prepares the bodies for cycle 1 (parks frozen fish) and fills <see cref="Variables"/>.</summary>
     public void Start(World world)
@@ -121,7 +133,6 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <summary>Applies the rules after a cycle's motion; returns true when bodies were moved by the rules (overlaps must be settled).</summary>
     public bool Judge(World world, ReadOnlySpan<ContactRecord> contacts)
     {
-        _cycleEventsStart = _events.Count;
         if (IsOver)
         {
             return false;

@@ -45,7 +45,7 @@ internal sealed record ScenarioDefinition
     public bool FishOverridden { get; init; }
 
     /// <summary>The item's marked regions (goal boxes, holes, parking places).</summary>
-    public IReadOnlyList<Items.ItemZone> Zones { get; init; } = [];
+    public IReadOnlyList<Trace.TraceZone> Zones { get; init; } = [];
 }
 
 /// <summary>A fish of a scenario.</summary>

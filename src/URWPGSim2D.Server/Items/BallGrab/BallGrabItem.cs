@@ -3,6 +3,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Trace;
 using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
 
@@ -61,10 +62,10 @@ internal sealed class BallGrabItem : CompetitionItem
             Rectangle(-BackX, 0, BackLength, BackWidth),
             Rectangle(BackX, 0, BackLength, BackWidth),
         };
-        var zones = new List<ItemZone>
+        var zones = new List<TraceZone>
         {
-            ItemZone.Box("goal-box", 0, 0, new Vector2(-BoxOuterX, -BoxHalfWidth), new Vector2(-BoxInnerX, BoxHalfWidth)),
-            ItemZone.Box("goal-box", 1, 1, new Vector2(BoxInnerX, -BoxHalfWidth), new Vector2(BoxOuterX, BoxHalfWidth)),
+            TraceZone.Box("goal-box", 0, new Vector2(-BoxOuterX, -BoxHalfWidth), new Vector2(-BoxInnerX, BoxHalfWidth), team: 0),
+            TraceZone.Box("goal-box", 1, new Vector2(BoxInnerX, -BoxHalfWidth), new Vector2(BoxOuterX, BoxHalfWidth), team: 1),
         };
         return new ScenarioDefinition
         {
