@@ -43,13 +43,13 @@ internal static class MatchSummary
         bool any = false;
         foreach (var slot in match.Strategies.Slots)
         {
-            if (slot.Exceptions + slot.Timeouts == 0)
+            if (slot.Faults == 0)
             {
                 continue;
             }
 
             any = true;
-            s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts; its fish kept their last decisions; first: {slot.FirstFault}");
+            s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts, {slot.BadAnswers} bad answers; its fish kept their last decisions; first: {slot.FirstFault}");
         }
 
         s.Append(any ? "\n" : " none\n");

@@ -134,7 +134,7 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
-                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyLoader.Load(spec), Isolated: true);
+                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyResolver.Load(spec), Isolated: true);
                 }
                 catch (StrategyLoadException e)
                 {

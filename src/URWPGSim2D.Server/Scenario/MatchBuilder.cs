@@ -96,7 +96,7 @@ internal static class MatchBuilder
             else if (!teamDone[d.Team])
             {
                 teamDone[d.Team] = true;
-                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, Members(scenario, d.Team, null), team.Isolated));
+                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, Members(scenario, d.Team, null), team.Isolated, team.Clock));
             }
         }
 

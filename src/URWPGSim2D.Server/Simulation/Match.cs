@@ -110,7 +110,11 @@ internal sealed class Match
                 heading = Angles.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
             }
 
-            fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision);
+            fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)
+            {
+                Width = f.Size.Width, Joint1 = f.Joint1, Joint2 = f.Joint2, Joint3 = f.Joint3,
+                TailLength1 = f.Size.Joint1, TailLength2 = f.Size.Joint2, TailLength3 = f.Size.Joint3,
+            };
         }
 
         var balls = Snapshot.BallBuffer;
