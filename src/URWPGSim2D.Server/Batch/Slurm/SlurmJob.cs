@@ -14,7 +14,8 @@ namespace URWPGSim2D.Server.Batch.Slurm;
 /// still to play, then the merge job with <c>--dependency=afterok</c> on the array). Every path in
 /// them is absolute and every word shell-quoted, so they run from any working directory; the tasks
 /// <c>cd</c> to the directory the batch was asked from, so relative paths among the passed-on
-/// options (a scenario, a strategy) mean what they meant there.
+/// options (a scenario, a strategy) mean what they meant there (when that directory is not on the
+/// node, a task says so in its log and runs in the batch's folder).
 /// </summary>
 /// <param name="Server">The command words that start the server (<see cref="ServerCommand"/>).</param>
 /// <param name="RunArguments">The options of <c>run</c> every task passes on (the batch, its scene, cycles, seed, noise, strategies…).</param>
@@ -72,7 +73,9 @@ internal sealed partial record SlurmJob(
             "Submitted by submit.sh, next to this file.");
         s.Append("shard=${SLURM_ARRAY_TASK_ID:?not a task of a Slurm job array: submit with submit.sh}\n");
         s.Append("folder=").Append(ShellWord.Quote(Folder)).Append('\n');
-        s.Append("cd -- ").Append(ShellWord.Quote(WorkingDirectory)).Append('\n');
+        string asked = ShellWord.Quote(WorkingDirectory);
+        s.Append("cd -- ").Append(asked).Append(" 2>/dev/null || { echo \"shards.sbatch: \"").Append(asked)
+            .Append("\" (where the batch was asked from) is not on this node: running in $folder, where relative paths of the options are not found\" >&2; cd -- \"$folder\"; }\n");
         s.Append("exec");
         Words(s, Server);
         s.Append(" run");
@@ -119,11 +122,11 @@ internal sealed partial record SlurmJob(
                 .Append(" --cpus-per-task=").Append(Cpus.ToString(CultureInfo.InvariantCulture)).Append(limits)
                 .Append(" --chdir=\"$folder\" --output=").Append(LogFolder).Append("/shard-%a.txt \"$folder/").Append(ShardScriptName).Append("\")\n");
             s.Append("array=${array%%;*}\n");
+            s.Append("echo \"array job $array: shards ").Append(array).Append(" of ").Append(shards)
+                .Append(", results in $folder/shard-I.jsonl, logs in $folder/").Append(LogFolder).Append("/shard-I.txt\"\n");
             s.Append("merge=$(sbatch --parsable --job-name=urwpg-merge --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes")
                 .Append(limits).Append(" --chdir=\"$folder\" --output=").Append(LogFolder).Append("/merge.txt \"$folder/").Append(MergeScriptName).Append("\")\n");
             s.Append("merge=${merge%%;*}\n");
-            s.Append("echo \"array job $array: shards ").Append(array).Append(" of ").Append(shards)
-                .Append(", results in $folder/shard-I.jsonl, logs in $folder/").Append(LogFolder).Append("/shard-I.txt\"\n");
             s.Append("echo \"merge job $merge: after array job $array succeeds, writes \"").Append(results).Append('\n');
         }
         else

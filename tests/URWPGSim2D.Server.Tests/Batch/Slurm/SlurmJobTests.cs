@@ -63,6 +63,21 @@ public sealed class SlurmJobTests : IDisposable
     }
 
     [Fact]
+    public void WhereTheBatchWasAskedFromIsNotOnTheNodeTheTaskSaysSoAndRunsInTheFolder()
+    {
+        var job = Job(["--batch", "8"]) with { WorkingDirectory = Path.Combine(_root, "gone 'x'") };
+        string script = Write(SlurmJob.ShardScriptName, job.ShardScript());
+
+        var (code, _, stderr) = Bash.Run(script, "/", new() { ["RECORD"] = _record, ["SLURM_ARRAY_TASK_ID"] = "1" });
+
+        Assert.True(code == 0, stderr);
+        Assert.Equal(
+            $"shards.sbatch: {Path.Combine(_root, "gone 'x'")} (where the batch was asked from) is not on this node: running in {_folder}, where relative paths of the options are not found\n",
+            stderr);
+        Assert.Equal(_folder, Assert.Single(Bash.Records(_record))[0]);
+    }
+
+    [Fact]
     public void TheTaskScriptOutsideAJobArrayStopsWithoutStartingTheServer()
     {
         string script = Write(SlurmJob.ShardScriptName, Job(["--batch", "8"]).ShardScript());
@@ -122,10 +137,22 @@ public sealed class SlurmJobTests : IDisposable
     [Fact]
     public void ARefusedSubmissionStopsTheScript()
     {
-        var (code, _, _) = RunSubmit(Job(["--batch", "8"]), "exit 1\n");
+        var (code, stdout, _) = RunSubmit(Job(["--batch", "8"]), "exit 1\n");
 
         Assert.NotEqual(0, code);
         Assert.Single(Bash.Records(_record)); // the merge job is not submitted
+        Assert.Equal(string.Empty, stdout);
+    }
+
+    [Fact]
+    public void WhenOnlyTheMergeIsRefusedTheArrayJobIsStillReported()
+    {
+        var (code, stdout, _) = RunSubmit(Job(["--batch", "8"]), "[ -e \"$RECORD.n\" ] && exit 1\ntouch \"$RECORD.n\"\necho 41\n");
+
+        Assert.NotEqual(0, code);
+        Assert.Equal(2, Bash.Records(_record).Count);
+        Assert.StartsWith("array job 41: shards 0-3 of 4, ", stdout, StringComparison.Ordinal);
+        Assert.DoesNotContain("merge job", stdout, StringComparison.Ordinal);
     }
 
     [Theory]
