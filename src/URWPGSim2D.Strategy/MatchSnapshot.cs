@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace URWPGSim2D.Strategies;
 
@@ -50,9 +51,31 @@ public sealed class MatchSnapshot
     /// <summary>Every obstacle, by index.</summary>
     public ReadOnlySpan<ObstacleView> Obstacles => _obstacles;
 
+    /// <summary>
+    /// The competition item being played (its original name, e.g. 抢球博弈), or <c>match</c> for a
+    /// plain scenario.
+    /// </summary>
+    public string ItemName { get; private set; } = "match";
+
+    /// <summary>
+    /// The item's state for strategies, the original's <c>HtMissionVariables</c>: the original's keys
+    /// and string values (integers as invariant text). Empty when the item publishes none.
+    /// </summary>
+    public IReadOnlyDictionary<string, string> Variables { get; private set; } = EmptyVariables;
+
+    /// <summary>Cycles the match lasts (0 when not known in advance).</summary>
+    public int TotalCycles { get; private set; }
+
+    /// <summary>
+    /// True after the half-time swap: team 0 then plays on the right (attacking −X) and team 1 on the left.
+    /// </summary>
+    public bool SidesSwapped { get; private set; }
+
     /// <summary>Goals scored so far by a team.</summary>
     /// <param name="team">0 or 1.</param>
     public int GoalsOf(int team) => _goals[Math.Clamp(team, 0, 1)];
+
+    private static IReadOnlyDictionary<string, string> EmptyVariables { get; } = new Dictionary<string, string>();
 
     internal Span<FishView> FishBuffer => _fish;
 
@@ -64,4 +87,15 @@ public sealed class MatchSnapshot
         _goals[0] = goalsTeam0;
         _goals[1] = goalsTeam1;
     }
+
+    /// <summary>Sets what the item tells strategies (kept until set again).</summary>
+    internal void SetItem(string itemName, IReadOnlyDictionary<string, string> variables, int totalCycles)
+    {
+        ItemName = itemName;
+        Variables = variables;
+        TotalCycles = totalCycles;
+    }
+
+    /// <summary>Sets whether the teams have changed sides (half time).</summary>
+    internal void SetSidesSwapped(bool swapped) => SidesSwapped = swapped;
 }

@@ -26,4 +26,12 @@ internal sealed record BatchHeader(
 
     /// <summary>The same batch as a single shard (what merging all shards gives).</summary>
     public BatchHeader Whole => this with { ShardIndex = 0, ShardCount = 1 };
+
+    /// <summary>What differs between the headers of two batches, e.g. <c>first seed 1 vs 1001</c> (the first difference found).</summary>
+    public static string Difference(BatchHeader a, BatchHeader b) =>
+        a.Scene != b.Scene ? $"scene {a.Scene} vs {b.Scene}"
+        : a.Matches != b.Matches ? $"{a.Matches} vs {b.Matches} matches"
+        : a.FirstSeed != b.FirstSeed ? $"first seed {a.FirstSeed} vs {b.FirstSeed}"
+        : a.Cycles != b.Cycles ? $"{a.Cycles} vs {b.Cycles} cycles"
+        : "strategies, noise or time limit differ";
 }

@@ -21,8 +21,17 @@ internal static class BatchRun
         ulong first = options.Seed ?? scenario.Seed;
         if (first > long.MaxValue - (ulong)matches)
         {
-            console.Error.WriteLine($"run: --batch {matches} from seed {first} would need seeds beyond {long.MaxValue}");
+            console.ErrorLine($"run: --batch {matches} from seed {first} would need seeds beyond {long.MaxValue}");
             return ExitCodes.BadInput;
+        }
+
+        int cycles = options.CyclesFor(scenario);
+        var header = new BatchHeader(
+            scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
+            matches, cycles, options.ShardIndex, options.ShardCount);
+        if (options.Slurm is not null)
+        {
+            return SlurmRun.Run(options, header, console);
         }
 
         if (options.Results is { } path && !CanWrite(path + ".partial", console))
@@ -30,11 +39,7 @@ internal static class BatchRun
             return ExitCodes.BadInput;
         }
 
-        int cycles = options.Cycles ?? scenario.Cycles;
         int threads = options.Threads ?? Environment.ProcessorCount;
-        var header = new BatchHeader(
-            scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
-            matches, cycles, options.ShardIndex, options.ShardCount);
 
         var clock = Stopwatch.StartNew();
         MatchResult[] results;
@@ -43,7 +48,7 @@ internal static class BatchRun
             results = BatchRunner.Run(
                 header,
                 threads,
-                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs),
+                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles),
                 r => console.Out.Write(BatchSummary.Line(r)));
             clock.Stop();
             if (options.Results is { } file)
@@ -75,7 +80,7 @@ internal static class BatchRun
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
-            console.Error.WriteLine($"--results: cannot write {path} ({e.Message})");
+            console.ErrorLine($"--results: cannot write {path} ({e.Message})");
             return false;
         }
     }

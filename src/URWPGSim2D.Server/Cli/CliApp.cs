@@ -84,18 +84,18 @@ internal sealed class CliApp
         }
         catch (CliUsageException ex)
         {
-            console.Error.WriteLine(ex.Line);
+            console.ErrorLine(ex.Line);
             return ExitCodes.BadInput;
         }
         catch (CliInputException ex)
         {
-            console.Error.WriteLine(ex.Line);
+            console.ErrorLine(ex.Line);
             return ExitCodes.BadInput;
         }
         catch (Exception ex)
         {
             // A bug, not bad input: still one line and no stack trace, but a distinct exit code.
-            console.Error.WriteLine($"internal error: {ex.GetType().Name}: {ex.Message.ReplaceLineEndings(" ")}");
+            console.ErrorLine($"internal error: {ex.GetType().Name}: {ex.Message.ReplaceLineEndings(" ")}");
             return ExitCodes.InternalError;
         }
     }

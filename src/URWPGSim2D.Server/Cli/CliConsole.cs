@@ -9,4 +9,9 @@ namespace URWPGSim2D.Server.Cli;
 /// <param name="In">Standard input (read when a command is given <c>-</c> as its file).</param>
 /// <param name="Out">Standard output: written only once a command has its whole result.</param>
 /// <param name="Error">Standard error: usage text and one-line error messages.</param>
-internal sealed record CliConsole(TextReader In, TextWriter Out, TextWriter Error);
+internal sealed record CliConsole(TextReader In, TextWriter Out, TextWriter Error)
+{
+    /// <summary>Writes one error line to <see cref="Error"/>, escaping whatever would break it (<see cref="CliText.Escape"/>).</summary>
+    /// <param name="line">The message; user text echoed in it may hold anything.</param>
+    public void ErrorLine(string line) => Error.WriteLine(CliText.Escape(line));
+}

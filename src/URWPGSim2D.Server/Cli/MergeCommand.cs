@@ -71,7 +71,7 @@ internal sealed class MergeCommand : ICliCommand
         }
         catch (ResultFileException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -83,7 +83,7 @@ internal sealed class MergeCommand : ICliCommand
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
             {
-                console.Error.WriteLine($"--out: cannot write {output} ({e.Message})");
+                console.ErrorLine($"--out: cannot write {output} ({e.Message})");
                 return ExitCodes.BadInput;
             }
         }
@@ -112,7 +112,7 @@ internal sealed class MergeCommand : ICliCommand
             }
             else if (header.Whole != whole || header.ShardCount != shards)
             {
-                string why = header.ShardCount != shards ? $"{header.ShardCount} vs {shards} shards" : Difference(whole, header.Whole);
+                string why = header.ShardCount != shards ? $"{header.ShardCount} vs {shards} shards" : BatchHeader.Difference(whole, header.Whole);
                 throw new ResultFileException($"{file}: belongs to another batch than {firstFile} ({why})");
             }
 
@@ -154,13 +154,6 @@ internal sealed class MergeCommand : ICliCommand
 
         return (whole!, all);
     }
-
-    private static string Difference(BatchHeader a, BatchHeader b) =>
-        a.Scene != b.Scene ? $"scene {a.Scene} vs {b.Scene}"
-        : a.Matches != b.Matches ? $"{a.Matches} vs {b.Matches} matches"
-        : a.FirstSeed != b.FirstSeed ? $"first seed {a.FirstSeed} vs {b.FirstSeed}"
-        : a.Cycles != b.Cycles ? $"{a.Cycles} vs {b.Cycles} cycles"
-        : "strategies, noise or time limit differ";
 
     private static CliUsageException UsageError(string message) => new("merge: " + message, CliApp.ProgramName + " " + Usage);
 }

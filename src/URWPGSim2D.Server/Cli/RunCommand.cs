@@ -4,6 +4,7 @@ using System.Globalization;
 using System.IO;
 using System.Security.Cryptography;
 using System.Text;
+using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -20,6 +21,9 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class RunCommand : ICliCommand
 {
+    /// <summary>The item <c>run</c> plays without a scene option (the README's main job).</summary>
+    public const string MainItem = "ball-grab";
+
     /// <inheritdoc/>
     public string Name => "run";
 
@@ -27,7 +31,7 @@ internal sealed class RunCommand : ICliCommand
     public string Synopsis => RunOptions.Synopsis;
 
     /// <inheritdoc/>
-    public string Summary => "Play a match (default: the embedded 2-vs-2 match, 3,000 cycles) and print a summary.";
+    public string Summary => "Play a match (default: the competition item ball-grab, 10 minutes) and print a summary.";
 
     /// <inheritdoc/>
     public int Run(ReadOnlySpan<string> arguments, CliConsole console)
@@ -39,6 +43,15 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.Success;
         }
 
+        if (options.ListItems)
+        {
+            console.Out.Write(ItemList.Format());
+            return ExitCodes.Success;
+        }
+
+        OutputFile.Check("--trace", options.Trace);
+        OutputFile.Check("--svg", options.Svg);
+        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try
@@ -47,7 +60,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (ScenarioException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -58,7 +71,7 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (StrategyLoadException e)
         {
-            console.Error.WriteLine(e.Message);
+            console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
 
@@ -67,18 +80,27 @@ internal sealed class RunCommand : ICliCommand
             return BatchRun.Run(options, scenario, scene, console);
         }
 
-        var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs);
-        int cycles = options.Cycles ?? scenario.Cycles;
+        int cycles = options.CyclesFor(scenario);
+        var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
         var clock = Stopwatch.StartNew();
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            trace?.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
-            for (int k = 0; k < cycles; k++)
+            var lines = trace is null ? null : new TraceLine(match);
+            if (lines is not null)
+            {
+                trace!.WriteLine(lines.Write(ReadOnlySpan<ContactRecord>.Empty));
+            }
+
+            for (int k = 0; k < cycles && !match.IsOver; k++)
             {
                 match.Step();
-                trace?.WriteCycle(match.World, match.Contacts.Cycle);
+                if (lines is not null)
+                {
+                    trace!.WriteLine(lines.Write(match.Contacts.Cycle));
+                }
+
                 progress?.Update(k + 1);
             }
 
@@ -112,7 +134,7 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
-                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyLoader.Load(spec), Isolated: true);
+                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyResolver.Load(spec), Isolated: true);
                 }
                 catch (StrategyLoadException e)
                 {
@@ -124,7 +146,8 @@ internal sealed class RunCommand : ICliCommand
         return teams;
     }
 
-    // The scene and its name in result files: default, crowd N, or the file's name and SHA-256.
+    // The scene and its name in result files: item SLUG (no scene option: ball-grab), default,
+    // crowd N, or the file's name and SHA-256.
     private static (ScenarioDefinition Scenario, string Scene) LoadScene(RunOptions options, CliConsole console)
     {
         if (options.Crowd is int movers)
@@ -132,9 +155,15 @@ internal sealed class RunCommand : ICliCommand
             return (CrowdScenario.Create(movers), string.Create(CultureInfo.InvariantCulture, $"crowd {movers}"));
         }
 
-        if (options.Scenario is null)
+        if (options.Item == "default")
         {
             return (DefaultScenario.Load(), "default");
+        }
+
+        if (options.Scenario is null)
+        {
+            var item = ItemRegistry.Find(options.Item ?? MainItem)!;
+            return (item.CreateScenario(options.Seed ?? 1), "item " + item.Slug);
         }
 
         string text = ReadScenario(options.Scenario, console);
@@ -158,11 +187,14 @@ internal sealed class RunCommand : ICliCommand
     private static string HelpText() =>
         $"Usage: {CliApp.ProgramName} {RunOptions.Usage}\n\n" +
         "Plays a match of 100 ms cycles and prints cycles, simulated and wall time, goals per team, contacts by pair\n" +
-        "kind, sub-steps, the largest leftover overlap and strategy faults. Without --scenario it plays the embedded\n" +
-        "default match; --crowd N generates a crowded scene of N fish and balls at the default density.\n" +
+        "kind, sub-steps, the largest leftover overlap and strategy faults. --item NAME plays a competition item of the\n" +
+        "original with its rules (--list-items lists them; --minutes 10|5|3|1, default 10); without a scene option it\n" +
+        "plays ball-grab; --item default is the old default scene; --crowd N generates a crowded scene of N fish and balls.\n" +
         "--strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context, --strategy-timeout\n" +
         "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
-        "Formats: docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
+        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
+        "--submit submits them; asked again, only the shards without results are played.\n" +
+        "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using URWPGSim2D.Server.Items;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -8,13 +9,22 @@ namespace URWPGSim2D.Server.Cli;
 internal sealed class RunOptions
 {
     /// <summary>The command's synopsis in the program's help.</summary>
-    public const string Synopsis = "run [--scenario FILE] [options]";
+    public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--scenario FILE | --crowd N] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--batch N [--shard I/K] [--threads P] [--results FILE]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
+
+    /// <summary>Competition item slug or Chinese name (<c>--item NAME</c>; "default" is the old default scene), or null.</summary>
+    public string? Item { get; private set; }
+
+    /// <summary>Match length in minutes (<c>--minutes 10|5|3|1</c>), or null.</summary>
+    public int? Minutes { get; private set; }
+
+    /// <summary>Whether <c>--list-items</c> was given.</summary>
+    public bool ListItems { get; private set; }
 
     /// <summary>Scenario file, or null for the embedded default match.</summary>
     public string? Scenario { get; private set; }
@@ -58,14 +68,40 @@ internal sealed class RunOptions
     /// <summary>Time limit of a loaded strategy per cycle, ms.</summary>
     public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
 
+    /// <summary>Folder of a Slurm job array for the batch (<c>--slurm DIR</c>), or null to play the batch here.</summary>
+    public string? Slurm { get; private set; }
+
+    /// <summary>Shards (array tasks) of a <c>--slurm</c> batch (<c>--shards K</c>), or null for the default.</summary>
+    public int? SlurmShards { get; private set; }
+
+    /// <summary>Slurm partition of the jobs (<c>--partition P</c>), or null for the cluster's default.</summary>
+    public string? Partition { get; private set; }
+
+    /// <summary>Slurm time limit of each job (<c>--time T</c>, sbatch's format), or null for the partition's default.</summary>
+    public string? TimeLimit { get; private set; }
+
+    /// <summary>Whether to submit the written Slurm jobs (<c>--submit</c>).</summary>
+    public bool Submit { get; private set; }
+
+    /// <summary>
+    /// The arguments as given but for the options of <c>--slurm</c> itself (<c>--slurm</c>,
+    /// <c>--shards</c>, <c>--partition</c>, <c>--time</c>, <c>--results</c>, <c>--submit</c>): what
+    /// every task of a Slurm batch passes on, so it plays exactly the batch asked for.
+    /// </summary>
+    public IReadOnlyList<string> PassedOn { get; private set; } = [];
+
     /// <summary>Whether --help was given.</summary>
     public bool Help { get; private set; }
+
+    /// <summary>Cycles to play: <c>--cycles</c>, else <c>--minutes</c> × 600, else the scenario's.</summary>
+    public int CyclesFor(global::URWPGSim2D.Server.Scenario.ScenarioDefinition scenario) => Cycles ?? (Minutes * 600) ?? scenario.Cycles;
 
     /// <summary>Parses the arguments after "run".</summary>
     public static RunOptions Parse(ReadOnlySpan<string> args)
     {
         var o = new RunOptions();
         var seen = new HashSet<string>(StringComparer.Ordinal);
+        var slurmOwn = new HashSet<int>(); // indices of the --slurm options and their values
         for (int i = 0; i < args.Length; i++)
         {
             string name = args[i];
@@ -73,6 +109,25 @@ internal sealed class RunOptions
             {
                 o.Help = true;
                 continue;
+            }
+
+            if (name == "--list-items")
+            {
+                o.ListItems = true;
+                continue;
+            }
+
+            if (name == "--submit")
+            {
+                o.Submit = seen.Add(name) ? true : throw UsageError("--submit given twice");
+                slurmOwn.Add(i);
+                continue;
+            }
+
+            if (name is "--slurm" or "--shards" or "--partition" or "--time" or "--results")
+            {
+                slurmOwn.Add(i);
+                slurmOwn.Add(i + 1);
             }
 
             if (!name.StartsWith("--", StringComparison.Ordinal))
@@ -94,10 +149,22 @@ internal sealed class RunOptions
             switch (name)
             {
                 case "--scenario": o.Scenario = value; break;
+                case "--item":
+                    o.Item = value == "default" || ItemRegistry.Find(value) is not null
+                        ? value
+                        : throw UsageError($"--item must be one of {ItemRegistry.Names()} (or the original's name), got {CliText.Quote(value)}");
+                    break;
+                case "--minutes":
+                    o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {CliText.Quote(value)}") };
+                    break;
                 case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Server.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
                 case "--batch": o.Batch = (int)Number(name, value, 1, MaximumBatch); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--results": o.Results = value; break;
+                case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;
+                case "--shards": o.SlurmShards = (int)Number(name, value, 1, global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.MaximumShards); break;
+                case "--partition": o.Partition = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {CliText.Quote(value)}"); break;
+                case "--time": o.TimeLimit = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {CliText.Quote(value)}"); break;
                 case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
@@ -121,6 +188,16 @@ internal sealed class RunOptions
             }
         }
 
+        var passedOn = new List<string>(args.Length);
+        for (int i = 0; i < args.Length; i++)
+        {
+            if (!slurmOwn.Contains(i) && args[i] is not ("--help" or "-h"))
+            {
+                passedOn.Add(args[i]);
+            }
+        }
+
+        o.PassedOn = passedOn;
         o.Check();
         return o;
     }
@@ -149,9 +226,14 @@ internal sealed class RunOptions
             return;
         }
 
-        if (Scenario is not null && Crowd is not null)
+        if ((Scenario is not null ? 1 : 0) + (Crowd is not null ? 1 : 0) + (Item is not null ? 1 : 0) > 1)
         {
-            throw UsageError("--scenario and --crowd both choose the scene; give one");
+            throw UsageError("--item, --scenario and --crowd each choose the scene; give one");
+        }
+
+        if (Minutes is not null && Cycles is not null)
+        {
+            throw UsageError("--minutes and --cycles both set the length; give one");
         }
 
         if (Batch is null && (ShardCount > 1 || Threads is not null || Results is not null))
@@ -162,6 +244,42 @@ internal sealed class RunOptions
         if (Batch is not null && (Trace is not null || Svg is not null))
         {
             throw UsageError("--trace and --svg record one match; they do not go with --batch");
+        }
+
+        CheckSlurm();
+    }
+
+    // The options of a Slurm batch (docs/batch.md, "On a Slurm cluster").
+    private void CheckSlurm()
+    {
+        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit))
+        {
+            throw UsageError("--shards, --partition, --time and --submit belong to --slurm DIR");
+        }
+
+        if (Slurm is null)
+        {
+            return;
+        }
+
+        if (Batch is null)
+        {
+            throw UsageError("--slurm DIR belongs to --batch N");
+        }
+
+        if (ShardCount > 1)
+        {
+            throw UsageError("--slurm makes the shards itself (--shards K); --shard I/K does not go with it");
+        }
+
+        if (SlurmShards > Batch)
+        {
+            throw UsageError($"--shards {SlurmShards} is more than the {Batch} matches of --batch");
+        }
+
+        if (Scenario == "-")
+        {
+            throw UsageError("--scenario - (standard input) cannot be read again by the Slurm tasks; give a file");
         }
     }
 

@@ -13,9 +13,10 @@ internal static class JsonReader
     {
         foreach (var p in obj.EnumerateObject())
         {
-            if (Array.IndexOf(allowed, p.Name) < 0)
+            string name = Name(p, path);
+            if (Array.IndexOf(allowed, name) < 0)
             {
-                throw new ScenarioException(Join(path, p.Name), $"unknown property (expected one of: {string.Join(", ", allowed)})");
+                throw new ScenarioException(Join(path, Cli.CliText.Escape(name)), $"unknown property (expected one of: {string.Join(", ", allowed)})");
             }
         }
     }
@@ -79,8 +80,36 @@ internal static class JsonReader
     };
 
     /// <summary>A string.</summary>
-    public static string Text(JsonElement e, string path) =>
-        e.ValueKind == JsonValueKind.String ? e.GetString()! : throw new ScenarioException(path, $"must be a string, got {Describe(e)}");
+    public static string Text(JsonElement e, string path)
+    {
+        if (e.ValueKind != JsonValueKind.String)
+        {
+            throw new ScenarioException(path, $"must be a string, got {Describe(e)}");
+        }
+
+        try
+        {
+            return e.GetString()!;
+        }
+        catch (InvalidOperationException)
+        {
+            throw new ScenarioException(path, $"must be valid UTF-16 text, got {Raw(e)} (a lone surrogate)");
+        }
+    }
+
+    /// <summary>A property's name; a name that is not valid UTF-16 (a lone surrogate escape) fails with its raw text.</summary>
+    public static string Name(JsonProperty p, string path)
+    {
+        try
+        {
+            return p.Name;
+        }
+        catch (InvalidOperationException)
+        {
+            string raw = p.ToString();
+            throw new ScenarioException(path, $"property names must be valid UTF-16 text, got {(raw.Length <= 40 ? raw : raw[..37] + "...")} (a lone surrogate)");
+        }
+    }
 
     /// <summary>An [x, z] pair of finite numbers.</summary>
     public static Vector2 Vector(JsonElement e, string path)

@@ -6,4 +6,5 @@ namespace URWPGSim2D.Server.Scenario;
 /// <param name="Label">What to call it in the summary.</param>
 /// <param name="Strategy">The strategy instance.</param>
 /// <param name="Isolated">Run it on its own thread with a time limit (loaded strategies always are).</param>
-internal sealed record TeamStrategy(string Label, IStrategy Strategy, bool Isolated);
+/// <param name="Clock">The deadline clock of an isolated strategy (null: its thread's CPU time; tests pass a <see cref="ManualStrategyClock"/>).</param>
+internal sealed record TeamStrategy(string Label, IStrategy Strategy, bool Isolated, StrategyClock? Clock = null);

@@ -45,8 +45,8 @@ internal sealed class FishState
         BasePosition = position;
         BaseHeading = Heading;
         Decision = Decision.Stop;
-        Turn.Reset(0f);
-        Speed.Reset(0f);
+        Turn.Reset(0f, TurnTable.Rates);
+        Speed.Reset(0f, SpeedTable.Speeds);
     }
 
     /// <summary>Index (fishN).</summary>
@@ -70,11 +70,14 @@ internal sealed class FishState
     /// <summary>Joint angles φ1..φ3 from the body axis, rad (fixed for the whole cycle).</summary>
     public float Joint1, Joint2, Joint3;
 
-    /// <summary>Forward speed along the heading, mm/s, and its one-tenth approach.</summary>
+    /// <summary>Forward speed along the heading, mm/s, and its gear approach state (never changed by a contact).</summary>
     public GearApproach Speed;
 
-    /// <summary>Angular speed, rad/s, and its one-tenth approach.</summary>
+    /// <summary>Angular speed, rad/s, and its gear approach state (never changed by a contact).</summary>
     public GearApproach Turn;
+
+    /// <summary>The fish's own tail-wave phase p, radians (0 unless set).</summary>
+    public float TailPhase;
 
     /// <summary>The decision being executed.</summary>
     public Decision Decision;
@@ -108,6 +111,12 @@ internal sealed class FishState
     /// (it counts as immovable in contacts) for the rest of the cycle.
     /// </summary>
     public bool Frozen;
+
+    /// <summary>
+    /// True while a competition item keeps this fish out of play (frozen or caught, parked where the
+    /// item says, possibly outside the pool): it does not move and collides with nothing.
+    /// </summary>
+    public bool OutOfPlay;
 
     /// <summary>Pose at the stepper's last committed time.</summary>
     public Vector2 BasePosition;

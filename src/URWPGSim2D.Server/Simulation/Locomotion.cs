@@ -6,8 +6,9 @@ namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// The locomotion stage of a cycle: each fish's speed and angular speed take one step of the
-/// one-tenth approach toward its gear targets (no turning below 2 mm/s), the tail joints take the
-/// wave's pose for the cycle, and the cycle's motion is set: velocity v·u along the heading and
+/// original's gear approach (<see cref="GearApproach"/>) toward the decision's VCode and TCode, then
+/// the angular speed is 0 while |v| &lt; 2 mm/s; the tail joints take the wave's pose for the cycle
+/// from the decision's codes (<see cref="TailWave"/>), and the cycle's motion is set: velocity v·u along the heading and
 /// angular velocity ω. With noise on, the reference's disturbances are added to this cycle's motion
 /// (heading ±v²/500000 rad, position ±30·|ω| mm per axis, a moving ball ±1 mm per axis) so the
 /// stepper carries them like any other motion. Balls keep their velocity; their drag is applied
@@ -22,20 +23,23 @@ internal static class Locomotion
         foreach (var f in world.Fish)
         {
             f.BeginCycle();
-            var d = f.Decision;
-            f.Speed.Advance(SpeedTable.TargetSpeed(d.VCode));
-            if (f.Speed.Value < PhysicsConstants.MinimumTurningSpeed)
+            if (f.OutOfPlay)
             {
-                f.Turn.Reset(0f);
-            }
-            else
-            {
-                f.Turn.Advance(TurnTable.TargetTurnRate(d.TCode));
+                Still(f);
+                continue;
             }
 
-            f.Joint1 = TailWave.JointAngle(0, d.VCode, d.TCode, endTime);
-            f.Joint2 = TailWave.JointAngle(1, d.VCode, d.TCode, endTime);
-            f.Joint3 = TailWave.JointAngle(2, d.VCode, d.TCode, endTime);
+            var d = f.Decision;
+            f.Speed.Advance(d.VCode, SpeedTable.Speeds);
+            f.Turn.Advance(d.TCode, TurnTable.Rates);
+            if (MathF.Abs(f.Speed.Value) < PhysicsConstants.MinimumTurningSpeed)
+            {
+                f.Turn.Value = 0f;
+            }
+
+            f.Joint1 = TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase);
+            f.Joint2 = TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase);
+            f.Joint3 = TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase);
             f.Velocity = f.Speed.Value * f.Forward;
             f.AngularVelocity = f.Turn.Value;
             f.NoiseVelocity = Vector2.Zero;
@@ -59,6 +63,17 @@ internal static class Locomotion
                 b.NoiseVelocity = new Vector2(noise.NextSigned(), noise.NextSigned()) / dt;
             }
         }
+    }
+
+    // A fish out of play (parked by an item) holds still: no propulsion, no noise.
+    private static void Still(FishState f)
+    {
+        f.Speed.Reset(0f, SpeedTable.Speeds);
+        f.Turn.Reset(0f, TurnTable.Rates);
+        f.Velocity = Vector2.Zero;
+        f.AngularVelocity = 0f;
+        f.NoiseVelocity = Vector2.Zero;
+        f.NoiseAngularVelocity = 0f;
     }
 
     /// <summary>

@@ -164,6 +164,11 @@ internal sealed class SweepPlanner
     // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers).
     private void TryPair(int u, int v, IPairSink sink)
     {
+        if (OutOfPlay(u) || (v < _movers && OutOfPlay(v)))
+        {
+            return;
+        }
+
         if (v >= _movers)
         {
             TryStatic(u, v - _movers, sink);
@@ -204,8 +209,16 @@ internal sealed class SweepPlanner
         sink.Add(pair, m, -1, _rate[m]);
     }
 
+    // A fish an item keeps out of play (parked, maybe outside the pool) meets nothing.
+    private bool OutOfPlay(int m) => m < _fish && _world.Fish[m].OutOfPlay;
+
     private void TryWall(int m, IPairSink sink)
     {
+        if (OutOfPlay(m))
+        {
+            return;
+        }
+
         Aabb pool = _world.Field.Bounds;
         Vector2 c = _center[m];
         float r = _radius[m] + Margin;

@@ -4,26 +4,29 @@ using System.Threading;
 namespace URWPGSim2D.Server.Strategies;
 
 /// <summary>
-/// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread and waits at
-/// most a time limit for it. A late call is abandoned (its result is discarded when it finally
-/// returns) and the strategy is skipped while it is still busy, so a strategy that hangs cannot
-/// stop the match.
+/// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread with a per-call
+/// deadline measured by a <see cref="StrategyClock"/> (the CPU time of that thread in a real match). A
+/// call past its deadline is abandoned: its answer is discarded even if it arrives before the host
+/// looks, and the strategy is skipped while it is still busy, so a strategy that hangs cannot stop the match.
 /// </summary>
 internal sealed class IsolatedStrategyRunner
 {
     private readonly IStrategy _strategy;
+    private readonly StrategyClock _clock;
     private readonly Decision[] _work;
     private readonly SemaphoreSlim _start = new(0);
     private readonly SemaphoreSlim _done = new(0);
     private MatchSnapshot? _snapshot;
     private int[] _fish = [];
     private Exception? _error;
+    private TimeSpan _used;
     private bool _pending;
     private volatile bool _stopped;
 
-    public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team)
+    public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
     {
         _strategy = strategy;
+        _clock = clock;
         _work = new Decision[fishCount];
         var thread = new Thread(Loop) { IsBackground = true, Name = $"strategy team {team}" };
         thread.Start();
@@ -32,42 +35,49 @@ internal sealed class IsolatedStrategyRunner
     /// <summary>Outcome of one call.</summary>
     public enum Outcome
     {
-        /// <summary>Finished in time; decisions updated.</summary>
+        /// <summary>Finished within its deadline; decisions updated.</summary>
         Decided,
 
         /// <summary>Threw; decisions unchanged.</summary>
         Threw,
 
-        /// <summary>Too slow or still busy; decisions unchanged.</summary>
+        /// <summary>Past its deadline or still busy with an earlier call; decisions unchanged.</summary>
         TimedOut,
     }
 
-    /// <summary>Asks for decisions, waiting at most <paramref name="timeoutMs"/> ms.</summary>
+    /// <summary>Asks for decisions with a deadline of <paramref name="timeoutMs"/> ms.</summary>
     public Outcome Decide(MatchSnapshot snapshot, int[] fish, Span<Decision> decisions, int timeoutMs, out Exception? error)
     {
         error = null;
         if (_pending)
         {
-            if (!_done.Wait(0))
+            if (!_clock.AbandonedCallReturned(_done))
             {
                 return Outcome.TimedOut;
             }
 
-            _pending = false;
+            _pending = false; // the abandoned call's answer is dropped here
         }
 
+        var budget = TimeSpan.FromMilliseconds(timeoutMs);
         decisions.CopyTo(_work);
         _snapshot = snapshot;
         _fish = fish;
         _error = null;
         _pending = true;
+        _clock.Arm(budget);
         _start.Release();
-        if (!_done.Wait(timeoutMs))
+        if (!_clock.WaitForCall(_done, budget))
         {
             return Outcome.TimedOut;
         }
 
         _pending = false;
+        if (_used > budget)
+        {
+            return Outcome.TimedOut; // finished, but late: discarded
+        }
+
         if (_error is not null)
         {
             error = _error;
@@ -95,6 +105,7 @@ internal sealed class IsolatedStrategyRunner
                 return;
             }
 
+            _clock.CallStarting();
             try
             {
                 _strategy.Decide(_snapshot!, _fish, _work);
@@ -104,6 +115,7 @@ internal sealed class IsolatedStrategyRunner
                 _error = e;
             }
 
+            _used = _clock.CallEnded();
             _done.Release();
         }
     }

@@ -4,9 +4,10 @@ using URWPGSim2D.Server.Simulation;
 namespace URWPGSim2D.Server.Strategies;
 
 /// <summary>
-/// Asks every strategy slot, in a fixed order, for its fish's decisions. A strategy that throws
-/// or (isolated ones) runs past the time limit leaves its fish on their last decisions; the fault
-/// is counted for the summary and the match goes on.
+/// Asks every strategy slot, in a fixed order, for its fish's decisions. A strategy that throws,
+/// answers with something unusable (<see cref="StrategyContractException"/>) or (isolated ones) runs
+/// past its deadline leaves its fish on their last decisions; the fault is counted for the summary
+/// and the results file, and the match goes on.
 /// </summary>
 internal sealed class StrategyHost(StrategySlot[] slots, int timeoutMs)
 {
@@ -24,7 +25,7 @@ internal sealed class StrategyHost(StrategySlot[] slots, int timeoutMs)
             int n = 0;
             foreach (var s in Slots)
             {
-                n += s.Exceptions + s.Timeouts;
+                n += s.Faults;
             }
 
             return n;
@@ -85,6 +86,13 @@ internal sealed class StrategyHost(StrategySlot[] slots, int timeoutMs)
 
     private static void Fault(StrategySlot slot, int cycle, Exception e)
     {
+        if (e is StrategyContractException)
+        {
+            slot.BadAnswers++;
+            slot.FirstFault ??= $"cycle {cycle + 1}: {e.Message}";
+            return;
+        }
+
         slot.Exceptions++;
         slot.FirstFault ??= $"cycle {cycle + 1}: {e.GetType().Name}: {e.Message}";
     }

@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Strategies;
 /// </summary>
 internal sealed class StrategySlot
 {
-    public StrategySlot(string label, IStrategy strategy, int team, int[] fish, bool isolated)
+    public StrategySlot(string label, IStrategy strategy, int team, int[] fish, bool isolated, StrategyClock? clock = null)
     {
         Label = label;
         Strategy = strategy;
@@ -18,7 +18,7 @@ internal sealed class StrategySlot
         Decisions = new Decision[fish.Length];
         Scratch = new Decision[fish.Length];
         Array.Fill(Decisions, Decision.Stop);
-        Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team) : null;
+        Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team, clock ?? new ThreadTimeClock()) : null;
     }
 
     /// <summary>What the user asked for ("chase-ball", a path...).</summary>
@@ -47,6 +47,12 @@ internal sealed class StrategySlot
 
     /// <summary>Cycles in which it ran past its time limit (or was still busy from an earlier one).</summary>
     public int Timeouts { get; set; }
+
+    /// <summary>Cycles in which it answered with something unusable (for example too few decisions).</summary>
+    public int BadAnswers { get; set; }
+
+    /// <summary>All faults: exceptions, time-outs and bad answers.</summary>
+    public int Faults => Exceptions + Timeouts + BadAnswers;
 
     /// <summary>The first fault's message.</summary>
     public string? FirstFault { get; set; }

@@ -65,11 +65,11 @@ public sealed class BroadPhaseChoiceTests
             var match = MatchBuilder.Build(scenario, broadPhase: broadPhase);
             using (var trace = new TraceWriter(path))
             {
-                trace.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
+                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
                 for (int k = 0; k < cycles; k++)
                 {
                     match.Step();
-                    trace.WriteCycle(match.World, match.Contacts.Cycle);
+                    trace.WriteCycle(match, match.Contacts.Cycle);
                 }
 
                 trace.Complete();

@@ -84,7 +84,7 @@ public sealed class ContactResponseTests
         Assert.Contains(match.Contacts.Cycle.ToArray(), c => c.Pair.Kind == PairKind.FishStatic);
         Assert.InRange(fish.Velocity.X, -1f, 0.01f);
         Assert.True(fish.PosedModel.Bounds.Max.X <= 1350f + 0.02f, $"head at {fish.PosedModel.Bounds.Max.X}");
-        Assert.Equal(317f, fish.Speed.Value);
+        Assert.Equal(312.3145f, fish.Speed.Value, 1e-3f); // VCode 15 after 40 cycles of the gear approach (untouched by the wall)
     }
 
     [Fact]

@@ -133,11 +133,11 @@ public sealed class InvariantTests
             var match = MatchBuilder.Build(scenario, seed: seed);
             using (var trace = new TraceWriter(path))
             {
-                trace.WriteCycle(match.World, ReadOnlySpan<ContactRecord>.Empty);
+                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
                 for (int k = 0; k < 80; k++)
                 {
                     match.Step();
-                    trace.WriteCycle(match.World, match.Contacts.Cycle);
+                    trace.WriteCycle(match, match.Contacts.Cycle);
                 }
 
                 trace.Complete();

@@ -1,5 +1,4 @@
 using System;
-using System.Threading;
 using URWPGSim2D.Server.Strategies;
 
 namespace URWPGSim2D.Server.Tests.Strategies;
@@ -23,18 +22,39 @@ internal sealed class ThrowingStrategy : IStrategy
     }
 }
 
-/// <summary>Answers V9 T9 at once, except at cycle 3 where it sleeps far past any time limit and answers V1 T1.</summary>
-internal sealed class SlowStrategy : IStrategy
+/// <summary>
+/// Answers V9 T9 at once, except at cycle 3 where it uses <see cref="Spend"/> of its clock's time
+/// (400 ms by default, far past a 50 ms deadline) and answers V1 T1.
+/// </summary>
+internal sealed class SlowStrategy(ManualStrategyClock clock) : IStrategy
 {
+    public TimeSpan Spend { get; init; } = TimeSpan.FromMilliseconds(400);
+
     public string TeamName => "slow";
 
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
         if (snapshot.Cycle == 3)
         {
-            Thread.Sleep(400);
+            clock.Spend(Spend);
             decisions.Fill(new Decision(1, 1));
             return;
+        }
+
+        decisions.Fill(new Decision(9, 9));
+    }
+}
+
+/// <summary>Answers V9 T9 until cycle 2, then never returns (until its clock is released).</summary>
+internal sealed class HangingStrategy(ManualStrategyClock clock) : IStrategy
+{
+    public string TeamName => "hang";
+
+    public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
+    {
+        if (snapshot.Cycle == 2)
+        {
+            clock.Hang();
         }
 
         decisions.Fill(new Decision(9, 9));

@@ -20,6 +20,9 @@ public static class SpeedTable
         0f, 0.375f, 0.5f, 0.625f, 0.75f, 0.875f, 1f, 1.125f, 1.5f, 1.625f, 1.75f, 1.875f, 2f, 2.125f, 2.125f, 2.125f,
     ];
 
+    /// <summary>The table itself: target speed (mm/s) by VCode 0..15.</summary>
+    public static ReadOnlySpan<float> Speeds => Targets;
+
     /// <summary>The highest target speed of the table, mm/s (VCode 15).</summary>
     public const float MaximumSpeed = 317f;
 

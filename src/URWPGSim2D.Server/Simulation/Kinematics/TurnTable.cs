@@ -26,6 +26,9 @@ public static class TurnTable
         -1f, -0.9f, -0.8f, -0.7f, -0.5f, -0.3f, -0.1f, 0f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f, 0.8f, 0.9f, 1f,
     ];
 
+    /// <summary>The table itself: target angular speed (rad/s) by TCode 0..15.</summary>
+    public static ReadOnlySpan<float> Rates => Targets;
+
     /// <summary>Largest target angular speed magnitude of the table, rad/s.</summary>
     public const float MaximumTurnRate = 0.394f;
 
@@ -33,7 +36,7 @@ public static class TurnTable
     /// <param name="tcode">Turn gear.</param>
     public static float TargetTurnRate(int tcode) => Targets[Math.Clamp(tcode, 0, Gears - 1)];
 
-    /// <summary>Tail bend factor c in −1..1 of a turn gear (the tail wave's offset Tᵢ = c·60·kᵢ degrees).</summary>
+    /// <summary>Tail bend factor c in −1..1 of a turn gear (the tail wave's turn offset Dᵢ = c·60·(0.4, 0.85, 1)ᵢ degrees).</summary>
     /// <param name="tcode">Turn gear.</param>
     public static float BendFactor(int tcode) => Bends[Math.Clamp(tcode, 0, Gears - 1)];
 }

@@ -1,11 +1,10 @@
-using System;
 using URWPGSim2D.Server.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation.Kinematics;
 
-/// <summary>Fish locomotion against the reference's speed and turn tables.</summary>
+/// <summary>Fish locomotion in a match against the reference's speed and turn tables and its gear approach.</summary>
 public sealed class SpeedAndTurnTests
 {
     private static readonly float[] Speeds = [0f, 10f, 35f, 67f, 98f, 112f, 135f, 154f, 175f, 227f, 273f, 291f, 298f, 294f, 307f, 317f];
@@ -26,36 +25,45 @@ public sealed class SpeedAndTurnTests
     }
 
     [Fact]
-    public void AFishAtVCode15ReachesExactly317MillimetresPerSecondInTenCyclesAndTravelsTheSum()
+    public void AFishAtVCode14FromRestSwimsTheExponentialApproach()
     {
-        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[-1000,0],"decision":{"vcode":15,"tcode":7}}],"balls":[]}""");
-        float expectedX = -1000f;
-        for (int k = 1; k <= 12; k++)
+        // v_k = 307·(1 − 0.9^k); position after k cycles = −1000 + 0.1·Σ v_j = −1000 + 30.7·(k − 9·(1 − 0.9^k)):
+        // k = 1: −996.93; k = 2: −991.097; k = 5: 30.7·(5 − 9·0.40951) = 40.3524 → −959.6476.
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[-1000,0],"decision":{"vcode":14,"tcode":7}}],"balls":[]}""");
+        float[] speeds = [30.7f, 58.33f, 83.197f, 105.5773f, 125.7196f];
+        float[] xs = [-996.93f, -991.097f, -982.7773f, -972.21957f, -959.6476f];
+        for (int k = 0; k < 5; k++)
         {
             match.Step();
-            float v = k >= 10 ? 317f : 31.7f * k;
-            expectedX += v * 0.1f;
-            Assert.Equal(v, match.World.Fish[0].Speed.Value, 1e-3f);
-            Assert.Equal(expectedX, match.World.Fish[0].Position.X, 1e-2f);
+            Assert.Equal(speeds[k], match.World.Fish[0].Speed.Value, 1e-3f);
+            Assert.Equal(xs[k], match.World.Fish[0].Position.X, 1e-2f);
             Assert.Equal(0f, match.World.Fish[0].Position.Y, 1e-3f);
         }
     }
 
-    [Theory]
-    [InlineData(0)]
-    [InlineData(3)]
-    [InlineData(7)]
-    [InlineData(10)]
-    [InlineData(14)]
-    public void OnceSettledTheHeadingTurnsAtTheTableRate(int tcode)
+    [Fact]
+    public void TheHeadingTurnsAtTheApproachingRate()
     {
-        var match = TestMatches.FromJson("{\"fish\":[{\"team\":0,\"position\":[0,0],\"decision\":{\"vcode\":4,\"tcode\":" + tcode + "}}],\"balls\":[]}");
-        match.Play(30);
-        float before = match.World.Fish[0].Heading;
+        // VCode 14, TCode 14 from rest: ω_k = 0.349·(1 − 0.9^k) = 0.0349, 0.06631, 0.094579 (the speed is ≥ 2 mm/s
+        // from cycle 1, 30.7 mm/s); heading after 3 cycles = 0.1·(0.0349 + 0.06631 + 0.094579) = 0.0195789 rad.
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"decision":{"vcode":14,"tcode":14}}],"balls":[]}""");
+        match.Play(3);
+        Assert.Equal(0.0195789f, match.World.Fish[0].Heading, 1e-6f);
+        Assert.Equal(0.094579f, match.World.Fish[0].Turn.Value, 1e-6f);
+    }
+
+    [Fact]
+    public void AFishTurnsOnlyOnceItsSpeedReachesTwoMillimetresPerSecond()
+    {
+        // VCode 1 (10 mm/s): v = 1, 1.9, 2.71. TCode 0: the approach gives −0.0394 rad/s every cycle, set to 0 while
+        // v < 2 (cycles 1, 2); in cycle 3 the heading turns by −0.0394·0.1 = −0.00394 rad.
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"decision":{"vcode":1,"tcode":0}}],"balls":[]}""");
+        match.Play(2);
+        Assert.Equal(0f, match.World.Fish[0].Heading);
+        Assert.Equal(0f, match.World.Fish[0].Turn.Value);
         match.Step();
-        float turned = Angle(match.World.Fish[0].Heading - before);
-        Assert.Equal(Turns[tcode] * 0.1f, turned, 1e-5f);
-        Assert.Equal(Turns[tcode], match.World.Fish[0].Turn.Value, 1e-5f);
+        Assert.Equal(2.71f, match.World.Fish[0].Speed.Value, 1e-4f);
+        Assert.Equal(-0.00394f, match.World.Fish[0].Heading, 1e-6f);
     }
 
     [Fact]
@@ -66,25 +74,4 @@ public sealed class SpeedAndTurnTests
         Assert.Equal(0.5f, match.World.Fish[0].Heading, 1e-6f);
         Assert.Equal(0f, match.World.Fish[0].Turn.Value);
     }
-
-    [Fact]
-    public void TheApproachTakesTenthsOfTheGapAndSnaps()
-    {
-        var g = default(GearApproach);
-        g.Reset(100f);
-        g.Advance(300f);
-        Assert.Equal(120f, g.Value, 1e-4f);
-        for (int i = 0; i < 8; i++)
-        {
-            g.Advance(300f);
-        }
-
-        Assert.Equal(280f, g.Value, 1e-3f);
-        g.Advance(300f);
-        Assert.Equal(300f, g.Value);
-        g.Advance(0f);
-        Assert.Equal(270f, g.Value, 1e-3f);
-    }
-
-    private static float Angle(float a) => MathF.IEEERemainder(a, 2f * MathF.PI);
 }

@@ -9,31 +9,73 @@ namespace URWPGSim2D.Server.Tests.Simulation.Kinematics;
 public sealed class TailWaveAndBallTests
 {
     [Fact]
-    public void AStoppedStraightFishHasAStraightTail()
+    public void JointAnglesAtChosenTimesMatchTheReferenceFormula()
     {
-        for (int joint = 0; joint < 3; joint++)
+        // φᵢ = 1.2·radians(Aᵢ·sin(2π·f·t + p + λᵢ) − 0.4·Dᵢ), λ = 0, 80, 59 rad, Aᵢ = k·20 + (8, 10, 10), Dᵢ = c·60·(0.4, 0.85, 1).
+        // VCode 14 (f = 2.125, k = 0.3: A = 14, 16, 16), TCode 10 (c = 0.3: D = 7.2, 15.3, 18), t = 0.3 s, p = 0:
+        //   joint 1: arg = 2π·0.6375 = 4.005531, sin = −0.760406, 14·(−0.760406) − 2.88 = −13.525684° → −0.283281 rad
+        //   joint 2: arg = 84.005531, sin = 0.729418, 16·0.729418 − 6.12 = 5.550691° → 0.116253 rad
+        //   joint 3: arg = 63.005531, sin = 0.172806, 16·0.172806 − 7.2 = −4.435108° → −0.092889 rad
+        Assert.Equal(-0.283281f, TailWave.JointAngle(0, 14, 10, 0.3), 1e-5f);
+        Assert.Equal(0.116253f, TailWave.JointAngle(1, 14, 10, 0.3), 1e-5f);
+        Assert.Equal(-0.092889f, TailWave.JointAngle(2, 14, 10, 0.3), 1e-5f);
+
+        // VCode 3 (f = 0.625, k = 0.25: A = 13, 15, 15), TCode 2 (c = −0.8: D = −19.2, −40.8, −48), t = 0.7 s, p = 0.5:
+        //   joint 1: arg = 2π·0.4375 + 0.5 = 3.248894, sin = −0.107095, 13·(−0.107095) + 7.68 = 6.287763° → 0.131691 rad
+        //   joint 2: arg = 83.248894, sin = 0.999995, 15·0.999995 + 16.32 = 31.319918° → 0.655963 rad
+        //   joint 3: arg = 62.248894, sin = −0.550497, 15·(−0.550497) + 19.2 = 10.942544° → 0.229180 rad
+        Assert.Equal(0.131691f, TailWave.JointAngle(0, 3, 2, 0.7, 0.5f), 1e-5f);
+        Assert.Equal(0.655963f, TailWave.JointAngle(1, 3, 2, 0.7, 0.5f), 1e-5f);
+        Assert.Equal(0.229180f, TailWave.JointAngle(2, 3, 2, 0.7, 0.5f), 1e-5f);
+    }
+
+    [Fact]
+    public void AStoppedFishKeepsItsTailStillButBentByTheLags()
+    {
+        // VCode 0: f = 0, k = 0.1 (A = 10, 12, 12); TCode 7: c = 0. φ = 1.2·radians(A·sin(λ)) at any time:
+        //   joint 1: sin 0 = 0 → 0; joint 2: 12·sin(80) = 12·(−0.993889) = −11.926664° → −0.249791 rad;
+        //   joint 3: 12·sin(59) = 12·0.636738 = 7.640856° → 0.160030 rad.
+        foreach (double t in new[] { 0.1, 12.3, 250.0 })
         {
-            Assert.Equal(0f, TailWave.JointAngle(joint, 0, 7, 12.3));
+            Assert.Equal(0f, TailWave.JointAngle(0, 0, 7, t), 1e-6f);
+            Assert.Equal(-0.249791f, TailWave.JointAngle(1, 0, 7, t), 1e-5f);
+            Assert.Equal(0.160030f, TailWave.JointAngle(2, 0, 7, t), 1e-5f);
         }
+    }
+
+    [Fact]
+    public void InAMatchTheJointsTakeTheWaveOfTheDecisionEveryCycle()
+    {
+        // The cycle being played is k (t = 0.1·k): after 3 steps at VCode 14, TCode 10 the joints are the t = 0.3 values above.
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"decision":{"vcode":14,"tcode":10}}],"balls":[]}""");
+        match.Play(3);
+        var fish = match.World.Fish[0];
+        Assert.Equal(-0.283281f, fish.Joint1, 1e-5f);
+        Assert.Equal(0.116253f, fish.Joint2, 1e-5f);
+        Assert.Equal(-0.092889f, fish.Joint3, 1e-5f);
     }
 
     [Theory]
     [InlineData(0, 1f)]
     [InlineData(14, -1f)]
-    public void TheTailBendsTowardTheTurnOnAverage(int tcode, float sign)
+    public void TheTurnOffsetIsWeightedLeastOnJointOne(int tcode, float sign)
     {
-        // Over one full beat at VCode 8 (1.5 Hz) the sine averages out, leaving the bend −0.48·c·60·k degrees.
-        double mean = 0;
-        const int samples = 600;
-        for (int i = 0; i < samples; i++)
+        // Over one full beat at VCode 8 (1.5 Hz) the sine averages out, leaving −0.48·c·60·(0.4, 0.85, 1)ᵢ degrees.
+        float[] weights = [0.4f, 0.85f, 1f];
+        for (int joint = 0; joint < 3; joint++)
         {
-            mean += TailWave.JointAngle(0, 8, tcode, i / (1.5 * samples));
-        }
+            double mean = 0;
+            const int samples = 600;
+            for (int i = 0; i < samples; i++)
+            {
+                mean += TailWave.JointAngle(joint, 8, tcode, i / (1.5 * samples));
+            }
 
-        mean /= samples;
-        float expected = -0.48f * TurnTable.BendFactor(tcode) * 60f * System.MathF.PI / 180f;
-        Assert.Equal(expected, (float)mean, 1e-3f);
-        Assert.Equal(sign, System.MathF.Sign((float)mean));
+            mean /= samples;
+            float expected = -0.48f * TurnTable.BendFactor(tcode) * 60f * weights[joint] * System.MathF.PI / 180f;
+            Assert.Equal(expected, (float)mean, 1e-3f);
+            Assert.Equal(sign, System.MathF.Sign((float)mean));
+        }
     }
 
     [Fact]

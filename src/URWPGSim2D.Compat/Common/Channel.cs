@@ -1,0 +1,44 @@
+using System;
+using System.Drawing;
+using Xna = Microsoft.Xna.Framework;
+
+namespace URWPGSim2D.Common;
+
+/// <summary>A channel (a rectangle fish swim through); no item here uses one.</summary>
+[Serializable]
+public class Channel : RectangularStatic
+{
+    /// <summary>Creates an unnamed channel.</summary>
+    public Channel()
+    {
+    }
+
+    /// <summary>Creates a named channel.</summary>
+    /// <param name="strName">Name.</param>
+    /// <param name="positionMm">Centre, mm.</param>
+    /// <param name="color">Border and fill colour.</param>
+    /// <param name="lengthMm">Length, mm.</param>
+    /// <param name="widthMm">Width, mm.</param>
+    /// <param name="directionDeg">Direction, degrees.</param>
+    public Channel(string strName, Xna.Vector3 positionMm, Color color, int lengthMm, int widthMm, float directionDeg)
+    {
+        Name = strName;
+        PositionMm = positionMm;
+        ColorBorder = color;
+        ColorFilled = color;
+        LengthMm = lengthMm;
+        WidthMm = widthMm;
+        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
+    }
+
+    /// <summary>Name.</summary>
+    public string Name = string.Empty;
+
+    /// <inheritdoc/>
+    public override object Clone()
+    {
+        var copy = new Channel { Name = Name };
+        CopyTo(copy);
+        return copy;
+    }
+}

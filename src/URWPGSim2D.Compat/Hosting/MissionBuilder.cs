@@ -1,0 +1,232 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Common;
+using URWPGSim2D.Strategies;
+using Xna = Microsoft.Xna.Framework;
+
+namespace URWPGSim2D.Compat.Hosting;
+
+/// <summary>
+/// Builds the original's <see cref="Mission"/> from a <see cref="MatchSnapshot"/>: a fresh deep copy
+/// for one team every call, in absolute field coordinates, with the left team first in
+/// <see cref="Mission.TeamsRef"/>. What the original leaves out of a strategy's copy (<c>Pre*</c> values,
+/// the decisions being executed, obstacle corners) stays at its default.
+/// </summary>
+internal sealed class MissionBuilder
+{
+    private readonly Dictionary<int, FishModel> _models = new();
+
+    /// <summary>Name given to each team in <see cref="TeamCommonPara.Name"/> (index = server team).</summary>
+    public string[] TeamNames { get; } = ["team 0", "team 1"];
+
+    /// <summary>Builds this cycle's mission.</summary>
+    /// <param name="snapshot">The world as strategies see it.</param>
+    public Mission Build(MatchSnapshot snapshot)
+    {
+        ArgumentNullException.ThrowIfNull(snapshot);
+        var mission = new Mission();
+        int teamCount = TeamCount(snapshot);
+        var perTeam = new int[teamCount];
+        foreach (ref readonly var f in snapshot.Fish)
+        {
+            perTeam[f.Team]++;
+        }
+
+        int fishPerTeam = 0;
+        foreach (int n in perTeam)
+        {
+            fishPerTeam = Math.Max(fishPerTeam, n);
+        }
+
+        var para = mission.CommonPara;
+        para.Name = snapshot.ItemName;
+        para.TeamCount = teamCount;
+        para.FishCntPerTeam = fishPerTeam;
+        para.MsPerCycle = 100;
+        int total = snapshot.TotalCycles > 0 ? snapshot.TotalCycles : 6000;
+        para.TotalSeconds = total / 10;
+        para.RemainingCycles = Math.Max(0, total - snapshot.Cycle);
+        para.IsRunning = true;
+        para.IsExchangedHalfCourt = snapshot.SidesSwapped;
+        para.IsGoalBlockNeeded = true;
+        para.IsFieldInnerLinesNeeded = 1;
+
+        for (int index = 0; index < teamCount; index++)
+        {
+            int team = ServerTeam(snapshot, index, teamCount);
+            var t = new Team<RoboFish>();
+            t.Para.FishCount = perTeam[team];
+            t.Para.MyHalfCourt = index == 0 ? HalfCourt.LEFT : HalfCourt.RIGHT;
+            t.Para.Score = snapshot.GoalsOf(team);
+            t.Para.Name = team < TeamNames.Length ? TeamNames[team] : $"team {team}";
+            t.Para.IsReady = true;
+            foreach (ref readonly var f in snapshot.Fish)
+            {
+                if (f.Team == team)
+                {
+                    t.Fishes.Add(Fish(f));
+                }
+            }
+
+            mission.TeamsRef.Add(t);
+        }
+
+        var env = mission.EnvRef;
+        Field.Instance().SetSize((int)MathF.Round(snapshot.FieldLength), (int)MathF.Round(snapshot.FieldWidth));
+        env.FieldInfo = Field.Instance();
+        foreach (ref readonly var b in snapshot.Balls)
+        {
+            float speed = b.Velocity.Length();
+            env.Balls.Add(new Ball((int)MathF.Round(b.Radius))
+            {
+                PositionMm = Xna.Vector3.FromXZ(b.Position),
+                VelocityMmPs = speed,
+                VelocityDirectionRad = speed > 0f ? MathF.Atan2(b.Velocity.Y, b.Velocity.X) : 0f,
+            });
+        }
+
+        foreach (ref readonly var o in snapshot.Obstacles)
+        {
+            string name = $"obstacle{o.Index}";
+            if (o.Kind == ObstacleKind.Round)
+            {
+                env.ObstaclesRound.Add(new RoundedObstacle { Name = name, PositionMm = Xna.Vector3.FromXZ(o.Center), RadiusMm = (int)MathF.Round(o.Radius) });
+            }
+            else
+            {
+                env.ObstaclesRect.Add(new RectangularObstacle
+                {
+                    Name = name, PositionMm = Xna.Vector3.FromXZ(o.Center), DirectionRad = o.Heading,
+                    LengthMm = (int)MathF.Round(o.Length), WidthMm = (int)MathF.Round(o.Width),
+                });
+            }
+        }
+
+        foreach (var pair in snapshot.Variables)
+        {
+            mission.HtMissionVariables[pair.Key] = pair.Value;
+        }
+
+        return mission;
+    }
+
+    /// <summary>Index in <see cref="Mission.TeamsRef"/> of a server team (the left team is index 0).</summary>
+    /// <param name="snapshot">The snapshot.</param>
+    /// <param name="team">Server team (0 attacks +X before the swap).</param>
+    public static int MissionTeam(MatchSnapshot snapshot, int team) =>
+        TeamCount(snapshot) == 2 && snapshot.SidesSwapped ? 1 - team : team;
+
+    private static int ServerTeam(MatchSnapshot snapshot, int index, int teamCount) =>
+        teamCount == 2 && snapshot.SidesSwapped ? 1 - index : index;
+
+    private static int TeamCount(MatchSnapshot snapshot)
+    {
+        int teams = 1;
+        foreach (ref readonly var f in snapshot.Fish)
+        {
+            teams = Math.Max(teams, f.Team + 1);
+        }
+
+        return teams;
+    }
+
+    private RoboFish Fish(in FishView f)
+    {
+        var fish = new RoboFish
+        {
+            BodyLength = (int)MathF.Round(f.BodyLength),
+            BodyWidth = (int)MathF.Round(f.Width),
+            HeadLength = (int)MathF.Round(f.HeadLength),
+            TailJointLength1 = (int)MathF.Round(f.TailLength1),
+            TailJointLength2 = (int)MathF.Round(f.TailLength2),
+            TailJointLength3 = (int)MathF.Round(f.TailLength3),
+            PositionMm = Xna.Vector3.FromXZ(f.Position),
+            BodyDirectionRad = Xna.MathHelper.WrapAngle(f.Heading),
+            VelocityMmPs = f.Speed,
+            AngularVelocityRadPs = f.AngularSpeed,
+            TailToBodyAngle1 = f.Joint1,
+            TailToBodyAngle2 = f.Joint2,
+            TailToBodyAngle3 = f.Joint3,
+        };
+        fish.VelocityDirectionRad = fish.BodyDirectionRad;
+        fish.UpdateRadii();
+
+        var size = new FishSize(f.BodyLength, f.Width, f.HeadLength, f.TailLength1, f.TailLength2, f.TailLength3);
+        var pose = new FishPose(f.Position, f.Heading, f.Joint1, f.Joint2, f.Joint3);
+        if (!_models.TryGetValue(f.Index, out var model) || model.Size != size)
+        {
+            model = new FishModel(size, pose);
+            _models[f.Index] = model;
+        }
+        else
+        {
+            model.SetPose(pose);
+        }
+
+        Outline(fish, f, model);
+        return fish;
+    }
+
+    // Fills the vertex lists from the fish model: the body in the original's order, the other leaves as the model holds them.
+    private static void Outline(RoboFish fish, in FishView f, FishModel model)
+    {
+        var (sin, cos) = MathF.SinCos(f.Heading);
+        Vector2 u = new(cos, sin), left = new(sin, -cos);
+        float hl = 0.5f * f.BodyLength, hw = 0.5f * f.Width;
+        Vector2 p = f.Position;
+        Vector2 headLeft = p + (u * hl) + (left * hw), headRight = p + (u * hl) - (left * hw);
+        Vector2 tip = p + (u * (hl + f.HeadLength));
+        fish.BodyPolygonVertices[0] = Xna.Vector3.FromXZ(headLeft);
+        fish.BodyPolygonVertices[1] = Xna.Vector3.FromXZ(tip);
+        fish.BodyPolygonVertices[2] = Xna.Vector3.FromXZ(headRight);
+        fish.BodyPolygonVertices[3] = Xna.Vector3.FromXZ(p - (u * hl) - (left * hw));
+        fish.BodyPolygonVertices[4] = Xna.Vector3.FromXZ(p - (u * hl) + (left * hw));
+        Leaf(fish.LeftPectoralPolygonVertices, model.GetLeaf(FishPart.LeftPectoral));
+        Leaf(fish.RightPectoralPolygonVertices, model.GetLeaf(FishPart.RightPectoral));
+        Leaf(fish.Tail1PolygonVertices, model.GetLeaf(FishPart.Tail1));
+        Leaf(fish.Tail2PolygonVertices, model.GetLeaf(FishPart.Tail2));
+        Leaf(fish.Tail3PolygonVertices, model.GetLeaf(FishPart.Tail3));
+        Leaf(fish.LeftCaudalFinVertices, model.GetLeaf(FishPart.LeftCaudal));
+        Leaf(fish.RightCaudalFinVertices, model.GetLeaf(FishPart.RightCaudal));
+
+        fish.PolygonVertices[0] = Xna.Vector3.FromXZ(tip);
+        fish.PolygonVertices[1] = Xna.Vector3.FromXZ(headLeft);
+        fish.PolygonVertices[2] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftPectoral), p));
+        fish.PolygonVertices[3] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftCaudal), p));
+        fish.PolygonVertices[4] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightCaudal), p));
+        fish.PolygonVertices[5] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightPectoral), p));
+        fish.PolygonVertices[6] = Xna.Vector3.FromXZ(headRight);
+
+        fish.CollisionModelCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * fish.CollisionModelRadiusMm)));
+        fish.CollisionModelBodyCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * fish.CollisionModelBodyRadiusMm)));
+        fish.CollisionModelTailCenterPositionMm = Xna.Vector3.FromXZ(model.TailGroup.Center);
+    }
+
+    private static void Leaf(List<Xna.Vector3> into, ReadOnlySpan<Vector2> points)
+    {
+        into.Clear();
+        foreach (var q in points)
+        {
+            into.Add(Xna.Vector3.FromXZ(q));
+        }
+    }
+
+    private static Vector2 Farthest(ReadOnlySpan<Vector2> points, Vector2 from)
+    {
+        Vector2 best = points[0];
+        float bestD = -1f;
+        foreach (var q in points)
+        {
+            float d = Vector2.DistanceSquared(q, from);
+            if (d > bestD)
+            {
+                bestD = d;
+                best = q;
+            }
+        }
+
+        return best;
+    }
+}

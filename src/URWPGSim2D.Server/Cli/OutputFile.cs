@@ -1,0 +1,44 @@
+using System.IO;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// Checks an output FILE option before any work starts, so a bad path is one line and exit code 2
+/// up front instead of a failure after a whole match: the folder must exist and the path must not
+/// be a folder. Nothing is created by the check.
+/// </summary>
+internal static class OutputFile
+{
+    /// <summary>Fails when <paramref name="path"/> cannot be an output file.</summary>
+    /// <param name="option">The option that names the file, e.g. <c>--svg</c>; the start of the message.</param>
+    /// <param name="path">The path given, or null when the option is absent (no check).</param>
+    /// <exception cref="CliInputException">The folder does not exist, or the path is a folder or not a valid path.</exception>
+    public static void Check(string option, string? path)
+    {
+        if (path is null)
+        {
+            return;
+        }
+
+        string full;
+        try
+        {
+            full = Path.GetFullPath(path);
+        }
+        catch (System.Exception e) when (e is System.ArgumentException or System.NotSupportedException or PathTooLongException)
+        {
+            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (not a valid path)");
+        }
+
+        if (path.Length == 0 || Directory.Exists(full))
+        {
+            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (it is a folder, give a file name)");
+        }
+
+        string? folder = Path.GetDirectoryName(full);
+        if (folder is not null && !Directory.Exists(folder))
+        {
+            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (folder {CliText.Quote(folder)} does not exist)");
+        }
+    }
+}

@@ -1,0 +1,137 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Batch.Slurm;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>run --batch N --slurm DIR</c>: writes the batch's Slurm scripts into DIR (see
+/// <see cref="SlurmJob"/>) for the shards whose results are missing or incomplete there, and with
+/// <c>--submit</c> submits them (<c>bash DIR/submit.sh</c>) and prints the job ids. Everything is
+/// checked before anything is written: a problem is one line on stderr and exit code 2.
+/// </summary>
+internal static class SlurmRun
+{
+    /// <summary>Writes (and submits) the batch's jobs; returns the exit code.</summary>
+    public static int Run(RunOptions options, BatchHeader header, CliConsole console)
+    {
+        string folder, results;
+        try
+        {
+            folder = Path.TrimEndingDirectorySeparator(Path.GetFullPath(options.Slurm!));
+            results = Path.GetFullPath(options.Results ?? Path.Combine(folder, "results.jsonl"));
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            return Refuse(console, $"--slurm: not a usable path ({e.Message})");
+        }
+
+        if (File.Exists(folder))
+        {
+            return Refuse(console, $"--slurm: {folder} is a file, not a folder");
+        }
+
+        string? resultsFolder = Path.GetDirectoryName(results);
+        if (Directory.Exists(results) || resultsFolder is null)
+        {
+            return Refuse(console, $"--results: {results} is a folder");
+        }
+
+        if (resultsFolder != folder && !Directory.Exists(resultsFolder))
+        {
+            return Refuse(console, $"--results: the folder {resultsFolder} does not exist");
+        }
+
+        if (options.Submit && (OnPath("sbatch") is null || OnPath("bash") is null))
+        {
+            return Refuse(console, "--submit: sbatch (or bash) is not on PATH; submit from a Slurm login node, or leave out --submit and run submit.sh there");
+        }
+
+        int shards = options.SlurmShards ?? SlurmJob.DefaultShards(header.Matches);
+        List<int> toPlay;
+        try
+        {
+            toPlay = ShardResults.ToPlay(folder, header.Whole, shards);
+        }
+        catch (ResultFileException e)
+        {
+            return Refuse(console, e.Message);
+        }
+
+        var job = new SlurmJob(
+            ServerCommand.OfThisProcess(), options.PassedOn, Environment.CurrentDirectory, folder, results, shards, toPlay,
+            options.Threads ?? 1, options.Threads is not null, options.Partition, options.TimeLimit);
+        string submit = Path.Combine(folder, SlurmJob.SubmitScriptName);
+        try
+        {
+            Directory.CreateDirectory(Path.Combine(folder, SlurmJob.LogFolder));
+            WriteScript(Path.Combine(folder, SlurmJob.ShardScriptName), job.ShardScript());
+            WriteScript(Path.Combine(folder, SlurmJob.MergeScriptName), job.MergeScript());
+            WriteScript(submit, job.SubmitScript());
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return Refuse(console, $"--slurm: cannot write the scripts into {folder} ({e.Message})");
+        }
+
+        string play = toPlay.Count == 0 ? "none (all have results)" : ArraySpec.Format(toPlay);
+        console.Out.Write($"slurm: {header.Matches} matches in {shards} shards, in {folder}; shards to play: {play}\n");
+        console.Out.Write($"wrote {SlurmJob.ShardScriptName}, {SlurmJob.MergeScriptName} and {SlurmJob.SubmitScriptName} there\n");
+        if (!options.Submit)
+        {
+            console.Out.Write($"submit with: bash {ShellWord.Quote(submit)}\n");
+            return ExitCodes.Success;
+        }
+
+        return Submit(submit, console);
+    }
+
+    // bash DIR/submit.sh: its lines (the job ids) go to stdout; when sbatch refuses, its message to stderr and exit 1.
+    private static int Submit(string script, CliConsole console)
+    {
+        var start = new ProcessStartInfo("bash") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        start.ArgumentList.Add(script);
+        using var process = Process.Start(start)!;
+        var error = process.StandardError.ReadToEndAsync();
+        string output = process.StandardOutput.ReadToEnd();
+        process.WaitForExit();
+        console.Out.Write(output);
+        if (process.ExitCode != 0)
+        {
+            string message = error.Result.Trim();
+            console.ErrorLine($"slurm: submitting failed (bash {ShellWord.Quote(script)} exited {process.ExitCode}){(message.Length > 0 ? ": " + message : string.Empty)}");
+            return ExitCodes.InternalError;
+        }
+
+        return ExitCodes.Success;
+    }
+
+    // Written whole and renamed, so a script is never half there; executable for its owner.
+    private static void WriteScript(string path, string text)
+    {
+        string temporary = path + ".tmp";
+        File.WriteAllText(temporary, text);
+        if (!OperatingSystem.IsWindows())
+        {
+            File.SetUnixFileMode(temporary, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute | UnixFileMode.GroupRead | UnixFileMode.GroupExecute | UnixFileMode.OtherRead | UnixFileMode.OtherExecute);
+        }
+
+        File.Move(temporary, path, overwrite: true);
+    }
+
+    private static string? OnPath(string program) =>
+        (Environment.GetEnvironmentVariable("PATH") ?? string.Empty)
+            .Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries)
+            .Select(d => Path.Combine(d, program))
+            .FirstOrDefault(File.Exists);
+
+    private static int Refuse(CliConsole console, string message)
+    {
+        console.ErrorLine("run: " + message);
+        return ExitCodes.BadInput;
+    }
+}

@@ -1,0 +1,159 @@
+using System;
+using System.Buffers;
+using System.Collections.Generic;
+using System.Numerics;
+using System.Text.Json;
+using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Server.Trace;
+
+/// <summary>
+/// Serialises one cycle line of the trace (docs/simulation.md, "Trace"; docs/viewer.md, "Trace
+/// additions"): cycle, fish, balls, contacts, score and events, and on the cycle-0 line also the
+/// item slug and the static layout. The same bytes go to the trace file, the replay page and the
+/// live view. One instance per match; the returned span is valid until the next call.
+/// </summary>
+internal sealed class TraceLine
+{
+    private readonly Match _match;
+    private readonly ITraceItemInfo _item;
+    private readonly ArrayBufferWriter<byte> _buffer = new(1 << 12);
+    private readonly Utf8JsonWriter _json;
+    private readonly List<TraceEvent> _events = [];
+
+    /// <summary>Creates the serialiser of a match's lines.</summary>
+    /// <param name="match">The match.</param>
+    /// <param name="item">The competition item's information, or null for a plain match (<see cref="DefaultTraceItem"/>).</param>
+    public TraceLine(Match match, ITraceItemInfo? item = null)
+    {
+        _match = match;
+        _item = item ?? (ITraceItemInfo?)match.Referee ?? new DefaultTraceItem(match); // a competition item's referee reports itself
+        _json = new Utf8JsonWriter(_buffer);
+    }
+
+    /// <summary>The item information written into the lines.</summary>
+    public ITraceItemInfo Item => _item;
+
+    /// <summary>The line (no newline) of the world's current state and the last cycle's contacts.</summary>
+    /// <param name="contacts">The contacts resolved in the cycle just played (empty for cycle 0).</param>
+    public ReadOnlySpan<byte> Write(ReadOnlySpan<ContactRecord> contacts)
+    {
+        var world = _match.World;
+        var w = _json;
+        _buffer.ResetWrittenCount();
+        w.Reset(_buffer);
+        w.WriteStartObject();
+        w.WriteNumber("cycle", world.Cycle);
+        if (world.Cycle == 0)
+        {
+            w.WriteString("item", _item.Slug);
+            w.WritePropertyName("layout");
+            TraceLayout.Write(w, _match, _item);
+        }
+
+        w.WriteStartArray("fish");
+        foreach (var f in world.Fish)
+        {
+            w.WriteStartObject();
+            Pair(w, "position", f.Position);
+            w.WriteNumber("heading", f.Heading);
+            w.WriteStartArray("joints");
+            w.WriteNumberValue(f.Joint1);
+            w.WriteNumberValue(f.Joint2);
+            w.WriteNumberValue(f.Joint3);
+            w.WriteEndArray();
+            w.WriteNumber("speed", f.Speed.Value);
+            w.WriteNumber("angularSpeed", f.Turn.Value);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        w.WriteStartArray("balls");
+        foreach (var b in world.Balls)
+        {
+            w.WriteStartObject();
+            Pair(w, "position", b.Position);
+            Pair(w, "velocity", b.Velocity);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        w.WriteStartArray("contacts");
+        foreach (ref readonly var c in contacts)
+        {
+            w.WriteStartObject();
+            w.WriteString("a", BodyNames.A(c.Pair));
+            w.WriteString("b", BodyNames.B(world, c.Pair));
+            w.WriteString("partA", BodyNames.Part(c.PartA));
+            w.WriteString("partB", BodyNames.Part(c.PartB));
+            Pair(w, "mtv", c.Mtv);
+            Pair(w, "normal", c.Normal);
+            Pair(w, "actionPoint", c.Point);
+            w.WriteEndObject();
+        }
+
+        w.WriteEndArray();
+        _events.Clear();
+        if (world.Cycle > 0)
+        {
+            _item.AddEvents(world.Cycle, _events);
+        }
+
+        w.WriteStartArray("score");
+        for (int team = 0; team < TraceLayout.TeamCount; team++)
+        {
+            w.WriteNumberValue(_item.Score(team));
+        }
+
+        w.WriteEndArray();
+
+        w.WriteStartArray("events");
+        foreach (var e in _events)
+        {
+            WriteEvent(w, e);
+        }
+
+        w.WriteEndArray();
+        w.WriteEndObject();
+        w.Flush();
+        return _buffer.WrittenSpan;
+    }
+
+    /// <summary>Writes a point as <c>[x, z]</c>.</summary>
+    internal static void Pair(Utf8JsonWriter w, string name, Vector2 v)
+    {
+        w.WriteStartArray(name);
+        w.WriteNumberValue(v.X);
+        w.WriteNumberValue(v.Y);
+        w.WriteEndArray();
+    }
+
+    private static void WriteEvent(Utf8JsonWriter w, in TraceEvent e)
+    {
+        w.WriteStartObject();
+        w.WriteString("kind", e.Kind);
+        if (e.Team is int team)
+        {
+            w.WriteNumber("team", team);
+        }
+
+        if (e.Fish is int fish)
+        {
+            w.WriteNumber("fish", fish);
+        }
+
+        if (e.Ball is int ball)
+        {
+            w.WriteNumber("ball", ball);
+        }
+
+        if (e.Value is double value)
+        {
+            w.WriteNumber("value", value);
+        }
+
+        w.WriteString("text", e.Text);
+        w.WriteEndObject();
+    }
+}

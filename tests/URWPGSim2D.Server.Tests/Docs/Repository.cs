@@ -1,0 +1,38 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+
+namespace URWPGSim2D.Server.Tests.Docs;
+
+/// <summary>The clone the tests run in: its root (the folder of the .sln) and its Markdown files.</summary>
+internal static class Repository
+{
+    private static readonly Lazy<string> RootFolder = new(() =>
+    {
+        for (var folder = new DirectoryInfo(AppContext.BaseDirectory); folder is not null; folder = folder.Parent)
+        {
+            if (File.Exists(Path.Combine(folder.FullName, "URWPGSim2D.Collision.sln")))
+            {
+                return folder.FullName;
+            }
+        }
+
+        throw new InvalidOperationException($"no URWPGSim2D.Collision.sln above {AppContext.BaseDirectory}");
+    });
+
+    /// <summary>The repository's root folder.</summary>
+    public static string Root => RootFolder.Value;
+
+    /// <summary>A path relative to the root (forward slashes) made absolute.</summary>
+    public static string PathOf(string relative) => Path.Combine(Root, relative.Replace('/', Path.DirectorySeparatorChar));
+
+    /// <summary>README.md and every Markdown file under docs/, as paths relative to the root.</summary>
+    public static IReadOnlyList<string> MarkdownFiles() =>
+        [
+            "README.md",
+            .. Directory.EnumerateFiles(PathOf("docs"), "*.md", SearchOption.AllDirectories)
+                .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
+                .Order(StringComparer.Ordinal),
+        ];
+}
