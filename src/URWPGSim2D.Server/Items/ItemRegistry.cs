@@ -12,6 +12,9 @@ internal static class ItemRegistry
     private static readonly CompetitionItem[] Known =
     [
         new BallGrab.BallGrabItem(),
+        new Rescue.RescueItem(),
+        new CrossCountry.CrossCountryItem(),
+        new Snooker.SnookerItem(),
     ];
 
     /// <summary>The items, in listing order.</summary>

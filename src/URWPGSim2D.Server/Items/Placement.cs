@@ -25,9 +25,17 @@ internal static class Placement
         Move(f, position, heading);
     }
 
-    /// <summary>Puts a ball at a place, at rest.</summary>
+    /// <summary>Takes a ball out of play at a place: it does not move and nothing collides with it.</summary>
+    public static void Park(BallState b, Vector2 position)
+    {
+        Place(b, position);
+        b.OutOfPlay = true;
+    }
+
+    /// <summary>Puts a ball at a place, at rest and in play.</summary>
     public static void Place(BallState b, Vector2 position)
     {
+        b.OutOfPlay = false;
         b.Position = position;
         b.BasePosition = position;
         b.Velocity = Vector2.Zero;

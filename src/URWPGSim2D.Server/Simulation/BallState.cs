@@ -30,6 +30,12 @@ internal sealed class BallState(int index, float radius, Vector2 position, Vecto
     /// <summary>The stepper's last committed time for this ball (cycle fraction 0 … 1).</summary>
     public double BaseTime;
 
+    /// <summary>
+    /// True while a competition item keeps this ball out of play (potted, laid where the item says,
+    /// possibly outside the pool): it does not move and collides with nothing.
+    /// </summary>
+    public bool OutOfPlay;
+
     /// <summary>The ball as a circle at its current position.</summary>
     public Circle Shape => new(Position, Radius);
 }

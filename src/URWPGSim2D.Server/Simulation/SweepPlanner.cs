@@ -209,8 +209,8 @@ internal sealed class SweepPlanner
         sink.Add(pair, m, -1, _rate[m]);
     }
 
-    // A fish an item keeps out of play (parked, maybe outside the pool) meets nothing.
-    private bool OutOfPlay(int m) => m < _fish && _world.Fish[m].OutOfPlay;
+    // A fish or ball an item keeps out of play (parked, maybe outside the pool) meets nothing.
+    private bool OutOfPlay(int m) => m < _fish ? _world.Fish[m].OutOfPlay : _world.Balls[m - _fish].OutOfPlay;
 
     private void TryWall(int m, IPairSink sink)
     {

@@ -22,8 +22,8 @@ internal static class ItemTestMatches
         return MatchBuilder.Build(scenario, seed: seed, noise: noise, cycles: cycles);
     }
 
-    /// <summary>Plays until the item's match is over or <paramref name="limit"/> cycles; returns the cycles played.</summary>
-    public static int PlayOut(this Match match, int limit = 100_000)
+    /// <summary>Plays until the item's match is over (at most <paramref name="limit"/> cycles); returns the cycles played.</summary>
+    public static int PlayAll(this Match match, int limit = 100_000)
     {
         int n = 0;
         while (!match.IsOver && n < limit)

@@ -95,7 +95,7 @@ public sealed class RescueTests
         Assert.Empty(match.EventsOf("half-time"));
         match.Step();
         Assert.Equal(10, Assert.Single(match.EventsOf("half-time")).Cycle);
-        Assert.Equal(20, match.PlayOut() + 10);
+        Assert.Equal(20, match.PlayAll() + 10);
         Assert.Equal(new MatchOutcome(-1, "tie"), match.Referee!.Outcome);
     }
 
@@ -110,7 +110,7 @@ public sealed class RescueTests
         Assert.Equal(20, Assert.Single(match.EventsOf("half-time")).Cycle);
         match.Play(2);
         Placement.Place(match.World.Balls[1], new Vector2(2000f, 0f));
-        match.PlayOut();
+        match.PlayAll();
 
         var r = (RescueReferee)match.Referee!;
         Assert.Equal(new[] { 1, 1 }, r.Scores);
@@ -159,7 +159,7 @@ public sealed class RescueTests
         int[] Play(ulong seed)
         {
             var m = ItemTestMatches.Build(Item, 1200, "demo", seed, noise: true);
-            m.PlayOut();
+            m.PlayAll();
             return [.. m.Referee!.Scores, m.World.Cycle, m.Referee.Events.Count, (int)m.World.Balls[0].Position.X, (int)m.World.Fish[0].Position.Y];
         }
 

@@ -1,4 +1,5 @@
 using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Trace;
 
 namespace URWPGSim2D.Server.Items.CrossCountry;
 
@@ -35,8 +36,8 @@ internal sealed class CrossCountryItem : CompetitionItem
         BallValues = [1, 1],
         Zones =
         [
-            ItemZone.Circle("target", 0, 0, CrossCountryLayout.Targets[0], CrossCountryLayout.TargetTolerance),
-            ItemZone.Circle("target", 1, 0, CrossCountryLayout.Targets[1], CrossCountryLayout.TargetTolerance),
+            TraceZone.Circle("target", 0, CrossCountryLayout.Targets[0], CrossCountryLayout.TargetTolerance),
+            TraceZone.Circle("target", 1, CrossCountryLayout.Targets[1], CrossCountryLayout.TargetTolerance),
         ],
     };
 

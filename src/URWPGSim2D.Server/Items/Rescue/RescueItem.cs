@@ -1,4 +1,5 @@
 using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Trace;
 
 namespace URWPGSim2D.Server.Items.Rescue;
 
@@ -36,8 +37,8 @@ internal sealed class RescueItem : CompetitionItem
         BallValues = [1, 1],
         Zones =
         [
-            ItemZone.Box("rescue", 0, -1, RescueLayout.ZoneMin, RescueLayout.ZoneMax),
-            ItemZone.Circle("parking", 0, 1, RescueLayout.ParkedFish, 20f),
+            TraceZone.Box("rescue", 0, RescueLayout.ZoneMin, RescueLayout.ZoneMax),
+            TraceZone.Circle("parking", 0, RescueLayout.ParkedFish, 20f, team: 1),
         ],
     };
 

@@ -1,6 +1,7 @@
 using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Trace;
 
 namespace URWPGSim2D.Server.Items.Snooker;
 
@@ -37,7 +38,7 @@ internal sealed class SnookerItem : CompetitionItem
             values.Add(SnookerLayout.Value(i));
         }
 
-        var zones = new List<ItemZone>();
+        var zones = new List<TraceZone>();
         float half = SnookerLayout.FieldWidth / 2f;
         float[] x0 = [-SnookerLayout.FieldLength / 2f, -SnookerLayout.PocketWidth / 2f, (SnookerLayout.FieldLength / 2f) - SnookerLayout.PocketWidth];
         for (int row = 0; row < 2; row++)
@@ -45,7 +46,7 @@ internal sealed class SnookerItem : CompetitionItem
             for (int k = 0; k < 3; k++)
             {
                 float zMin = row == 0 ? -half : half - SnookerLayout.PocketWidth;
-                zones.Add(ItemZone.Box("hole", zones.Count, -1, new Vector2(x0[k], zMin), new Vector2(x0[k] + SnookerLayout.PocketWidth, zMin + SnookerLayout.PocketWidth)));
+                zones.Add(TraceZone.Box("hole", zones.Count, new Vector2(x0[k], zMin), new Vector2(x0[k] + SnookerLayout.PocketWidth, zMin + SnookerLayout.PocketWidth)));
             }
         }
 
