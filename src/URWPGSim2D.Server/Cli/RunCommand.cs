@@ -93,7 +93,7 @@ internal sealed class RunCommand : ICliCommand
                 trace!.WriteLine(lines.Write(ReadOnlySpan<ContactRecord>.Empty));
             }
 
-            for (int k = 0; k < cycles && !match.IsOver; k++)
+            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
             {
                 match.Step();
                 if (lines is not null)

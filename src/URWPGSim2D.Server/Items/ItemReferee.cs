@@ -86,6 +86,15 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <summary>Set by an item when its match is decided before the time is up (e.g. all balls in).</summary>
     protected bool MatchDone { get; set; }
 
+    /// <summary>
+    /// Whether the item keeps playing when its time is up (extra periods deciding a tie): the item
+    /// then ends the match itself (<see cref="MatchDone"/>) and may last up to <see cref="MaxCycles"/>.
+    /// </summary>
+    protected virtual bool PlaysOn => false;
+
+    /// <summary>The most cycles the match can last: <see cref="Cycles"/>, or more for an item that plays extra periods.</summary>
+    public virtual int MaxCycles => Cycles;
+
     /// <summary>Whether the current half is over before its time (e.g. three catches).</summary>
     protected virtual bool HalfDone => false;
 
@@ -140,7 +149,7 @@ internal abstract class ItemReferee : ITraceItemInfo
 
         bool moved = Score(world, contacts);
         int length = Half < Halves ? HalfLength : Cycles - ((Halves - 1) * HalfLength);
-        if (MatchDone || HalfDone || world.Cycle - HalfStartCycle >= length)
+        if (MatchDone || HalfDone || (!PlaysOn && world.Cycle - HalfStartCycle >= length))
         {
             if (Half < Halves && !MatchDone)
             {

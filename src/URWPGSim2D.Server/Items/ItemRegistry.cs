@@ -14,6 +14,9 @@ internal static class ItemRegistry
         new BallGrab.BallGrabItem(),
         new Rescue.RescueItem(),
         new CrossCountry.CrossCountryItem(),
+        new Polo.PoloItem(1),
+        new Polo.PoloItem(3),
+        new Polo.PoloItem(5),
         new Snooker.SnookerItem(),
     ];
 

@@ -38,3 +38,27 @@ internal static class ItemTestMatches
     /// <summary>The referee's events of a kind.</summary>
     public static List<ItemEvent> EventsOf(this Match match, string kind) => match.Referee!.Events.Where(e => e.Kind == kind).ToList();
 }
+
+/// <summary>Drives a referee without physics: the test places the bodies, each call is one cycle judged.</summary>
+internal static class Judging
+{
+    /// <summary>Advances the world's clock by one cycle and judges it with <paramref name="contacts"/>.</summary>
+    public static void JudgeCycle(this Match match, params ContactRecord[] contacts)
+    {
+        match.World.Cycle++;
+        match.Referee!.Judge(match.World, contacts);
+    }
+
+    /// <summary>Judges <paramref name="cycles"/> cycles with the same contacts.</summary>
+    public static void JudgeCycles(this Match match, int cycles, params ContactRecord[] contacts)
+    {
+        for (int k = 0; k < cycles; k++)
+        {
+            match.JudgeCycle(contacts);
+        }
+    }
+
+    /// <summary>A fish–ball contact record.</summary>
+    public static ContactRecord Touch(int fish, int ball) =>
+        new(new CandidatePair(PairKind.FishBall, fish, ball, 1f), 1, -1, System.Numerics.Vector2.Zero, System.Numerics.Vector2.UnitX, System.Numerics.Vector2.Zero, 0.5);
+}

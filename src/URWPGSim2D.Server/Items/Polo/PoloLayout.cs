@@ -81,7 +81,7 @@ internal static class PoloLayout
         {
             foreach (var (position, heading) in KickOffPoses(perTeam, leftSide: team == 0, kicksOff: team == 0, FishSize.Default))
             {
-                fish.Add(new FishDefinition(team, position, heading, "idle", Decision.Stop));
+                fish.Add(new FishDefinition(team, position, heading, "demo", Decision.Stop));
             }
         }
 
