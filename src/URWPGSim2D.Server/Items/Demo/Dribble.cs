@@ -7,18 +7,17 @@ namespace URWPGSim2D.Server.Items.Demo;
 /// <summary>
 /// Pushing a ball to a point with a fish that turns slowly (at most about 0.4 rad/s), by pursuit
 /// of a point on the push line (the line through the ball toward the target). A fish behind the
-/// ball and roughly facing along the line aims at a point of the line a little ahead of itself,
-/// so it joins the line already heading along it, and drives through the ball once on the line
-/// and lined up. Any other fish first swims to a staging point far enough behind the ball on the
-/// line to finish its turn there (round the ball when the ball is in the way). The line is taken
-/// afresh from the ball every cycle, so a ball that drifts sideways is followed. Pure function of
-/// the snapshot values.
+/// ball and roughly facing along the line follows it with its head (heading along the line,
+/// turned toward it in proportion to the head's offset) and drives through the ball; it keeps
+/// doing so, with wider tolerances, until it loses the line (the observation noise would
+/// otherwise make it flip between modes). Any other fish first swims to a staging point far
+/// enough behind the ball on the line to finish its turn there (round the ball when the ball is in
+/// the way). The line is taken afresh from the ball every cycle, so a ball that drifts sideways is
+/// followed. One value per fish, kept by the strategy across cycles.
 /// </summary>
 internal struct Dribble
 {
     private bool _onLine;
-
-    public static string Branch = "";
 
     /// <summary>Largest heading error (rad) at which the fish drives through the ball.</summary>
     public const float LineUp = 0.45f;
@@ -55,7 +54,6 @@ internal struct Dribble
         {
             // Follow the push line with the head (a Stanley-type line follower): heading along the
             // line, turned toward it in proportion to the head's offset.
-            Branch = "line";
             float desired = MathF.Atan2(dir.Y, dir.X) - MathF.Atan(headAside / 120f);
             float turn = Steering.Wrap(desired - me.Heading);
             int tcode = 7 + (int)MathF.Round(Math.Clamp(turn / 0.6f, -1f, 1f) * 7f);
@@ -74,7 +72,6 @@ internal struct Dribble
         if (Vector2.Distance(me.Position, stage) < 130f)
         {
             // At the staging point: turn toward the ball nearly on the spot.
-            Branch = "turn";
             return Swim(me, ball, 3);
         }
 
@@ -85,11 +82,8 @@ internal struct Dribble
         {
             // The ball lies across the way to the staging point: pass it on the fish's side.
             float s = aside >= 0f ? 1f : -1f;
-            Branch = "round";
             return Swim(me, ball + (normal * s * (reach + 160f)) - (dir * reach), 9);
         }
-
-        Branch = "stage";
         return Swim(me, stage, 10);
     }
 

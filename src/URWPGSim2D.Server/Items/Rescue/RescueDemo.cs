@@ -14,7 +14,7 @@ namespace URWPGSim2D.Server.Items.Rescue;
 /// </summary>
 internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 {
-    private const float Reach = 150f;
+    private const float Reach = 220f;
     private readonly int[] _stage = [0, 0];
     private Stuck[] _stuck = [];
     private Dribble[] _dribble = [];
@@ -93,7 +93,7 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
             return Steering.SwimTo(me, Back(me.Position, ball == 0 ? 1f : -1f));
         }
 
-        return _dribble[k].Toward(me, b.Position, b.Radius, Waypoint(ball, _stage[ball]), field: new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
+        return _dribble[k].Toward(me, b.Position, b.Radius, Waypoint(ball, _stage[ball]), 7, field: new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
     }
 
     // The next point of the route backwards (toward the balls' start) from a position right of its ball.
