@@ -129,7 +129,7 @@ internal sealed class RunCommand : ICliCommand
                 fish.SyncModel(); // the picture shows every leaf exactly where the fish is
             }
 
-            SvgFrame.Write(match.World, options.Svg);
+            SvgFrame.Write(match.World, options.Svg, [MatchSummary.TeamLabel(match, 0), MatchSummary.TeamLabel(match, 1)]);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));

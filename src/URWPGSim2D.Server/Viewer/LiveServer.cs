@@ -28,6 +28,7 @@ internal sealed class LiveServer : IDisposable
     private readonly CancellationTokenSource _stop = new();
     private readonly List<Task> _clients = [];
     private Task? _accept;
+    private bool _started;
 
     /// <summary>Creates the server (not yet listening).</summary>
     /// <param name="host">Address to listen on: an IP address or host name; <c>*</c>, <c>+</c> or <c>0.0.0.0</c> for every interface.</param>
@@ -66,6 +67,7 @@ internal sealed class LiveServer : IDisposable
             throw new LiveServerException($"cannot listen on {Url} ({e.Message})");
         }
 
+        _started = true;
         _accept = Task.Run(AcceptLoop);
     }
 
@@ -78,12 +80,18 @@ internal sealed class LiveServer : IDisposable
         }
 
         _stop.Cancel();
+        if (!_started)
+        {
+            return;
+        }
+
         try
         {
             _listener.Stop();
         }
-        catch (ObjectDisposedException)
+        catch (Exception e) when (e is ObjectDisposedException or HttpListenerException)
         {
+            // Already closed.
         }
 
         Task[] pending;
@@ -107,7 +115,15 @@ internal sealed class LiveServer : IDisposable
     public void Dispose()
     {
         Stop();
-        _listener.Close();
+        try
+        {
+            _listener.Close();
+        }
+        catch (Exception e) when (e is ObjectDisposedException or HttpListenerException)
+        {
+            // A listener that never started has nothing to close.
+        }
+
         _stop.Dispose();
     }
 
