@@ -4,17 +4,27 @@
 #      which also draws docs/figures/scaling.svg from the scaling and broad-phase results;
 #   2. the batch speed-up from the command line (16 default matches on 1 and on 2 threads);
 #   3. the default match end to end (the README's main job).
-# Arguments go to BenchmarkDotNet instead of --filter '*' (e.g. --filter '*Scaling*' to run part of it).
-# Results: BenchmarkDotNet.Artifacts/results/*.md (tables) and benchmarks/last-run.txt (everything printed).
+# The whole suite takes about an hour on 2 cores. Arguments go to BenchmarkDotNet instead of
+# --filter '*' (e.g. --filter '*Scaling*' to run part of it).
+# The tracked figure docs/figures/scaling.svg is replaced only with --update-figures (first
+# argument); otherwise the plot goes to benchmarks/artifacts/scaling.svg.
+# Results: benchmarks/artifacts/results/*-report.{csv,md} (BenchmarkDotNet's tables) and
+# benchmarks/last-run.txt (everything printed). Both are git-ignored.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 log=benchmarks/last-run.txt
+plot=benchmarks/artifacts/scaling.svg
+if [ "${1:-}" = "--update-figures" ]; then
+  plot=docs/figures/scaling.svg
+  shift
+fi
+mkdir -p benchmarks/artifacts
 {
   echo "# $(date -u +%FT%TZ) on $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | xargs), $(dotnet --version)"
   args=("$@")
   [ "${#args[@]}" -eq 0 ] && args=(--filter '*')
   dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- \
-    --job short --plot docs/figures/scaling.svg "${args[@]}"
+    --job short --artifacts benchmarks/artifacts --plot "$plot" "${args[@]}"
   server=(dotnet run -c Release --project src/URWPGSim2D.Server --)
   for threads in 1 2; do
     echo "## run --batch 16 --threads $threads"

@@ -21,16 +21,24 @@ internal static class ResultFile
     public static void Write(string path, BatchHeader header, IReadOnlyList<MatchResult> results)
     {
         string partial = path + ".partial";
-        using (var stream = new FileStream(partial, FileMode.Create, FileAccess.Write))
+        try
         {
-            WriteLine(stream, w => WriteHeader(w, header));
-            foreach (var r in results)
+            using (var stream = new FileStream(partial, FileMode.Create, FileAccess.Write))
             {
-                WriteLine(stream, w => WriteResult(w, r));
+                WriteLine(stream, w => WriteHeader(w, header));
+                foreach (var r in results)
+                {
+                    WriteLine(stream, w => WriteResult(w, r));
+                }
             }
-        }
 
-        File.Move(partial, path, overwrite: true);
+            File.Move(partial, path, overwrite: true);
+        }
+        catch
+        {
+            File.Delete(partial); // nothing half written stays behind
+            throw;
+        }
     }
 
     /// <summary>Reads a file; a bad file throws <see cref="ResultFileException"/> naming the file and line.</summary>
@@ -186,6 +194,11 @@ internal static class ResultFile
         int mostSubSteps = Field(e, "mostSubSteps").GetInt32();
         long events = Field(e, "events").GetInt64();
         float overlap = Field(e, "leftoverOverlap").GetSingle();
+        if (!float.IsFinite(overlap) || overlap < 0f)
+        {
+            throw new ResultFileException($"\"leftoverOverlap\" must be a finite number >= 0, got {Short(Field(e, "leftoverOverlap").GetRawText())}");
+        }
+
         int overlapCycle = Field(e, "leftoverCycle").GetInt32();
         int faults = Field(e, "strategyFaults").GetInt32();
         var result = new MatchResult(index, seed, cycles, goals0, goals1, counts, subSteps, mostSubSteps, events, overlap, overlapCycle, faults);

@@ -37,6 +37,7 @@ internal sealed class CliApp
         new ShapesCommand(),
         new RenderCommand(),
         new MergeCommand(),
+        new ViewCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>

@@ -10,6 +10,7 @@ using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Strategies;
 using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Server.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -50,6 +51,7 @@ internal sealed class RunCommand : ICliCommand
         }
 
         OutputFile.Check("--trace", options.Trace);
+        OutputFile.Check("--html", options.Html);
         OutputFile.Check("--svg", options.Svg);
         OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
@@ -80,17 +82,23 @@ internal sealed class RunCommand : ICliCommand
             return BatchRun.Run(options, scenario, scene, console);
         }
 
+        if (options.Live)
+        {
+            return LiveRun.Run(options, scenario, teams, console);
+        }
+
         int cycles = options.CyclesFor(scenario);
         var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
         var clock = Stopwatch.StartNew();
+        var replay = options.Html is null ? null : new ReplayRecorder();
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            var lines = trace is null ? null : new TraceLine(match);
+            var lines = trace is null && replay is null ? null : new TraceLine(match);
             if (lines is not null)
             {
-                trace!.WriteLine(lines.Write(ReadOnlySpan<ContactRecord>.Empty));
+                Record(lines.Write(ReadOnlySpan<ContactRecord>.Empty), trace, replay);
             }
 
             for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
@@ -98,13 +106,18 @@ internal sealed class RunCommand : ICliCommand
                 match.Step();
                 if (lines is not null)
                 {
-                    trace!.WriteLine(lines.Write(match.Contacts.Cycle));
+                    Record(lines.Write(match.Contacts.Cycle), trace, replay);
                 }
 
                 progress?.Update(k + 1);
             }
 
             trace?.Complete();
+        }
+
+        if (replay is not null)
+        {
+            AtomicFile.WriteAllText(options.Html!, ReplayPage.Replay(replay.ToJson()));
         }
 
         clock.Stop();
@@ -116,11 +129,18 @@ internal sealed class RunCommand : ICliCommand
                 fish.SyncModel(); // the picture shows every leaf exactly where the fish is
             }
 
-            SvgFrame.Write(match.World, options.Svg);
+            SvgFrame.Write(match.World, options.Svg, [MatchSummary.TeamLabel(match, 0), MatchSummary.TeamLabel(match, 1)]);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));
         return ExitCodes.Success;
+    }
+
+    // One trace line to the trace file and the replay page.
+    private static void Record(ReadOnlySpan<byte> line, TraceWriter? trace, ReplayRecorder? replay)
+    {
+        trace?.WriteLine(line);
+        replay?.Add(line);
     }
 
     /// <summary>The strategy assemblies of the command line, loaded (a fresh instance each call).</summary>
@@ -191,7 +211,9 @@ internal sealed class RunCommand : ICliCommand
         "original with its rules (--list-items lists them; --minutes 10|5|3|1, default 10); without a scene option it\n" +
         "plays ball-grab; --item default is the old default scene; --crowd N generates a crowded scene of N fish and balls.\n" +
         "--strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context, --strategy-timeout\n" +
-        "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame.\n" +
+        "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame,\n" +
+        "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
+        "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
         "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +

@@ -12,7 +12,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -61,6 +61,27 @@ internal sealed class RunOptions
 
     /// <summary>SVG output file.</summary>
     public string? Svg { get; private set; }
+
+    /// <summary>Replay page output file (<c>--html FILE</c>), or null.</summary>
+    public string? Html { get; private set; }
+
+    /// <summary>Whether to serve the match live in the browser (<c>--live</c>).</summary>
+    public bool Live { get; private set; }
+
+    /// <summary>Port of the live view (<c>--port N</c>).</summary>
+    public int Port { get; private set; } = DefaultPort;
+
+    /// <summary>Address the live view listens on (<c>--host H</c>; loopback by default).</summary>
+    public string Host { get; private set; } = "127.0.0.1";
+
+    /// <summary>Live playing speed, multiple of real time (<c>--speed X</c>; 1 = 100 ms a cycle).</summary>
+    public double Speed { get; private set; } = 1;
+
+    /// <summary>Whether the live match waits for resume or step before its first cycle (<c>--paused</c>).</summary>
+    public bool Paused { get; private set; }
+
+    /// <summary>Default port of the live view.</summary>
+    public const int DefaultPort = 8080;
 
     /// <summary>Per team (0, 1), a strategy assembly spec or null.</summary>
     public string?[] Strategies { get; } = new string?[2];
@@ -135,6 +156,18 @@ internal sealed class RunOptions
                 throw UsageError($"unexpected argument {CliText.Quote(name)}");
             }
 
+            if (name is "--live" or "--paused")
+            {
+                if (!seen.Add(name))
+                {
+                    throw UsageError($"{name} given twice");
+                }
+
+                o.Live |= name == "--live";
+                o.Paused |= name == "--paused";
+                continue;
+            }
+
             if (i + 1 >= args.Length)
             {
                 throw UsageError($"{name} needs a value");
@@ -168,6 +201,13 @@ internal sealed class RunOptions
                 case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
+                case "--html": o.Html = value; break;
+                case "--port": o.Port = (int)Number(name, value, 1, 65535); break;
+                case "--host": o.Host = value.Length > 0 && !value.Contains('/', StringComparison.Ordinal) ? value : throw UsageError($"--host must be an address or host name, got {CliText.Quote(value)}"); break;
+                case "--speed":
+                    o.Speed = double.TryParse(value, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out double x) && x >= 0.01 && x <= 1000
+                        ? x : throw UsageError($"--speed must be a number 0.01..1000 (times real time), got {CliText.Quote(value)}");
+                    break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
@@ -198,7 +238,7 @@ internal sealed class RunOptions
         }
 
         o.PassedOn = passedOn;
-        o.Check();
+        o.Check(seen);
         return o;
     }
 
@@ -219,7 +259,7 @@ internal sealed class RunOptions
     }
 
     // Options that do not go together.
-    private void Check()
+    private void Check(HashSet<string> seen)
     {
         if (Help)
         {
@@ -241,9 +281,19 @@ internal sealed class RunOptions
             throw UsageError("--shard, --threads and --results belong to --batch N");
         }
 
-        if (Batch is not null && (Trace is not null || Svg is not null))
+        if (Batch is not null && (Trace is not null || Svg is not null || Html is not null))
         {
-            throw UsageError("--trace and --svg record one match; they do not go with --batch");
+            throw UsageError("--trace, --svg and --html record one match; they do not go with --batch");
+        }
+
+        if (!Live && (seen.Contains("--port") || seen.Contains("--host") || seen.Contains("--speed") || Paused))
+        {
+            throw UsageError("--port, --host, --speed and --paused belong to --live");
+        }
+
+        if (Live && (Batch is not null || Trace is not null || Svg is not null || Html is not null))
+        {
+            throw UsageError("--live plays the match in the browser; --batch, --trace, --svg and --html do not go with it");
         }
 
         CheckSlurm();

@@ -41,6 +41,10 @@ internal static class JsonInput
         {
             throw ToInputError(ex, rootName, expectedKind);
         }
+        catch (InvalidOperationException)
+        {
+            throw new CliInputException(rootName, LoneSurrogate.Describe(text, default));
+        }
     }
 
     private static CliInputException ToInputError(JsonException ex, string rootName, ExpectedKind expectedKind)

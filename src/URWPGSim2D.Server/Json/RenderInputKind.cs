@@ -42,9 +42,10 @@ internal static class RenderInputKind
                 }
             }
         }
-        catch (JsonException)
+        catch (Exception e) when (e is JsonException or InvalidOperationException)
         {
-            // Malformed after what was seen: decide from that; the parser reports the error.
+            // Malformed (or a name that is not valid UTF-16) after what was seen: decide from that;
+            // the parser reports the error.
         }
 
         return hasAOrB;

@@ -10,22 +10,33 @@ namespace URWPGSim2D.Server.Rendering;
 /// <summary>
 /// Draws one frame of the match as SVG in world millimetres (x right, z down, as in the pool):
 /// water, goal mouths, goal blocks, obstacles, balls and every fish's eight leaf polygons
-/// (team 0 red, team 1 blue), with the cycle and score as a caption.
+/// (team 0 red, team 1 blue) with a heading line, the ids (fishN above each fish, the ball's
+/// number on each ball), the cycle and score as a caption and a legend of the colours.
 /// </summary>
 internal static class SvgFrame
 {
     private static readonly string[] TeamColours = ["#d9483b", "#2f6fd6"];
 
+    /// <summary>Fill of the balls.</summary>
+    private const string BallColour = "#f29b30";
+
+    /// <summary>Fill of the obstacles.</summary>
+    private const string ObstacleColour = "#6b5b4b";
+
     /// <summary>The SVG document of the world's current state.</summary>
-    public static string Render(World world)
+    /// <param name="world">The world.</param>
+    /// <param name="teamNames">The teams' names for the legend (team 0 first), or null for none.</param>
+    public static string Render(World world, System.Collections.Generic.IReadOnlyList<string>? teamNames = null)
     {
         var field = world.Field;
         float l = field.Length;
         float w = field.Width;
+        float top = -w / 2;
         var s = new SvgWriter("0.##");
-        s.StartDocument(-l / 2 - 20, -w / 2 - 90, l + 40, w + 110, (l + 40) / 3, (w + 110) / 3);
-        s.Element("text").Attribute("x", -l / 2).Attribute("y", -w / 2 - 30).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
+        s.StartDocument(-l / 2 - 20, top - 170, l + 40, w + 190, (l + 40) / 3, (w + 190) / 3);
+        s.Element("text").Attribute("x", -l / 2).Attribute("y", top - 110).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
             .Content("text", string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — team 0: {world.Goals[0]}, team 1: {world.Goals[1]}"));
+        Legend(s, world, teamNames, -l / 2, top - 45);
         Rect(s, new Vector2(-l / 2, -w / 2), new Vector2(l / 2, w / 2), "#cfe8f7", "#1b3a4b");
         float mouth = Field.GoalWidth / 2;
         Rect(s, new Vector2(-l / 2, -mouth), new Vector2(-l / 2 + Field.GoalDepth, mouth), "#f6f2c4", "none");
@@ -39,7 +50,7 @@ internal static class SvgFrame
         {
             if (o.Kind == ObstacleKind.Round)
             {
-                Circle(s, o.Center, o.Radius, "#6b5b4b");
+                Circle(s, o.Center, o.Radius, ObstacleColour);
             }
             else
             {
@@ -47,13 +58,13 @@ internal static class SvgFrame
                 Vector2 n = new(-u.Y, u.X);
                 Vector2 a = u * (o.Length / 2);
                 Vector2 b = n * (o.Width / 2);
-                Polygon(s, [o.Center + a + b, o.Center - a + b, o.Center - a - b, o.Center + a - b], "#6b5b4b");
+                Polygon(s, [o.Center + a + b, o.Center - a + b, o.Center - a - b, o.Center + a - b], ObstacleColour);
             }
         }
 
         foreach (var b in world.Balls)
         {
-            Circle(s, b.Position, b.Radius, "#f29b30");
+            Circle(s, b.Position, b.Radius, BallColour);
         }
 
         foreach (var f in world.Fish)
@@ -63,13 +74,57 @@ internal static class SvgFrame
             {
                 Polygon(s, f.Model.GetLeaf(part), colour);
             }
+
+            // Heading: a line ahead of the head tip.
+            Vector2 tip = f.Model.HeadTip, ahead = tip + (f.Model.Forward * 70f);
+            s.Element("line").Attribute("x1", tip.X).Attribute("y1", tip.Y).Attribute("x2", ahead.X).Attribute("y2", ahead.Y)
+                .Attribute("stroke", "#111").Attribute("stroke-width", "4").End();
+        }
+
+        // Ids on top of everything: fishN above each fish's body centre, the ball's number on it.
+        foreach (var f in world.Fish)
+        {
+            Label(s, f.Position - new Vector2(0, 75), string.Create(CultureInfo.InvariantCulture, $"fish{f.Index}"), "#111");
+        }
+
+        foreach (var b in world.Balls)
+        {
+            Label(s, b.Position, b.Index.ToString(CultureInfo.InvariantCulture), "#111");
         }
 
         return s.EndDocument().ToString();
     }
 
+    // The key: each team's colour, name and goals, then the ball and obstacle colours.
+    private static void Legend(SvgWriter s, World world, System.Collections.Generic.IReadOnlyList<string>? teamNames, float x, float y)
+    {
+        for (int team = 0; team < 2; team++)
+        {
+            s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40)
+                .Attribute("fill", TeamColours[team]).Attribute("stroke", "#222").Attribute("stroke-width", "2").End();
+            string name = teamNames is not null && team < teamNames.Count ? $" ({teamNames[team]})" : string.Empty;
+            string text = string.Create(CultureInfo.InvariantCulture, $"team {team}{name}: {world.Goals[team]}");
+            s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", text);
+            x += 130 + (22 * text.Length);
+        }
+
+        s.Element("circle").Attribute("cx", x + 20).Attribute("cy", y - 15).Attribute("r", 20).Attribute("fill", BallColour).End();
+        s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", "ball");
+        x += 180;
+        s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40).Attribute("fill", ObstacleColour).End();
+        s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", "obstacle");
+    }
+
+    private static void Label(SvgWriter s, Vector2 at, string text, string colour) =>
+        s.Element("text").Attribute("x", at.X).Attribute("y", at.Y).Attribute("font-size", "40").Attribute("font-family", "sans-serif")
+            .Attribute("font-weight", "bold").Attribute("text-anchor", "middle").Attribute("dominant-baseline", "central")
+            .Attribute("fill", colour).Attribute("stroke", "#ffffff").Attribute("stroke-width", "8").Attribute("paint-order", "stroke").Content("text", text);
+
     /// <summary>Writes the frame to a file (temporary name, then renamed; see <see cref="AtomicFile"/>).</summary>
-    public static void Write(World world, string path) => AtomicFile.WriteAllText(path, Render(world));
+    /// <param name="world">The world.</param>
+    /// <param name="path">The SVG file.</param>
+    /// <param name="teamNames">The teams' names for the legend, or null.</param>
+    public static void Write(World world, string path, System.Collections.Generic.IReadOnlyList<string>? teamNames) => AtomicFile.WriteAllText(path, Render(world, teamNames));
 
     private static void Rect(SvgWriter s, Vector2 min, Vector2 max, string fill, string stroke) =>
         s.Element("rect").Attribute("x", min.X).Attribute("y", min.Y).Attribute("width", max.X - min.X).Attribute("height", max.Y - min.Y)

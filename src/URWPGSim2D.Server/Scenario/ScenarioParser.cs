@@ -34,42 +34,54 @@ internal static class ScenarioParser
 
         using (doc)
         {
-            JsonElement root = Object(doc.RootElement, "(root)");
-            if (root.TryGetProperty("item", out var item))
+            try
             {
-                return ItemScenarioParser.Parse(root, item);
+                return Read(doc);
             }
-
-            OnlyKnown(root, string.Empty, "field", "cycles", "seed", "noise", "fish", "balls", "obstacles");
-            var s = new ScenarioDefinition();
-            if (root.TryGetProperty("field", out var field))
+            catch (InvalidOperationException)
             {
-                s = ReadField(field, s);
+                throw new ScenarioException(string.Empty, Json.LoneSurrogate.Describe(json, new JsonReaderOptions { AllowTrailingCommas = true, CommentHandling = JsonCommentHandling.Skip }));
             }
-
-            if (root.TryGetProperty("cycles", out var cycles))
-            {
-                s = s with { Cycles = (int)Integer(cycles, "cycles", 0, int.MaxValue) };
-            }
-
-            if (root.TryGetProperty("seed", out var seed))
-            {
-                s = s with { Seed = (ulong)Integer(seed, "seed", 0, long.MaxValue) };
-            }
-
-            if (root.TryGetProperty("noise", out var noise))
-            {
-                s = s with { Noise = Boolean(noise, "noise") };
-            }
-
-            s = s with
-            {
-                Fish = ReadList(root, "fish", required: true, (e, p) => ReadFish(e, p, s)),
-                Balls = ReadList(root, "balls", required: true, (e, p) => ReadBall(e, p, s)),
-                Obstacles = ReadList(root, "obstacles", required: false, (e, p) => ReadObstacle(e, p, s)),
-            };
-            return s;
         }
+    }
+
+    private static ScenarioDefinition Read(JsonDocument doc)
+    {
+        JsonElement root = Object(doc.RootElement, "(root)");
+        if (root.TryGetProperty("item", out var item))
+        {
+            return ItemScenarioParser.Parse(root, item);
+        }
+
+        OnlyKnown(root, string.Empty, "field", "cycles", "seed", "noise", "fish", "balls", "obstacles");
+        var s = new ScenarioDefinition();
+        if (root.TryGetProperty("field", out var field))
+        {
+            s = ReadField(field, s);
+        }
+
+        if (root.TryGetProperty("cycles", out var cycles))
+        {
+            s = s with { Cycles = (int)Integer(cycles, "cycles", 0, int.MaxValue) };
+        }
+
+        if (root.TryGetProperty("seed", out var seed))
+        {
+            s = s with { Seed = (ulong)Integer(seed, "seed", 0, long.MaxValue) };
+        }
+
+        if (root.TryGetProperty("noise", out var noise))
+        {
+            s = s with { Noise = Boolean(noise, "noise") };
+        }
+
+        s = s with
+        {
+            Fish = ReadList(root, "fish", required: true, (e, p) => ReadFish(e, p, s)),
+            Balls = ReadList(root, "balls", required: true, (e, p) => ReadBall(e, p, s)),
+            Obstacles = ReadList(root, "obstacles", required: false, (e, p) => ReadObstacle(e, p, s)),
+        };
+        return s;
     }
 
     private static ScenarioDefinition ReadField(JsonElement e, ScenarioDefinition s)
@@ -182,6 +194,13 @@ internal static class ScenarioParser
             center = Required(e, path, "center");
             float length = e.TryGetProperty("length", out var l) ? Positive(l, path + ".length") : 100f;
             float width = e.TryGetProperty("width", out var w) ? Positive(w, path + ".width") : 100f;
+            float largest = MathF.Max(s.FieldLength, s.FieldWidth);
+            if (length > largest || width > largest)
+            {
+                string which = length > largest ? "length" : "width";
+                throw new ScenarioException($"{path}.{which}", $"must be at most the field's larger side ({largest}), got {(length > largest ? length : width)}");
+            }
+
             float heading = e.TryGetProperty("heading", out var h) ? Number(h, path + ".heading") : 0f;
             Inside(s, path, center, 0f);
             return new ObstacleDefinition(ObstacleKind.Rectangle, center, length, width, heading, 0f);

@@ -91,7 +91,7 @@ public sealed class BatchRunTests : IDisposable
     [InlineData("--shard one", "run: --shard must be I/K with 0 <= I < K (e.g. 0/4), got \"one\"")]
     [InlineData("--batch 0", "run: --batch must be an integer 1..100000000, got \"0\"")]
     [InlineData("--threads 2", "run: --shard, --threads and --results belong to --batch N")]
-    [InlineData("--batch 2 --trace t.jsonl", "run: --trace and --svg record one match; they do not go with --batch")]
+    [InlineData("--batch 2 --trace t.jsonl", "run: --trace, --svg and --html record one match; they do not go with --batch")]
     [InlineData("--crowd 100 --scenario s.json", "run: --item, --scenario and --crowd each choose the scene; give one")]
     [InlineData("--crowd 5", "run: --crowd must be an integer 13..1000000, got \"5\"")]
     public void BadBatchOptionsAreOneUsageLine(string arguments, string message)

@@ -22,7 +22,7 @@ public sealed class CollideCompatibilityTests
     [Fact]
     public void TheDocumentedExampleGivesTheDocumentedBytes()
     {
-        // docs/cli.md, "Example" (also docs/examples/pairs.json and pairs.expected.json).
+        // docs/cli.md, "Example" (also examples/pairs.json and pairs.expected.json).
         string pairs = Pairs(
             Pair(Circle(0, 0, 3), Circle(3, 4, 3)),
             Pair(Aabb(0, 0, 10, 10), Polygon((8, 5), (20, -1), (20, 11))),

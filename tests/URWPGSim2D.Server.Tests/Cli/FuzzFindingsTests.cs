@@ -134,4 +134,51 @@ public sealed class FuzzFindingsTests : IDisposable
         Assert.Equal("end \\ud83d", CliText.Escape("end \ud83d"));
         Assert.Equal("\\udc1f\\ud83d", CliText.Escape("\udc1f\ud83d"));
     }
+
+    [Fact]
+    public void ALoneSurrogateInANestedScenarioKeyIsBadInput()
+    {
+        string json = "{\"fish\":[],\"balls\":[],\n\"obstacles\":[{\"type\":\"rectangle\",\"center\":[0,0],\"\\ud800\":1}]}";
+
+        var run = CliRun.Of(json, "run", "--scenario", "-");
+
+        CollideErrorTests.AssertOneLineFailure(run, "invalid text at line 2, column 49: a lone UTF-16 surrogate escape (\\ud800 to \\udfff without its pair)");
+    }
+
+    [Fact]
+    public void ALoneSurrogateKeyInARenderInputIsBadInput()
+    {
+        string svg = Path.Combine(_folder, "f.svg");
+
+        var run = CliRun.Of("[{\"a\":{\"type\":\"circle\",\"center\":[0,0],\"radius\":1},\"\\ud800\":{}}]", "render", "-", "--svg", svg);
+
+        Assert.Equal(2, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stdout);
+        Assert.Single(run.Stderr.Split('\n', StringSplitOptions.RemoveEmptyEntries));
+        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+    }
+
+    [Fact]
+    public void AHugeRectangleObstacleIsBadInput()
+    {
+        var run = CliRun.Of("{\"fish\":[],\"balls\":[],\"obstacles\":[{\"type\":\"rectangle\",\"center\":[0,0],\"length\":100,\"width\":9223372036854775808}]}", "run", "--scenario", "-");
+
+        CollideErrorTests.AssertOneLineFailure(run, "obstacles[0].width: must be at most the field's larger side (3000), got 9.223372E+18");
+    }
+
+    [Theory]
+    [InlineData("1e999")]
+    [InlineData("-1")]
+    public void MergeRefusesABadOverlapAndLeavesNoPartialFile(string overlap)
+    {
+        string input = Path.Combine(_folder, "r.jsonl");
+        string output = Path.Combine(_folder, "out");
+        Directory.CreateDirectory(output);
+        File.WriteAllText(input, Header + "\n" + Match.Replace("GOALS", "[0,0]", StringComparison.Ordinal).Replace("\"leftoverOverlap\":0", $"\"leftoverOverlap\":{overlap}", StringComparison.Ordinal) + "\n");
+
+        var run = CliRun.Of(string.Empty, "merge", "--out", Path.Combine(output, "all.jsonl"), input);
+
+        CollideErrorTests.AssertOneLineFailure(run, $"{input}:2: \"leftoverOverlap\" must be a finite number >= 0, got {overlap}");
+        Assert.Empty(Directory.GetFileSystemEntries(output));
+    }
 }

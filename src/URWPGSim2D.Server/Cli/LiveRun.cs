@@ -1,0 +1,97 @@
+using System;
+using System.Runtime.InteropServices;
+using System.Threading;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Viewer;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>run --live</c>: serves the viewer on <c>http://HOST:PORT/</c> and plays the match in real
+/// time (× <c>--speed</c>) while any number of browsers watch, pause, step or restart it. Ctrl+C
+/// (or SIGTERM) ends the match and the server and prints the usual summary. A port that cannot
+/// be used is one line on stderr and exit code 2, before anything is played.
+/// </summary>
+internal static class LiveRun
+{
+    /// <summary>Runs the live view until Ctrl+C; returns the exit code.</summary>
+    public static int Run(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams, CliConsole console)
+    {
+        using var stop = new CancellationTokenSource();
+        ConsoleCancelEventHandler onCancel = (_, e) =>
+        {
+            e.Cancel = true;
+            stop.Cancel();
+        };
+        Console.CancelKeyPress += onCancel;
+        using var onTerm = PosixSignalRegistration.Create(PosixSignal.SIGTERM, c =>
+        {
+            c.Cancel = true;
+            stop.Cancel();
+        });
+        try
+        {
+            return Serve(options, scenario, teams, console, stop.Token, url => console.Out.WriteLine($"live view: {url} (Ctrl+C to stop)"));
+        }
+        finally
+        {
+            Console.CancelKeyPress -= onCancel;
+        }
+    }
+
+    /// <summary>Serves the live view until <paramref name="stop"/> is cancelled, then prints the summary.</summary>
+    /// <param name="options">The run options (<c>--live</c> and its settings).</param>
+    /// <param name="scenario">The scene.</param>
+    /// <param name="teams">The loaded team strategies of the first match.</param>
+    /// <param name="console">Where the summary and errors go.</param>
+    /// <param name="stop">Ends the match and the server.</param>
+    /// <param name="listening">Told the address once the server listens.</param>
+    public static int Serve(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams, CliConsole console, CancellationToken stop, Action<string> listening)
+    {
+        int cycles = options.CyclesFor(scenario);
+        bool first = true;
+        Match Create()
+        {
+            var t = first ? teams : Reload(options, teams);
+            first = false;
+            return MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
+        }
+
+        var feed = new LiveFeed();
+        var player = new LiveMatch(Create, cycles, options.Speed, options.Paused, feed);
+        using var server = new LiveServer(options.Host, options.Port, feed, player.Control);
+        try
+        {
+            server.Start();
+        }
+        catch (LiveServerException e)
+        {
+            console.ErrorLine($"--port {options.Port}: {e.Message}");
+            player.Match.Strategies.Stop();
+            return ExitCodes.BadInput;
+        }
+
+        listening(server.Url);
+        console.Out.Flush();
+        player.Run(stop);
+        server.Stop();
+        var match = player.Match;
+        match.Strategies.Stop();
+        console.Out.Write(MatchSummary.Format(match, player.Busy));
+        return ExitCodes.Success;
+    }
+
+    // A restart plays with freshly loaded strategies (their state starts over too).
+    private static TeamStrategy?[] Reload(RunOptions options, TeamStrategy?[] teams)
+    {
+        try
+        {
+            return RunCommand.LoadTeams(options);
+        }
+        catch (Strategies.StrategyLoadException)
+        {
+            return teams; // the assembly vanished since the start: keep the loaded strategies
+        }
+    }
+}

@@ -1,0 +1,592 @@
+// URWPGSim2D match viewer: replays a recorded match (data inline in the page) or follows a live
+// match streamed by the server (Server-Sent Events). World units are mm, +X right, +Z down.
+(function () {
+  'use strict';
+
+  const TEAM_COLOURS = ['#d9483b', '#2f6fd6', '#2e9e5b', '#9b51c9'];
+  const BALL_COLOUR = '#f29b30';
+  const SPEEDS = [0.25, 0.5, 1, 2, 4, 8, 16];
+  const CYCLE_SECONDS = 0.1;
+  const TRAIL_CYCLES = 60;
+  const MARGIN_MM = 60;
+  const FOLLOW_ZOOM = 2.5;
+  const STRIDE_FISH = 6; // x, z, heading, joint 1..3
+  const STRIDE_BALL = 2; // x, z
+
+  // ---- The fish model: the eight leaf polygons of docs/fish.md, exactly as the library builds them.
+  // Leaves in FishPart order; each is a list of frame points (a forward, b to the fish's right) in
+  // frame 0 (body) or frame i = tail segment i.
+  const LEAF_FRAMES = [0, 0, 0, 1, 2, 3, 3, 3];
+  function localLeaves(size) {
+    const l = size.length, hw = size.width / 2, head = size.head;
+    const l1 = size.joints[0], l2 = size.joints[1], l3 = size.joints[2];
+    const left = [[-7 * l / 24, -hw - 37.5], [-7 * l / 24, -hw - 25], [-l / 12, -hw], [l / 4, -hw]];
+    const segment = (len, start, end) => [[0, start * len], [0, -start * len], [-len, -end * len], [-len, end * len]];
+    const end3 = 0.089964 * l3;
+    return [
+      left,
+      [[l / 2, -hw], [l / 2 + head, 0], [l / 2, hw], [-l / 2, hw], [-l / 2, -hw]],
+      left.map(p => [p[0], -p[1]]),
+      segment(l1, 0.266112, 0.2193408),
+      segment(l2, 0.231336, 0.14994),
+      segment(l3, 0.115668, 0.089964),
+      [[-2 * l3, -50], [-1.8 * l3, -10], [-l3, end3]],
+      [[-1.8 * l3, 35], [-1.8 * l3, -10], [-l3, -end3]],
+    ];
+  }
+
+  // World polygons [[x, z], ...] of the eight leaves at pose (x, z, heading, φ1, φ2, φ3).
+  function leaves(size, x, z, heading, j1, j2, j3, local) {
+    local = local || localLeaves(size);
+    const joints = [j1, j2, j3], seg = size.joints;
+    const ox = [x], oz = [z], ang = [heading];
+    let sx = x - size.length / 2 * Math.cos(heading), sz = z - size.length / 2 * Math.sin(heading);
+    for (let i = 0; i < 3; i++) {
+      const a = heading + joints[i];
+      ox.push(sx); oz.push(sz); ang.push(a);
+      sx -= seg[i] * Math.cos(a); sz -= seg[i] * Math.sin(a);
+    }
+    const out = [];
+    for (let k = 0; k < 8; k++) {
+      const f = LEAF_FRAMES[k], c = Math.cos(ang[f]), s = Math.sin(ang[f]);
+      out.push(local[k].map(p => [ox[f] + p[0] * c - p[1] * s, oz[f] + p[0] * s + p[1] * c]));
+    }
+    return out;
+  }
+
+  // The 8-DOP of a polygon (extreme projections on x, z and the two diagonals) as an octagon.
+  function kdop(poly) {
+    const r = Math.SQRT1_2;
+    let x0 = Infinity, x1 = -Infinity, z0 = Infinity, z1 = -Infinity, d0 = Infinity, d1 = -Infinity, e0 = Infinity, e1 = -Infinity;
+    for (const [x, z] of poly) {
+      x0 = Math.min(x0, x); x1 = Math.max(x1, x); z0 = Math.min(z0, z); z1 = Math.max(z1, z);
+      const d = (x + z) * r, e = (x - z) * r;
+      d0 = Math.min(d0, d); d1 = Math.max(d1, d); e0 = Math.min(e0, e); e1 = Math.max(e1, e);
+    }
+    let shape = [[x0, z0], [x1, z0], [x1, z1], [x0, z1]];
+    const clip = (nx, nz, limit) => { // keep n·p <= limit
+      const res = [];
+      for (let i = 0; i < shape.length; i++) {
+        const p = shape[i], q = shape[(i + 1) % shape.length];
+        const dp = p[0] * nx + p[1] * nz - limit, dq = q[0] * nx + q[1] * nz - limit;
+        if (dp <= 0) res.push(p);
+        if ((dp < 0) !== (dq < 0) && dp !== dq) { const t = dp / (dp - dq); res.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]); }
+      }
+      shape = res;
+    };
+    clip(r, r, d1); clip(-r, -r, -d0); clip(r, -r, e1); clip(-r, r, -e0);
+    return shape;
+  }
+
+  // Minimum enclosing circle of points (incremental, exact for small sets).
+  function enclosingCircle(points) {
+    const circle2 = (a, b) => { const cx = (a[0] + b[0]) / 2, cz = (a[1] + b[1]) / 2; return [cx, cz, Math.hypot(a[0] - cx, a[1] - cz)]; };
+    const circle3 = (a, b, c) => {
+      const bx = b[0] - a[0], bz = b[1] - a[1], cx = c[0] - a[0], cz = c[1] - a[1], d = 2 * (bx * cz - bz * cx);
+      if (Math.abs(d) < 1e-12) return null;
+      const ux = (cz * (bx * bx + bz * bz) - bz * (cx * cx + cz * cz)) / d, uz = (bx * (cx * cx + cz * cz) - cx * (bx * bx + bz * bz)) / d;
+      return [a[0] + ux, a[1] + uz, Math.hypot(ux, uz)];
+    };
+    const inside = (c, p) => c && Math.hypot(p[0] - c[0], p[1] - c[1]) <= c[2] * (1 + 1e-9) + 1e-9;
+    let c = null;
+    for (let i = 0; i < points.length; i++) {
+      if (inside(c, points[i])) continue;
+      c = [points[i][0], points[i][1], 0];
+      for (let j = 0; j < i; j++) {
+        if (inside(c, points[j])) continue;
+        c = circle2(points[i], points[j]);
+        for (let k = 0; k < j; k++) {
+          if (!inside(c, points[k])) c = circle3(points[i], points[j], points[k]) || c;
+        }
+      }
+    }
+    return c;
+  }
+
+  // ---- The match store: per cycle every fish pose and ball position, contacts, score, events.
+  function Store(line0, item) {
+    const layout = line0.layout;
+    this.layout = layout;
+    this.item = item || line0.item || 'default';
+    this.nf = layout.fish.length;
+    this.nb = layout.balls.length;
+    this.nt = Math.max(2, layout.teams.length);
+    this.stride = this.nf * STRIDE_FISH + this.nb * STRIDE_BALL;
+    this.count = 0;
+    this.firstCycle = line0.cycle | 0;
+    this.frames = new Float32Array(Math.max(1, this.stride) * 64);
+    this.contactStart = new Int32Array(65);
+    this.contacts = new Float32Array(256);
+    this.scores = new Float64Array(this.nt * 64);
+    this.events = [];
+    this.local = layout.fish.map(f => localLeaves(f.size));
+  }
+  Store.prototype.ensure = function (cycles, contactValues) {
+    const grow = (arr, need, Type) => { if (arr.length >= need) return arr; const n = new Type(Math.max(need, arr.length * 2)); n.set(arr); return n; };
+    this.frames = grow(this.frames, cycles * this.stride, Float32Array);
+    this.contactStart = grow(this.contactStart, cycles + 1, Int32Array);
+    this.contacts = grow(this.contacts, contactValues, Float32Array);
+    this.scores = grow(this.scores, cycles * this.nt, Float64Array);
+  };
+  // Appends one trace line (an object as in the trace file / the live stream).
+  Store.prototype.append = function (line) {
+    const k = this.count, cs = this.contactStart[k], contacts = line.contacts || [];
+    this.ensure(k + 1, cs + contacts.length * 4);
+    let o = k * this.stride;
+    for (let i = 0; i < this.nf; i++) {
+      const f = line.fish[i];
+      this.frames[o++] = f.position[0]; this.frames[o++] = f.position[1]; this.frames[o++] = f.heading;
+      this.frames[o++] = f.joints[0]; this.frames[o++] = f.joints[1]; this.frames[o++] = f.joints[2];
+    }
+    for (let i = 0; i < this.nb; i++) { const b = line.balls[i]; this.frames[o++] = b.position[0]; this.frames[o++] = b.position[1]; }
+    let c = cs;
+    for (const ct of contacts) { this.contacts[c++] = ct.actionPoint[0]; this.contacts[c++] = ct.actionPoint[1]; this.contacts[c++] = ct.normal[0]; this.contacts[c++] = ct.normal[1]; }
+    this.contactStart[k + 1] = c;
+    const score = line.score || [];
+    for (let t = 0; t < this.nt; t++) this.scores[k * this.nt + t] = score[t] !== undefined ? score[t] : (k > 0 ? this.scores[(k - 1) * this.nt + t] : 0);
+    for (const e of line.events || []) this.events.push(Object.assign({ cycle: line.cycle }, e));
+    this.count = k + 1;
+  };
+  // Builds a store from the page's packed replay (see Viewer/ReplayData.cs).
+  Store.fromPacked = function (data) {
+    const s = new Store({ layout: data.layout, item: data.item, cycle: data.firstCycle }, data.item);
+    const n = data.cycles, q = data.q, a = data.angle;
+    const frames = decode(data.frames, Int16Array), counts = decode(data.contactCounts, Uint16Array), packed = decode(data.contacts, Int16Array);
+    s.ensure(n, packed.length);
+    for (let k = 0, o = 0; k < n; k++) {
+      for (let i = 0; i < s.nf; i++, o += STRIDE_FISH) {
+        s.frames[o] = frames[o] * q; s.frames[o + 1] = frames[o + 1] * q;
+        s.frames[o + 2] = frames[o + 2] * a; s.frames[o + 3] = frames[o + 3] * a; s.frames[o + 4] = frames[o + 4] * a; s.frames[o + 5] = frames[o + 5] * a;
+      }
+      for (let i = 0; i < s.nb; i++, o += STRIDE_BALL) { s.frames[o] = frames[o] * q; s.frames[o + 1] = frames[o + 1] * q; }
+    }
+    for (let k = 0, c = 0; k < n; k++) {
+      s.contactStart[k] = c;
+      for (let j = 0; j < counts[k]; j++, c += 4) {
+        s.contacts[c] = packed[c] * q; s.contacts[c + 1] = packed[c + 1] * q; s.contacts[c + 2] = packed[c + 2] * a; s.contacts[c + 3] = packed[c + 3] * a;
+      }
+      s.contactStart[k + 1] = c;
+    }
+    let change = 0;
+    for (let k = 0; k < n; k++) {
+      while (change < data.scores.length && data.scores[change][0] - s.firstCycle <= k) change++;
+      const row = change > 0 ? data.scores[change - 1] : null;
+      for (let t = 0; t < s.nt; t++) s.scores[k * s.nt + t] = row ? row[1 + t] : 0;
+    }
+    s.events = data.events;
+    s.count = n;
+    return s;
+  };
+  function decode(text, Type) {
+    const bin = atob(text), bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+    return new Type(bytes.buffer, 0, bytes.length / Type.BYTES_PER_ELEMENT);
+  }
+
+  // ---- Page state and drawing.
+  const $ = id => document.getElementById(id);
+  const canvas = $('pool'), ctx = canvas.getContext('2d');
+  const data = JSON.parse($('match-data').textContent);
+  const api = {
+    store: null, cycle: 0, position: 0, playing: false, speed: 1, follow: -1, live: !!data.live, followLive: !!data.live,
+    show: { labels: true, contacts: false, bounds: false, trails: false },
+    teamColour: t => TEAM_COLOURS[t % TEAM_COLOURS.length], ballColour: BALL_COLOUR,
+    leaves, localLeaves, kdop, enclosingCircle, frames: 0, firstFrameAt: null, errors: [], received: 0,
+    view: { scale: 1, cx: 0, cz: 0, ox: 0, oy: 0, dpr: 1 },
+  };
+  window.urwpg = api;
+
+  function formatClock(cycle) {
+    const total = Math.floor(cycle * CYCLE_SECONDS + 1e-9), m = Math.floor(total / 60), s = total % 60;
+    return String(m).padStart(2, '0') + ':' + String(s).padStart(2, '0');
+  }
+  api.formatClock = formatClock;
+  const formatNumber = v => (Math.round(v * 100) / 100).toString();
+
+  function worldToCanvas(x, z) {
+    const v = api.view;
+    return [v.ox + (x - v.cx) * v.scale, v.oy + (z - v.cz) * v.scale];
+  }
+  api.worldToCanvas = worldToCanvas;
+
+  // Pose of fish i / ball i at the (possibly fractional) display position.
+  function fishPose(s, t, i) {
+    const k = Math.floor(t), f = t - k, o = k * s.stride + i * STRIDE_FISH, fr = s.frames;
+    if (f <= 0 || k + 1 >= s.count) return [fr[o], fr[o + 1], fr[o + 2], fr[o + 3], fr[o + 4], fr[o + 5]];
+    const p = o + s.stride;
+    if (Math.hypot(fr[p] - fr[o], fr[p + 1] - fr[o + 1]) > 300) return [fr[o], fr[o + 1], fr[o + 2], fr[o + 3], fr[o + 4], fr[o + 5]];
+    let dh = fr[p + 2] - fr[o + 2];
+    dh -= Math.round(dh / (2 * Math.PI)) * 2 * Math.PI;
+    const lerp = j => fr[o + j] + (fr[p + j] - fr[o + j]) * f;
+    return [lerp(0), lerp(1), fr[o + 2] + dh * f, lerp(3), lerp(4), lerp(5)];
+  }
+  function ballPos(s, t, i) {
+    const k = Math.floor(t), f = t - k, base = s.nf * STRIDE_FISH + i * STRIDE_BALL, o = k * s.stride + base, fr = s.frames;
+    if (f <= 0 || k + 1 >= s.count) return [fr[o], fr[o + 1]];
+    const p = o + s.stride;
+    if (Math.hypot(fr[p] - fr[o], fr[p + 1] - fr[o + 1]) > 300) return [fr[o], fr[o + 1]];
+    return [fr[o] + (fr[p] - fr[o]) * f, fr[o + 1] + (fr[p + 1] - fr[o + 1]) * f];
+  }
+  api.fishPose = (k, i) => fishPose(api.store, k, i);
+  api.ballPosition = (k, i) => ballPos(api.store, k, i);
+
+  function resize() {
+    const dpr = window.devicePixelRatio || 1, w = Math.max(1, Math.round(canvas.clientWidth * dpr)), h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+    api.view.dpr = dpr;
+    dirty = true;
+  }
+
+  function updateView(s, t) {
+    const v = api.view, L = s.layout.field.length, W = s.layout.field.width;
+    const fit = Math.min(canvas.width / (L + 2 * MARGIN_MM), canvas.height / (W + 2 * MARGIN_MM));
+    v.ox = canvas.width / 2; v.oy = canvas.height / 2;
+    if (api.follow >= 0 && api.follow < s.nf) {
+      const p = fishPose(s, t, api.follow);
+      v.scale = fit * FOLLOW_ZOOM; v.cx = p[0]; v.cz = p[1];
+    } else {
+      v.scale = fit; v.cx = 0; v.cz = 0;
+    }
+  }
+
+  function path(points) {
+    ctx.beginPath();
+    points.forEach((p, i) => { const q = worldToCanvas(p[0], p[1]); if (i === 0) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]); });
+    ctx.closePath();
+  }
+  function rect(min, max) { path([[min[0], min[1]], [max[0], min[1]], [max[0], max[1]], [min[0], max[1]]]); }
+  function circle(x, z, r) { const q = worldToCanvas(x, z); ctx.beginPath(); ctx.arc(q[0], q[1], Math.max(0.5, r * api.view.scale), 0, 2 * Math.PI); }
+  function label(text, x, z, dx, dy, colour) {
+    const q = worldToCanvas(x, z), px = Math.round(11 * api.view.dpr);
+    ctx.font = '600 ' + px + 'px system-ui, sans-serif';
+    ctx.textAlign = 'center'; ctx.textBaseline = 'middle';
+    const w = ctx.measureText(text).width + 6 * api.view.dpr, h = px + 4 * api.view.dpr, lx = q[0] + dx * api.view.dpr, ly = q[1] + dy * api.view.dpr;
+    ctx.fillStyle = 'rgba(255,255,255,0.85)'; ctx.fillRect(lx - w / 2, ly - h / 2, w, h);
+    ctx.strokeStyle = colour; ctx.lineWidth = api.view.dpr; ctx.strokeRect(lx - w / 2, ly - h / 2, w, h);
+    ctx.fillStyle = '#111'; ctx.fillText(text, lx, ly + 0.5);
+  }
+
+  function drawZone(z) {
+    if (z.polygon) path(z.polygon);
+    else if (z.min) rect(z.min, z.max);
+    else if (z.center) circle(z.center[0], z.center[1], z.radius);
+    else return;
+    const colours = { hole: 'rgba(20,30,40,0.55)', target: 'rgba(80,200,120,0.35)', rescue: 'rgba(255,220,80,0.35)', forbidden: 'rgba(220,60,60,0.25)', 'goal-box': 'rgba(255,255,255,0.18)', start: 'rgba(180,180,255,0.25)' };
+    ctx.fillStyle = z.team !== undefined ? hexAlpha(api.teamColour(z.team), 0.25) : (colours[z.kind] || 'rgba(255,255,255,0.2)');
+    ctx.fill();
+    ctx.setLineDash([6 * api.view.dpr, 4 * api.view.dpr]); ctx.strokeStyle = 'rgba(0,0,0,0.5)'; ctx.lineWidth = api.view.dpr; ctx.stroke(); ctx.setLineDash([]);
+  }
+  function hexAlpha(hex, a) { const n = parseInt(hex.slice(1), 16); return 'rgba(' + (n >> 16) + ',' + ((n >> 8) & 255) + ',' + (n & 255) + ',' + a + ')'; }
+
+  function drawObstacle(o) {
+    if (o.type === 'round') circle(o.center[0], o.center[1], o.radius);
+    else {
+      const c = Math.cos(o.heading), s = Math.sin(o.heading), a = o.length / 2, b = o.width / 2;
+      path([[a, b], [-a, b], [-a, -b], [a, -b]].map(p => [o.center[0] + p[0] * c - p[1] * s, o.center[1] + p[0] * s + p[1] * c]));
+    }
+    ctx.fillStyle = '#6b5b4b'; ctx.fill(); ctx.strokeStyle = '#3b2f25'; ctx.lineWidth = api.view.dpr; ctx.stroke();
+  }
+
+  function draw() {
+    const s = api.store;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = '#10212b'; ctx.fillRect(0, 0, canvas.width, canvas.height);
+    if (!s || s.count === 0) return;
+    const t = Math.min(api.position, s.count - 1), layout = s.layout, dpr = api.view.dpr;
+    updateView(s, t);
+    const L = layout.field.length / 2, W = layout.field.width / 2;
+    // Pool, walls, goals, goal blocks, zones, obstacles.
+    rect([-L, -W], [L, W]); ctx.fillStyle = '#cfe8f7'; ctx.fill();
+    for (const g of layout.goals) { rect(g.min, g.max); ctx.fillStyle = hexAlpha(api.teamColour(g.team), 0.22); ctx.fill(); ctx.strokeStyle = api.teamColour(g.team); ctx.lineWidth = 2 * dpr; ctx.stroke(); }
+    for (const b of layout.goalBlocks) { rect(b.min, b.max); ctx.fillStyle = '#8a8f94'; ctx.fill(); ctx.strokeStyle = '#4a4f54'; ctx.lineWidth = dpr; ctx.stroke(); }
+    for (const z of layout.zones) drawZone(z);
+    for (const o of layout.obstacles) drawObstacle(o);
+    rect([-L, -W], [L, W]); ctx.strokeStyle = '#1b3a4b'; ctx.lineWidth = 3 * dpr; ctx.stroke();
+    const k = Math.round(t) === t ? t : Math.floor(t);
+    if (api.show.trails) drawTrails(s, k);
+    // Balls.
+    for (let i = 0; i < s.nb; i++) {
+      const p = ballPos(s, t, i);
+      circle(p[0], p[1], layout.balls[i].radius); ctx.fillStyle = BALL_COLOUR; ctx.fill(); ctx.strokeStyle = '#8a4d08'; ctx.lineWidth = dpr; ctx.stroke();
+    }
+    // Fish: the eight leaves.
+    const poses = [];
+    for (let i = 0; i < s.nf; i++) {
+      const p = fishPose(s, t, i), size = layout.fish[i].size, polys = leaves(size, p[0], p[1], p[2], p[3], p[4], p[5], s.local[i]);
+      poses.push({ p, polys });
+      ctx.fillStyle = api.teamColour(layout.fish[i].team); ctx.strokeStyle = i === api.follow ? '#ffffff' : '#1a1a1a'; ctx.lineWidth = (i === api.follow ? 2 : 1) * dpr;
+      for (const poly of polys) { path(poly); ctx.fill(); ctx.stroke(); }
+    }
+    if (api.show.bounds) drawBounds(s, t, poses);
+    if (api.show.contacts) drawContacts(s, k);
+    if (api.show.labels) {
+      for (let i = 0; i < s.nf; i++) {
+        const { p } = poses[i], size = layout.fish[i].size, reach = size.length / 2 + size.head, c = Math.cos(p[2]), sn = Math.sin(p[2]);
+        const tip = worldToCanvas(p[0] + reach * c, p[1] + reach * sn), end = worldToCanvas(p[0] + (reach + 70) * c, p[1] + (reach + 70) * sn);
+        ctx.beginPath(); ctx.moveTo(tip[0], tip[1]); ctx.lineTo(end[0], end[1]); ctx.strokeStyle = '#111'; ctx.lineWidth = 1.5 * dpr; ctx.stroke();
+        label('fish' + i, p[0], p[1], 0, -26, api.teamColour(layout.fish[i].team));
+      }
+      for (let i = 0; i < s.nb; i++) {
+        const p = ballPos(s, t, i), v = layout.balls[i].value;
+        label(v !== undefined ? i + ' (' + formatNumber(v) + ')' : String(i), p[0], p[1] - layout.balls[i].radius, 0, -9, BALL_COLOUR);
+      }
+    }
+    api.frames++;
+    if (api.firstFrameAt === null) api.firstFrameAt = performance.now();
+  }
+
+  function drawTrails(s, k) {
+    const from = Math.max(0, k - TRAIL_CYCLES), dpr = api.view.dpr;
+    const trail = (get, colour) => {
+      ctx.beginPath();
+      let prev = null;
+      for (let c = from; c <= k; c++) {
+        const p = get(c), q = worldToCanvas(p[0], p[1]);
+        if (!prev || Math.hypot(p[0] - prev[0], p[1] - prev[1]) > 300) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]);
+        prev = p;
+      }
+      ctx.strokeStyle = colour; ctx.lineWidth = 2 * dpr; ctx.stroke();
+    };
+    for (let i = 0; i < s.nf; i++) trail(c => fishPose(s, c, i), hexAlpha(api.teamColour(s.layout.fish[i].team), 0.6));
+    for (let i = 0; i < s.nb; i++) trail(c => ballPos(s, c, i), 'rgba(180,100,20,0.6)');
+  }
+
+  function drawBounds(s, t, poses) {
+    const dpr = api.view.dpr;
+    ctx.lineWidth = dpr;
+    for (const { polys } of poses) {
+      ctx.strokeStyle = 'rgba(0,120,0,0.8)';
+      for (const poly of polys) { path(kdop(poly)); ctx.stroke(); }
+      const all = [].concat(...polys), bodyGroup = [].concat(polys[0], polys[1], polys[2]), tailGroup = [].concat(...polys.slice(3));
+      ctx.strokeStyle = 'rgba(120,0,160,0.8)';
+      for (const pts of [all, bodyGroup, tailGroup]) { const c = enclosingCircle(pts); if (c) { circle(c[0], c[1], c[2]); ctx.stroke(); } }
+    }
+    ctx.strokeStyle = 'rgba(0,120,0,0.8)';
+    for (let i = 0; i < s.nb; i++) { const p = ballPos(s, t, i), r = s.layout.balls[i].radius; rect([p[0] - r, p[1] - r], [p[0] + r, p[1] + r]); ctx.stroke(); }
+  }
+
+  function drawContacts(s, k) {
+    const dpr = api.view.dpr;
+    for (let c = s.contactStart[k]; c < s.contactStart[k + 1]; c += 4) {
+      const x = s.contacts[c], z = s.contacts[c + 1], nx = s.contacts[c + 2], nz = s.contacts[c + 3];
+      const a = worldToCanvas(x, z), b = worldToCanvas(x + nx * 80, z + nz * 80);
+      ctx.beginPath(); ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.strokeStyle = '#000'; ctx.lineWidth = 2 * dpr; ctx.stroke();
+      const ang = Math.atan2(b[1] - a[1], b[0] - a[0]), h = 7 * dpr;
+      ctx.beginPath(); ctx.moveTo(b[0], b[1]); ctx.lineTo(b[0] - h * Math.cos(ang - 0.4), b[1] - h * Math.sin(ang - 0.4)); ctx.lineTo(b[0] - h * Math.cos(ang + 0.4), b[1] - h * Math.sin(ang + 0.4)); ctx.closePath(); ctx.fillStyle = '#000'; ctx.fill();
+      ctx.beginPath(); ctx.arc(a[0], a[1], 4 * dpr, 0, 2 * Math.PI); ctx.fillStyle = '#fff200'; ctx.fill(); ctx.strokeStyle = '#000'; ctx.lineWidth = dpr; ctx.stroke();
+    }
+  }
+
+  // ---- The heads-up display (score, clock, events) and the controls.
+  let dirty = true, lastEventsShown = -1, lastCycleShown = -1;
+  function cycleNumber(s, k) { return s.firstCycle + k; }
+
+  function updateHud() {
+    const s = api.store;
+    if (!s) return;
+    const k = api.cycle;
+    if (k === lastCycleShown && s.events.length === lastEventsShown && !hudDirty) return;
+    hudDirty = false;
+    const previous = lastCycleShown;
+    lastCycleShown = k;
+    const n = cycleNumber(s, k);
+    $('clock').textContent = formatClock(n);
+    $('cycle').textContent = 'cycle ' + n + ' / ' + cycleNumber(s, Math.max(0, s.count - 1));
+    const row = k * s.nt;
+    $('score').textContent = formatNumber(s.scores[row]) + ' : ' + formatNumber(s.scores[row + 1]);
+    const scrub = $('scrub');
+    scrub.max = String(Math.max(0, s.count - 1));
+    if (document.activeElement !== scrub || String(k) !== scrub.value) scrub.value = String(k);
+    if (s.events.length !== lastEventsShown || previous !== k) renderEvents(s, n, previous);
+    lastEventsShown = s.events.length;
+  }
+  let hudDirty = true;
+
+  function renderEvents(s, n, previous) {
+    const list = $('events');
+    list.textContent = '';
+    let latest = null;
+    for (let i = s.events.length - 1; i >= 0; i--) {
+      const e = s.events[i];
+      if (e.cycle > n) continue;
+      const li = document.createElement('li');
+      li.dataset.cycle = e.cycle;
+      const at = document.createElement('span'); at.className = 'at'; at.textContent = formatClock(e.cycle) + ' #' + e.cycle;
+      li.appendChild(at); li.appendChild(document.createTextNode(e.text || e.kind));
+      if (e.cycle === n) li.className = 'now';
+      list.appendChild(li);
+      if (latest === null) latest = e;
+      if (list.childElementCount >= 200) break;
+    }
+    // A toast for events reached by playing or stepping forward (not by jumps of the scrub bar).
+    if (previous >= 0 && n > cycleNumber(s, previous) && (api.playing || api.followLive || n - cycleNumber(s, previous) <= 10)) {
+      const passed = s.events.filter(e => e.cycle > cycleNumber(s, previous) && e.cycle <= n);
+      if (passed.length > 0) toast(passed.map(e => e.text || e.kind).join(' · '));
+    }
+  }
+  let toastTimer = 0;
+  function toast(text) {
+    const el = $('toast');
+    el.textContent = text; el.className = 'on';
+    clearTimeout(toastTimer);
+    toastTimer = setTimeout(() => { el.className = ''; }, 2500);
+  }
+
+  function setTeams(s) {
+    for (let t = 0; t < 2; t++) {
+      const team = s.layout.teams[t] || { name: 'team ' + t }, el = $('team' + t);
+      el.querySelector('.swatch').style.background = api.teamColour(t);
+      el.querySelector('.name').textContent = 'team ' + t + ' (' + team.name + ')';
+    }
+    $('item').textContent = s.item === 'default' ? '' : s.item;
+    const follow = $('follow');
+    while (follow.options.length > 1) follow.remove(1);
+    s.layout.fish.forEach((f, i) => { const o = document.createElement('option'); o.value = String(i); o.textContent = 'fish' + i + ' (team ' + f.team + ')'; follow.appendChild(o); });
+    follow.value = String(api.follow < s.nf ? api.follow : -1);
+    hudDirty = true;
+  }
+
+  // Moves the display to cycle index k (0 = the first line), stopping playback.
+  function seek(k) {
+    const s = api.store;
+    if (!s) return;
+    api.playing = false;
+    api.cycle = Math.max(0, Math.min(s.count - 1, Math.round(k)));
+    api.position = api.cycle;
+    if (api.live) api.followLive = api.cycle === s.count - 1 && api.followLive;
+    updatePlayButton();
+    dirty = true;
+  }
+  api.seek = seek;
+  function step(d) { if (api.live) api.followLive = false; seek(api.cycle + d); }
+  api.step = step;
+  function nextEvent() {
+    const s = api.store;
+    if (!s) return;
+    const n = cycleNumber(s, api.cycle), e = s.events.find(ev => ev.cycle > n);
+    if (e) { if (api.live) api.followLive = false; seek(e.cycle - s.firstCycle); }
+  }
+  api.nextEvent = nextEvent;
+  function play(on) {
+    const s = api.store;
+    if (!s) return;
+    api.playing = on;
+    if (on && api.cycle >= s.count - 1 && !api.live) { api.cycle = 0; api.position = 0; }
+    if (on && api.live) api.followLive = false;
+    updatePlayButton();
+    dirty = true;
+  }
+  api.play = play;
+  function setSpeed(x) {
+    api.speed = x;
+    $('speed').value = String(x);
+  }
+  api.setSpeed = setSpeed;
+  function updatePlayButton() {
+    $('play').innerHTML = api.playing ? '&#10074;&#10074;' : '&#9654;';
+    const lf = $('live-follow');
+    if (lf) lf.classList.toggle('on', api.followLive);
+  }
+
+  function setup() {
+    const speed = $('speed');
+    for (const x of SPEEDS) { const o = document.createElement('option'); o.value = String(x); o.textContent = x + '\u00d7'; speed.appendChild(o); }
+    speed.value = '1';
+    speed.addEventListener('change', () => setSpeed(parseFloat(speed.value)));
+    $('play').addEventListener('click', () => play(!api.playing));
+    $('back').addEventListener('click', () => step(-1));
+    $('fwd').addEventListener('click', () => step(1));
+    $('next').addEventListener('click', nextEvent);
+    const scrub = $('scrub');
+    scrub.addEventListener('input', () => { if (api.live) api.followLive = false; seek(parseInt(scrub.value, 10)); });
+    $('follow').addEventListener('change', e => { api.follow = parseInt(e.target.value, 10); dirty = true; });
+    for (const name of ['labels', 'contacts', 'bounds', 'trails']) {
+      const box = $('show-' + name);
+      box.checked = api.show[name];
+      box.addEventListener('change', () => { api.show[name] = box.checked; dirty = true; });
+    }
+    $('events').addEventListener('click', e => {
+      const li = e.target.closest('li');
+      if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
+    });
+    document.addEventListener('keydown', e => {
+      if (e.target instanceof HTMLInputElement && e.target.type !== 'range' && e.target.type !== 'checkbox') return;
+      if (e.target instanceof HTMLSelectElement) return;
+      const i = SPEEDS.indexOf(api.speed);
+      switch (e.key) {
+        case ' ': play(!api.playing); break;
+        case 'ArrowRight': step(e.shiftKey ? 10 : 1); break;
+        case 'ArrowLeft': step(e.shiftKey ? -10 : -1); break;
+        case '+': case '=': case 'ArrowUp': setSpeed(SPEEDS[Math.min(SPEEDS.length - 1, i + 1)]); break;
+        case '-': case '_': case 'ArrowDown': setSpeed(SPEEDS[Math.max(0, i - 1)]); break;
+        case 'n': nextEvent(); break;
+        case 'Home': seek(0); break;
+        case 'End': seek(api.store ? api.store.count - 1 : 0); break;
+        default: return;
+      }
+      e.preventDefault();
+    });
+    window.addEventListener('resize', resize);
+    if (window.ResizeObserver) new ResizeObserver(resize).observe(canvas);
+    resize();
+  }
+
+  let lastTime = null;
+  function frame(now) {
+    const s = api.store;
+    if (s && lastTime !== null && api.playing) {
+      const dt = Math.min(0.25, (now - lastTime) / 1000);
+      api.position = Math.min(s.count - 1, api.position + dt * api.speed / CYCLE_SECONDS);
+      api.cycle = Math.floor(api.position);
+      if (api.position >= s.count - 1) {
+        api.playing = false; api.position = api.cycle = s.count - 1;
+        if (api.live) api.followLive = true;
+        updatePlayButton();
+      }
+      dirty = true;
+    }
+    if (s && api.live && api.followLive && api.cycle !== s.count - 1) { api.cycle = s.count - 1; api.position = api.cycle; dirty = true; }
+    lastTime = now;
+    if (dirty) { draw(); updateHud(); dirty = false; }
+    requestAnimationFrame(frame);
+  }
+
+  // ---- Live: the server streams trace lines; controls post to /control.
+  function connectLive() {
+    $('live-controls').hidden = false;
+    $('live-status').hidden = false;
+    const status = $('live-status');
+    const source = new EventSource('events');
+    api.source = source;
+    source.addEventListener('reset', () => { api.store = null; api.cycle = 0; api.position = 0; lastCycleShown = -1; lastEventsShown = -1; dirty = true; });
+    source.addEventListener('status', e => {
+      const st = JSON.parse(e.data);
+      api.serverStatus = st;
+      status.textContent = st.over ? 'match over' : st.paused ? 'match paused' : 'live \u00b7 ' + st.speed + '\u00d7';
+      $('server-pause').textContent = st.paused ? 'resume match' : 'pause match';
+    });
+    source.onmessage = e => {
+      const line = JSON.parse(e.data);
+      if (line.layout) { api.store = new Store(line); setTeams(api.store); }
+      if (!api.store) return;
+      api.store.append(line);
+      api.received++;
+      hudDirty = true;
+      dirty = true;
+    };
+    source.onerror = () => { status.textContent = 'disconnected (reconnecting)'; };
+    const post = action => fetch('control?action=' + action, { method: 'POST' });
+    $('server-pause').addEventListener('click', () => post(api.serverStatus && api.serverStatus.paused ? 'resume' : 'pause'));
+    $('server-step').addEventListener('click', () => post('step'));
+    $('server-restart').addEventListener('click', () => post('restart'));
+    $('live-follow').addEventListener('click', () => { api.followLive = true; api.playing = false; updatePlayButton(); dirty = true; });
+    api.control = post;
+  }
+
+  window.addEventListener('error', e => api.errors.push(String(e.message)));
+  setup();
+  if (data.live) connectLive();
+  else { api.store = Store.fromPacked(data); setTeams(api.store); }
+  updatePlayButton();
+  requestAnimationFrame(frame);
+})();

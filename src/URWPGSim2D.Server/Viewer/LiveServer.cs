@@ -1,0 +1,255 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Net;
+using System.Text;
+using System.Threading;
+using System.Threading.Tasks;
+
+namespace URWPGSim2D.Server.Viewer;
+
+/// <summary>
+/// The live view's web server (<see cref="HttpListener"/>, part of .NET): <c>GET /</c> is the
+/// viewer page, <c>GET /events</c> the match as Server-Sent Events (a <c>reset</c> event, then
+/// every message of the <see cref="LiveFeed"/> from the start, then each new one as it comes),
+/// <c>POST /control?action=pause|resume|step|restart</c> drives the match. Each viewer
+/// connection is served by its own task reading the feed at its own pace.
+/// </summary>
+internal sealed class LiveServer : IDisposable
+{
+    private static readonly byte[] ResetMessage = "event: reset\ndata: {}\n\n"u8.ToArray();
+    private static readonly byte[] KeepAlive = ": keep-alive\n\n"u8.ToArray();
+    private static readonly TimeSpan KeepAliveEvery = TimeSpan.FromSeconds(10);
+
+    private readonly HttpListener _listener = new();
+    private readonly LiveFeed _feed;
+    private readonly Func<string, bool> _control;
+    private readonly byte[] _page;
+    private readonly CancellationTokenSource _stop = new();
+    private readonly List<Task> _clients = [];
+    private Task? _accept;
+    private bool _started;
+
+    /// <summary>Creates the server (not yet listening).</summary>
+    /// <param name="host">Address to listen on: an IP address or host name; <c>*</c>, <c>+</c> or <c>0.0.0.0</c> for every interface.</param>
+    /// <param name="port">TCP port, 1..65535.</param>
+    /// <param name="feed">The messages to stream.</param>
+    /// <param name="control">Applies a control action; false for an unknown one.</param>
+    public LiveServer(string host, int port, LiveFeed feed, Func<string, bool> control)
+    {
+        _feed = feed;
+        _control = control;
+        _page = Encoding.UTF8.GetBytes(ReplayPage.Live());
+        bool any = host is "*" or "+" or "0.0.0.0";
+        string name = host.Contains(':', StringComparison.Ordinal) ? $"[{host}]" : host;
+        _listener.Prefixes.Add($"http://{(any ? "+" : name)}:{port}/");
+        Url = $"http://{(any ? "0.0.0.0" : name)}:{port}/";
+    }
+
+    /// <summary>The address viewers open.</summary>
+    public string Url { get; }
+
+    /// <summary>Viewer connections currently streaming.</summary>
+    public int Viewers => Volatile.Read(ref _viewers);
+
+    private int _viewers;
+
+    /// <summary>Starts listening.</summary>
+    /// <exception cref="LiveServerException">The address cannot be used (port in use, no such address, not allowed).</exception>
+    public void Start()
+    {
+        try
+        {
+            _listener.Start();
+        }
+        catch (Exception e) when (e is HttpListenerException or System.Net.Sockets.SocketException or ArgumentException or InvalidOperationException)
+        {
+            throw new LiveServerException($"cannot listen on {Url} ({e.Message})");
+        }
+
+        _started = true;
+        _accept = Task.Run(AcceptLoop);
+    }
+
+    /// <summary>Stops listening and ends every viewer connection (waits at most a few seconds for them).</summary>
+    public void Stop()
+    {
+        if (_stop.IsCancellationRequested)
+        {
+            return;
+        }
+
+        _stop.Cancel();
+        if (!_started)
+        {
+            return;
+        }
+
+        try
+        {
+            _listener.Stop();
+        }
+        catch (Exception e) when (e is ObjectDisposedException or HttpListenerException)
+        {
+            // Already closed.
+        }
+
+        Task[] pending;
+        lock (_clients)
+        {
+            pending = [.. _clients];
+        }
+
+        try
+        {
+            Task.WaitAll(pending, TimeSpan.FromSeconds(3));
+            _accept?.Wait(TimeSpan.FromSeconds(3));
+        }
+        catch (AggregateException)
+        {
+            // A connection that failed while closing is already gone.
+        }
+    }
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        Stop();
+        try
+        {
+            _listener.Close();
+        }
+        catch (Exception e) when (e is ObjectDisposedException or HttpListenerException)
+        {
+            // A listener that never started has nothing to close.
+        }
+
+        _stop.Dispose();
+    }
+
+    private async Task AcceptLoop()
+    {
+        while (!_stop.IsCancellationRequested)
+        {
+            HttpListenerContext context;
+            try
+            {
+                context = await _listener.GetContextAsync().ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is HttpListenerException or ObjectDisposedException or InvalidOperationException)
+            {
+                return;
+            }
+
+            var task = Task.Run(() => Handle(context));
+            lock (_clients)
+            {
+                _clients.RemoveAll(t => t.IsCompleted);
+                _clients.Add(task);
+            }
+        }
+    }
+
+    private async Task Handle(HttpListenerContext context)
+    {
+        var request = context.Request;
+        var response = context.Response;
+        try
+        {
+            string path = request.Url?.AbsolutePath ?? "/";
+            switch (request.HttpMethod, path)
+            {
+                case ("GET", "/" or "/index.html"):
+                    await Send(response, 200, "text/html; charset=utf-8", _page).ConfigureAwait(false);
+                    break;
+                case ("GET", "/events"):
+                    await Stream(response).ConfigureAwait(false);
+                    break;
+                case ("POST", "/control"):
+                    bool known = _control(request.QueryString["action"] ?? string.Empty);
+                    await Send(response, known ? 204 : 400, "text/plain", known ? [] : "unknown action (pause, resume, step or restart)"u8.ToArray()).ConfigureAwait(false);
+                    break;
+                case ("GET", "/favicon.ico"):
+                    await Send(response, 204, "text/plain", []).ConfigureAwait(false);
+                    break;
+                default:
+                    await Send(response, 404, "text/plain", "not found"u8.ToArray()).ConfigureAwait(false);
+                    break;
+            }
+        }
+        catch (Exception e) when (e is IOException or HttpListenerException or ObjectDisposedException or OperationCanceledException or InvalidOperationException)
+        {
+            // The viewer went away or the server is stopping: nothing to do for this connection.
+        }
+        finally
+        {
+            try
+            {
+                response.Abort();
+            }
+            catch (ObjectDisposedException)
+            {
+            }
+        }
+    }
+
+    private static async Task Send(HttpListenerResponse response, int status, string type, byte[] body)
+    {
+        response.StatusCode = status;
+        response.ContentType = type;
+        response.Headers["Cache-Control"] = "no-store";
+        response.ContentLength64 = body.Length;
+        await response.OutputStream.WriteAsync(body).ConfigureAwait(false);
+        response.Close();
+    }
+
+    // One viewer's event stream: everything of the current generation, then each new message.
+    private async Task Stream(HttpListenerResponse response)
+    {
+        response.StatusCode = 200;
+        response.ContentType = "text/event-stream; charset=utf-8";
+        response.Headers["Cache-Control"] = "no-store";
+        response.SendChunked = true;
+        var output = response.OutputStream;
+        var stop = _stop.Token;
+        var batch = new List<byte[]>(512);
+        int generation = -1, next = 0;
+        Interlocked.Increment(ref _viewers);
+        try
+        {
+            while (!stop.IsCancellationRequested)
+            {
+                Task changed = _feed.Changed;
+                int current = _feed.Read(generation, ref next, batch, 512);
+                if (current != generation)
+                {
+                    generation = current;
+                    await output.WriteAsync(ResetMessage, stop).ConfigureAwait(false);
+                }
+
+                foreach (var message in batch)
+                {
+                    await output.WriteAsync(message, stop).ConfigureAwait(false);
+                }
+
+                await output.FlushAsync(stop).ConfigureAwait(false);
+                bool wrote = batch.Count > 0;
+                batch.Clear();
+                if (wrote)
+                {
+                    continue;
+                }
+
+                if (await Task.WhenAny(changed, Task.Delay(KeepAliveEvery, stop)).ConfigureAwait(false) != changed)
+                {
+                    stop.ThrowIfCancellationRequested();
+                    await output.WriteAsync(KeepAlive, stop).ConfigureAwait(false);
+                }
+            }
+        }
+        finally
+        {
+            Interlocked.Decrement(ref _viewers);
+        }
+    }
+}

@@ -1,0 +1,219 @@
+using System;
+using System.Diagnostics;
+using System.IO;
+using System.Net;
+using System.Net.Sockets;
+using System.Threading;
+using System.Threading.Tasks;
+using Microsoft.Playwright;
+using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Scenario;
+using Xunit;
+using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
+
+namespace URWPGSim2D.Server.Viewer.Tests;
+
+/// <summary>
+/// <c>run --live</c> with real browsers. The server starts paused and is driven by steps, so every
+/// check waits for a state (bounded), never for an amount of time.
+/// </summary>
+[Collection(BrowserCollection.Name)]
+public sealed class LiveViewTests(Browser browser)
+{
+    private const int Wait = 20_000;
+
+    private sealed record Live(string Url, CancellationTokenSource Stop, Task<int> Served, StringWriter Out, StringWriter Error);
+
+    private static int FreePort()
+    {
+        var probe = new TcpListener(IPAddress.Loopback, 0);
+        probe.Start();
+        int port = ((IPEndPoint)probe.LocalEndpoint).Port;
+        probe.Stop();
+        return port;
+    }
+
+    private static async Task<Live> Start(params string[] extra)
+    {
+        var options = RunOptions.Parse(["--live", "--paused", "--port", FreePort().ToString(System.Globalization.CultureInfo.InvariantCulture), .. extra]);
+        var url = new TaskCompletionSource<string>(TaskCreationOptions.RunContinuationsAsynchronously);
+        var stop = new CancellationTokenSource();
+        var output = new StringWriter();
+        var error = new StringWriter();
+        var console = new CliConsole(new StringReader(string.Empty), output, error);
+        var served = Task.Run(() => LiveRun.Serve(options, DefaultScenario.Load(), new TeamStrategy?[2], console, stop.Token, u => url.TrySetResult(u)));
+        var first = await Task.WhenAny(url.Task, served, Task.Delay(Wait));
+        Assert.True(first == url.Task, $"the live server did not start: {error}");
+        return new Live(await url.Task, stop, served, output, error);
+    }
+
+    private static async Task<int> Stop(Live live)
+    {
+        live.Stop.Cancel();
+        Assert.True(await Task.WhenAny(live.Served, Task.Delay(Wait)) == live.Served, "the server did not stop");
+        return await live.Served;
+    }
+
+    private async Task<(IPage Page, System.Collections.Generic.List<string> Errors)> Open(Live live)
+    {
+        var (page, errors) = await browser.NewPageAsync();
+        await page.GotoAsync(live.Url);
+        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.store && urwpg.serverStatus", null, new() { Timeout = Wait });
+        return (page, errors);
+    }
+
+    // Waits until the page holds the server's cycles 0 … cycle and the server says it is paused at cycle.
+    private static Task PausedAt(IPage page, int cycle) =>
+        page.WaitForFunctionAsync(
+            "c => urwpg.store && urwpg.serverStatus && urwpg.serverStatus.paused && urwpg.serverStatus.cycle === c && urwpg.store.count === c + 1", cycle, new() { Timeout = Wait });
+
+    private static Task<int> Count(IPage page) => page.EvaluateAsync<int>("() => urwpg.store.count");
+
+    private static Task<double[]> Frames(IPage page) => page.EvaluateAsync<double[]>("() => Array.from(urwpg.store.frames.slice(0, urwpg.store.count * urwpg.store.stride))");
+
+    [Fact]
+    public async Task ViewersSeeTheSameCyclesPauseHoldsAndStepPlaysOne()
+    {
+        var live = await Start("--speed", "20");
+        Assert.StartsWith("http://127.0.0.1:", live.Url, StringComparison.Ordinal);
+        var (one, errorsOne) = await Open(live);
+        await PausedAt(one, 0);
+
+        // Each step plays exactly one cycle, which the page receives and shows.
+        for (int k = 1; k <= 3; k++)
+        {
+            await one.ClickAsync("#server-step");
+            await PausedAt(one, k);
+            await Settle(one);
+            Assert.Equal($"cycle {k} / {k}", await one.TextContentAsync("#cycle"));
+        }
+
+        // The stream is the match itself: the same as the trace of the same match.
+        var reference = Path.Combine(Path.GetTempPath(), $"urwpg-live-{Guid.NewGuid():N}.jsonl");
+        Assert.Equal(0, RecordedMatch.Cli("run", "--cycles", "3", "--trace", reference).Code);
+        var lines = File.ReadAllLines(reference);
+        File.Delete(reference);
+        var line3 = System.Text.Json.JsonDocument.Parse(lines[3]).RootElement;
+        var fish0 = line3.GetProperty("fish")[0].GetProperty("position");
+        var frames = await Frames(one);
+        int stride = await one.EvaluateAsync<int>("() => urwpg.store.stride");
+        Assert.Equal(fish0[0].GetSingle(), (float)frames[3 * stride]);
+        Assert.Equal(fish0[1].GetSingle(), (float)frames[(3 * stride) + 1]);
+
+        // A second viewer gets the same cycles from the start.
+        var (two, errorsTwo) = await Open(live);
+        await PausedAt(two, 3);
+        Assert.Equal(frames, await Frames(two));
+
+        // Resume: cycles stream to both; pause: they stop; a step then plays exactly one more.
+        await two.ClickAsync("#server-pause");
+        await two.WaitForFunctionAsync("() => urwpg.store.count >= 12", null, new() { Timeout = Wait });
+        await one.ClickAsync("#server-pause");
+        await one.WaitForFunctionAsync("() => urwpg.serverStatus.paused", null, new() { Timeout = Wait });
+        int held = await one.EvaluateAsync<int>("() => urwpg.serverStatus.cycle");
+        await PausedAt(one, held);
+        await PausedAt(two, held);
+        Assert.Equal(await Frames(one), await Frames(two));
+        await two.ClickAsync("#server-step");
+        await PausedAt(one, held + 1);
+        await PausedAt(two, held + 1);
+
+        // Closing one viewer does not affect the other.
+        await one.Context.CloseAsync();
+        await two.ClickAsync("#server-step");
+        await PausedAt(two, held + 2);
+        await two.ClickAsync("#server-step");
+        await PausedAt(two, held + 3);
+
+        // Restart: the viewers start over at cycle 0.
+        await two.ClickAsync("#server-restart");
+        await PausedAt(two, 0);
+        Assert.Equal(frames[..stride], (await Frames(two))[..stride]);
+
+        NoErrors(errorsOne);
+        NoErrors(errorsTwo);
+        await two.Context.CloseAsync();
+        Assert.Equal(0, await Stop(live));
+        Assert.StartsWith("match: 0 cycles", live.Out.ToString(), StringComparison.Ordinal);
+        Assert.Equal(string.Empty, live.Error.ToString());
+    }
+
+    [Fact]
+    public async Task TheMatchEndsAtItsLastCycleAndTheSummaryCountsWhatWasPlayed()
+    {
+        var live = await Start("--cycles", "2");
+        var (page, errors) = await Open(live);
+        await PausedAt(page, 0);
+        await page.ClickAsync("#server-step");
+        await PausedAt(page, 1);
+        await page.ClickAsync("#server-pause"); // resume: plays the last cycle, then the match is over
+        await page.WaitForFunctionAsync("() => urwpg.serverStatus.over && urwpg.serverStatus.cycle === 2 && urwpg.store.count === 3", null, new() { Timeout = Wait });
+        await page.ClickAsync("#server-step");
+        await page.WaitForFunctionAsync("() => urwpg.serverStatus.paused && urwpg.serverStatus.over", null, new() { Timeout = Wait });
+        Assert.Equal(3, await Count(page));
+        await Settle(page);
+        Assert.Equal("match over", await page.TextContentAsync("#live-status"));
+
+        // The page is the replay page too: scrub back through what was received.
+        await Scrub(page, 1);
+        Assert.Equal(1, await Cycle(page));
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+        Assert.Equal(0, await Stop(live));
+        Assert.StartsWith("match: 2 cycles, 0.2 s simulated", live.Out.ToString(), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void APortInUseIsOneErrorLineAndExitCodeTwo()
+    {
+        var busy = new TcpListener(IPAddress.Loopback, 0);
+        busy.Start();
+        try
+        {
+            int port = ((IPEndPoint)busy.LocalEndpoint).Port;
+            var (code, stdout, stderr) = RecordedMatch.Cli("run", "--live", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture));
+            Assert.Equal(2, code);
+            Assert.Equal(string.Empty, stdout);
+            Assert.StartsWith($"--port {port}: cannot listen on http://127.0.0.1:{port}/ (", stderr, StringComparison.Ordinal);
+            Assert.Single(stderr.TrimEnd().Split('\n'));
+        }
+        finally
+        {
+            busy.Stop();
+        }
+    }
+
+    [Fact]
+    public async Task CtrlCEndsTheMatchAndTheServerWithTheSummary()
+    {
+        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        int port = FreePort();
+        var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+        {
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            RedirectStandardInput = true,
+            UseShellExecute = false,
+        };
+        foreach (var a in (string[])[server, "run", "--live", "--paused", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture)])
+        {
+            start.ArgumentList.Add(a);
+        }
+
+        using var process = Process.Start(start)!;
+        var stderr = process.StandardError.ReadToEndAsync();
+        string? first = process.StandardOutput.ReadLine();
+        Assert.Equal($"live view: http://127.0.0.1:{port}/ (Ctrl+C to stop)", first);
+        using (var kill = Process.Start("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+        {
+            kill.WaitForExit();
+        }
+
+        string rest = process.StandardOutput.ReadToEnd();
+        Assert.True(process.WaitForExit(Wait), "the server did not end on SIGINT");
+        Assert.Equal(0, process.ExitCode);
+        Assert.StartsWith("match: 0 cycles", rest, StringComparison.Ordinal);
+        Assert.Contains("\ngoals: team 0 (chase-ball) 0, team 1 (chase-ball) 0\n", rest, StringComparison.Ordinal);
+        Assert.Equal(string.Empty, await stderr);
+    }
+}
