@@ -16,7 +16,7 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// original's Match/ sources (QuickRescue.cs, ObstacleRacing.cs, Match1V1/3V3/5V5.cs,
 /// MatchSnooker.cs), copied here by hand as literals.
 /// </summary>
-public sealed class LayoutTests2
+public sealed class OriginalLayoutTests
 {
     [Fact]
     public void RescueMatchesQuickRescueCs()
