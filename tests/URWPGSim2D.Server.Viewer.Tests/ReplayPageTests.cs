@@ -17,11 +17,11 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 [Collection(BrowserCollection.Name)]
 public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
 {
-    // Opens the replay page with every request but the page itself aborted and recorded.
-    private async Task<(IPage Page, List<string> Errors, List<string> Requests)> Open()
+    // Opens a replay page (the recorded match's by default) with every request but the page itself aborted and recorded.
+    private async Task<(IPage Page, List<string> Errors, List<string> Requests)> Open(string? path = null)
     {
         var (page, errors) = await browser.NewPageAsync();
-        string url = new Uri(match.HtmlPath).AbsoluteUri;
+        string url = new Uri(path ?? match.HtmlPath).AbsoluteUri;
         var requests = new List<string>();
         page.Request += (_, r) =>
         {
@@ -344,9 +344,7 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
         string html = Path.Combine(match.Folder, "default.html");
         var run = RecordedMatch.Cli("run", "--cycles", "1000", "--html", html);
         Assert.True(run.Code == 0, run.Stderr);
-        var (page, errors) = await browser.NewPageAsync();
-        await page.GotoAsync(new Uri(html).AbsoluteUri);
-        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = 15_000 });
+        var (page, errors, _) = await Open(html);
         await page.ClickAsync("#show-trails");
         await page.Keyboard.PressAsync("End");
         await Settle(page);
