@@ -109,7 +109,7 @@ public sealed class LiveViewTests(Browser browser)
         await two.ClickAsync("#server-pause");
         await two.WaitForFunctionAsync("() => urwpg.store.count >= 12", null, new() { Timeout = Wait });
         await one.ClickAsync("#server-pause");
-        await one.WaitForFunctionAsync("() => urwpg.serverStatus.paused", null, new() { Timeout = Wait });
+        await one.WaitForFunctionAsync("() => urwpg.serverStatus.paused && urwpg.store.count === urwpg.serverStatus.cycle + 1", null, new() { Timeout = Wait });
         int held = await one.EvaluateAsync<int>("() => urwpg.serverStatus.cycle");
         await PausedAt(one, held);
         await PausedAt(two, held);

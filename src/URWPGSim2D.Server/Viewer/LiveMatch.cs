@@ -12,7 +12,8 @@ namespace URWPGSim2D.Server.Viewer;
 /// Plays a match for the live view on its own thread, one cycle every 100 ms / speed (deadline
 /// based, so it does not drift), publishing each cycle's trace line and the play status to a
 /// <see cref="LiveFeed"/>. Pause, resume, step and restart come from any thread (the viewers'
-/// buttons); a step plays exactly one cycle and leaves the match paused. At the last cycle the
+/// buttons); a step plays exactly one cycle and leaves the match paused. Only the playing thread
+/// publishes, so a status message always follows every cycle line it counts. At the last cycle the
 /// match is over and waits (a restart plays it again) until <see cref="Run"/> is cancelled.
 /// </summary>
 internal sealed class LiveMatch
@@ -29,6 +30,7 @@ internal sealed class LiveMatch
     private bool _paused;
     private int _steps;
     private bool _restart;
+    private bool _statusChanged;
 
     /// <summary>Creates the player; the first match is built at once.</summary>
     /// <param name="create">Builds a fresh match (called again on restart).</param>
@@ -111,7 +113,18 @@ internal sealed class LiveMatch
         TimeSpan deadline = TimeSpan.Zero;
         while (!stop.IsCancellationRequested)
         {
-            bool stepping, restart = false;
+            bool stepping, restart = false, changed;
+            lock (_gate)
+            {
+                changed = _statusChanged;
+                _statusChanged = false;
+            }
+
+            if (changed)
+            {
+                PublishStatus(); // from this thread only, so a status never overtakes a cycle it counts
+            }
+
             lock (_gate)
             {
                 if (_restart)
@@ -184,10 +197,9 @@ internal sealed class LiveMatch
         lock (_gate)
         {
             change();
+            _statusChanged = true;
             Monitor.PulseAll(_gate);
         }
-
-        PublishStatus();
     }
 
     private void Publish(ReadOnlySpan<byte> line)
