@@ -29,7 +29,6 @@ internal static class Placement
     public static void Place(BallState b, Vector2 position)
     {
         b.Position = position;
-        b.BasePosition = position;
         b.Velocity = Vector2.Zero;
         b.NoiseVelocity = Vector2.Zero;
     }
@@ -38,8 +37,6 @@ internal static class Placement
     {
         f.Position = position;
         f.Heading = Angles.Wrap(heading);
-        f.BasePosition = f.Position;
-        f.BaseHeading = f.Heading;
         f.Speed.Reset(0f, SpeedTable.Speeds);
         f.Turn.Reset(0f, TurnTable.Rates);
         f.Velocity = Vector2.Zero;
