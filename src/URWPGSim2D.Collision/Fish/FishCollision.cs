@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -103,6 +104,18 @@ public static partial class FishCollision
         }
 
         var partner = new ConvexPartner(b.View());
+        return Deepest(a, ref partner);
+    }
+
+    /// <summary>Fish against any convex outline given as a view (vertices and normals in a caller's buffer) with its bounding circle.</summary>
+    internal static FishContact Detect(FishModel a, in ConvexView b, in Circle bound)
+    {
+        if (!Slabs.MayOverlap(a.Root, bound))
+        {
+            return default;
+        }
+
+        var partner = new ConvexPartner(b);
         return Deepest(a, ref partner);
     }
 

@@ -37,7 +37,6 @@ internal static class Placement
     {
         b.OutOfPlay = false;
         b.Position = position;
-        b.BasePosition = position;
         b.Velocity = Vector2.Zero;
         b.NoiseVelocity = Vector2.Zero;
     }
@@ -46,8 +45,6 @@ internal static class Placement
     {
         f.Position = position;
         f.Heading = Angles.Wrap(heading);
-        f.BasePosition = f.Position;
-        f.BaseHeading = f.Heading;
         f.Speed.Reset(0f, SpeedTable.Speeds);
         f.Turn.Reset(0f, TurnTable.Rates);
         f.Velocity = Vector2.Zero;

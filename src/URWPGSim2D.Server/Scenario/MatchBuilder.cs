@@ -34,7 +34,7 @@ internal static class MatchBuilder
         for (int i = 0; i < fish.Length; i++)
         {
             var d = scenario.Fish[i];
-            fish[i] = new FishState(i, d.Team, FishSize.Default, d.Position, d.Heading);
+            fish[i] = new FishState(i, d.Team, FishSize.Default, d.Position, d.Heading) { TailPhase = d.TailPhase };
         }
 
         var balls = new BallState[scenario.Balls.Count];

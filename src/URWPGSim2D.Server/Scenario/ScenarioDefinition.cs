@@ -54,7 +54,8 @@ internal sealed record ScenarioDefinition
 /// <param name="Heading">rad.</param>
 /// <param name="Strategy">Built-in strategy name: idle, chase-ball, fixed, or demo (the item's demo strategy).</param>
 /// <param name="Decision">The decision of a fixed strategy.</param>
-internal sealed record FishDefinition(int Team, Vector2 Position, float Heading, string Strategy, Decision Decision);
+/// <param name="TailPhase">The fish's own tail-wave phase p, rad.</param>
+internal sealed record FishDefinition(int Team, Vector2 Position, float Heading, string Strategy, Decision Decision, float TailPhase = 0f);
 
 /// <summary>A ball of a scenario.</summary>
 /// <param name="Position">Centre, mm.</param>

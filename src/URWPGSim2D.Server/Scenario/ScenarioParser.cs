@@ -125,7 +125,7 @@ internal static class ScenarioParser
     private static FishDefinition ReadFish(JsonElement e, string path, ScenarioDefinition s)
     {
         Object(e, path);
-        OnlyKnown(e, path, "team", "position", "heading", "strategy", "decision");
+        OnlyKnown(e, path, "team", "position", "heading", "strategy", "decision", "tailPhase");
         int team = e.TryGetProperty("team", out var t) ? (int)Integer(t, path + ".team", 0, 1) : throw new ScenarioException(path + ".team", "is required");
         Vector2 position = Required(e, path, "position");
         if (MathF.Abs(position.X) >= s.FieldLength * 0.5f || MathF.Abs(position.Y) >= s.FieldWidth * 0.5f)
@@ -134,6 +134,7 @@ internal static class ScenarioParser
         }
 
         float heading = e.TryGetProperty("heading", out var h) ? Number(h, path + ".heading") : 0f;
+        float tailPhase = e.TryGetProperty("tailPhase", out var tp) ? Number(tp, path + ".tailPhase") : 0f;
         bool hasDecision = e.TryGetProperty("decision", out var d);
         string strategy = e.TryGetProperty("strategy", out var st) ? Text(st, path + ".strategy") : hasDecision ? "fixed" : "idle";
         if (strategy is not ("idle" or "chase-ball" or "fixed"))
@@ -156,7 +157,7 @@ internal static class ScenarioParser
             throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {CliText.Quote(strategy)}");
         }
 
-        return new FishDefinition(team, position, heading, strategy, decision);
+        return new FishDefinition(team, position, heading, strategy, decision, tailPhase);
     }
 
     private static Decision ReadDecision(JsonElement e, string path)

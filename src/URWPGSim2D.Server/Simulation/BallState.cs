@@ -24,12 +24,6 @@ internal sealed class BallState(int index, float radius, Vector2 position, Vecto
     /// <summary>This cycle's noise drift, mm/s (added to the motion only, not to the physics).</summary>
     public Vector2 NoiseVelocity;
 
-    /// <summary>Position at the stepper's last committed time.</summary>
-    public Vector2 BasePosition;
-
-    /// <summary>The stepper's last committed time for this ball (cycle fraction 0 … 1).</summary>
-    public double BaseTime;
-
     /// <summary>
     /// True while a competition item keeps this ball out of play (potted, laid where the item says,
     /// possibly outside the pool): it does not move and collides with nothing.

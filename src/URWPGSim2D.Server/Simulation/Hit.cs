@@ -22,17 +22,6 @@ internal readonly struct Hit
         PartB = partB;
     }
 
-    private Hit(in Hit h, Vector2 mtv, Vector2 normal, Vector2 point)
-    {
-        Intersect = h.Intersect;
-        Mtv = mtv;
-        Normal = normal;
-        Point = point;
-        Depth = h.Depth;
-        PartA = h.PartA;
-        PartB = h.PartB;
-    }
-
     /// <summary>Whether the shapes overlap.</summary>
     public bool Intersect { get; }
 
@@ -59,10 +48,6 @@ internal readonly struct Hit
 
     /// <summary>From a plain result with the fish parts given.</summary>
     public static Hit From(in CollisionDetectionResult r, sbyte partA, sbyte partB) => new(r, partA, partB);
-
-    /// <summary>This contact, found in a fish model's frame, carried into the world by <paramref name="frame"/>.</summary>
-    public Hit ToWorld(in RigidFrame frame) =>
-        !Intersect || frame.IsIdentity ? this : new Hit(this, frame.Rotate(Mtv), frame.Rotate(Normal), frame.ToWorld(Point));
 
     /// <summary>From a fish contact.</summary>
     public static Hit From(in FishContact c) =>

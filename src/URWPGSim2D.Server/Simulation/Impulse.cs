@@ -3,13 +3,14 @@ using System.Numerics;
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
-/// The normal impulse of a contact between two bodies with linear and angular velocity:
-/// the relative velocity of the contact point is split into normal and tangential parts; the
-/// tangential part is kept and the normal part becomes −e times itself. For unit normal n (from B
-/// toward A), lever arms rA, rB and point velocities vA + ωA·perp(rA) (perp(r) = (−r_z, r_x)),
-/// J = −(1 + e)·vn / (1/mA + 1/mB + (rA×n)²/IA + (rB×n)²/IB) when vn &lt; 0 (approaching), else 0.
-/// A gets +J·n (Δω_A = rA×(J·n)/IA, the reference's J·r⊥/6000 spin rule), B gets −J·n.
-/// A zero inverse mass is a static body. Linear momentum along n is conserved.
+/// The original's velocity exchange along a contact normal and its turning rule. Velocities are
+/// split into a normal part (along the unit normal) and a tangential part, which is kept. Two
+/// bodies with normal speeds v₁, v₂ and masses m₁, m₂ exchange as
+/// v₁' = (m₁·v₁ + m₂·(v₂ + e·(v₂ − v₁))) / (m₁ + m₂) (and v₂' likewise), so the relative normal speed
+/// becomes −e times itself: e = 0 is perfectly inelastic, a negative e leaves the bodies still
+/// closing slightly. A fish struck with impulse J (magnitude m·|Δv_n|) at lever r turns by
+/// Δω = J·r⊥ / 6000 applied as a heading increment Δω·0.01 s, with r⊥ = r × (unit impulse on the
+/// fish) signed, so the struck point moves away from what struck it.
 /// </summary>
 internal static class Impulse
 {
@@ -19,22 +20,22 @@ internal static class Impulse
     /// <summary>Velocity of a point at lever arm r on a body turning at ω (rad/s, positive from +X toward +Z).</summary>
     public static Vector2 PointVelocity(Vector2 v, float omega, Vector2 r) => v + (omega * new Vector2(-r.Y, r.X));
 
-    /// <summary>The impulse magnitude J ≥ 0 along n (see the type's summary).</summary>
-    public static float Magnitude(
-        Vector2 n, float restitution,
-        Vector2 velocityA, float omegaA, Vector2 leverA, float inverseMassA, float inverseInertiaA,
-        Vector2 velocityB, float omegaB, Vector2 leverB, float inverseMassB, float inverseInertiaB)
-    {
-        Vector2 relative = PointVelocity(velocityA, omegaA, leverA) - PointVelocity(velocityB, omegaB, leverB);
-        float vn = Vector2.Dot(relative, n);
-        if (vn >= 0f)
-        {
-            return 0f;
-        }
+    /// <summary>Body 1's normal speed after the exchange (see the type's summary).</summary>
+    /// <param name="v1">Body 1's normal speed before.</param>
+    /// <param name="m1">Body 1's mass.</param>
+    /// <param name="v2">Body 2's normal speed before.</param>
+    /// <param name="m2">Body 2's mass.</param>
+    /// <param name="restitution">The exchange's e (the original's sign convention).</param>
+    public static float Exchange(float v1, float m1, float v2, float m2, float restitution) =>
+        ((m1 * v1) + (m2 * (v2 + (restitution * (v2 - v1))))) / (m1 + m2);
 
-        float ka = Cross(leverA, n);
-        float kb = Cross(leverB, n);
-        float denominator = inverseMassA + inverseMassB + (ka * ka * inverseInertiaA) + (kb * kb * inverseInertiaB);
-        return denominator > 0f ? -(1f + restitution) * vn / denominator : 0f;
-    }
+    /// <summary>
+    /// The heading increment (rad) of a fish that receives <paramref name="impulse"/> (mass × velocity
+    /// change, a vector) at lever arm <paramref name="lever"/> from its position: Δω·0.01 s with
+    /// Δω = (r × impulse) / 6000 = J·r⊥ / 6000.
+    /// </summary>
+    /// <param name="lever">Action point minus the fish's position, mm.</param>
+    /// <param name="impulse">The impulse on the fish, reference mass units × mm/s.</param>
+    public static float HeadingIncrement(Vector2 lever, Vector2 impulse) =>
+        Cross(lever, impulse) / PhysicsConstants.FishInertia * PhysicsConstants.TurnImpulseSeconds;
 }

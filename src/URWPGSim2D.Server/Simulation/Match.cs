@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// <summary>
 /// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
 /// read-only snapshot of the last cycle → fish locomotion → ball locomotion → motion with collision
-/// detection and response (<see cref="Stepper"/>) → rules (goals). Everything iterates by index;
+/// detection and response (<see cref="CycleMotion"/>) → rules (goals). Everything iterates by index;
 /// the noise generators are seeded, so the same scenario and seed replay the same match. After the
 /// first cycles a step allocates nothing (built-in strategies).
 /// </summary>
@@ -30,7 +30,7 @@ internal sealed class Match
         Strategies = strategies;
         Referee = referee;
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
-        Stepper = new Stepper(world, Contacts, broadPhase);
+        Stepper = new CycleMotion(world, Contacts, broadPhase);
         referee?.Start(world);
         if (noise)
         {
@@ -52,7 +52,7 @@ internal sealed class Match
     public ContactLog Contacts { get; } = new();
 
     /// <summary>Motion interpolation and contact handling.</summary>
-    public Stepper Stepper { get; }
+    public CycleMotion Stepper { get; }
 
     /// <summary>The competition item's rules, or null for the plain goal rules.</summary>
     public Items.ItemReferee? Referee { get; }

@@ -10,6 +10,8 @@ namespace URWPGSim2D.Server.Simulation;
 /// </summary>
 internal sealed class World
 {
+    private MotionBodies? _bodies;
+
     public World(Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
     {
         Field = field;
@@ -33,6 +35,13 @@ internal sealed class World
 
     /// <summary>Obstacles (first, obstacleN = index) then goal blocks (goalBlockN = index − obstacle count).</summary>
     public StaticBody[] Statics { get; }
+
+    /// <summary>The bodies as the motion stepper holds them (created with the default broad phase when first needed).</summary>
+    public MotionBodies Bodies
+    {
+        get => _bodies ??= new MotionBodies(this, null);
+        set => _bodies = value;
+    }
 
     /// <summary>Cycles completed.</summary>
     public int Cycle { get; set; }

@@ -55,6 +55,18 @@ public sealed class TailWaveAndBallTests
         Assert.Equal(-0.092889f, fish.Joint3, 1e-5f);
     }
 
+    [Fact]
+    public void AScenarioSetsTheFishsOwnPhase()
+    {
+        // "tailPhase": 0.5 at VCode 3, TCode 2: after 7 cycles (t = 0.7 s) the joints are the p = 0.5 values above.
+        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"tailPhase":0.5,"decision":{"vcode":3,"tcode":2}}],"balls":[]}""");
+        match.Play(7);
+        var fish = match.World.Fish[0];
+        Assert.Equal(0.131691f, fish.Joint1, 1e-5f);
+        Assert.Equal(0.655963f, fish.Joint2, 1e-5f);
+        Assert.Equal(0.229180f, fish.Joint3, 1e-5f);
+    }
+
     [Theory]
     [InlineData(0, 1f)]
     [InlineData(14, -1f)]

@@ -1,24 +1,23 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Collision.Motion;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Simulation;
+namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// The bounds a fish gives without rebuilding its model hold every leaf vertex of the model
-/// rebuilt at its pose: after a joint change (body circle carried with the body, tail skeleton
-/// circle) and after a rigid move (the model's circles carried by the frame), over random poses.
+/// The bounds a stepper fish gives without rebuilding its model hold every leaf vertex of the
+/// model rebuilt at its pose: after a joint change (body circle carried with the body, tail
+/// skeleton circle) and after a rigid move (the model's circles carried by the frame), over random poses.
 /// </summary>
-public sealed class FishBoundsTests
+public sealed class BodyBoundsTests
 {
     [Fact]
     public void BoundsWithoutARebuildHoldEveryLeaf()
     {
         var random = new Random(99);
-        var match = TestMatches.FromJson("""{"fish":[{"team":0,"position":[0,0],"strategy":"idle"}],"balls":[]}""");
-        var fish = match.World.Fish[0];
+        Body fish = Body.Fish(0, FishSize.Default, new FishPose(Vector2.Zero, 0f));
         double slackTail = 0, slackBody = 0;
         for (int trial = 0; trial < 3000; trial++)
         {
@@ -39,7 +38,7 @@ public sealed class FishBoundsTests
             fish.Invalidate();
             Assert.Equal(!jointsChange, fish.JointsCurrent);
             fish.Groups(out Disc body, out Disc tail);
-            var bound = fish.Bound();
+            Disc bound = fish.Bound();
 
             FishModel exact = fish.PosedModel;
             for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)

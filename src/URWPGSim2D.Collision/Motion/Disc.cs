@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>A circle as plain numbers (no validation), for cheap distance bounds, mm.</summary>
 internal readonly record struct Disc(Vector2 Center, float Radius)
@@ -9,7 +9,7 @@ internal readonly record struct Disc(Vector2 Center, float Radius)
     /// <summary>Distance between the two circles' boundaries (negative when they overlap), mm.</summary>
     public float GapTo(in Disc other) => Vector2.Distance(Center, other.Center) - Radius - other.Radius;
 
-    /// <summary>Distance from the circle to the box [min, max] (negative when they overlap; 0 … −r inside), mm.</summary>
+    /// <summary>Distance from the circle to the box [min, max] (negative when they overlap), mm.</summary>
     public float GapTo(Vector2 min, Vector2 max)
     {
         Vector2 d = Vector2.Max(Vector2.Max(min - Center, Center - max), Vector2.Zero);

@@ -1,12 +1,11 @@
 using System;
 using System.Numerics;
-using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// A fish against the pool's walls when its model sits at an older pose: the leaf vertices are
@@ -19,7 +18,7 @@ internal static class FishWall
     private const int MaxVertices = 64;
 
     /// <summary>The wall contact of the fish now (MTV moves the fish back inside), or no contact.</summary>
-    public static Hit Detect(Field field, FishState fish)
+    public static Hit Detect(Field field, Body fish)
     {
         FishModel model = fish.RigidModel;
         RigidFrame frame = fish.Frame;
@@ -74,6 +73,6 @@ internal static class FishWall
             }
         }
 
-        return Hit.From(result, (sbyte)deepest, -1);
+        return Hit.From(new FishContact(result, (FishPart)deepest, null));
     }
 }

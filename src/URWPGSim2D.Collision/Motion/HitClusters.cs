@@ -1,13 +1,13 @@
 using System;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// The overlapping pairs one sample found, grouped into clusters that share no moving body (pairs
-/// linked through a fish or a ball are one cluster; static bodies and walls link nothing), each with
+/// linked through a moving body are one cluster; static bodies and walls link nothing), each with
 /// an estimated time of first contact. Buffers grow by doubling and are reused.
 /// </summary>
-internal sealed class FoundHits
+internal sealed class HitClusters
 {
     private int[] _order = new int[16];
     private double[] _clusterTime = new double[16];
@@ -33,21 +33,17 @@ internal sealed class FoundHits
     /// <summary>Cluster label of each hit (the smallest hit index of its cluster).</summary>
     public int[] Label { get; private set; } = new int[16];
 
+    /// <summary>Makes room for <paramref name="hits"/> hits of a sample among <paramref name="movers"/> movers.</summary>
+    public void Reserve(int hits, int movers)
+    {
+        Size(hits);
+        EnsureMovers(Math.Max(0, movers - 1));
+    }
+
     /// <summary>Copies the hits of a sample.</summary>
     public void Load(int[] slots, Hit[] values, int count, PairTable table)
     {
-        if (Slot.Length < count)
-        {
-            int size = Math.Max(count, Slot.Length * 2);
-            Slot = new int[size];
-            Generation = new int[size];
-            Value = new Hit[size];
-            Estimate = new double[size];
-            Label = new int[size];
-            _order = new int[size];
-            _clusterTime = new double[size];
-        }
-
+        Size(count);
         Count = count;
         for (int i = 0; i < count; i++)
         {
@@ -60,8 +56,23 @@ internal sealed class FoundHits
         _table = table;
     }
 
+    private void Size(int count)
+    {
+        if (Slot.Length < count)
+        {
+            int size = Math.Max(count, Slot.Length * 2);
+            Slot = new int[size];
+            Generation = new int[size];
+            Value = new Hit[size];
+            Estimate = new double[size];
+            Label = new int[size];
+            _order = new int[size];
+            _clusterTime = new double[size];
+        }
+    }
+
     /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>
-    public void Cluster(int fishCount)
+    public void Cluster()
     {
         // Union-find over the hits: each mover remembers the first hit it was seen in.
         for (int i = 0; i < Count; i++)
@@ -71,7 +82,7 @@ internal sealed class FoundHits
 
         for (int i = 0; i < Count; i++)
         {
-            Movers(_table!.Pair[Slot[i]], fishCount, out int a, out int b);
+            Movers(_table!.Pair[Slot[i]], out int a, out int b);
             Join(i, a);
             if (b >= 0)
             {
@@ -82,7 +93,7 @@ internal sealed class FoundHits
         for (int i = 0; i < Count; i++)
         {
             Label[i] = Root(i);
-            Forget(_table!.Pair[Slot[i]], fishCount);
+            Forget(_table!.Pair[Slot[i]]);
         }
 
         _clusters = 0;
@@ -150,9 +161,9 @@ internal sealed class FoundHits
         return i;
     }
 
-    private void Forget(in CandidatePair pair, int fishCount)
+    private void Forget(in PlannedPair pair)
     {
-        Movers(pair, fishCount, out int a, out int b);
+        Movers(pair, out int a, out int b);
         _firstHitOf[a] = -1;
         if (b >= 0)
         {
@@ -173,27 +184,6 @@ internal sealed class FoundHits
     /// <summary>The cluster labels, earliest estimated contact first.</summary>
     public ReadOnlySpan<int> ClustersByTime() => _order.AsSpan(0, _clusters);
 
-    // The moving bodies of a pair (b = −1 for a static body or a wall).
-    private static void Movers(in CandidatePair p, int fishCount, out int a, out int b)
-    {
-        switch (p.Kind)
-        {
-            case PairKind.FishFish:
-                (a, b) = (p.A, p.B);
-                break;
-            case PairKind.FishBall:
-                (a, b) = (p.A, fishCount + p.B);
-                break;
-            case PairKind.BallBall:
-                (a, b) = (fishCount + p.A, fishCount + p.B);
-                break;
-            case PairKind.FishStatic:
-            case PairKind.FishWall:
-                (a, b) = (p.A, -1);
-                break;
-            default:
-                (a, b) = (fishCount + p.A, -1);
-                break;
-        }
-    }
+    // The moving bodies of a pair (b = −1 for a static body or the walls).
+    private static void Movers(in PlannedPair p, out int a, out int b) => (a, b) = (p.MoverA, p.MoverB);
 }

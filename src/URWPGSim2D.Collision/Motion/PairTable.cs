@@ -1,12 +1,12 @@
 using System;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// The candidate pairs of the current cycle, in reusable slots: the pair, its relative travel rate,
-/// its sampling step (ticks), the last time it was seen apart, and a generation stamp that changes
-/// when the slot is freed (so stale queue entries are ignored). Each mover (fish i = mover i, ball j
-/// = mover F + j) keeps a doubly linked list of its pairs, so that all pairs of a mover are found
+/// The candidate pairs of the current step, in reusable slots: the pair, its relative travel rate,
+/// its sampling interval, the last time it was seen apart, and a generation stamp that changes
+/// when the slot is freed (so stale queue entries are ignored). Each mover
+/// keeps a doubly linked list of its pairs, so that all pairs of a mover are found
 /// and removed in time proportional to their number. Slots are reused in a fixed order, so the
 /// same events give the same slots. Storage grows by doubling, never shrinks.
 /// </summary>
@@ -29,16 +29,24 @@ internal sealed class PairTable
         Array.Fill(_moverHead, None);
     }
 
-    /// <summary>The pair in each slot.</summary>
-    public CandidatePair[] Pair { get; private set; } = new CandidatePair[64];
+    /// <summary>Follows a new number of movers (empties the table).</summary>
+    public void Resize(int movers)
+    {
+        _moverHead = new int[Math.Max(1, movers)];
+        Array.Fill(_moverHead, None);
+        Clear();
+    }
 
-    /// <summary>Most the two bodies move relative to each other per unit of cycle fraction, mm.</summary>
+    /// <summary>The pair in each slot.</summary>
+    public PlannedPair[] Pair { get; private set; } = new PlannedPair[64];
+
+    /// <summary>Most the two bodies move relative to each other over a whole step, mm.</summary>
     public float[] Rate { get; private set; } = new float[64];
 
-    /// <summary>Sampling step, ticks (a power of two).</summary>
-    public int[] Step { get; private set; } = new int[64];
+    /// <summary>Sampling interval, a fraction of the step (a power of two: 1, 1/2, … 1/<see cref="TickQueue.Ticks"/>).</summary>
+    public double[] Interval { get; private set; } = new double[64];
 
-    /// <summary>Last time (cycle fraction) the pair was planned or sampled apart.</summary>
+    /// <summary>Last time (fraction of the step) the pair was planned or sampled apart.</summary>
     public double[] LastFree { get; private set; } = new double[64];
 
     /// <summary>Whether the pair was seen apart at <see cref="LastFree"/> (a pair planned while its bounds overlap was not).</summary>
@@ -62,19 +70,19 @@ internal sealed class PairTable
         _freeCount = 0;
     }
 
-    /// <summary>Stores a pair of mover <paramref name="moverA"/> and mover <paramref name="moverB"/> (−1 for a static body or a wall); returns its slot.</summary>
-    public int Add(in CandidatePair pair, int moverA, int moverB, float rate)
+    /// <summary>Stores a pair (its movers link it to their lists); returns its slot.</summary>
+    public int Add(in PlannedPair pair, float rate)
     {
         int slot = _freeCount > 0 ? _free[--_freeCount] : Grow();
         Pair[slot] = pair;
         Rate[slot] = rate;
         Alive[slot] = true;
-        _moverA[slot] = moverA;
-        _moverB[slot] = moverB;
-        Link(2 * slot, moverA);
-        if (moverB != None)
+        _moverA[slot] = pair.MoverA;
+        _moverB[slot] = pair.MoverB;
+        Link(2 * slot, pair.MoverA);
+        if (pair.MoverB != None)
         {
-            Link((2 * slot) + 1, moverB);
+            Link((2 * slot) + 1, pair.MoverB);
         }
 
         return slot;
@@ -144,25 +152,44 @@ internal sealed class PairTable
         }
     }
 
+    /// <summary>Makes room for at least <paramref name="slots"/> pairs (so a step does not grow the storage).</summary>
+    public void Reserve(int slots)
+    {
+        while (Pair.Length < slots)
+        {
+            GrowStorage();
+        }
+
+        if (_free.Length < slots)
+        {
+            Array.Resize(ref _free, slots);
+        }
+    }
+
     private int Grow()
     {
         if (_used == Pair.Length)
         {
-            int size = Pair.Length * 2;
-            Pair = Resized(Pair, size);
-            Rate = Resized(Rate, size);
-            Step = Resized(Step, size);
-            LastFree = Resized(LastFree, size);
-            ApartAtLastFree = Resized(ApartAtLastFree, size);
-            Generation = Resized(Generation, size);
-            Alive = Resized(Alive, size);
-            _moverA = Resized(_moverA, size);
-            _moverB = Resized(_moverB, size);
-            _edgeNext = Resized(_edgeNext, 2 * size);
-            _edgePrev = Resized(_edgePrev, 2 * size);
+            GrowStorage();
         }
 
         return _used++;
+    }
+
+    private void GrowStorage()
+    {
+        int size = Pair.Length * 2;
+        Pair = Resized(Pair, size);
+        Rate = Resized(Rate, size);
+        Interval = Resized(Interval, size);
+        LastFree = Resized(LastFree, size);
+        ApartAtLastFree = Resized(ApartAtLastFree, size);
+        Generation = Resized(Generation, size);
+        Alive = Resized(Alive, size);
+        _moverA = Resized(_moverA, size);
+        _moverB = Resized(_moverB, size);
+        _edgeNext = Resized(_edgeNext, 2 * size);
+        _edgePrev = Resized(_edgePrev, 2 * size);
     }
 
     private static T[] Resized<T>(T[] array, int size)

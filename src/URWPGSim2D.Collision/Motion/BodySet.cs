@@ -1,9 +1,9 @@
 using System;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
-/// <summary>A set of movers (fish i = i, ball j = fish count + j) in insertion order, with O(1) membership and clearing in O(size).</summary>
-internal sealed class MoverSet(int movers)
+/// <summary>A set of mover slots in insertion order, with O(1) membership and clearing in O(size).</summary>
+internal sealed class BodySet(int movers)
 {
     private readonly bool[] _marks = new bool[Math.Max(1, movers)];
     private readonly int[] _items = new int[Math.Max(1, movers)];

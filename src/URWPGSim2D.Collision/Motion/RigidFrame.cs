@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// The rigid motion that carries a fish's collision model (built at pose P₀, θ₀) onto the fish

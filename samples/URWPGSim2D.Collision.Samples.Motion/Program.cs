@@ -1,0 +1,90 @@
+// <snippet>
+using System;
+using System.Numerics;                       // Vector2: X = world X, Y = world Z
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
+
+// The pair-level call: when does a ball rolling at 1,000 mm/s meet a resting one 300 mm away?
+TimeOfImpactResult first = TimeOfImpact.Find(
+    MovingBody.Circle(new Circle(new Vector2(0f, 0f), 50f), new Vector2(1000f, 0f)),
+    MovingBody.Static(new Circle(new Vector2(300f, 0f), 50f)),
+    seconds: 0.3f);
+Console.WriteLine($"pair: contact at {first.Time:0.####} s, depth {first.Result.Depth:0.###} mm");
+
+// The pool (3000 × 2000 mm): its walls and its four goal blocks.
+var field = new Field();
+var stepper = new Stepper();
+stepper.AddWalls(field);
+foreach (var block in field.GoalBlocks)
+{
+    stepper.AddStatic(block);
+}
+
+// A fish swimming at 300 mm/s toward a resting ball, and a fast ball rolling at a wall.
+int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-600f, 0f), 0f, 0.1f, -0.05f, 0.1f));
+stepper.SetVelocity(fish, new Vector2(300f, 0f), 0.2f);
+int ball = stepper.AddCircle(58f, new Vector2(-300f, 10f));
+int fast = stepper.AddCircle(38f, new Vector2(1200f, -600f));
+stepper.SetVelocity(fast, new Vector2(2000f, -1000f));
+
+// Ten cycles of 100 ms; every contact comes to the response, in time order.
+var response = new StopAndSeparate();
+for (int cycle = 1; cycle <= 10; cycle++)
+{
+    stepper.Step(0.1f, response);
+}
+
+Console.WriteLine($"{response.Contacts} contacts; ball at {stepper.PositionOf(ball)}, fast ball at {stepper.PositionOf(fast)}");
+Console.WriteLine($"deepest overlap now: {stepper.MeasureOverlap():0.###} mm");
+// </snippet>
+
+// What the docs promise, checked: the fish pushed the ball, the fast ball stayed in the pool, nothing overlaps.
+Vector2 f = stepper.PositionOf(fast);
+bool ok = first.Hit && MathF.Abs(first.Time - 0.2f) <= 0.00025f && response.Contacts > 0 && stepper.PositionOf(ball).X > -300f && stepper.MeasureOverlap() <= 0.5f
+    && MathF.Abs(f.X) + 38f <= 1500.01f && MathF.Abs(f.Y) + 38f <= 1000.01f;
+Console.WriteLine(ok ? "sample Motion: ok" : "sample Motion: FAILED");
+return ok ? 0 : 1;
+
+// <snippet>
+
+/// <summary>
+/// A plain response: the moving body (or both, half each) is pushed out along the contact's
+/// translation, and the velocity that closes the contact is removed. A server plugs its own
+/// physics in here.
+/// </summary>
+internal sealed class StopAndSeparate : IContactHandler
+{
+    public int Contacts { get; private set; }
+
+    public void OnContact(Stepper stepper, in Contact contact)
+    {
+        Contacts++;
+        int a = contact.BodyA, b = contact.BodyB;
+        bool bMoves = stepper.KindOf(b) is BodyKind.Circle or BodyKind.Polygon or BodyKind.Fish;
+        float share = bMoves ? 0.5f : 1f;
+        var mtv = new Vector2(contact.Result.MinimumTranslationVector.X, contact.Result.MinimumTranslationVector.Z);
+        var normal = new Vector2(contact.Result.NormalAxis.X, contact.Result.NormalAxis.Z);
+        Vector2 push = (mtv + (normal * 0.01f)) * share;
+        stepper.SetPose(a, stepper.PositionOf(a) + push, stepper.HeadingOf(a));
+        if (bMoves)
+        {
+            stepper.SetPose(b, stepper.PositionOf(b) - push, stepper.HeadingOf(b));
+        }
+
+        Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
+        float closing = Vector2.Dot(va - vb, normal);
+        if (closing < 0f)
+        {
+            stepper.SetVelocity(a, va - (normal * (closing * share)), stepper.AngularVelocityOf(a));
+            if (bMoves)
+            {
+                stepper.SetVelocity(b, vb + (normal * (closing * share)), stepper.AngularVelocityOf(b));
+            }
+        }
+    }
+
+    public void OnMoveRejected(Stepper stepper, int body) => Console.WriteLine($"body {body}: move rejected");
+}
+// </snippet>

@@ -1,0 +1,60 @@
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Motion;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary>
+/// A simple response for tests: records every contact, pushes the moving body (or both, half each)
+/// out along the MTV plus 0.01 mm, and removes the approaching part of the relative velocity
+/// along the normal (optionally bouncing back with restitution e).
+/// </summary>
+internal sealed class RecordingHandler(float restitution = 0f) : IContactHandler
+{
+    public List<Contact> Contacts { get; } = new(1024);
+
+    public List<int> Rejected { get; } = new(16);
+
+    public bool Record { get; set; } = true;
+
+    public void OnContact(Stepper stepper, in Contact contact)
+    {
+        if (Record)
+        {
+            Contacts.Add(contact);
+        }
+
+        int a = contact.BodyA, b = contact.BodyB;
+        bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
+        Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
+        Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
+        Vector2 push = mtv + (n * 0.01f);
+        float share = bMoves ? 0.5f : 1f;
+        stepper.SetPose(a, stepper.PositionOf(a) + (push * share), stepper.HeadingOf(a));
+        if (bMoves)
+        {
+            stepper.SetPose(b, stepper.PositionOf(b) - (push * share), stepper.HeadingOf(b));
+        }
+
+        Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
+        float vn = Vector2.Dot(va - vb, n);
+        if (vn < 0f)
+        {
+            Vector2 dv = -(1f + restitution) * vn * n;
+            stepper.SetVelocity(a, va + (dv * share), stepper.AngularVelocityOf(a));
+            if (bMoves)
+            {
+                stepper.SetVelocity(b, vb - (dv * share), stepper.AngularVelocityOf(b));
+            }
+        }
+    }
+
+    public void OnMoveRejected(Stepper stepper, int body)
+    {
+        if (Record)
+        {
+            Rejected.Add(body);
+        }
+    }
+}

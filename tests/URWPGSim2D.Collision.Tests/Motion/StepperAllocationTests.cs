@@ -1,0 +1,87 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
+using Xunit;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary>
+/// A step allocates nothing once warmed up, with the library alone: a pool with walls and goal
+/// blocks, fish, balls, polygons and obstacles (a fifth of the bodies each), at 100, 1,000 and
+/// 10,000 bodies, balls at up to 2,000 mm/s.
+/// </summary>
+public sealed class StepperAllocationTests
+{
+    [Theory]
+    [InlineData(100, 20)]
+    [InlineData(1_000, 10)]
+    [InlineData(10_000, 4)]
+    public void AStepAllocatesNothingAfterWarmUp(int bodies, int steps)
+    {
+        var stepper = World(bodies);
+        var handler = new RecordingHandler(0.3f) { Record = false };
+        for (int i = 0; i < 10; i++)
+        {
+            stepper.Step(0.1f, handler);
+        }
+
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        for (int i = 0; i < steps; i++)
+        {
+            stepper.Step(0.1f, handler);
+        }
+
+        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        Assert.True(stepper.Events > 0, "no contact: the scene does not exercise the stepper");
+        Assert.True(allocated == 0L, $"{bodies} bodies: {allocated} B in {steps} steps after warm-up");
+    }
+
+    // Bodies on a jittered lattice (no overlaps) in a pool whose area grows with their number.
+    internal static Stepper World(int bodies)
+    {
+        float scale = MathF.Sqrt(bodies / 60f);
+        var field = new Field(MathF.Max(3000f, 3000f * scale), MathF.Max(2000f, 2000f * scale));
+        var stepper = new Stepper();
+        stepper.AddWalls(field);
+        foreach (Aabb block in field.GoalBlocks)
+        {
+            stepper.AddStatic(block);
+        }
+
+        var random = new Random(bodies);
+        int columns = (int)MathF.Ceiling(MathF.Sqrt(bodies * 1.5f));
+        int rows = (bodies + columns - 1) / columns;
+        float dx = (field.Length - 700f) / columns, dz = (field.Width - 400f) / rows;
+        var square = new ConvexPolygon([new Vector2(-30f, -20f), new Vector2(30f, -20f), new Vector2(30f, 20f), new Vector2(-30f, 20f)]);
+        for (int i = 0; i < bodies; i++)
+        {
+            Vector2 at = new((-field.Length / 2f) + 350f + ((i % columns) + 0.5f) * dx, (-field.Width / 2f) + 200f + ((i / columns) + 0.5f) * dz);
+            at += new Vector2((float)(random.NextDouble() - 0.5) * 10f, (float)(random.NextDouble() - 0.5) * 10f);
+            float heading = (float)(random.NextDouble() * 2 * Math.PI);
+            Vector2 velocity = new((float)(random.NextDouble() - 0.5) * 4000f, (float)(random.NextDouble() - 0.5) * 4000f);
+            switch (i % 5)
+            {
+                case 0:
+                    int fish = stepper.AddFish(FishSize.Default, new FishPose(at, heading, 0.1f, -0.1f, 0.2f));
+                    stepper.SetVelocity(fish, 300f * new Vector2(MathF.Cos(heading), MathF.Sin(heading)), 0.3f);
+                    break;
+                case 1:
+                    int polygon = stepper.AddPolygon(square, at, heading);
+                    stepper.SetVelocity(polygon, velocity * 0.2f, 1f);
+                    break;
+                case 2:
+                    stepper.AddStatic(new Circle(at, 25f));
+                    break;
+                default:
+                    int ball = stepper.AddCircle(38f, at);
+                    stepper.SetVelocity(ball, velocity * 0.5f);
+                    break;
+            }
+        }
+
+        return stepper;
+    }
+}

@@ -1,0 +1,168 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
+using Xunit;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary>The world stepper: contacts at their analytic times, in time order, no tunnelling, its API's checks.</summary>
+public sealed class StepperTests
+{
+    [Fact]
+    public void BallMeetsTheWallAtItsTimeOfFirstContact()
+    {
+        var stepper = new Stepper();
+        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        int ball = stepper.AddCircle(50f, new Vector2(1400f, 0f));
+        stepper.SetVelocity(ball, new Vector2(2000f, 0f));
+        var handler = new RecordingHandler();
+        stepper.Step(0.1f, handler);
+
+        // The ball's edge is 50 mm from the wall and travels 200 mm in the step: contact at 1/4.
+        Contact c = Assert.Single(handler.Contacts);
+        Assert.Equal(ball, c.BodyA);
+        Assert.Equal(walls, c.BodyB);
+        Assert.InRange(c.Time, 0.25, 0.25 + (0.25 / 200.0));
+        Assert.True(stepper.PositionOf(ball).X <= 1450f + 1e-3f);
+        Assert.Equal(0f, stepper.VelocityOf(ball).X);
+    }
+
+    [Fact]
+    public void ContactsComeInTimeOrderAndEachBallStopsAtItsObstacle()
+    {
+        var stepper = new Stepper();
+        var obstacles = new float[] { 130f, 60f, 170f, 95f };
+        for (int i = 0; i < obstacles.Length; i++)
+        {
+            stepper.AddStatic(new Circle(new Vector2(0f, i * 300f), 50f));
+        }
+
+        var balls = new int[obstacles.Length];
+        for (int i = 0; i < obstacles.Length; i++)
+        {
+            // Centre distance at contact is 100 mm: ball i starts 100 + gap_i to the left, at 2000 mm/s.
+            balls[i] = stepper.AddCircle(50f, new Vector2(-100f - obstacles[i], i * 300f));
+            stepper.SetVelocity(balls[i], new Vector2(2000f, 0f));
+        }
+
+        var handler = new RecordingHandler();
+        stepper.Step(0.1f, handler);
+        Assert.Equal(obstacles.Length, handler.Contacts.Count);
+        for (int k = 1; k < handler.Contacts.Count; k++)
+        {
+            Assert.True(handler.Contacts[k - 1].Time <= handler.Contacts[k].Time, $"contact {k} comes before contact {k - 1}");
+        }
+
+        foreach (Contact c in handler.Contacts)
+        {
+            int i = Array.IndexOf(balls, c.BodyA);
+            Assert.InRange(c.Time, obstacles[i] / 200.0, (obstacles[i] + 0.25) / 200.0);
+        }
+    }
+
+    [Theory]
+    [InlineData(5000f, 20f)]
+    [InlineData(20000f, 5f)]
+    public void AFastBallDoesNotPassThroughAThinWall(float speed, float thickness)
+    {
+        var stepper = new Stepper();
+        stepper.AddStatic(new Aabb(new Vector2(300f, -500f), new Vector2(300f + thickness, 500f)));
+        int ball = stepper.AddCircle(20f, new Vector2(0f, 0f));
+        stepper.SetVelocity(ball, new Vector2(speed, 0f));
+        var handler = new RecordingHandler();
+        stepper.Step(0.1f, handler);
+        Assert.Single(handler.Contacts);
+        Assert.True(stepper.PositionOf(ball).X <= 280f + 1e-3f, $"ball at {stepper.PositionOf(ball).X}");
+    }
+
+    [Fact]
+    public void ASpinningPolygonSweepsIntoABallItWouldMissWithoutTurning()
+    {
+        var stepper = new Stepper();
+        var bar = new ConvexPolygon([new Vector2(-200f, -5f), new Vector2(200f, -5f), new Vector2(200f, 5f), new Vector2(-200f, 5f)]);
+        int polygon = stepper.AddPolygon(bar, Vector2.Zero, 0f);
+        int ball = stepper.AddCircle(10f, new Vector2(0f, 150f));
+        stepper.SetVelocity(polygon, Vector2.Zero, MathF.PI * 10f); // half a turn in 0.1 s
+        var handler = new RecordingHandler();
+        stepper.Step(0.1f, handler);
+        // The bar keeps turning (the test response keeps its spin) and pushes the ball on: the first contact is the one that matters.
+        Contact c = handler.Contacts[0];
+        Assert.Equal(polygon, c.BodyA);
+        Assert.Equal(ball, c.BodyB);
+
+        // The bar's far edge (y = +5 side, reach ~150) meets the ball when it has turned by about asin(15 / 150)... the ball sits
+        // on the +Z axis: the bar (half-width 5) reaches the ball's edge (10) at an angle of π/2 − asin(15/150) from +X.
+        double angle = (Math.PI / 2) - Math.Asin(15.0 / 150.0);
+        double expected = angle / Math.PI;
+        Assert.InRange(c.Time, expected - 0.01, expected + 0.002);
+    }
+
+    [Fact]
+    public void TheSameWorldGivesTheSameContactsBitForBit()
+    {
+        static (Stepper, RecordingHandler) Run()
+        {
+            var stepper = new Stepper();
+            stepper.AddWalls(new Field());
+            foreach (Aabb block in new Field().GoalBlocks)
+            {
+                stepper.AddStatic(block);
+            }
+
+            var random = new Random(5);
+            for (int i = 0; i < 40; i++)
+            {
+                int b = stepper.AddCircle(30f, new Vector2((float)(random.NextDouble() * 2400 - 1200), (float)(random.NextDouble() * 1600 - 800)));
+                stepper.SetVelocity(b, new Vector2((float)(random.NextDouble() * 4000 - 2000), (float)(random.NextDouble() * 4000 - 2000)));
+            }
+
+            int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(100f, 50f), 0.3f, 0.2f, -0.1f, 0.3f));
+            stepper.SetVelocity(fish, new Vector2(300f, 100f), 0.4f);
+            var handler = new RecordingHandler(0.5f);
+            for (int k = 0; k < 20; k++)
+            {
+                stepper.Step(0.1f, handler);
+            }
+
+            return (stepper, handler);
+        }
+
+        var (s1, h1) = Run();
+        var (s2, h2) = Run();
+        Assert.True(h1.Contacts.Count > 20);
+        Assert.Equal(h1.Contacts.Count, h2.Contacts.Count);
+        for (int i = 0; i < h1.Contacts.Count; i++)
+        {
+            Assert.Equal(h1.Contacts[i].Time, h2.Contacts[i].Time);
+            Assert.Equal(h1.Contacts[i].Result, h2.Contacts[i].Result);
+            Assert.Equal(h1.Contacts[i].BodyA, h2.Contacts[i].BodyA);
+            Assert.Equal(h1.Contacts[i].BodyB, h2.Contacts[i].BodyB);
+        }
+
+        for (int b = 0; b < s1.BodyCount; b++)
+        {
+            Assert.Equal(s1.PositionOf(b), s2.PositionOf(b));
+        }
+    }
+
+    [Fact]
+    public void BadArgumentsNameTheFieldAndValue()
+    {
+        var stepper = new Stepper();
+        int wall = stepper.AddStatic(new Circle(Vector2.Zero, 5f));
+        int ball = stepper.AddCircle(5f, new Vector2(100f, 0f));
+        var handler = new RecordingHandler();
+        Assert.Contains("positive and finite", Assert.Throws<ArgumentException>(() => stepper.Step(0f, handler)).Message);
+        Assert.Throws<ArgumentNullException>(() => stepper.Step(0.1f, null!));
+        Assert.Contains("body 7 does not exist", Assert.Throws<ArgumentException>(() => stepper.PositionOf(7)).Message);
+        Assert.Contains("Static", Assert.Throws<ArgumentException>(() => stepper.SetVelocity(wall, Vector2.One)).Message);
+        Assert.Contains("not a Fish", Assert.Throws<ArgumentException>(() => stepper.SetJoints(ball, 0f, 0f, 0f)).Message);
+        Assert.Contains("finite", Assert.Throws<ArgumentException>(() => stepper.SetVelocity(ball, new Vector2(float.NaN, 0f))).Message);
+        Assert.Contains("itself", Assert.Throws<ArgumentException>(() => stepper.Detect(ball, ball)).Message);
+        stepper.AddWalls(new Field());
+        Assert.Contains("walls already", Assert.Throws<ArgumentException>(() => stepper.AddWalls(new Field())).Message);
+    }
+}
