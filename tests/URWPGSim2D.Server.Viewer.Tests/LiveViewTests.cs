@@ -90,7 +90,7 @@ public sealed class LiveViewTests(Browser browser)
 
         // The stream is the match itself: the same as the trace of the same match.
         var reference = Path.Combine(Path.GetTempPath(), $"urwpg-live-{Guid.NewGuid():N}.jsonl");
-        Assert.Equal(0, RecordedMatch.Cli("run", "--cycles", "3", "--trace", reference).Code);
+        Assert.Equal(0, RecordedMatch.Cli("run", "--item", "default", "--cycles", "3", "--trace", reference).Code);
         var lines = File.ReadAllLines(reference);
         File.Delete(reference);
         var line3 = System.Text.Json.JsonDocument.Parse(lines[3]).RootElement;
@@ -195,7 +195,7 @@ public sealed class LiveViewTests(Browser browser)
             RedirectStandardInput = true,
             UseShellExecute = false,
         };
-        foreach (var a in (string[])[server, "run", "--live", "--paused", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture)])
+        foreach (var a in (string[])[server, "run", "--item", "default", "--live", "--paused", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture)])
         {
             start.ArgumentList.Add(a);
         }

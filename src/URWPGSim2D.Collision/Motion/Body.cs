@@ -140,6 +140,9 @@ internal sealed class Body
     /// <summary>Contact events of the body in the current step.</summary>
     public int Events;
 
+    /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
+    public bool Collides = true;
+
     /// <summary>A moving circle.</summary>
     public static Body Circle(int id, float radius, Vector2 position) =>
         new(BodyKind.Circle, id) { Radius = radius, Position = position, Thickness = 2f * radius };

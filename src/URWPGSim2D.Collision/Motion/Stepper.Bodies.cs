@@ -179,6 +179,27 @@ public sealed partial class Stepper
         Commit(b);
     }
 
+    /// <summary>
+    /// Takes a moving body out of contact handling, or back in. A body that does not collide is never
+    /// paired with anything (bodies, static bodies or walls) and may even lie outside the pool; it
+    /// still moves with its velocity. Used e.g. to park a body that is out of play.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <param name="collides">True (the default for every body) to take part in contacts.</param>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public void SetCollides(int body, bool collides)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Touch(b);
+        b.Collides = collides;
+        Commit(b);
+    }
+
+    /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <exception cref="ArgumentException">The id is out of range.</exception>
+    public bool CollidesOf(int body) => Get(body).Collides;
+
     /// <summary>Tests two bodies at their current poses (for a handler that separates them step by step).</summary>
     /// <param name="bodyA">The first body (moving): the result's translation moves it.</param>
     /// <param name="bodyB">The second body.</param>

@@ -162,6 +162,11 @@ internal sealed class SweepPlanner
     private void TryPair(int u, int v, IPairSink sink)
     {
         int count = _movers.Length;
+        if (!_movers[u].Collides || (v < count && !_movers[v].Collides))
+        {
+            return;
+        }
+
         if (v >= count)
         {
             TryStatic(u, v - count, sink);
@@ -199,7 +204,7 @@ internal sealed class SweepPlanner
 
     private void TryWall(int m, IPairSink sink)
     {
-        if (_walls is null)
+        if (_walls is null || !_movers[m].Collides)
         {
             return;
         }

@@ -81,7 +81,7 @@ internal static class BatchRunner
     {
         try
         {
-            for (int k = 0; k < cycles; k++)
+            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
             {
                 match.Step();
             }

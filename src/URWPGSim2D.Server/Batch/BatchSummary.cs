@@ -44,9 +44,11 @@ internal static class BatchSummary
         for (int i = 0; i < results.Count; i++)
         {
             var r = results[i];
-            won0 += r.Goals0 > r.Goals1 ? 1 : 0;
-            won1 += r.Goals1 > r.Goals0 ? 1 : 0;
-            drawn += r.Goals0 == r.Goals1 ? 1 : 0;
+            // An item's winner follows its own rules (tie deciders); plain matches by goals.
+            int winner = r.Item is not null ? r.Winner : r.Goals0 > r.Goals1 ? 0 : r.Goals1 > r.Goals0 ? 1 : -1;
+            won0 += winner == 0 ? 1 : 0;
+            won1 += winner == 1 ? 1 : 0;
+            drawn += winner < 0 ? 1 : 0;
             faults += r.StrategyFaults;
             worst = worst < 0 || r.LeftoverOverlap > results[worst].LeftoverOverlap ? i : worst;
         }

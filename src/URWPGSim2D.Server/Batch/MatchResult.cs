@@ -19,9 +19,14 @@ namespace URWPGSim2D.Server.Batch;
 /// <param name="LeftoverOverlap">Deepest overlap left at the end of any cycle, mm.</param>
 /// <param name="LeftoverCycle">The cycle that left it (0 if none).</param>
 /// <param name="StrategyFaults">Exceptions and time-outs of all strategies.</param>
+/// <param name="Item">The competition item's slug, or null for the plain goal rules.</param>
+/// <param name="Scores">The item's score per team (null without an item).</param>
+/// <param name="Winner">The item's winning team, or −1 (a draw, no winner, or no item).</param>
+/// <param name="Rule">The rule that decided the item's result (null without an item).</param>
 internal sealed record MatchResult(
     int Index, ulong Seed, int Cycles, int Goals0, int Goals1, long[] Contacts, long SubSteps,
-    int MostSubSteps, long Events, float LeftoverOverlap, int LeftoverCycle, int StrategyFaults)
+    int MostSubSteps, long Events, float LeftoverOverlap, int LeftoverCycle, int StrategyFaults,
+    string? Item = null, int[]? Scores = null, int Winner = -1, string? Rule = null)
 {
     /// <summary>Contact kinds as the result file and the summaries name them.</summary>
     public static readonly string[] ContactNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
@@ -30,10 +35,14 @@ internal sealed record MatchResult(
     public static MatchResult Of(int index, ulong seed, Match match)
     {
         var stats = match.Statistics;
+        var referee = match.Referee;
+        int goals0 = referee is null ? match.World.Goals[0] : referee.Scores[0];
+        int goals1 = referee is null ? match.World.Goals[1] : referee.Scores.Length > 1 ? referee.Scores[1] : 0;
+        var outcome = referee?.Outcome;
         return new MatchResult(
-            index, seed, stats.Cycles, match.World.Goals[0], match.World.Goals[1], match.Contacts.ByKind.ToArray(),
+            index, seed, stats.Cycles, goals0, goals1, match.Contacts.ByKind.ToArray(),
             stats.SubSteps, stats.MostSubSteps, stats.Events, stats.LargestLeftoverOverlap, stats.LargestLeftoverCycle,
-            match.Strategies.TotalFaults);
+            match.Strategies.TotalFaults, referee?.Item.Slug, (int[]?)referee?.Scores.Clone(), outcome?.Winner ?? -1, outcome?.Rule);
     }
 
     /// <summary>All contacts.</summary>
@@ -53,5 +62,7 @@ internal sealed record MatchResult(
 
     /// <summary>Field-by-field equality (the contact counts by value).</summary>
     public bool SameAs(MatchResult other) =>
-        this with { Contacts = Array.Empty<long>() } == other with { Contacts = Array.Empty<long>() } && Contacts.AsSpan().SequenceEqual(other.Contacts);
+        this with { Contacts = Array.Empty<long>(), Scores = null } == other with { Contacts = Array.Empty<long>(), Scores = null }
+        && Contacts.AsSpan().SequenceEqual(other.Contacts)
+        && (Scores is null ? other.Scores is null : other.Scores is not null && Scores.AsSpan().SequenceEqual(other.Scores));
 }

@@ -123,6 +123,21 @@ internal static class ResultFile
         w.WriteNumber("leftoverOverlap", r.LeftoverOverlap);
         w.WriteNumber("leftoverCycle", r.LeftoverCycle);
         w.WriteNumber("strategyFaults", r.StrategyFaults);
+        if (r.Item is not null)
+        {
+            // Compatible additions of a competition item: its slug, score per team, winner (−1: none) and the deciding rule.
+            w.WriteString("item", r.Item);
+            w.WriteStartArray("score");
+            foreach (int score in r.Scores ?? [])
+            {
+                w.WriteNumberValue(score);
+            }
+
+            w.WriteEndArray();
+            w.WriteNumber("winner", r.Winner);
+            w.WriteString("rule", r.Rule);
+        }
+
         w.WriteEndObject();
     }
 
@@ -186,7 +201,20 @@ internal static class ResultFile
 
         int overlapCycle = Field(e, "leftoverCycle").GetInt32();
         int faults = Field(e, "strategyFaults").GetInt32();
-        return new MatchResult(index, seed, cycles, goals0, goals1, counts, subSteps, mostSubSteps, events, overlap, overlapCycle, faults);
+        var result = new MatchResult(index, seed, cycles, goals0, goals1, counts, subSteps, mostSubSteps, events, overlap, overlapCycle, faults);
+        if (e.TryGetProperty("item", out var item))
+        {
+            var score = Field(e, "score");
+            var scores = new int[score.GetArrayLength()];
+            for (int t = 0; t < scores.Length; t++)
+            {
+                scores[t] = score[t].GetInt32();
+            }
+
+            result = result with { Item = item.GetString(), Scores = scores, Winner = Field(e, "winner").GetInt32(), Rule = Field(e, "rule").GetString() };
+        }
+
+        return result;
     }
 
     private static string Short(string raw) => raw.Length <= 40 ? raw : raw[..37] + "...";

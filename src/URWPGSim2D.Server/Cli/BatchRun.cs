@@ -25,7 +25,7 @@ internal static class BatchRun
             return ExitCodes.BadInput;
         }
 
-        int cycles = options.Cycles ?? scenario.Cycles;
+        int cycles = options.CyclesFor(scenario);
         var header = new BatchHeader(
             scene, StrategiesText(options), TeamsText(scenario, options), NoiseText(options), options.StrategyTimeoutMs, first,
             matches, cycles, options.ShardIndex, options.ShardCount);
@@ -48,7 +48,7 @@ internal static class BatchRun
             results = BatchRunner.Run(
                 header,
                 threads,
-                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs),
+                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles),
                 r => console.Out.Write(BatchSummary.Line(r)));
             clock.Stop();
             if (options.Results is { } file)

@@ -49,13 +49,13 @@ internal static class LiveRun
     /// <param name="listening">Told the address once the server listens.</param>
     public static int Serve(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams, CliConsole console, CancellationToken stop, Action<string> listening)
     {
-        int cycles = options.Cycles ?? scenario.Cycles;
+        int cycles = options.CyclesFor(scenario);
         bool first = true;
         Match Create()
         {
             var t = first ? teams : Reload(options, teams);
             first = false;
-            return MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs);
+            return MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
         }
 
         var feed = new LiveFeed();

@@ -20,7 +20,15 @@ internal static class MatchSummary
         double seconds = Math.Max(wall.TotalSeconds, 1e-9);
         var s = new StringBuilder();
         s.Append(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle)\n");
-        s.Append(c, $"goals: team 0 ({TeamLabel(match, 0)}) {match.World.Goals[0]}, team 1 ({TeamLabel(match, 1)}) {match.World.Goals[1]}\n");
+        if (match.Referee is { } referee)
+        {
+            ItemSummary.Append(s, match, referee);
+        }
+        else
+        {
+            s.Append(c, $"goals: team 0 ({TeamLabel(match, 0)}) {match.World.Goals[0]}, team 1 ({TeamLabel(match, 1)}) {match.World.Goals[1]}\n");
+        }
+
         s.Append("contacts:");
         var byKind = match.Contacts.ByKind;
         for (int k = 0; k < byKind.Length; k++)

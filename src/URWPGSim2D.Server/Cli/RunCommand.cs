@@ -4,6 +4,7 @@ using System.Globalization;
 using System.IO;
 using System.Security.Cryptography;
 using System.Text;
+using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -21,6 +22,9 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class RunCommand : ICliCommand
 {
+    /// <summary>The item <c>run</c> plays without a scene option (the README's main job).</summary>
+    public const string MainItem = "ball-grab";
+
     /// <inheritdoc/>
     public string Name => "run";
 
@@ -28,7 +32,7 @@ internal sealed class RunCommand : ICliCommand
     public string Synopsis => RunOptions.Synopsis;
 
     /// <inheritdoc/>
-    public string Summary => "Play a match (default: the embedded 2-vs-2 match, 3,000 cycles) and print a summary.";
+    public string Summary => "Play a match (default: the competition item ball-grab, 10 minutes) and print a summary.";
 
     /// <inheritdoc/>
     public int Run(ReadOnlySpan<string> arguments, CliConsole console)
@@ -37,6 +41,12 @@ internal sealed class RunCommand : ICliCommand
         if (options.Help)
         {
             console.Out.Write(HelpText());
+            return ExitCodes.Success;
+        }
+
+        if (options.ListItems)
+        {
+            console.Out.Write(ItemList.Format());
             return ExitCodes.Success;
         }
 
@@ -81,8 +91,8 @@ internal sealed class RunCommand : ICliCommand
             return LiveRun.Run(options, scenario, teams, console);
         }
 
-        var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs);
-        int cycles = options.Cycles ?? scenario.Cycles;
+        int cycles = options.CyclesFor(scenario);
+        var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
         var clock = Stopwatch.StartNew();
@@ -95,7 +105,7 @@ internal sealed class RunCommand : ICliCommand
                 Record(lines.Write(ReadOnlySpan<ContactRecord>.Empty), trace, replay);
             }
 
-            for (int k = 0; k < cycles; k++)
+            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
             {
                 match.Step();
                 if (lines is not null)
@@ -160,7 +170,8 @@ internal sealed class RunCommand : ICliCommand
         return teams;
     }
 
-    // The scene and its name in result files: default, crowd N, or the file's name and SHA-256.
+    // The scene and its name in result files: item SLUG (no scene option: ball-grab), default,
+    // crowd N, or the file's name and SHA-256.
     private static (ScenarioDefinition Scenario, string Scene) LoadScene(RunOptions options, CliConsole console)
     {
         if (options.Crowd is int movers)
@@ -168,9 +179,15 @@ internal sealed class RunCommand : ICliCommand
             return (CrowdScenario.Create(movers), string.Create(CultureInfo.InvariantCulture, $"crowd {movers}"));
         }
 
-        if (options.Scenario is null)
+        if (options.Item == "default")
         {
             return (DefaultScenario.Load(), "default");
+        }
+
+        if (options.Scenario is null)
+        {
+            var item = ItemRegistry.Find(options.Item ?? MainItem)!;
+            return (item.CreateScenario(options.Seed ?? 1), "item " + item.Slug);
         }
 
         string text = ReadScenario(options.Scenario, console);
@@ -203,8 +220,9 @@ internal sealed class RunCommand : ICliCommand
     private static string HelpText() =>
         $"Usage: {CliApp.ProgramName} {RunOptions.Usage}\n\n" +
         "Plays a match of 100 ms cycles and prints cycles, simulated and wall time, goals per team, contacts by pair\n" +
-        "kind, sub-steps, the largest leftover overlap and strategy faults. Without --scenario it plays the embedded\n" +
-        "default match; --crowd N generates a crowded scene of N fish and balls at the default density.\n" +
+        "kind, sub-steps, the largest leftover overlap and strategy faults. --item NAME plays a competition item of the\n" +
+        "original with its rules (--list-items lists them; --minutes 10|5|3|1, default 10); without a scene option it\n" +
+        "plays ball-grab; --item default is the old default scene; --crowd N generates a crowded scene of N fish and balls.\n" +
         "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball), a .dll built against\n" +
         "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
         "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
@@ -215,5 +233,5 @@ internal sealed class RunCommand : ICliCommand
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
         "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
         "--submit submits them; asked again, only the shards without results are played.\n" +
-        "Formats: docs/scenario.md, docs/simulation.md, docs/batch.md, docs/strategies.md.\n";
+        "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md, docs/strategies.md.\n";
 }

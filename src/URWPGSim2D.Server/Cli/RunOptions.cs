@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using URWPGSim2D.Server.Items;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -8,13 +9,22 @@ namespace URWPGSim2D.Server.Cli;
 internal sealed class RunOptions
 {
     /// <summary>The command's synopsis in the program's help.</summary>
-    public const string Synopsis = "run [--scenario FILE] [options]";
+    public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--scenario FILE | --crowd N] [--cycles N] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
+
+    /// <summary>Competition item slug or Chinese name (<c>--item NAME</c>; "default" is the old default scene), or null.</summary>
+    public string? Item { get; private set; }
+
+    /// <summary>Match length in minutes (<c>--minutes 10|5|3|1</c>), or null.</summary>
+    public int? Minutes { get; private set; }
+
+    /// <summary>Whether <c>--list-items</c> was given.</summary>
+    public bool ListItems { get; private set; }
 
     /// <summary>Scenario file, or null for the embedded default match.</summary>
     public string? Scenario { get; private set; }
@@ -104,6 +114,9 @@ internal sealed class RunOptions
     /// <summary>Whether --help was given.</summary>
     public bool Help { get; private set; }
 
+    /// <summary>Cycles to play: <c>--cycles</c>, else <c>--minutes</c> × 600, else the scenario's.</summary>
+    public int CyclesFor(global::URWPGSim2D.Server.Scenario.ScenarioDefinition scenario) => Cycles ?? (Minutes * 600) ?? scenario.Cycles;
+
     /// <summary>Parses the arguments after "run".</summary>
     public static RunOptions Parse(ReadOnlySpan<string> args)
     {
@@ -116,6 +129,12 @@ internal sealed class RunOptions
             if (name is "--help" or "-h")
             {
                 o.Help = true;
+                continue;
+            }
+
+            if (name == "--list-items")
+            {
+                o.ListItems = true;
                 continue;
             }
 
@@ -163,6 +182,14 @@ internal sealed class RunOptions
             switch (name)
             {
                 case "--scenario": o.Scenario = value; break;
+                case "--item":
+                    o.Item = value == "default" || ItemRegistry.Find(value) is not null
+                        ? value
+                        : throw UsageError($"--item must be one of {ItemRegistry.Names()} (or the original's name), got {CliText.Quote(value)}");
+                    break;
+                case "--minutes":
+                    o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {CliText.Quote(value)}") };
+                    break;
                 case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Server.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
                 case "--batch": o.Batch = (int)Number(name, value, 1, MaximumBatch); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
@@ -239,9 +266,14 @@ internal sealed class RunOptions
             return;
         }
 
-        if (Scenario is not null && Crowd is not null)
+        if ((Scenario is not null ? 1 : 0) + (Crowd is not null ? 1 : 0) + (Item is not null ? 1 : 0) > 1)
         {
-            throw UsageError("--scenario and --crowd both choose the scene; give one");
+            throw UsageError("--item, --scenario and --crowd each choose the scene; give one");
+        }
+
+        if (Minutes is not null && Cycles is not null)
+        {
+            throw UsageError("--minutes and --cycles both set the length; give one");
         }
 
         if (Batch is null && (ShardCount > 1 || Threads is not null || Results is not null))

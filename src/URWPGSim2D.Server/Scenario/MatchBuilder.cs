@@ -26,7 +26,8 @@ internal static class MatchBuilder
     /// <param name="noise">Noise override, or null for the scenario's.</param>
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
     /// <param name="broadPhase">The stepper's broad phase (the default grid when null).</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, IBroadPhase? broadPhase = null)
+    /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, IBroadPhase? broadPhase = null, int? cycles = null)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var fish = new FishState[scenario.Fish.Count];
@@ -60,39 +61,61 @@ internal static class MatchBuilder
         }
 
         var world = new World(field, fish, balls, views, statics);
-        var host = new StrategyHost(Slots(scenario, teamStrategies ?? new TeamStrategy?[2]), strategyTimeoutMs);
-        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase);
+        var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
+        var host = new StrategyHost(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee), strategyTimeoutMs);
+        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase, referee);
     }
 
-    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams)
+    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee)
     {
         var slots = new List<StrategySlot>();
         var teamDone = new bool[2];
+        var demoDone = new bool[2];
         for (int i = 0; i < scenario.Fish.Count; i++)
         {
             var d = scenario.Fish[i];
             TeamStrategy? team = d.Team < teams.Length ? teams[d.Team] : null;
-            if (team is null)
+            if (team is null && d.Strategy == "demo")
+            {
+                // The item's demo strategy takes every demo fish of the team.
+                if (referee is null)
+                {
+                    throw new ArgumentException("the demo strategy needs a competition item", nameof(scenario));
+                }
+
+                if (!demoDone[d.Team])
+                {
+                    demoDone[d.Team] = true;
+                    slots.Add(new StrategySlot(referee.Item.Slug + " demo", referee.Item.CreateDemoStrategy(d.Team, referee), d.Team, Members(scenario, d.Team, "demo"), isolated: false));
+                }
+            }
+            else if (team is null)
             {
                 slots.Add(new StrategySlot(d.Strategy, BuiltIn(d), d.Team, [i], isolated: false));
             }
             else if (!teamDone[d.Team])
             {
                 teamDone[d.Team] = true;
-                var members = new List<int>();
-                for (int j = 0; j < scenario.Fish.Count; j++)
-                {
-                    if (scenario.Fish[j].Team == d.Team)
-                    {
-                        members.Add(j);
-                    }
-                }
-
-                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, members.ToArray(), team.Isolated, team.Clock));
+                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, Members(scenario, d.Team, null), team.Isolated, team.Clock));
             }
         }
 
         return slots.ToArray();
+    }
+
+    // The fish of a team (those on the given built-in strategy, or all when null), by index.
+    private static int[] Members(ScenarioDefinition scenario, int team, string? strategy)
+    {
+        var members = new List<int>();
+        for (int j = 0; j < scenario.Fish.Count; j++)
+        {
+            if (scenario.Fish[j].Team == team && (strategy is null || scenario.Fish[j].Strategy == strategy))
+            {
+                members.Add(j);
+            }
+        }
+
+        return members.ToArray();
     }
 
     private static IStrategy BuiltIn(FishDefinition d) => d.Strategy switch

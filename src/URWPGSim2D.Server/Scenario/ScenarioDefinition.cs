@@ -34,13 +34,25 @@ internal sealed record ScenarioDefinition
 
     /// <summary>The obstacles, by index.</summary>
     public IReadOnlyList<ObstacleDefinition> Obstacles { get; init; } = [];
+
+    /// <summary>The competition item played on this layout, or null for the plain goal rules.</summary>
+    public Items.CompetitionItem? Item { get; init; }
+
+    /// <summary>Points of each ball in the item (empty: balls have no value).</summary>
+    public IReadOnlyList<double> BallValues { get; init; } = [];
+
+    /// <summary>Whether the scenario file gave the fish positions (an item with random start poses then keeps them).</summary>
+    public bool FishOverridden { get; init; }
+
+    /// <summary>The item's marked regions (goal boxes, holes, parking places).</summary>
+    public IReadOnlyList<Trace.TraceZone> Zones { get; init; } = [];
 }
 
 /// <summary>A fish of a scenario.</summary>
 /// <param name="Team">0 or 1.</param>
 /// <param name="Position">Body centre, mm.</param>
 /// <param name="Heading">rad.</param>
-/// <param name="Strategy">Built-in strategy name: idle, chase-ball or fixed.</param>
+/// <param name="Strategy">Built-in strategy name: idle, chase-ball, fixed, or demo (the item's demo strategy).</param>
 /// <param name="Decision">The decision of a fixed strategy.</param>
 /// <param name="TailPhase">The fish's own tail-wave phase p, rad.</param>
 internal sealed record FishDefinition(int Team, Vector2 Position, float Heading, string Strategy, Decision Decision, float TailPhase = 0f);

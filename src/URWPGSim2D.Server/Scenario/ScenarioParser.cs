@@ -48,6 +48,11 @@ internal static class ScenarioParser
     private static ScenarioDefinition Read(JsonDocument doc)
     {
         JsonElement root = Object(doc.RootElement, "(root)");
+        if (root.TryGetProperty("item", out var item))
+        {
+            return ItemScenarioParser.Parse(root, item);
+        }
+
         OnlyKnown(root, string.Empty, "field", "cycles", "seed", "noise", "fish", "balls", "obstacles");
         var s = new ScenarioDefinition();
         if (root.TryGetProperty("field", out var field))

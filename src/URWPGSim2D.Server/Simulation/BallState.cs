@@ -24,6 +24,12 @@ internal sealed class BallState(int index, float radius, Vector2 position, Vecto
     /// <summary>This cycle's noise drift, mm/s (added to the motion only, not to the physics).</summary>
     public Vector2 NoiseVelocity;
 
+    /// <summary>
+    /// True while a competition item keeps this ball out of play (potted, laid where the item says,
+    /// possibly outside the pool): it does not move and collides with nothing.
+    /// </summary>
+    public bool OutOfPlay;
+
     /// <summary>The ball as a circle at its current position.</summary>
     public Circle Shape => new(Position, Radius);
 }

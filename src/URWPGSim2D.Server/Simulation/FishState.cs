@@ -92,6 +92,12 @@ internal sealed class FishState
     /// </summary>
     public bool Frozen;
 
+    /// <summary>
+    /// True while a competition item keeps this fish out of play (frozen or caught, parked where the
+    /// item says, possibly outside the pool): it does not move and collides with nothing.
+    /// </summary>
+    public bool OutOfPlay;
+
     /// <summary>Forward unit vector u = (cos θ, sin θ).</summary>
     public Vector2 Forward => new(MathF.Cos(Heading), MathF.Sin(Heading));
 

@@ -23,6 +23,12 @@ internal static class Locomotion
         foreach (var f in world.Fish)
         {
             f.BeginCycle();
+            if (f.OutOfPlay)
+            {
+                Still(f);
+                continue;
+            }
+
             var d = f.Decision;
             f.Speed.Advance(d.VCode, SpeedTable.Speeds);
             f.Turn.Advance(d.TCode, TurnTable.Rates);
@@ -57,6 +63,17 @@ internal static class Locomotion
                 b.NoiseVelocity = new Vector2(noise.NextSigned(), noise.NextSigned()) / dt;
             }
         }
+    }
+
+    // A fish out of play (parked by an item) holds still: no propulsion, no noise.
+    private static void Still(FishState f)
+    {
+        f.Speed.Reset(0f, SpeedTable.Speeds);
+        f.Turn.Reset(0f, TurnTable.Rates);
+        f.Velocity = Vector2.Zero;
+        f.AngularVelocity = 0f;
+        f.NoiseVelocity = Vector2.Zero;
+        f.NoiseAngularVelocity = 0f;
     }
 
     /// <summary>

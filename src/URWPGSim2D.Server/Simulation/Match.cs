@@ -23,12 +23,15 @@ internal sealed class Match
     /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
     /// <param name="seed">Seed of the noise generators.</param>
     /// <param name="broadPhase">The stepper's broad phase (a <see cref="UniformGrid"/> when null); any broad phase gives the same match.</param>
-    public Match(World world, StrategyHost strategies, bool noise, ulong seed, IBroadPhase? broadPhase = null)
+    /// <param name="referee">The rules of a competition item, or null for the plain goal rules (<see cref="Rules"/>).</param>
+    public Match(World world, StrategyHost strategies, bool noise, ulong seed, IBroadPhase? broadPhase = null, Items.ItemReferee? referee = null)
     {
         World = world;
         Strategies = strategies;
+        Referee = referee;
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
         Stepper = new CycleMotion(world, Contacts, broadPhase);
+        referee?.Start(world);
         if (noise)
         {
             _motionNoise = new SeededRandom(seed);
@@ -51,7 +54,13 @@ internal sealed class Match
     /// <summary>Motion interpolation and contact handling.</summary>
     public CycleMotion Stepper { get; }
 
-    /// <summary>Every goal so far.</summary>
+    /// <summary>The competition item's rules, or null for the plain goal rules.</summary>
+    public Items.ItemReferee? Referee { get; }
+
+    /// <summary>Whether the item's match is over (never for the plain goal rules: they play every cycle asked for).</summary>
+    public bool IsOver => Referee?.IsOver ?? false;
+
+    /// <summary>Every goal so far (plain goal rules only).</summary>
     public List<GoalEvent> Goals { get; } = new(64);
 
     /// <summary>Totals for the summary.</summary>
@@ -62,11 +71,13 @@ internal sealed class Match
     {
         FillSnapshot();
         Strategies.Decide(Snapshot, World.Fish);
+        Referee?.AfterDecisions(World);
         Contacts.BeginCycle();
         Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
         Stepper.Run();
         World.Cycle++;
-        if (Rules.Apply(World, Goals) > 0)
+        bool moved = Referee is null ? Rules.Apply(World, Goals) > 0 : Referee.Judge(World, Contacts.Cycle);
+        if (moved)
         {
             Stepper.Settle();
         }
@@ -77,7 +88,16 @@ internal sealed class Match
 
     private void FillSnapshot()
     {
-        Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+        if (Referee is { } item)
+        {
+            var scores = item.Scores;
+            Snapshot.SetHeader(World.Cycle, scores[0], scores.Length > 1 ? scores[1] : 0);
+        }
+        else
+        {
+            Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+        }
+
         var fish = Snapshot.FishBuffer;
         for (int i = 0; i < fish.Length; i++)
         {

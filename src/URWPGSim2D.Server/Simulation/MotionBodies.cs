@@ -95,11 +95,19 @@ internal sealed class MotionBodies
             }
 
             Stepper.SetVelocity(id, f.Velocity + f.NoiseVelocity, f.AngularVelocity + f.NoiseAngularVelocity);
+            if (Stepper.CollidesOf(id) == f.OutOfPlay)
+            {
+                Stepper.SetCollides(id, !f.OutOfPlay); // a fish a competition item parked meets nothing
+            }
         }
         else if (id < _fish + _balls)
         {
             var b = _world.Balls[id - _fish];
             Stepper.SetVelocity(id, b.Velocity + b.NoiseVelocity);
+            if (Stepper.CollidesOf(id) == b.OutOfPlay)
+            {
+                Stepper.SetCollides(id, !b.OutOfPlay); // a ball a competition item took out of play (potted) meets nothing
+            }
         }
     }
 

@@ -28,7 +28,7 @@ internal sealed class TraceLine
     public TraceLine(Match match, ITraceItemInfo? item = null)
     {
         _match = match;
-        _item = item ?? new DefaultTraceItem(match);
+        _item = item ?? (ITraceItemInfo?)match.Referee ?? new DefaultTraceItem(match); // a competition item's referee reports itself
         _json = new Utf8JsonWriter(_buffer);
     }
 

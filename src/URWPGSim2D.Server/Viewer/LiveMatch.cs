@@ -183,7 +183,7 @@ internal sealed class LiveMatch
         }
     }
 
-    private bool Over => _match.World.Cycle >= Cycles;
+    private bool Over => _match.World.Cycle >= Cycles || _match.IsOver; // an item may end early
 
     private void Begin()
     {

@@ -32,8 +32,8 @@ public sealed class BatchRunTests : IDisposable
             Assert.StartsWith($"match {j} (seed {7 + j}): goals ", lines[j], StringComparison.Ordinal);
         }
 
-        Assert.Equal("batch: 5 matches, seeds 7 to 11, 40 cycles each, scene default", lines[5]);
-        Assert.Matches(@"^goals team 0 \(chase-ball\): mean [0-9.]+, sd [0-9.]+, min [0-9]+, max [0-9]+, total [0-9]+$", lines[6]);
+        Assert.Equal("batch: 5 matches, seeds 7 to 11, 40 cycles each, scene item ball-grab", lines[5]);
+        Assert.Matches(@"^goals team 0 \(ball-grab demo\): mean [0-9.]+, sd [0-9.]+, min [0-9]+, max [0-9]+, total [0-9]+$", lines[6]);
         Assert.Matches(@"^outcomes: team 0 won [0-9]+, team 1 won [0-9]+, drawn [0-9]+$", lines[8]);
         Assert.Matches(@"^wall time: [0-9.]+ s on 1 threads, [0-9.]+ matches/s, [0-9]+x real time$", lines[11]);
         Assert.Equal(6, File.ReadAllLines(one.File).Length);
@@ -92,7 +92,7 @@ public sealed class BatchRunTests : IDisposable
     [InlineData("--batch 0", "run: --batch must be an integer 1..100000000, got \"0\"")]
     [InlineData("--threads 2", "run: --shard, --threads and --results belong to --batch N")]
     [InlineData("--batch 2 --trace t.jsonl", "run: --trace, --svg and --html record one match; they do not go with --batch")]
-    [InlineData("--crowd 100 --scenario s.json", "run: --scenario and --crowd both choose the scene; give one")]
+    [InlineData("--crowd 100 --scenario s.json", "run: --item, --scenario and --crowd each choose the scene; give one")]
     [InlineData("--crowd 5", "run: --crowd must be an integer 13..1000000, got \"5\"")]
     public void BadBatchOptionsAreOneUsageLine(string arguments, string message)
     {

@@ -21,7 +21,7 @@ public sealed class CliAppTests
         Assert.Equal(0, run.ExitCode);
         Assert.Equal(string.Empty, run.Stderr);
         Assert.StartsWith("URWPGSim2D.Server: command-line front end", run.Stdout, StringComparison.Ordinal);
-        Assert.Matches(@"\n  URWPGSim2D\.Server run \[--scenario FILE\] \[options\] +Play a match", run.Stdout);
+        Assert.Matches(@"\n  URWPGSim2D\.Server run \[--item NAME \| --scenario FILE\] \[options\] +Play a match", run.Stdout);
         Assert.Matches(@"\n  URWPGSim2D\.Server collide FILE +Test pairs of shapes", run.Stdout);
         Assert.Matches(@"\n  URWPGSim2D\.Server shapes FILE +Write the exact collision pieces", run.Stdout);
         Assert.Matches(@"\n  URWPGSim2D\.Server render FILE --svg OUT +Draw shapes or pairs", run.Stdout);

@@ -15,9 +15,9 @@ public sealed class RunCommandTests : IDisposable
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
-    public void TheDefaultMatchPrintsTheSummary()
+    public void TheOldDefaultMatchPrintsTheSummary()
     {
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "50");
+        var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "50");
         Assert.Equal(0, run.ExitCode);
         Assert.Equal(string.Empty, run.Stderr);
         string[] lines = run.Stdout.TrimEnd('\n').Split('\n');
@@ -106,7 +106,7 @@ public sealed class RunCommandTests : IDisposable
         var run = CliRun.Of(string.Empty, args);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
-        Assert.StartsWith(start + ". Usage: URWPGSim2D.Server run [--scenario FILE | --crowd N] [--cycles N]", run.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith(start + ". Usage: URWPGSim2D.Server run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N]", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
     }
 

@@ -21,7 +21,7 @@ public sealed class SvgFrameTests : IDisposable
     public void TheFinalFrameHasIdsColoursAndALegend()
     {
         string svg = Path.Combine(_folder, "f.svg"), trace = Path.Combine(_folder, "t.jsonl");
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "40", "--svg", svg, "--trace", trace);
+        var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "40", "--svg", svg, "--trace", trace);
         Assert.Equal(0, run.ExitCode);
         string picture = File.ReadAllText(svg);
         var last = JsonDocument.Parse(File.ReadLines(trace).Last()).RootElement;

@@ -24,7 +24,7 @@ public sealed class ShardResultsTests : IDisposable
         Directory.CreateDirectory(_folder);
         for (int i = 0; i < 3; i++)
         {
-            var run = CliRun.Of(string.Empty, "run", "--batch", "6", "--cycles", "3", "--shard", $"{i}/3", "--threads", "1", "--results", Shard(i));
+            var run = CliRun.Of(string.Empty, "run", "--item", "default", "--batch", "6", "--cycles", "3", "--shard", $"{i}/3", "--threads", "1", "--results", Shard(i));
             Assert.True(run.ExitCode == 0, run.Stderr);
         }
     }

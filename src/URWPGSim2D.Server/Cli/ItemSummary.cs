@@ -1,0 +1,40 @@
+using System.Globalization;
+using System.Text;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// The item lines of the <c>run</c> summary: the item, the score per team, every event with its
+/// cycle and the result with the rule that decided it (docs/items.md).
+/// </summary>
+internal static class ItemSummary
+{
+    /// <summary>Appends the lines (each ending in a newline).</summary>
+    public static void Append(StringBuilder s, Match match, ItemReferee referee)
+    {
+        var c = CultureInfo.InvariantCulture;
+        var item = referee.Item;
+        s.Append(c, $"item: {item.Slug} ({item.ChineseName}), {item.TeamCount} x {item.FishPerTeam} fish, {referee.Cycles} cycles in {(referee.Halves == 1 ? "1 half" : "2 halves")}\n");
+        s.Append("score:");
+        for (int t = 0; t < referee.Scores.Length; t++)
+        {
+            s.Append(c, $" team {t} ({MatchSummary.TeamLabel(match, t)}) {ScoreText(referee.Scores[t])}").Append(t + 1 < referee.Scores.Length ? "," : "\n");
+        }
+
+        s.Append(c, $"events: {referee.Events.Count}\n");
+        foreach (var e in referee.Events)
+        {
+            s.Append(c, $"  cycle {e.Cycle}: {e.Kind}: {e.Text}\n");
+        }
+
+        var outcome = referee.Outcome;
+        string state = referee.IsOver ? string.Empty : " (not over)";
+        s.Append(outcome.Winner >= 0
+            ? string.Create(c, $"winner: team {outcome.Winner} ({MatchSummary.TeamLabel(match, outcome.Winner)}) by {outcome.Rule}{state}\n")
+            : string.Create(c, $"winner: none, {outcome.Rule}{state}\n"));
+    }
+
+    private static string ScoreText(int score) => score < 0 ? "not scored" : score.ToString(CultureInfo.InvariantCulture);
+}
