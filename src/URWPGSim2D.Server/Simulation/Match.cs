@@ -92,6 +92,8 @@ internal sealed class Match
         {
             var scores = item.Scores;
             Snapshot.SetHeader(World.Cycle, scores[0], scores.Length > 1 ? scores[1] : 0);
+            Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
+            Snapshot.SetSidesSwapped(item.SidesSwapped);
         }
         else
         {
