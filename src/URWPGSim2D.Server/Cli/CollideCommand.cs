@@ -57,8 +57,11 @@ internal sealed class CollideCommand : ICliCommand
     /// <param name="text">The input text.</param>
     /// <returns>The shape pairs, in input order.</returns>
     /// <exception cref="CliInputException">Malformed JSON or an invalid pair.</exception>
-    internal static (InputShape A, InputShape B)[] ReadPairs(string text)
+    /// <param name="limit">The most pairs accepted (<see cref="InputLimits"/>).</param>
+    /// <param name="command">The command reading them, for the limit's message.</param>
+    internal static (InputShape A, InputShape B)[] ReadPairs(string text, int limit = InputLimits.Pairs, string command = "collide")
     {
+        InputLimits.CheckCount(text, RootName, limit, command);
         var dtos = JsonInput.Deserialize(text, InputJsonContext.Default.PairDtoArray, RootName, ExpectedKind)
             ?? throw new CliInputException(RootName, "must be an array of {\"a\": SHAPE, \"b\": SHAPE} objects, got null");
         var pairs = new (InputShape A, InputShape B)[dtos.Length];

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Text;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -18,11 +19,17 @@ internal static class InputText
     {
         if (file == StandardInput)
         {
-            return stdin.ReadToEnd();
+            return ReadLimited(stdin, file);
         }
 
         try
         {
+            var info = new FileInfo(file);
+            if (info.Exists && info.Length > InputLimits.InputBytes)
+            {
+                throw new CliInputException(file, InputLimits.TooLarge(info.Length));
+            }
+
             return File.ReadAllText(file);
         }
         catch (Exception ex) when (ex is FileNotFoundException or DirectoryNotFoundException)
@@ -33,5 +40,27 @@ internal static class InputText
         {
             throw new CliInputException(file, $"cannot read file: {ex.Message}");
         }
+    }
+
+    /// <summary>Reads a reader to its end, failing once it has given more than <see cref="InputLimits.InputBytes"/> characters.</summary>
+    /// <param name="reader">The input.</param>
+    /// <param name="name">The input's name in the message (<c>-</c> for stdin).</param>
+    /// <returns>The text.</returns>
+    /// <exception cref="CliInputException">The input is too large.</exception>
+    public static string ReadLimited(TextReader reader, string name)
+    {
+        var text = new StringBuilder();
+        char[] buffer = new char[1 << 16];
+        int read;
+        while ((read = reader.Read(buffer, 0, buffer.Length)) > 0)
+        {
+            text.Append(buffer, 0, read);
+            if (text.Length > InputLimits.InputBytes)
+            {
+                throw new CliInputException(name, $"the input is more than {InputLimits.InputBytes >> 20} Mi characters, the limit (docs/cli.md, Limits)");
+            }
+        }
+
+        return text.ToString();
     }
 }

@@ -57,7 +57,7 @@ internal sealed class RenderCommand : ICliCommand
 
     private static string RenderShapes(string text)
     {
-        var shapes = ShapesInput.Read(text);
+        var shapes = ShapesInput.Read(text, InputLimits.RenderElements, "render");
         var items = new FigureShape[shapes.Length];
         for (int i = 0; i < shapes.Length; i++)
         {
@@ -69,7 +69,7 @@ internal sealed class RenderCommand : ICliCommand
 
     private static string RenderPairs(string text)
     {
-        var pairs = CollideCommand.ReadPairs(text);
+        var pairs = CollideCommand.ReadPairs(text, InputLimits.RenderElements, "render");
         var items = new List<FigureShape>(2 * pairs.Length);
         var contacts = new FigureContact[pairs.Length];
         for (int i = 0; i < pairs.Length; i++)

@@ -183,7 +183,16 @@ internal sealed class RunCommand : ICliCommand
     {
         try
         {
-            return path == "-" ? console.In.ReadToEnd() : File.ReadAllText(path);
+            if (path != "-" && new FileInfo(path) is { Exists: true, Length: > InputLimits.InputBytes } info)
+            {
+                throw new ScenarioException(path, InputLimits.TooLarge(info.Length));
+            }
+
+            return path == "-" ? InputText.ReadLimited(console.In, path) : File.ReadAllText(path);
+        }
+        catch (CliInputException e)
+        {
+            throw new ScenarioException(path, e.Message);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {

@@ -13,8 +13,11 @@ internal static class ShapesInput
     /// <param name="text">The input text.</param>
     /// <returns>The shapes, in input order.</returns>
     /// <exception cref="CliInputException">Malformed JSON or an invalid SHAPE (<c>shapes[3].joints: ...</c>).</exception>
-    public static InputShape[] Read(string text)
+    /// <param name="limit">The most SHAPEs accepted (<see cref="InputLimits"/>).</param>
+    /// <param name="command">The command reading them, for the limit's message.</param>
+    public static InputShape[] Read(string text, int limit = InputLimits.Shapes, string command = "shapes")
     {
+        InputLimits.CheckCount(text, RootName, limit, command);
         var dtos = JsonInput.Deserialize(text, InputJsonContext.Default.ShapeDtoArray, RootName, ExpectedKind)
             ?? throw new CliInputException(RootName, "must be an array of SHAPE objects, got null");
         var shapes = new InputShape[dtos.Length];

@@ -70,6 +70,12 @@ internal static class ScenarioParser
             s = s with { Noise = Boolean(noise, "noise") };
         }
 
+        long bodies = Count(root, "fish") + Count(root, "balls") + Count(root, "obstacles");
+        if (bodies > InputLimits.ScenarioBodies)
+        {
+            throw new ScenarioException(string.Empty, $"{bodies} bodies (fish, balls and obstacles), more than the limit of {InputLimits.ScenarioBodies} (docs/cli.md, Limits)");
+        }
+
         s = s with
         {
             Fish = ReadList(root, "fish", required: true, (e, p) => ReadFish(e, p, s)),
@@ -221,6 +227,9 @@ internal static class ScenarioParser
             throw new ScenarioException(path + ".center", $"must lie inside the field, got [{center.X}, {center.Y}]");
         }
     }
+
+    private static long Count(JsonElement root, string name) =>
+        root.TryGetProperty(name, out var list) && list.ValueKind == JsonValueKind.Array ? list.GetArrayLength() : 0;
 
     private static Vector2 Required(JsonElement e, string path, string name) =>
         e.TryGetProperty(name, out var v) ? Vector(v, $"{path}.{name}") : throw new ScenarioException($"{path}.{name}", "is required");

@@ -113,8 +113,10 @@ public sealed class ReferenceExchangeTests
         }
     }
 
-    [Fact]
-    public void FishFishExchangeAndTheSignOfItsTurn()
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)]
+    public void FishFishExchangeAndTheSignOfItsTurn(bool struckFishSecond)
     {
         // A (heading +Z, in-cycle velocity (0, 300)) drives its head tip 0.05 mm into B's left flank at x = 60; B rests.
         // n = (0, −1) from B toward A: v_A = −300, v_B = 0; d_A = 0, d_B = 50, e' = −0.005·(1 − 50/600) = −0.0045833;
@@ -125,7 +127,8 @@ public sealed class ReferenceExchangeTests
         var b = match.World.Fish[0];
         var a = match.World.Fish[1];
         a.Velocity = new Vector2(0f, 300f);
-        var pair = new CandidatePair(PairKind.FishFish, 0, 1, 10f);
+        // Either fish may be the pair's first (the normal then points the other way): the result is the same.
+        var pair = struckFishSecond ? new CandidatePair(PairKind.FishFish, 1, 0, 10f) : new CandidatePair(PairKind.FishFish, 0, 1, 10f);
         Hit hit = PairDetector.Detect(match.World, pair);
         Assert.True(hit.Intersect);
         new ContactResponse(match.World).Apply(pair, hit);

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Rewrites every command output shown in README.md and docs/ with the real output of the current
+# build, and redraws the committed figures from their inputs. Run it after changing what a command
+# prints, then review `git diff` (timing figures change on every run; the tests ignore them).
+#   bash scripts/regenerate-docs-outputs.sh
+# The same test (DocsOutputsTests) fails in CI when a shown output is stale.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1
+# 1. The transcripts: the docs test in its regenerate mode writes what each command prints (Release
+#    build, so the timing figures shown are those of the optimised program).
+URWPGSIM2D_REGENERATE_DOCS=1 dotnet test tests/URWPGSim2D.Server.Tests -c Release --filter 'FullyQualifiedName~DocsOutputsTests' \
+  --logger 'console;verbosity=minimal'
+# 2. The figures drawn by render (.ci/smoke checks that they are what render makes).
+for json in docs/figures/fish-tree.json docs/figures/fish-ball-contact.json; do
+  dotnet run -c Release --project src/URWPGSim2D.Server -- render "$json" --svg "${json%.json}.svg"
+done
+git --no-pager diff --stat -- README.md docs

@@ -1,0 +1,165 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Docs;
+
+/// <summary>
+/// Every command output the docs show is real: each transcript block (first line <c>$ …</c>,
+/// <see cref="Transcript"/>) of README.md and docs/ is run with the server built next to the tests,
+/// from the repository root, and must print exactly what the block shows, timing figures aside
+/// (<see cref="Transcript.Mask"/>); a shown <c> ... </c> stands for any text (a long line cut short). A block checked by another CI script says so on the line before
+/// it (<c>&lt;!-- .ci/slurm checks: … --&gt;</c>); a command that does not end by itself (a server) is marked
+/// <c>&lt;!-- output: not run (WHY) --&gt;</c>. With <c>URWPGSIM2D_REGENERATE_DOCS=1</c> the test
+/// writes the real outputs into the docs instead (scripts/regenerate-docs-outputs.sh).
+/// </summary>
+public sealed class DocsOutputsTests
+{
+    private static readonly bool Regenerate = Environment.GetEnvironmentVariable("URWPGSIM2D_REGENERATE_DOCS") == "1";
+
+    /// <summary>The Markdown files, one test case each.</summary>
+    public static TheoryData<string> Files() => [.. Repository.MarkdownFiles()];
+
+    [Theory]
+    [MemberData(nameof(Files))]
+    public void EveryShownOutputIsTheCommandsOutput(string file)
+    {
+        var problems = new List<string>();
+        var replacements = new List<(MarkdownBlock Block, string Text)>();
+        foreach (var block in MarkdownBlock.Read(file).Where(b => b.Text.StartsWith("$ ", StringComparison.Ordinal)))
+        {
+            if (block.Marker is { } marker && (marker.StartsWith(".ci/", StringComparison.Ordinal) || marker.StartsWith("output: not run", StringComparison.Ordinal)))
+            {
+                continue; // checked by that script, or (say why in the marker) a command that does not end by itself
+            }
+
+            Transcript transcript;
+            try
+            {
+                transcript = Transcript.Parse(block.Text);
+            }
+            catch (FormatException e)
+            {
+                problems.Add($"{block.Where}: {e.Message}");
+                continue;
+            }
+
+            var actualBlock = new List<string>();
+            int lastCode = 0;
+            foreach (var step in transcript.Steps)
+            {
+                actualBlock.AddRange(("$ " + step.Command).Split('\n'));
+                string actual;
+                if (step.Arguments is null)
+                {
+                    actual = lastCode.ToString(System.Globalization.CultureInfo.InvariantCulture);
+                }
+                else
+                {
+                    var (code, stdout, stderr) = RunServer(step.Stdin, step.Arguments);
+                    lastCode = code;
+                    actual = (stdout + stderr).TrimEnd('\n');
+                }
+
+                string shown = string.Join('\n', step.Expected);
+                bool same = Transcript.Matches(shown, actual);
+                actualBlock.AddRange(same ? step.Expected : actual.Length == 0 ? [] : actual.Split('\n'));
+                if (!same)
+                {
+                    problems.Add($"{block.Where}: `{step.Command}` prints\n{actual}\nbut the docs show\n{shown}");
+                }
+            }
+
+            replacements.Add((block, string.Join('\n', actualBlock)));
+        }
+
+        if (Regenerate)
+        {
+            Rewrite(file, replacements);
+            return;
+        }
+
+        Assert.True(problems.Count == 0, string.Join("\n\n", problems) + "\n(bash scripts/regenerate-docs-outputs.sh writes the real outputs into the docs)");
+    }
+
+    [Fact]
+    public void TheMaskHidesOnlyTimingFigures()
+    {
+        Assert.Equal(
+            "match: 3000 cycles, 300.0 s simulated in <T> wall time (<T>x real time, <T> us per cycle)",
+            Transcript.Mask("match: 3000 cycles, 300.0 s simulated in 1556.6 ms wall time (193x real time, 518.88 us per cycle)"));
+        Assert.Equal(
+            "wall time: <T> s on <T> threads, <T> matches/s, <T>x real time",
+            Transcript.Mask("wall time: 0.447 s on 2 threads, 8.94 matches/s, 2682x real time"));
+        Assert.NotEqual(Transcript.Mask("match: 3000 cycles, 300.0 s simulated"), Transcript.Mask("match: 3001 cycles, 300.0 s simulated"));
+        Assert.Equal("goals: team 0 (chase-ball) 1, team 1 (chase-ball) 0", Transcript.Mask("goals: team 0 (chase-ball) 1, team 1 (chase-ball) 0"));
+        Assert.True(Transcript.Matches("[1, ... ,9]", "[1,2,3,4,5,6,7,8,9]"));
+        Assert.False(Transcript.Matches("[1, ... ,9]", "[1,2,3,4,5,6,7,8,0]"));
+        Assert.False(Transcript.Matches("[1,2]", "[1,2,3]"));
+    }
+
+    [Fact]
+    public void TheTranscriptReaderUnderstandsTheDocsCommands()
+    {
+        var t = Transcript.Parse("$ echo '[1,\n  2]' | URWPGSim2D.Server collide -\nout\n$ echo $?\n0\n$ dotnet run -c Release --project src/URWPGSim2D.Server -- run --batch 4\na\nb");
+
+        Assert.Equal(3, t.Steps.Count);
+        Assert.Equal(["collide", "-"], t.Steps[0].Arguments!);
+        Assert.Equal("[1,\n  2]\n", t.Steps[0].Stdin);
+        Assert.Equal(["out"], t.Steps[0].Expected);
+        Assert.Null(t.Steps[1].Arguments);
+        Assert.Equal(["run", "--batch", "4"], t.Steps[2].Arguments!);
+        Assert.Equal(["a", "b"], t.Steps[2].Expected);
+        Assert.Throws<FormatException>(() => Transcript.Parse("$ cat x.json"));
+        Assert.Throws<FormatException>(() => Transcript.Parse("$ URWPGSim2D.Server collide x.json > y"));
+    }
+
+    private static void Rewrite(string file, List<(MarkdownBlock Block, string Text)> replacements)
+    {
+        string path = Repository.PathOf(file);
+        var lines = File.ReadAllLines(path).ToList();
+        foreach (var (block, text) in replacements.OrderByDescending(r => r.Block.Line))
+        {
+            int first = block.Line; // the line after the fence (0-based index of the block's first line)
+            int count = block.Text.Split('\n').Length;
+            lines.RemoveRange(first, count);
+            lines.InsertRange(first, text.Split('\n'));
+        }
+
+        File.WriteAllText(path, string.Join('\n', lines) + "\n");
+    }
+
+    private static (int Code, string Stdout, string Stderr) RunServer(string stdin, string[] args)
+    {
+        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+        {
+            RedirectStandardInput = true,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+            WorkingDirectory = Repository.Root,
+        };
+        start.ArgumentList.Add(server);
+        foreach (string arg in args)
+        {
+            start.ArgumentList.Add(arg);
+        }
+
+        using var process = Process.Start(start) ?? throw new InvalidOperationException("the server did not start");
+        var stderr = process.StandardError.ReadToEndAsync();
+        var stdout = process.StandardOutput.ReadToEndAsync();
+        process.StandardInput.Write(stdin);
+        process.StandardInput.Close();
+        if (!process.WaitForExit(300_000))
+        {
+            process.Kill();
+            throw new TimeoutException($"the server did not exit within 5 minutes: {string.Join(' ', args)}");
+        }
+
+        return (process.ExitCode, stdout.Result, stderr.Result);
+    }
+}
