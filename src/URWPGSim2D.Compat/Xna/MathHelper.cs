@@ -41,7 +41,8 @@ public static class MathHelper
     /// <returns>angle + 2πk in (−π, π].</returns>
     public static float WrapAngle(float angle)
     {
-        float a = (float)Math.IEEERemainder(angle, 2.0 * Math.PI);
+        // Remainder by the float 2π (as XNA): ±π land on ±π exactly, then −π becomes π.
+        float a = (float)Math.IEEERemainder(angle, (double)TwoPi);
         if (a <= -MathF.PI)
         {
             a += TwoPi;

@@ -73,7 +73,11 @@ internal sealed class RunCommand : ICliCommand
         }
         catch (StrategyLoadException e)
         {
-            console.ErrorLine(e.Message);
+            foreach (string line in e.Lines)
+            {
+                console.ErrorLine(line); // compile errors: one line each
+            }
+
             return ExitCodes.BadInput;
         }
 
@@ -158,7 +162,7 @@ internal sealed class RunCommand : ICliCommand
                 }
                 catch (StrategyLoadException e)
                 {
-                    throw new StrategyLoadException($"--strategy {t}: {e.Message}");
+                    throw new StrategyLoadException($"--strategy {t}: {e.Message}", e.Details);
                 }
             }
         }
@@ -210,13 +214,15 @@ internal sealed class RunCommand : ICliCommand
         "kind, sub-steps, the largest leftover overlap and strategy faults. --item NAME plays a competition item of the\n" +
         "original with its rules (--list-items lists them; --minutes 10|5|3|1, default 10); without a scene option it\n" +
         "plays ball-grab; --item default is the old default scene; --crowd N generates a crowded scene of N fish and balls.\n" +
-        "--strategy TEAM=My.dll loads a compiled IStrategy for a whole team (its own load context, --strategy-timeout\n" +
-        "ms per cycle, default 100). --trace writes JSON Lines, --svg the final frame,\n" +
+        "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball), a .dll built against\n" +
+        "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
+        "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
+        "100). --trace writes JSON Lines, --svg the final frame,\n" +
         "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
         "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
         "--submit submits them; asked again, only the shards without results are played.\n" +
-        "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md.\n";
+        "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md, docs/strategies.md.\n";
 }

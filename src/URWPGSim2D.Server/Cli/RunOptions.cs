@@ -12,7 +12,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=DLL[#Type]]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -83,10 +83,10 @@ internal sealed class RunOptions
     /// <summary>Default port of the live view.</summary>
     public const int DefaultPort = 8080;
 
-    /// <summary>Per team (0, 1), a strategy assembly spec or null.</summary>
+    /// <summary>Per team (0, 1), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
     public string?[] Strategies { get; } = new string?[2];
 
-    /// <summary>Time limit of a loaded strategy per cycle, ms.</summary>
+    /// <summary>Deadline of a loaded strategy per call, ms of its thread's CPU time.</summary>
     public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Folder of a Slurm job array for the batch (<c>--slurm DIR</c>), or null to play the batch here.</summary>
@@ -218,7 +218,7 @@ internal sealed class RunOptions
                     int eq = value.IndexOf('=', StringComparison.Ordinal);
                     if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
                     {
-                        throw UsageError($"--strategy must be TEAM=PATH with TEAM 0 or 1, got {CliText.Quote(value)}");
+                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 or 1, got {CliText.Quote(value)}");
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];

@@ -8,6 +8,7 @@ namespace URWPGSim2D.Server.Strategies;
 /// deadline measured by a <see cref="StrategyClock"/> (the CPU time of that thread in a real match). A
 /// call past its deadline is abandoned: its answer is discarded even if it arrives before the host
 /// looks, and the strategy is skipped while it is still busy, so a strategy that hangs cannot stop the match.
+/// The first call, which also compiles the strategy's code, has the longer hang limit as its deadline.
 /// </summary>
 internal sealed class IsolatedStrategyRunner
 {
@@ -21,6 +22,7 @@ internal sealed class IsolatedStrategyRunner
     private Exception? _error;
     private TimeSpan _used;
     private bool _pending;
+    private bool _warm;
     private volatile bool _stopped;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
@@ -59,7 +61,15 @@ internal sealed class IsolatedStrategyRunner
             _pending = false; // the abandoned call's answer is dropped here
         }
 
+        // The first call also pays for .NET compiling the strategy's (and the adapter's) code on its
+        // thread: it gets the hang limit instead of the deadline.
         var budget = TimeSpan.FromMilliseconds(timeoutMs);
+        if (!_warm)
+        {
+            budget = ThreadTimeClock.HangLimitFor(budget);
+            _warm = true;
+        }
+
         decisions.CopyTo(_work);
         _snapshot = snapshot;
         _fish = fish;

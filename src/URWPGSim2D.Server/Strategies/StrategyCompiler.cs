@@ -87,14 +87,17 @@ internal static class StrategyCompiler
         var result = compilation.Emit(image);
         if (!result.Success)
         {
-            throw new StrategyLoadException(Describe(result.Diagnostics, files.Count));
+            var errors = Errors(result.Diagnostics);
+            throw new StrategyLoadException(
+                string.Create(CultureInfo.InvariantCulture, $"{errors.Count} compile error{(errors.Count == 1 ? string.Empty : "s")} in {files.Count} file{(files.Count == 1 ? string.Empty : "s")}:"),
+                errors);
         }
 
         return image.ToArray();
     }
 
-    /// <summary>The error lines of a failed compilation, after a count line.</summary>
-    private static string Describe(ImmutableArray<Diagnostic> diagnostics, int fileCount)
+    /// <summary>The error lines of a failed compilation, by file, line and column.</summary>
+    private static List<string> Errors(ImmutableArray<Diagnostic> diagnostics)
     {
         var errors = new List<Diagnostic>();
         foreach (var d in diagnostics)
@@ -113,14 +116,13 @@ internal static class StrategyCompiler
             c = c != 0 ? c : pa.StartLinePosition.Line.CompareTo(pb.StartLinePosition.Line);
             return c != 0 ? c : pa.StartLinePosition.Character.CompareTo(pb.StartLinePosition.Character);
         });
-        var s = new StringBuilder();
-        s.Append(CultureInfo.InvariantCulture, $"{errors.Count} compile error{(errors.Count == 1 ? string.Empty : "s")} in {fileCount} file{(fileCount == 1 ? string.Empty : "s")}:");
+        var lines = new List<string>(errors.Count);
         foreach (var d in errors)
         {
-            s.Append('\n').Append(Format(d));
+            lines.Add(Format(d));
         }
 
-        return s.ToString();
+        return lines;
     }
 
     /// <summary>One diagnostic as <c>file(line,col): error ID: message</c> (1-based line and column).</summary>

@@ -105,7 +105,7 @@ internal static class StrategyResolver
         }
         catch (StrategyLoadException e)
         {
-            throw new StrategyLoadException($"cannot compile {path}: {e.Message}");
+            throw new StrategyLoadException($"cannot compile {path}: {e.Message}", e.Details);
         }
 
         var context = new StrategyLoadContext(path, null);
