@@ -107,7 +107,8 @@ internal sealed class PoloReferee : ItemReferee
     public int Kicker => Period == PoloPeriod.PenaltyKickTime && _kick >= 0 ? _kick % 2 : -1;
 
     /// <inheritdoc/>
-    public override int MaxCycles => Cycles + ExtraTimeCycles + (2 * PenaltyRounds * KickCycles) + ClutchShotCycles;
+    /// <remarks>A match of no cycles (<c>--cycles 0</c>: the layout alone) plays no deciders either.</remarks>
+    public override int MaxCycles => Cycles == 0 ? 0 : Cycles + ExtraTimeCycles + (2 * PenaltyRounds * KickCycles) + ClutchShotCycles;
 
     /// <inheritdoc/>
     protected override bool PlaysOn => true;
