@@ -24,7 +24,7 @@ public class BruteForceScalingBenchmarks
     [GlobalSetup]
     public void Setup()
     {
-        _brute = MatchBuilder.Build(CrowdScenario.Create(Objects), broadPhase: new BruteForceBroadPhase());
+        _brute = MatchBuilder.Build(CrowdScenario.Create(Objects), broadPhase: BroadPhaseKind.BruteForce);
         for (int i = 0; i < 20; i++)
         {
             _brute.Step();
