@@ -28,8 +28,8 @@ public class ScalingBenchmarks
     public void Setup()
     {
         var scene = CrowdScenario.Create(Objects);
-        _grid = MatchBuilder.Build(scene, broadPhase: new UniformGrid());
-        _brute = MatchBuilder.Build(scene, broadPhase: new BruteForceBroadPhase());
+        _grid = MatchBuilder.Build(scene, broadPhase: BroadPhaseKind.UniformGrid);
+        _brute = MatchBuilder.Build(scene, broadPhase: BroadPhaseKind.BruteForce);
         for (int i = 0; i < 20; i++)
         {
             _grid.Step();

@@ -7,7 +7,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// The reference broad phase: every pair of proxies is tested, n·(n − 1)/2 box tests per
 /// <see cref="FindPairs"/>. Exact by construction; the others are tested against it.
 /// </summary>
-public sealed class BruteForceBroadPhase : IBroadPhase
+internal sealed class BruteForceBroadPhase : IBroadPhase
 {
     private readonly ProxyStore _store = new();
 

@@ -4,7 +4,7 @@ using System.Numerics;
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <content>Inserting and removing leaves, refitting and rebalancing the path to the root.</content>
-public sealed partial class DynamicAabbTree
+internal sealed partial class DynamicAabbTree
 {
     // Descends toward the sibling whose union with the leaf adds the least perimeter to the tree
     // (a node's own cost: 2·perimeter(node ∪ leaf); pushing the leaf further down costs at least the

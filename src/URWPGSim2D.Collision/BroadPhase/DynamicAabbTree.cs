@@ -14,7 +14,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// the tree once per moving proxy. Fat boxes are only for the descent: every reported pair is
 /// checked on the exact boxes.
 /// </summary>
-public sealed partial class DynamicAabbTree : IBroadPhase
+internal sealed partial class DynamicAabbTree : IBroadPhase
 {
     private const int Null = -1;
 

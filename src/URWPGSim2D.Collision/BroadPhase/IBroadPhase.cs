@@ -11,7 +11,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// the same pairs (those brute force finds), in the same order: by the smaller index, then by the
 /// larger one. Once warmed up (buffers at their largest size), nothing allocates.
 /// </summary>
-public interface IBroadPhase
+internal interface IBroadPhase
 {
     /// <summary>Number of proxies.</summary>
     int Count { get; }

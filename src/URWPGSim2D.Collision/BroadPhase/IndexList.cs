@@ -6,7 +6,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// A reusable, growable list of proxy indices (the answer of <see cref="IBroadPhase.Query"/>). It
 /// grows by doubling only when needed, so once warmed up it allocates nothing.
 /// </summary>
-public sealed class IndexList
+internal sealed class IndexList
 {
     private int[] _items;
 

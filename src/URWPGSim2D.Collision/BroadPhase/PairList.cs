@@ -7,7 +7,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// doubling only when a query finds more pairs than ever before, so once warmed up it allocates
 /// nothing.
 /// </summary>
-public sealed class PairList
+internal sealed class PairList
 {
     private ProxyPair[] _items;
 

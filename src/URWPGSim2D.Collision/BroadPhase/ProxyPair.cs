@@ -7,7 +7,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// </summary>
 /// <param name="A">The smaller proxy index.</param>
 /// <param name="B">The larger proxy index.</param>
-public readonly record struct ProxyPair(int A, int B) : System.IComparable<ProxyPair>
+internal readonly record struct ProxyPair(int A, int B) : System.IComparable<ProxyPair>
 {
     /// <summary>Orders by <see cref="A"/>, then <see cref="B"/>.</summary>
     /// <param name="other">The pair to compare with.</param>

@@ -14,7 +14,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// spread over a square area, about n^1.5 pairs overlap on x alone, so its cost grows faster
 /// than linearly.
 /// </summary>
-public sealed class SweepAndPrune : IBroadPhase
+internal sealed class SweepAndPrune : IBroadPhase
 {
     private readonly ProxyStore _store = new();
     private int[] _order = new int[16];

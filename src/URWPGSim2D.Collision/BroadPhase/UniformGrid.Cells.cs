@@ -5,7 +5,7 @@ using System.Runtime.CompilerServices;
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <content>Choosing the cell size, laying out the grid, sorting proxies into cells, moved and oversize proxies.</content>
-public sealed partial class UniformGrid
+internal sealed partial class UniformGrid
 {
     // Largest extent of the moving boxes (all boxes when none moves), leaving out outliers beyond
     // four times the mean, times the scale.

@@ -9,7 +9,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// with itself, its right neighbour and the three cells below), which reads the sorted arrays in
 /// order. Moved and oversize proxies are then paired with everything by their own scans.
 /// </content>
-public sealed partial class UniformGrid
+internal sealed partial class UniformGrid
 {
     /// <summary>Listed boxes are at most this fraction of a cell wide and tall (the rest are oversize).</summary>
     private const float FitFraction = 0.995f;

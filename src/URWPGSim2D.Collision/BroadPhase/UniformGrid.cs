@@ -20,7 +20,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// are kept in a separate list and tested against everything. With objects of similar size,
 /// <see cref="FindPairs"/> costs O(n + pairs) and <see cref="Move"/> O(1).
 /// </summary>
-public sealed partial class UniformGrid : IBroadPhase
+internal sealed partial class UniformGrid : IBroadPhase
 {
     private const int Empty = -1;
     private const int MaxCellsPerQuery = 1024;

@@ -9,7 +9,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// a fish's joints keep their angles), and every contact is reported, in time order, at its time
 /// of first contact through an <see cref="IContactHandler"/> that applies the caller's response.
 /// Nothing is missed and nothing tunnels: each candidate pair (found by the broad phase, a
-/// <see cref="UniformGrid"/> by default) is sampled on its own clock, often enough that neither
+/// uniform grid by default) is sampled on its own clock, often enough that neither
 /// body can pass through the other between two samples, and not at all while its bounding circles
 /// are too far apart to meet. After the step no two bodies overlap by more than 0.5 mm: a body
 /// whose response leaves it inside another one has its move rejected. The same bodies and calls
@@ -24,10 +24,19 @@ public sealed partial class Stepper
     private IContactHandler? _handler;
 
     /// <summary>Creates an empty stepper.</summary>
-    /// <param name="broadPhase">The broad phase over the bodies' swept boxes (a <see cref="UniformGrid"/> when null); any broad phase gives the same contacts.</param>
-    public Stepper(IBroadPhase? broadPhase = null)
+    /// <param name="broadPhase">The broad phase over the bodies' swept boxes; every kind gives the same contacts.</param>
+    /// <exception cref="ArgumentException"><paramref name="broadPhase"/> is not a defined kind.</exception>
+    public Stepper(BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
+        : this(BroadPhaseFactory.Create(broadPhase, nameof(broadPhase)))
     {
-        _planner = new SweepPlanner(broadPhase ?? new UniformGrid());
+    }
+
+    /// <summary>Creates an empty stepper over a given broad phase instance (tests: a grid of a chosen cell size).</summary>
+    /// <param name="broadPhase">The broad phase over the bodies' swept boxes.</param>
+    internal Stepper(IBroadPhase broadPhase)
+    {
+        ArgumentNullException.ThrowIfNull(broadPhase);
+        _planner = new SweepPlanner(broadPhase);
         _scheduler = new Scheduler(this);
     }
 

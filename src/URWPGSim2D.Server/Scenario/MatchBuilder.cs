@@ -25,9 +25,9 @@ internal static class MatchBuilder
     /// <param name="seed">Seed override, or null for the scenario's.</param>
     /// <param name="noise">Noise override, or null for the scenario's.</param>
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
-    /// <param name="broadPhase">The stepper's broad phase (the default grid when null).</param>
+    /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, IBroadPhase? broadPhase = null, int? cycles = null)
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var fish = new FishState[scenario.Fish.Count];

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>The pair kinds counted in the summary (goal blocks and walls are the border).</summary>
-public enum ContactKind
+internal enum ContactKind
 {
     /// <summary>Fish against fish.</summary>
     FishFish,

@@ -14,7 +14,7 @@ internal sealed class CycleMotion
     private readonly MotionBodies _bodies;
     private readonly ContactHandler _handler;
 
-    public CycleMotion(World world, ContactLog log, IBroadPhase? broadPhase = null)
+    public CycleMotion(World world, ContactLog log, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
     {
         _bodies = new MotionBodies(world, broadPhase);
         world.Bodies = _bodies;

@@ -4,4 +4,4 @@ namespace URWPGSim2D.Server.Simulation;
 /// <param name="Cycle">Cycle number (1-based).</param>
 /// <param name="Ball">Ball index.</param>
 /// <param name="Team">Scoring team.</param>
-public readonly record struct GoalEvent(int Cycle, int Ball, int Team);
+internal readonly record struct GoalEvent(int Cycle, int Ball, int Team);

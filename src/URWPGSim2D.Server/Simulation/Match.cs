@@ -22,9 +22,9 @@ internal sealed class Match
     /// <param name="strategies">Who decides for the fish.</param>
     /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
     /// <param name="seed">Seed of the noise generators.</param>
-    /// <param name="broadPhase">The stepper's broad phase (a <see cref="UniformGrid"/> when null); any broad phase gives the same match.</param>
+    /// <param name="broadPhase">The stepper's broad phase; every kind gives the same match.</param>
     /// <param name="referee">The rules of a competition item, or null for the plain goal rules (<see cref="Rules"/>).</param>
-    public Match(World world, StrategyHost strategies, bool noise, ulong seed, IBroadPhase? broadPhase = null, Items.ItemReferee? referee = null)
+    public Match(World world, StrategyHost strategies, bool noise, ulong seed, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, Items.ItemReferee? referee = null)
     {
         World = world;
         Strategies = strategies;

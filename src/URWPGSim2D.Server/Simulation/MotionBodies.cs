@@ -21,7 +21,7 @@ internal sealed class MotionBodies
     private readonly int _statics;
     private readonly float[] _joints;
 
-    public MotionBodies(World world, IBroadPhase? broadPhase)
+    public MotionBodies(World world, BroadPhaseKind broadPhase)
     {
         _world = world;
         _fish = world.Fish.Length;

@@ -39,7 +39,7 @@ internal sealed class World
     /// <summary>The bodies as the motion stepper holds them (created with the default broad phase when first needed).</summary>
     public MotionBodies Bodies
     {
-        get => _bodies ??= new MotionBodies(this, null);
+        get => _bodies ??= new MotionBodies(this, Collision.BroadPhase.BroadPhaseKind.UniformGrid);
         set => _bodies = value;
     }
 

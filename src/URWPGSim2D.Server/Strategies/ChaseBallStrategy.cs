@@ -10,7 +10,7 @@ namespace URWPGSim2D.Server.Strategies;
 /// tightly, and a fish that has not moved for two seconds (wedged against a wall) turns the other way
 /// for a while. Deterministic: the only state is each fish's recent progress.
 /// </summary>
-public sealed class ChaseBallStrategy : IStrategy
+internal sealed class ChaseBallStrategy : IStrategy
 {
     private const float LineUpAngle = 0.6f;
     private const int StuckCycles = 20;

@@ -4,7 +4,7 @@ namespace URWPGSim2D.Server.Strategies;
 
 /// <summary>Built-in <c>fixed</c>: every fish repeats one decision forever.</summary>
 /// <param name="decision">The decision to repeat.</param>
-public sealed class FixedDecisionStrategy(Decision decision) : IStrategy
+internal sealed class FixedDecisionStrategy(Decision decision) : IStrategy
 {
     /// <summary>The repeated decision.</summary>
     public Decision Decision { get; } = decision;

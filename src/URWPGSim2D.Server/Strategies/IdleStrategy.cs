@@ -3,7 +3,7 @@ using System;
 namespace URWPGSim2D.Server.Strategies;
 
 /// <summary>Built-in <c>idle</c>: every fish stands still (VCode 0, TCode 7).</summary>
-public sealed class IdleStrategy : IStrategy
+internal sealed class IdleStrategy : IStrategy
 {
     /// <inheritdoc/>
     public string TeamName => "idle";

@@ -27,12 +27,17 @@ internal static class Repository
     /// <summary>A path relative to the root (forward slashes) made absolute.</summary>
     public static string PathOf(string relative) => Path.Combine(Root, relative.Replace('/', Path.DirectorySeparatorChar));
 
-    /// <summary>README.md and every Markdown file under docs/, as paths relative to the root.</summary>
+    /// <summary>README.md, every Markdown file under docs/ and the package READMEs under src/, as paths relative to the root.</summary>
     public static IReadOnlyList<string> MarkdownFiles() =>
         [
             "README.md",
             .. Directory.EnumerateFiles(PathOf("docs"), "*.md", SearchOption.AllDirectories)
                 .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
+                .Order(StringComparer.Ordinal),
+            // The packed libraries' package READMEs (shown on the package's page).
+            .. Directory.EnumerateFiles(PathOf("src"), "README.md", SearchOption.AllDirectories)
+                .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
+                .Where(f => !f.Contains("/bin/", StringComparison.Ordinal) && !f.Contains("/obj/", StringComparison.Ordinal))
                 .Order(StringComparer.Ordinal),
         ];
 }

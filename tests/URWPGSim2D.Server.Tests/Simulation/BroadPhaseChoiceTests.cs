@@ -32,10 +32,10 @@ public sealed class BroadPhaseChoiceTests
     public void EveryBroadPhaseGivesTheBruteForceTrace(int index)
     {
         var scenario = ScenarioParser.Parse(RandomScenarios.Json(index));
-        byte[] truth = Trace(scenario, new BruteForceBroadPhase());
-        Assert.Equal(truth, Trace(scenario, new UniformGrid()));
-        Assert.Equal(truth, Trace(scenario, new SweepAndPrune()));
-        Assert.Equal(truth, Trace(scenario, new DynamicAabbTree()));
+        byte[] truth = Trace(scenario, BroadPhaseKind.BruteForce);
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.UniformGrid));
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.SweepAndPrune));
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.DynamicAabbTree));
     }
 
     [Theory]
@@ -44,20 +44,20 @@ public sealed class BroadPhaseChoiceTests
     public void ACrowdedSceneIsTheSameWithEveryBroadPhase(int movers, ulong seed)
     {
         var scenario = CrowdScenario.Create(movers, seed);
-        byte[] truth = Trace(scenario, new BruteForceBroadPhase(), cycles: 30);
-        Assert.Equal(truth, Trace(scenario, new UniformGrid(), cycles: 30));
-        Assert.Equal(truth, Trace(scenario, new SweepAndPrune(), cycles: 30));
-        Assert.Equal(truth, Trace(scenario, new DynamicAabbTree(), cycles: 30));
+        byte[] truth = Trace(scenario, BroadPhaseKind.BruteForce, cycles: 30);
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.UniformGrid, cycles: 30));
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.SweepAndPrune, cycles: 30));
+        Assert.Equal(truth, Trace(scenario, BroadPhaseKind.DynamicAabbTree, cycles: 30));
     }
 
     [Fact]
     public void TheDefaultMatchIsTheSameWithBruteForce()
     {
         var scenario = DefaultScenario.Load();
-        Assert.Equal(Trace(scenario, new BruteForceBroadPhase(), cycles: 150), Trace(scenario, null, cycles: 150));
+        Assert.Equal(Trace(scenario, BroadPhaseKind.BruteForce, cycles: 150), Trace(scenario, BroadPhaseKind.UniformGrid, cycles: 150));
     }
 
-    private static byte[] Trace(ScenarioDefinition scenario, IBroadPhase? broadPhase, int cycles = 60)
+    private static byte[] Trace(ScenarioDefinition scenario, BroadPhaseKind broadPhase, int cycles = 60)
     {
         string path = Path.Combine(Path.GetTempPath(), $"urwpg-bp-{Guid.NewGuid():N}.jsonl");
         try

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation.Kinematics;
 /// 250 mm/s² (v ≥ 100 mm/s), 100 (50 ≤ v &lt; 100), 25 (25 ≤ v &lt; 50) or 6.25 (v &lt; 25), times
 /// the cycle length, never below 0; the direction is kept.
 /// </summary>
-public static class BallMotion
+internal static class BallMotion
 {
     /// <summary>Deceleration (mm/s²) at speed <paramref name="speed"/> (mm/s).</summary>
     /// <param name="speed">Current speed, mm/s.</param>

@@ -5,7 +5,7 @@ namespace URWPGSim2D.Server.Simulation.Kinematics;
 /// <summary>
 /// The speed gears of the original core: VCode 0..15 maps to a target forward speed in mm/s.
 /// </summary>
-public static class SpeedTable
+internal static class SpeedTable
 {
     /// <summary>Number of gears (VCode 0..15).</summary>
     public const int Gears = 16;

@@ -12,7 +12,7 @@ namespace URWPGSim2D.Server.Simulation.Kinematics;
 /// joint 1 bends least), the lags λ = 0, 80, 59 added as radians and p the fish's own phase.
 /// Each φᵢ is measured from the body axis. Computed every cycle from the decision's codes.
 /// </summary>
-public static class TailWave
+internal static class TailWave
 {
     private const double DegToRad = Math.PI / 180.0;
 

@@ -7,7 +7,7 @@ namespace URWPGSim2D.Server.Simulation.Kinematics;
 /// (7 = straight; below 7 turns left, i.e. toward −Z at heading 0; above 7 turns right).
 /// A positive angular speed turns the heading from +X toward +Z.
 /// </summary>
-public static class TurnTable
+internal static class TurnTable
 {
     /// <summary>Number of gears (TCode 0..15).</summary>
     public const int Gears = 16;
