@@ -203,6 +203,22 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <summary>The result from the current state.</summary>
     protected abstract MatchOutcome Decide();
 
+    /// <summary>The scenario's <paramref name="n"/>-th fish (0-based) of <paramref name="team"/>: its start pose at cycle 0.</summary>
+    /// <exception cref="InvalidOperationException">The team has fewer fish.</exception>
+    protected FishDefinition StartOf(int team, int n)
+    {
+        int k = n;
+        foreach (var f in Scenario.Fish)
+        {
+            if (f.Team == team && k-- == 0)
+            {
+                return f;
+            }
+        }
+
+        throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"team {team} has no fish {n}"));
+    }
+
     /// <summary>Refreshes <see cref="Variables"/> from the current state.</summary>
     protected virtual void UpdateVariables(World world)
     {
