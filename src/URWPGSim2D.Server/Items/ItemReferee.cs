@@ -120,6 +120,21 @@ internal abstract class ItemReferee : ITraceItemInfo
         }
     }
 
+    /// <summary>The scenario's <paramref name="n"/>-th fish (in fish order) of team <paramref name="team"/>: its start pose.</summary>
+    protected FishDefinition NthOfTeam(int team, int n)
+    {
+        int left = n;
+        foreach (var f in Scenario.Fish)
+        {
+            if (f.Team == team && left-- == 0)
+            {
+                return f;
+            }
+        }
+
+        throw new InvalidOperationException($"team {team} has no fish {n}");
+    }
+
     /// <summary>Prepares the bodies for cycle 1 (parks frozen fish) and fills <see cref="Variables"/>.</summary>
     public void Start(World world)
     {
@@ -187,6 +202,22 @@ internal abstract class ItemReferee : ITraceItemInfo
 
     /// <summary>The result from the current state.</summary>
     protected abstract MatchOutcome Decide();
+
+    /// <summary>The scenario's <paramref name="n"/>-th fish (0-based) of <paramref name="team"/>: its start pose at cycle 0.</summary>
+    /// <exception cref="InvalidOperationException">The team has fewer fish.</exception>
+    protected FishDefinition StartOf(int team, int n)
+    {
+        int k = n;
+        foreach (var f in Scenario.Fish)
+        {
+            if (f.Team == team && k-- == 0)
+            {
+                return f;
+            }
+        }
+
+        throw new InvalidOperationException(string.Create(CultureInfo.InvariantCulture, $"team {team} has no fish {n}"));
+    }
 
     /// <summary>Refreshes <see cref="Variables"/> from the current state.</summary>
     protected virtual void UpdateVariables(World world)

@@ -12,6 +12,7 @@ internal static class ItemRegistry
     private static readonly CompetitionItem[] Known =
     [
         new BallGrab.BallGrabItem(),
+        new Survival.SurvivalItem(),
         new Rescue.RescueItem(),
         new CrossCountry.CrossCountryItem(),
         new Polo.PoloItem(1),
