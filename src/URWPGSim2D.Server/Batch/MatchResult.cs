@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Batch;
@@ -23,10 +24,11 @@ namespace URWPGSim2D.Server.Batch;
 /// <param name="Scores">The item's score per team (null without an item).</param>
 /// <param name="Winner">The item's winning team, or −1 (a draw, no winner, or no item).</param>
 /// <param name="Rule">The rule that decided the item's result (null without an item).</param>
+/// <param name="Faults">Per team, the faults of each strategy that faulted (null or empty: none).</param>
 internal sealed record MatchResult(
     int Index, ulong Seed, int Cycles, int Goals0, int Goals1, long[] Contacts, long SubSteps,
     int MostSubSteps, long Events, float LeftoverOverlap, int LeftoverCycle, int StrategyFaults,
-    string? Item = null, int[]? Scores = null, int Winner = -1, string? Rule = null)
+    string? Item = null, int[]? Scores = null, int Winner = -1, string? Rule = null, TeamFaults[]? Faults = null)
 {
     /// <summary>Contact kinds as the result file and the summaries name them.</summary>
     public static readonly string[] ContactNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
@@ -42,7 +44,23 @@ internal sealed record MatchResult(
         return new MatchResult(
             index, seed, stats.Cycles, goals0, goals1, match.Contacts.ByKind.ToArray(),
             stats.SubSteps, stats.MostSubSteps, stats.Events, stats.LargestLeftoverOverlap, stats.LargestLeftoverCycle,
-            match.Strategies.TotalFaults, referee?.Item.Slug, (int[]?)referee?.Scores.Clone(), outcome?.Winner ?? -1, outcome?.Rule);
+            match.Strategies.TotalFaults, referee?.Item.Slug, (int[]?)referee?.Scores.Clone(), outcome?.Winner ?? -1, outcome?.Rule,
+            FaultsOf(match));
+    }
+
+    // One entry per strategy that faulted, in slot (team) order; null when none did.
+    private static TeamFaults[]? FaultsOf(Match match)
+    {
+        List<TeamFaults>? faults = null;
+        foreach (var slot in match.Strategies.Slots)
+        {
+            if (slot.Faults > 0)
+            {
+                (faults ??= []).Add(new TeamFaults(slot.Team, slot.Label, slot.Exceptions, slot.Timeouts, slot.BadAnswers, slot.FirstFault ?? string.Empty));
+            }
+        }
+
+        return faults?.ToArray();
     }
 
     /// <summary>All contacts.</summary>

@@ -123,6 +123,25 @@ internal static class ResultFile
         w.WriteNumber("leftoverOverlap", r.LeftoverOverlap);
         w.WriteNumber("leftoverCycle", r.LeftoverCycle);
         w.WriteNumber("strategyFaults", r.StrategyFaults);
+        if (r.Faults is { Length: > 0 })
+        {
+            // Compatible addition: per team, the faults of each strategy that faulted (absent when none did).
+            w.WriteStartArray("faults");
+            foreach (var f in r.Faults)
+            {
+                w.WriteStartObject();
+                w.WriteNumber("team", f.Team);
+                w.WriteString("strategy", f.Strategy);
+                w.WriteNumber("exceptions", f.Exceptions);
+                w.WriteNumber("timeouts", f.Timeouts);
+                w.WriteNumber("badAnswers", f.BadAnswers);
+                w.WriteString("first", f.First);
+                w.WriteEndObject();
+            }
+
+            w.WriteEndArray();
+        }
+
         if (r.Item is not null)
         {
             // Compatible additions of a competition item: its slug, score per team, winner (−1: none) and the deciding rule.
@@ -202,6 +221,11 @@ internal static class ResultFile
         int overlapCycle = Field(e, "leftoverCycle").GetInt32();
         int faults = Field(e, "strategyFaults").GetInt32();
         var result = new MatchResult(index, seed, cycles, goals0, goals1, counts, subSteps, mostSubSteps, events, overlap, overlapCycle, faults);
+        if (e.TryGetProperty("faults", out var perTeam))
+        {
+            result = result with { Faults = ReadFaults(perTeam, faults) };
+        }
+
         if (e.TryGetProperty("item", out var item))
         {
             var score = Field(e, "score");
@@ -215,6 +239,37 @@ internal static class ResultFile
         }
 
         return result;
+    }
+
+    private static TeamFaults[] ReadFaults(JsonElement list, int total)
+    {
+        if (list.ValueKind != JsonValueKind.Array || list.GetArrayLength() == 0)
+        {
+            throw new ResultFileException($"\"faults\" must be a non-empty array of per-team faults, got {Short(list.GetRawText())}");
+        }
+
+        var faults = new TeamFaults[list.GetArrayLength()];
+        int sum = 0;
+        for (int i = 0; i < faults.Length; i++)
+        {
+            var f = list[i];
+            int team = Field(f, "team").GetInt32();
+            int exceptions = Field(f, "exceptions").GetInt32(), timeouts = Field(f, "timeouts").GetInt32(), bad = Field(f, "badAnswers").GetInt32();
+            if (team is < 0 or > 1 || exceptions < 0 || timeouts < 0 || bad < 0 || exceptions + timeouts + bad == 0)
+            {
+                throw new ResultFileException($"\"faults\"[{i}] must name team 0 or 1 and counts >= 0 that are not all 0, got {Short(f.GetRawText())}");
+            }
+
+            faults[i] = new TeamFaults(team, Field(f, "strategy").GetString()!, exceptions, timeouts, bad, Field(f, "first").GetString()!);
+            sum += faults[i].Total;
+        }
+
+        if (sum != total)
+        {
+            throw new ResultFileException($"\"faults\" add up to {sum}, but \"strategyFaults\" is {total}");
+        }
+
+        return faults;
     }
 
     private static string Short(string raw) => raw.Length <= 40 ? raw : raw[..37] + "...";

@@ -86,6 +86,39 @@ public sealed class BatchRunTests : IDisposable
         Assert.Equal(0, CliRun.Of(string.Empty, "merge", s1, s0).ExitCode);
     }
 
+    [Fact]
+    public void TheResultsCarryEachFaultyTeamsFaultsAndMergeKeepsThem()
+    {
+        // The test strategy throws on its calls 5-9 and answers no decisions on calls 10-14; in
+        // 15 cycles it never hangs, so the counts do not depend on timing.
+        string faulty = "0=" + Strategies.OriginalStrategyTests.Folder("Faulty");
+        var whole = Batch("faulty", 7, 15, "--strategy", faulty);
+        const string entry = "\"strategyFaults\":10,\"faults\":[{\"team\":0,\"strategy\":\"Faulty\",\"exceptions\":5,\"timeouts\":0,\"badAnswers\":5,\"first\":\"cycle 5: InvalidOperationException: faulty on purpose\"}]";
+        string[] lines = File.ReadAllLines(whole.File);
+        Assert.Equal(6, lines.Length);
+        Assert.All(lines.Skip(1), l => Assert.Contains(entry, l, StringComparison.Ordinal));
+
+        // A faultless team has no entry, and a match without faults no "faults" field at all.
+        var clean = Batch("clean", 7, 15);
+        Assert.All(File.ReadAllLines(clean.File).Skip(1), l => Assert.DoesNotContain("\"faults\"", l, StringComparison.Ordinal));
+
+        // Merging the shards writes the entries back byte for byte.
+        string s0 = Batch("f0", 7, 15, "--strategy", faulty, "--shard", "0/2").File;
+        string s1 = Batch("f1", 7, 15, "--strategy", faulty, "--shard", "1/2").File;
+        string merged = Path.Combine(_folder, "faulty-merged.jsonl");
+        Assert.Equal(0, CliRun.Of(string.Empty, "merge", "--out", merged, s1, s0).ExitCode);
+        Assert.Equal(File.ReadAllBytes(whole.File), File.ReadAllBytes(merged));
+
+        // Entries that do not add up to strategyFaults, or name no fault, are refused.
+        string[] shard1 = File.ReadAllLines(s1);
+        string wrong = Path.Combine(_folder, "wrong.jsonl");
+        File.WriteAllLines(wrong, [shard1[0], shard1[1].Replace("\"exceptions\":5", "\"exceptions\":4", StringComparison.Ordinal), .. shard1.Skip(2)]);
+        AssertError(CliRun.Of(string.Empty, "merge", s0, wrong), $"{wrong}:2: \"faults\" add up to 9, but \"strategyFaults\" is 10");
+        string none = Path.Combine(_folder, "none-faults.jsonl");
+        File.WriteAllLines(none, [shard1[0], shard1[1].Replace("\"exceptions\":5,\"timeouts\":0,\"badAnswers\":5", "\"exceptions\":0,\"timeouts\":0,\"badAnswers\":0", StringComparison.Ordinal), .. shard1.Skip(2)]);
+        AssertError(CliRun.Of(string.Empty, "merge", s0, none), $"{none}:2: \"faults\"[0] must name team 0 or 1 and counts >= 0 that are not all 0");
+    }
+
     [Theory]
     [InlineData("--shard 2/2", "run: --shard must be I/K with 0 <= I < K (e.g. 0/4), got \"2/2\"")]
     [InlineData("--shard one", "run: --shard must be I/K with 0 <= I < K (e.g. 0/4), got \"one\"")]
@@ -104,10 +137,12 @@ public sealed class BatchRunTests : IDisposable
 
     private (CliRun Run, string File) Batch(string name, params string[] extra) => Batch(name, 7, extra);
 
-    private (CliRun Run, string File) Batch(string name, int seed, params string[] extra)
+    private (CliRun Run, string File) Batch(string name, int seed, params string[] extra) => Batch(name, seed, 40, extra);
+
+    private (CliRun Run, string File) Batch(string name, int seed, int cycles, params string[] extra)
     {
         string file = Path.Combine(_folder, name + ".jsonl");
-        string[] args = ["run", "--batch", "5", "--cycles", "40", "--seed", seed.ToString(System.Globalization.CultureInfo.InvariantCulture), "--results", file, .. extra];
+        string[] args = ["run", "--batch", "5", "--cycles", cycles.ToString(System.Globalization.CultureInfo.InvariantCulture), "--seed", seed.ToString(System.Globalization.CultureInfo.InvariantCulture), "--results", file, .. extra];
         var run = CliRun.Of(string.Empty, args);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.False(File.Exists(file + ".partial"));

@@ -232,12 +232,16 @@ public sealed class PoloTests
         Assert.Equal(new MatchOutcome(0, "higher score"), match.Referee!.Outcome);
     }
 
-    [Fact]
-    public void TheDemosScoreAgainstEachOther()
+    // Demo against demo scores at seeds 1 and 3 only: seed 2 ends 0-0 (the two demos block each
+    // other), so this checks those two seeds and says so; against an idle opponent every seed scores (below).
+    [Theory]
+    [InlineData(1UL)]
+    [InlineData(3UL)]
+    public void TheDemosScoreAgainstEachOtherAtSeeds1And3(ulong seed)
     {
-        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", 1, noise: true);
+        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", seed, noise: true);
         match.PlayAll();
-        Assert.True(match.Referee!.Scores.Sum() > 0, "seed 1: no goal in ten minutes");
+        Assert.True(match.Referee!.Scores.Sum() > 0, $"seed {seed}: no goal in ten minutes");
     }
 
     [Theory]

@@ -81,14 +81,13 @@ internal sealed class BallGrabReferee : ItemReferee
     protected override bool OnHalfTime(World world)
     {
         // Team t's fish j takes the start pose of the other team's fish j (the other end).
-        var starts = Scenario.Fish;
         int[] next = [0, 0];
         for (int i = 0; i < world.Fish.Length; i++)
         {
             var f = world.Fish[i];
             int other = 1 - f.Team;
             int k = next[f.Team]++;
-            var pose = NthOfTeam(starts, other, k);
+            var pose = NthOfTeam(other, k);
             Placement.Place(f, pose.Position, pose.Heading);
         }
 
@@ -127,18 +126,5 @@ internal sealed class BallGrabReferee : ItemReferee
         {
             Variables.Set(_rightKeys[i], _scored[1 - left, i] ? 1 : 0);
         }
-    }
-
-    private static FishDefinition NthOfTeam(System.Collections.Generic.IReadOnlyList<FishDefinition> fish, int team, int n)
-    {
-        foreach (var f in fish)
-        {
-            if (f.Team == team && n-- == 0)
-            {
-                return f;
-            }
-        }
-
-        throw new InvalidOperationException($"team {team} has no fish {n}");
     }
 }

@@ -132,17 +132,4 @@ internal sealed class RescueReferee : ItemReferee
             Placement.Place(world.Balls[i], Scenario.Balls[i].Position);
         }
     }
-
-    private FishDefinition NthOfTeam(int team, int n)
-    {
-        foreach (var f in Scenario.Fish)
-        {
-            if (f.Team == team && n-- == 0)
-            {
-                return f;
-            }
-        }
-
-        throw new InvalidOperationException($"team {team} has no fish {n}");
-    }
 }
