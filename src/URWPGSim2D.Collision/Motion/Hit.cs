@@ -56,6 +56,9 @@ internal readonly struct Hit
     /// <summary>From a plain result (no fish parts).</summary>
     public static Hit From(in CollisionDetectionResult r) => new(r, -1, -1);
 
+    /// <summary>From a plain result with the fish parts given.</summary>
+    public static Hit From(in CollisionDetectionResult r, sbyte partA, sbyte partB) => new(r, partA, partB);
+
     /// <summary>From a fish contact.</summary>
     public static Hit From(in FishContact c) =>
         new(c.Result, c.PartA.HasValue ? (sbyte)c.PartA.Value : (sbyte)-1, c.PartB.HasValue ? (sbyte)c.PartB.Value : (sbyte)-1);

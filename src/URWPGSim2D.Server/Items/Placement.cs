@@ -1,6 +1,7 @@
 using System.Numerics;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Simulation.Kinematics;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Items;
 
@@ -44,7 +45,7 @@ internal static class Placement
     private static void Move(FishState f, Vector2 position, float heading)
     {
         f.Position = position;
-        f.Heading = Angles.Wrap(heading);
+        f.Heading = Angle.Wrap(heading);
         f.Speed.Reset(0f, SpeedTable.Speeds);
         f.Turn.Reset(0f, TurnTable.Rates);
         f.Velocity = Vector2.Zero;

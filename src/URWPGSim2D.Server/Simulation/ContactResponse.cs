@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -237,7 +238,7 @@ internal sealed class ContactResponse
         float turn = Impulse.HeadingIncrement(lever, impulse);
         if (turn != 0f)
         {
-            fish.Heading = Angles.Wrap(fish.Heading + turn);
+            fish.Heading = Angle.Wrap(fish.Heading + turn);
             fish.Invalidate();
         }
     }
@@ -277,7 +278,7 @@ internal sealed class ContactResponse
     // Corrections at a refined time of first contact are no deeper than the tolerance and not counted.
     private static void Count(FishState fish, in Hit hit)
     {
-        if (hit.Depth > PhysicsConstants.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
+        if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
         {
             fish.Freeze();
         }

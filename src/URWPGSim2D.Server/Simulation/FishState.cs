@@ -3,6 +3,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Simulation.Kinematics;
 using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -22,7 +23,7 @@ internal sealed class FishState
         Team = team;
         Size = size;
         Position = position;
-        Heading = Angles.Wrap(heading);
+        Heading = Angle.Wrap(heading);
         Model = new FishModel(size, new FishPose(position, Heading, 0f, 0f, 0f));
         Decision = Decision.Stop;
         Turn.Reset(0f, TurnTable.Rates);

@@ -2,6 +2,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -109,7 +110,7 @@ internal sealed class Match
             if (_viewNoise is not null)
             {
                 position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
-                heading = Angles.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
+                heading = Angle.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
             }
 
             fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)

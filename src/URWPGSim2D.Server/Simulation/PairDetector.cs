@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Motion;
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>The exact test of one pair of the world at the bodies' poses now, by the collision library's motion stepper.</summary>

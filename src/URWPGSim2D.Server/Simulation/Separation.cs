@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -26,7 +27,7 @@ internal sealed class Separation(World world)
         for (int attempt = 0; attempt < 4; attempt++)
         {
             Hit now = PairDetector.Detect(world, pair);
-            if (now.Depth <= PhysicsConstants.ContactSlop)
+            if (now.Depth <= MotionTolerances.ContactSlop)
             {
                 return;
             }
@@ -96,7 +97,7 @@ internal sealed class Separation(World world)
         {
             Offset(pair, stepA * (hi - applied), stepB * (hi - applied));
             applied = hi;
-            if (PairDetector.Detect(world, pair).Depth <= PhysicsConstants.ContactSlop)
+            if (PairDetector.Detect(world, pair).Depth <= MotionTolerances.ContactSlop)
             {
                 break;
             }
@@ -110,7 +111,7 @@ internal sealed class Separation(World world)
             float mid = 0.5f * (lo + hi);
             Offset(pair, stepA * (mid - applied), stepB * (mid - applied));
             applied = mid;
-            if (PairDetector.Detect(world, pair).Depth <= PhysicsConstants.ContactSlop)
+            if (PairDetector.Detect(world, pair).Depth <= MotionTolerances.ContactSlop)
             {
                 hi = mid;
             }

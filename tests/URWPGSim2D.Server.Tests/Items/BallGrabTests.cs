@@ -4,6 +4,7 @@ using System.Numerics;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Items;
 
@@ -109,7 +110,7 @@ public sealed class BallGrabTests
         Assert.Equal(start[3].Position, match.World.Fish[1].Position);
         Assert.Equal(start[0].Position, match.World.Fish[2].Position);
         Assert.Equal(start[1].Position, match.World.Fish[3].Position);
-        Assert.Equal(Angles.Wrap(MathF.PI), match.World.Fish[0].Heading);
+        Assert.Equal(Angle.Wrap(MathF.PI), match.World.Fish[0].Heading);
         Assert.Equal(new Vector2(1065, 0), match.World.Balls[0].Position);
         Assert.Equal(new Vector2(-300, 200), match.World.Balls[1].Position);
 

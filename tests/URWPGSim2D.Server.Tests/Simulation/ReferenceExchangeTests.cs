@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
+using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

@@ -1,9 +1,8 @@
 using System.Numerics;
-using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 
 /// <summary>
 /// A detection result in plane coordinates: the MTV moves A out of B, the normal points from B
@@ -20,6 +19,17 @@ internal readonly struct Hit
         Depth = r.Intersect ? Mtv.Length() : 0f;
         PartA = partA;
         PartB = partB;
+    }
+
+    private Hit(in Hit h, Vector2 mtv, Vector2 normal, Vector2 point, bool swap)
+    {
+        Intersect = h.Intersect;
+        Mtv = mtv;
+        Normal = normal;
+        Point = point;
+        Depth = h.Depth;
+        PartA = swap ? h.PartB : h.PartA;
+        PartB = swap ? h.PartA : h.PartB;
     }
 
     /// <summary>Whether the shapes overlap.</summary>
@@ -46,10 +56,18 @@ internal readonly struct Hit
     /// <summary>From a plain result (no fish parts).</summary>
     public static Hit From(in CollisionDetectionResult r) => new(r, -1, -1);
 
-    /// <summary>From a plain result with the fish parts given.</summary>
-    public static Hit From(in CollisionDetectionResult r, sbyte partA, sbyte partB) => new(r, partA, partB);
-
     /// <summary>From a fish contact.</summary>
     public static Hit From(in FishContact c) =>
         new(c.Result, c.PartA.HasValue ? (sbyte)c.PartA.Value : (sbyte)-1, c.PartB.HasValue ? (sbyte)c.PartB.Value : (sbyte)-1);
+
+    /// <summary>This contact, found in a fish model's frame, carried into the world by <paramref name="frame"/>.</summary>
+    public Hit ToWorld(in RigidFrame frame) =>
+        !Intersect || frame.IsIdentity ? this : new Hit(this, frame.Rotate(Mtv), frame.Rotate(Normal), frame.ToWorld(Point), false);
+
+    /// <summary>The same contact with A and B swapped.</summary>
+    public Hit Swapped() => !Intersect ? this : new Hit(this, -Mtv, -Normal, Point, true);
+
+    /// <summary>The contact as the library reports it.</summary>
+    public CollisionDetectionResult Result =>
+        Intersect ? new CollisionDetectionResult(true, XZPlane.ToWorld(Mtv), XZPlane.ToWorld(Normal), XZPlane.ToWorld(Point)) : CollisionDetectionResult.None;
 }

@@ -1,9 +1,9 @@
 using System;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 
-/// <summary>Angle helpers (radians).</summary>
-internal static class Angles
+/// <summary>Angle wrapping for headings (radians).</summary>
+internal static class Angle
 {
     /// <summary>Wraps an angle to [−π, π).</summary>
     public static float Wrap(float angle)
