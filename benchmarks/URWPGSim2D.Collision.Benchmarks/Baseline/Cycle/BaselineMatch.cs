@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using System.Numerics;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Strategies;
@@ -110,7 +111,7 @@ internal sealed class BaselineMatch
             if (_viewNoise is not null)
             {
                 position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
-                heading = Angles.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
+                heading = Angle.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
             }
 
             fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Simulation;
 
@@ -238,7 +239,7 @@ internal sealed class ContactResponse
         float turn = Impulse.HeadingIncrement(lever, impulse);
         if (turn != 0f)
         {
-            fish.Heading = Angles.Wrap(fish.Heading + turn);
+            fish.Heading = Angle.Wrap(fish.Heading + turn);
             fish.Invalidate();
         }
     }
@@ -278,7 +279,7 @@ internal sealed class ContactResponse
     // Corrections at a refined time of first contact are no deeper than the tolerance and not counted.
     private static void Count(FishState fish, in Hit hit)
     {
-        if (hit.Depth > PhysicsConstants.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
+        if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
         {
             fish.Freeze();
         }

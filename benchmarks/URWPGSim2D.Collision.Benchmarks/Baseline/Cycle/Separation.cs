@@ -1,5 +1,6 @@
 using System.Numerics;
 using System;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Server.Simulation;
@@ -27,7 +28,7 @@ internal sealed class Separation(World world, MotionBodies bodies)
         for (int attempt = 0; attempt < 4; attempt++)
         {
             Hit now = bodies.Detect(pair);
-            if (now.Depth <= PhysicsConstants.ContactSlop)
+            if (now.Depth <= MotionTolerances.ContactSlop)
             {
                 return;
             }
@@ -97,7 +98,7 @@ internal sealed class Separation(World world, MotionBodies bodies)
         {
             Offset(pair, stepA * (hi - applied), stepB * (hi - applied));
             applied = hi;
-            if (bodies.Detect(pair).Depth <= PhysicsConstants.ContactSlop)
+            if (bodies.Detect(pair).Depth <= MotionTolerances.ContactSlop)
             {
                 break;
             }
@@ -111,7 +112,7 @@ internal sealed class Separation(World world, MotionBodies bodies)
             float mid = 0.5f * (lo + hi);
             Offset(pair, stepA * (mid - applied), stepB * (mid - applied));
             applied = mid;
-            if (bodies.Detect(pair).Depth <= PhysicsConstants.ContactSlop)
+            if (bodies.Detect(pair).Depth <= MotionTolerances.ContactSlop)
             {
                 hi = mid;
             }
