@@ -11,7 +11,8 @@ namespace URWPGSim2D.Server.Items.BallGrab;
 /// worth the trip (value over distance, the two fish on different balls) and brings it into the
 /// team's box in legs: a box only opens toward its end wall, so a ball in the field is pushed
 /// round the end of a bar into the channel between the box and the wall, up the channel to a
-/// staging point beside the opening, and from there diagonally into the box. Works in a frame
+/// staging point beside the opening, and from there diagonally into the box; a fish caught inside
+/// a box first swims out through the opening. Works in a frame
 /// where the team's box is at +x (mirrored for the left end).
 /// </summary>
 internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
@@ -43,6 +44,14 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
                 continue;
             }
 
+            FishView mine = me with { Position = new Vector2(me.Position.X * side, me.Position.Y), Heading = side > 0 ? me.Heading : Steering.Wrap(MathF.PI - me.Heading) };
+            if (BoxExit(mine, out Vector2 exit))
+            {
+                Decision e = Steering.SwimTo(mine, exit, 4);
+                decisions[k] = side > 0 ? e : new Decision(e.VCode, 14 - e.TCode);
+                continue;
+            }
+
             int ball = Choose(snapshot, me, team, side, k);
             _target[k] = ball;
             if (ball < 0)
@@ -54,10 +63,29 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
             BallView b = snapshot.Balls[ball];
             Vector2 q = new(b.Position.X * side, b.Position.Y);
             Vector2 leg = NextLeg(q, b.Radius);
-            FishView mine = me with { Position = new Vector2(me.Position.X * side, me.Position.Y), Heading = side > 0 ? me.Heading : Steering.Wrap(MathF.PI - me.Heading) };
-            Decision d = Steering.Push(mine, q, b.Radius, leg, pushVCode: 8);
+            Decision d = Steering.Push(mine, q, b.Radius, leg, pushVCode: 10, approachVCode: 10);
             decisions[k] = side > 0 ? d : new Decision(d.VCode, 14 - d.TCode);
         }
+    }
+
+    // A fish inside either box (a U open toward its end wall, too short for the fish to turn in
+    // across it) whose head points at the back wall swims along the back wall first and then out
+    // through the opening; without this it stays pressed against the back wall trying to reach the field.
+    private static bool BoxExit(in FishView me, out Vector2 exit)
+    {
+        float ax = MathF.Abs(me.Position.X), sx = me.Position.X >= 0f ? 1f : -1f;
+        exit = default;
+        if (ax < BackX - 20f || ax > BoxOuterX + 40f || MathF.Abs(me.Position.Y) > BoxHalfWidth + 10f)
+        {
+            return false;
+        }
+
+        float outward = MathF.Cos(me.Heading) * sx; // > 0: facing the opening
+        float sz = me.Position.Y >= 0f ? 1f : -1f;
+        exit = outward > 0.5f
+            ? new Vector2(sx * (HalfLength - 150f), me.Position.Y)
+            : new Vector2(sx * (BoxInnerX + 80f), sz * (BoxHalfWidth - 40f)) + (new Vector2(sx * 150f, 0f) * MathF.Max(0f, outward + 0.5f));
+        return true;
     }
 
     // Where the ball should go next, in the frame with the team's box at +x.

@@ -56,7 +56,14 @@ internal static class Steering
     /// within <see cref="LineUpAngle"/> of the push direction) drives through the ball at up to
     /// <paramref name="pushVCode"/>.
     /// </summary>
-    public static Decision Push(in FishView me, Vector2 ball, float radius, Vector2 target, int pushVCode = 10, float standOff = 90f)
+    /// <param name="me">The fish.</param>
+    /// <param name="ball">Ball centre.</param>
+    /// <param name="radius">Ball radius.</param>
+    /// <param name="target">Where the ball should go.</param>
+    /// <param name="pushVCode">Fastest gear while driving through the ball.</param>
+    /// <param name="standOff">Distance of the point behind the ball, mm.</param>
+    /// <param name="approachVCode">Fastest gear on the way behind the ball.</param>
+    public static Decision Push(in FishView me, Vector2 ball, float radius, Vector2 target, int pushVCode = 10, float standOff = 90f, int approachVCode = 14)
     {
         Vector2 toTarget = target - ball;
         Vector2 dir = toTarget.LengthSquared() > 1e-6f ? Vector2.Normalize(toTarget) : Direction(me.Heading);
@@ -84,6 +91,6 @@ internal static class Steering
             aim = ball + (side * s * (radius + 160f)) - (dir * (radius * 0.5f));
         }
 
-        return SwimTo(me, aim);
+        return SwimTo(me, aim, approachVCode);
     }
 }
