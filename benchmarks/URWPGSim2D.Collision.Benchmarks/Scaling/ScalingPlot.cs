@@ -37,7 +37,7 @@ public static class ScalingPlot
 
         double xMin = Math.Pow(10, Math.Floor(Math.Log10(points.Min(p => p.Objects))));
         double xMax = Math.Pow(10, Math.Ceiling(Math.Log10(points.Max(p => p.Objects))));
-        double yMin = Math.Pow(10, Math.Floor(Math.Log10(Math.Min(points.Min(p => p.Nanoseconds), 1e6))));
+        double yMin = Math.Pow(10, Math.Floor(Math.Log10(Math.Min(points.Min(p => p.Nanoseconds), 8e5))));
         double yMax = Math.Pow(10, Math.Ceiling(Math.Log10(Math.Max(points.Max(p => p.Nanoseconds), 1e7))));
         double X(double v) => Left + ((Math.Log10(v) - Math.Log10(xMin)) / (Math.Log10(xMax) - Math.Log10(xMin)) * (Width - Left - Right));
         double Y(double v) => Height - Bottom - ((Math.Log10(v) - Math.Log10(yMin)) / (Math.Log10(yMax) - Math.Log10(yMin)) * (Height - Top - Bottom));
