@@ -189,6 +189,20 @@ public sealed class SurvivalTests
     }
 
     [Fact]
+    public void AScenarioFileMayMoveTheHunterAndKeepsTheParkedFishParked()
+    {
+        // Entries without a position keep the item's, even a parking place beyond the bottom wall;
+        // a position given in the file must lie inside the field.
+        var match = ItemMatches.FromJson("""{ "item": "生存挑战", "cycles": 100, "fish": [ {"position": [1200, -800]}, {}, {"strategy": "idle"} ] }""");
+        var w = match.World;
+        Assert.Equal(new Vector2(1200f, -800f), w.Fish[Hunter0].Position);
+        Assert.Equal((new Vector2(-2115f, 1591f), true), (w.Fish[1].Position, w.Fish[1].OutOfPlay));
+        Assert.Equal((new Vector2(-1715f, 1591f), true), (w.Fish[2].Position, w.Fish[2].OutOfPlay));
+        var e = Assert.Throws<URWPGSim2D.Server.Scenario.ScenarioException>(() => ItemMatches.FromJson("""{ "item": "survival", "fish": [ {}, {"position": [-2115, 1591]} ] }"""));
+        Assert.Contains("fish[1].position", e.Message);
+    }
+
+    [Fact]
     public void TheVariablesAreTheOriginalsKeysInItsOrder()
     {
         var match = ItemTestMatches.Build(Item, 100);
