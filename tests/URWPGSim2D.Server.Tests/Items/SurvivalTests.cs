@@ -102,7 +102,8 @@ public sealed class SurvivalTests
         Assert.Equal(1, match.Referee!.Half);
         match.JudgeCycle(Meet(Prey3, Hunter0));
 
-        Assert.Equal(3, Assert.Single(match.EventsOf("half-time")).Cycle);
+        var half = Assert.Single(match.EventsOf("half-time"));
+        Assert.Equal((3, "half 1 over: hunter and hunted swap"), (half.Cycle, half.Text));
         var r = (SurvivalReferee)match.Referee;
         Assert.Equal((2, 1), (r.Half, r.Hunter));
 
