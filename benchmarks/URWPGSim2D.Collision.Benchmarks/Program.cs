@@ -112,7 +112,8 @@ public static class Program
                 string type = c.Descriptor.Type.Name;
                 string? label = type switch
                 {
-                    nameof(ScalingBenchmarks) => "whole cycle: " + (c.Descriptor.WorkloadMethod.Name == "Grid" ? "grid" : "brute force"),
+                    nameof(ScalingBenchmarks) => c.Descriptor.WorkloadMethod.Name == "Grid" ? "whole cycle: grid" : "whole cycle: frozen baseline (grid)",
+                    nameof(BruteForceScalingBenchmarks) => "whole cycle: brute force",
                     "BroadPhaseBenchmarks" => "broad phase alone: " + c.Descriptor.WorkloadMethod.Name switch
                     {
                         "Grid" => "grid",

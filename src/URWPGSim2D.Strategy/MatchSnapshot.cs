@@ -98,4 +98,51 @@ public sealed class MatchSnapshot
 
     /// <summary>Sets whether the teams have changed sides (half time).</summary>
     internal void SetSidesSwapped(bool swapped) => SidesSwapped = swapped;
+
+    /// <summary>A snapshot of the same match that owns its values (fish, balls, variables), equal to this one now.</summary>
+    internal MatchSnapshot CreateCopy()
+    {
+        var copy = new MatchSnapshot(_fish.Length, _balls.Length, _obstacles, FieldLength, FieldWidth);
+        copy.CopyFrom(this);
+        return copy;
+    }
+
+    /// <summary>
+    /// Makes this snapshot (made by <see cref="CreateCopy"/>) equal to <paramref name="source"/>: a
+    /// strategy that reads it on its own thread is unaffected by the next cycle's changes to the source.
+    /// </summary>
+    internal void CopyFrom(MatchSnapshot source)
+    {
+        source._fish.CopyTo(_fish, 0);
+        source._balls.CopyTo(_balls, 0);
+        Cycle = source.Cycle;
+        _goals[0] = source._goals[0];
+        _goals[1] = source._goals[1];
+        ItemName = source.ItemName;
+        TotalCycles = source.TotalCycles;
+        SidesSwapped = source.SidesSwapped;
+        if (source.Variables.Count == 0)
+        {
+            Variables = EmptyVariables;
+            return;
+        }
+
+        var own = Variables as OrderedVariables ?? new OrderedVariables();
+        if (source.Variables is OrderedVariables ordered)
+        {
+            own.CopyFrom(ordered);
+        }
+        else
+        {
+            var fresh = new OrderedVariables();
+            foreach (var pair in source.Variables)
+            {
+                fresh.Set(pair.Key, pair.Value);
+            }
+
+            own = fresh;
+        }
+
+        Variables = own;
+    }
 }

@@ -1,26 +1,32 @@
 using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Collision.Shapes;
+using FrozenCircleConvex = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase.CircleConvex;
+using FrozenSat = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase.ConvexSat;
 
 namespace URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 
 /// <summary>
-/// Single-pair narrow-phase costs on overlapping pairs (the expensive path: MTV and action point
-/// included). Ratios are read against <see cref="CircleCircle"/> (the baseline) and the textbook
-/// SAT measured in the same run.
+/// Single-pair narrow-phase costs with the full result (MTV, normal, action point), each category
+/// against the frozen copy of the kernel as it was before issue 10 (<c>Baseline/NarrowPhase</c>),
+/// measured in the same run: the speed-up column is baseline median / current median. The random
+/// sets (1,000 pairs, fixed seed) report the cost per pair.
 /// </summary>
-[MemoryDiagnoser]
-[MedianColumn]
+[Config(typeof(BaselineConfig))]
 public class PairBenchmarks
 {
+    private const int SetSize = 1_000;
     private Circle _circleA, _circleB;
     private ConvexPolygon _boxA, _boxB, _octA, _octB, _polygon;
     private KDop8 _kdopA, _kdopB;
     private Aabb _aabbA, _aabbB;
     private Vector2[] _boxArrayA = [], _boxArrayB = [], _octArrayA = [], _octArrayB = [];
+    private ConvexPolygon[] _setA = [], _setB = [], _apartA = [], _apartB = [], _circlePolygons = [];
+    private Circle[] _circles = [];
 
-    /// <summary>Builds overlapping pairs of every benchmarked kind.</summary>
+    /// <summary>Builds overlapping pairs of every benchmarked kind and the random sets.</summary>
     [GlobalSetup]
     public void Setup()
     {
@@ -39,47 +45,211 @@ public class PairBenchmarks
         _kdopB = KDop8.FromPoints(_octArrayB);
         _aabbA = new Aabb(new Vector2(-50f, -30f), new Vector2(50f, 30f));
         _aabbB = new Aabb(new Vector2(20f, 10f), new Vector2(120f, 70f));
+        (_setA, _setB) = RandomPolygonPairs(new Random(10), overlapping: true);
+        (_apartA, _apartB) = RandomPolygonPairs(new Random(11), overlapping: false);
+        (_circles, _circlePolygons) = RandomCirclePolygonPairs(new Random(12));
     }
 
-    /// <summary>Baseline: circle against circle.</summary>
-    [Benchmark(Baseline = true)]
+    /// <summary>Circle against circle (no baseline: unchanged kernel, for scale).</summary>
+    [Benchmark]
+    [BenchmarkCategory("circle-circle")]
     public CollisionDetectionResult CircleCircle() => CollisionDetector.Detect(_circleA, _circleB);
 
     /// <summary>Two rotated boxes (4-gons), full SAT with MTV and action point.</summary>
     [Benchmark]
+    [BenchmarkCategory("box-box")]
     public CollisionDetectionResult BoxBox() => CollisionDetector.Detect(_boxA, _boxB);
 
-    /// <summary>The same two boxes through the frozen pre-vectorisation SAT (<see cref="ConvexSatBaseline"/>).</summary>
-    [Benchmark]
-    public CollisionDetectionResult BoxBoxBaseline() => ConvexSatBaseline.Detect(_boxA.View(), _boxB.View());
-
-    /// <summary>Two regular octagons as general polygons.</summary>
-    [Benchmark]
-    public CollisionDetectionResult OctagonOctagon() => CollisionDetector.Detect(_octA, _octB);
-
-    /// <summary>The same two octagons through the frozen pre-vectorisation SAT.</summary>
-    [Benchmark]
-    public CollisionDetectionResult OctagonOctagonBaseline() => ConvexSatBaseline.Detect(_octA.View(), _octB.View());
-
-    /// <summary>Circle against hexagon by Voronoi regions.</summary>
-    [Benchmark]
-    public CollisionDetectionResult CirclePolygon() => CollisionDetector.Detect(_circleA, _polygon);
-
-    /// <summary>8-DOP against 8-DOP by the fixed-axis slab test.</summary>
-    [Benchmark]
-    public CollisionDetectionResult KDop8KDop8() => CollisionDetector.Detect(_kdopA, _kdopB);
-
-    /// <summary>Axis-aligned box against box.</summary>
-    [Benchmark]
-    public CollisionDetectionResult AabbAabb() => CollisionDetector.Detect(_aabbA, _aabbB);
+    /// <summary>The same two boxes through the frozen SAT.</summary>
+    [Benchmark(Baseline = true)]
+    [BenchmarkCategory("box-box")]
+    public CollisionDetectionResult BoxBoxBaseline() => FrozenSat.Detect(_boxA.View(), _boxB.View());
 
     /// <summary>Textbook allocating SAT on the same two boxes (MTV only, no action point).</summary>
     [Benchmark]
+    [BenchmarkCategory("box-box")]
     public bool TextbookBoxBox() => TextbookSat.Test(_boxArrayA, _boxArrayB, out _);
+
+    /// <summary>Two regular octagons as general polygons.</summary>
+    [Benchmark]
+    [BenchmarkCategory("octagon-octagon")]
+    public CollisionDetectionResult OctagonOctagon() => CollisionDetector.Detect(_octA, _octB);
+
+    /// <summary>The same two octagons through the frozen SAT.</summary>
+    [Benchmark(Baseline = true)]
+    [BenchmarkCategory("octagon-octagon")]
+    public CollisionDetectionResult OctagonOctagonBaseline() => FrozenSat.Detect(_octA.View(), _octB.View());
 
     /// <summary>Textbook allocating SAT on the same two octagons.</summary>
     [Benchmark]
+    [BenchmarkCategory("octagon-octagon")]
     public bool TextbookOctagonOctagon() => TextbookSat.Test(_octArrayA, _octArrayB, out _);
+
+    /// <summary>Circle against hexagon by Voronoi regions.</summary>
+    [Benchmark]
+    [BenchmarkCategory("circle-hexagon")]
+    public CollisionDetectionResult CirclePolygon() => CollisionDetector.Detect(_circleA, _polygon);
+
+    /// <summary>The same circle and hexagon through the frozen kernel.</summary>
+    [Benchmark(Baseline = true)]
+    [BenchmarkCategory("circle-hexagon")]
+    public CollisionDetectionResult CirclePolygonBaseline() => FrozenCircleConvex.Detect(_circleA, _polygon.View());
+
+    /// <summary>1,000 random overlapping convex polygon pairs (3–8 vertices), per pair.</summary>
+    [Benchmark(OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random polygon pairs, overlapping")]
+    public float RandomPolygons()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _setA.Length; i++)
+        {
+            sum += CollisionDetector.Detect(_setA[i], _setB[i]).MinimumTranslationVector.X;
+        }
+
+        return sum;
+    }
+
+    /// <summary>The same 1,000 pairs through the frozen SAT.</summary>
+    [Benchmark(Baseline = true, OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random polygon pairs, overlapping")]
+    public float RandomPolygonsBaseline()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _setA.Length; i++)
+        {
+            sum += FrozenSat.Detect(_setA[i].View(), _setB[i].View()).MinimumTranslationVector.X;
+        }
+
+        return sum;
+    }
+
+    /// <summary>1,000 random separated convex polygon pairs whose bounding circles overlap, per pair.</summary>
+    [Benchmark(OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random polygon pairs, separated")]
+    public float SeparatedPolygons()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _apartA.Length; i++)
+        {
+            sum += CollisionDetector.Detect(_apartA[i], _apartB[i]).Intersect ? 1f : 0f;
+        }
+
+        return sum;
+    }
+
+    /// <summary>The same separated pairs through the frozen SAT.</summary>
+    [Benchmark(Baseline = true, OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random polygon pairs, separated")]
+    public float SeparatedPolygonsBaseline()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _apartA.Length; i++)
+        {
+            sum += FrozenSat.Detect(_apartA[i].View(), _apartB[i].View()).Intersect ? 1f : 0f;
+        }
+
+        return sum;
+    }
+
+    /// <summary>1,000 random circle–polygon pairs (half overlapping), per pair.</summary>
+    [Benchmark(OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random circle-polygon pairs")]
+    public float RandomCirclePolygons()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _circles.Length; i++)
+        {
+            sum += CollisionDetector.Detect(_circles[i], _circlePolygons[i]).MinimumTranslationVector.X;
+        }
+
+        return sum;
+    }
+
+    /// <summary>The same 1,000 pairs through the frozen kernel.</summary>
+    [Benchmark(Baseline = true, OperationsPerInvoke = SetSize)]
+    [BenchmarkCategory("random circle-polygon pairs")]
+    public float RandomCirclePolygonsBaseline()
+    {
+        float sum = 0f;
+        for (int i = 0; i < _circles.Length; i++)
+        {
+            sum += FrozenCircleConvex.Detect(_circles[i], _circlePolygons[i].View()).MinimumTranslationVector.X;
+        }
+
+        return sum;
+    }
+
+    /// <summary>8-DOP against 8-DOP by the fixed-axis slab test (unchanged kernel, for scale).</summary>
+    [Benchmark]
+    [BenchmarkCategory("other kinds")]
+    public CollisionDetectionResult KDop8KDop8() => CollisionDetector.Detect(_kdopA, _kdopB);
+
+    /// <summary>Axis-aligned box against box (unchanged kernel, for scale).</summary>
+    [Benchmark]
+    [BenchmarkCategory("other kinds")]
+    public CollisionDetectionResult AabbAabb() => CollisionDetector.Detect(_aabbA, _aabbB);
+
+    /// <summary>
+    /// Random convex polygons of 3–8 vertices (points at sorted, jittered angles on a circle of
+    /// radius 30–80 mm), in pairs that overlap, or that are separated with overlapping bounding circles.
+    /// </summary>
+    internal static (ConvexPolygon[] A, ConvexPolygon[] B) RandomPolygonPairs(Random random, bool overlapping)
+    {
+        var a = new ConvexPolygon[SetSize];
+        var b = new ConvexPolygon[SetSize];
+        for (int i = 0; i < SetSize;)
+        {
+            float ra = 30f + (50f * random.NextSingle()), rb = 30f + (50f * random.NextSingle());
+            var pa = RandomPolygon(random, Vector2.Zero, ra);
+            float distance = (ra + rb) * (overlapping ? 0.3f + (0.6f * random.NextSingle()) : 0.85f + (0.15f * random.NextSingle()));
+            float angle = 2f * MathF.PI * random.NextSingle();
+            var pb = RandomPolygon(random, distance * new Vector2(MathF.Cos(angle), MathF.Sin(angle)), rb);
+            if (CollisionDetector.Detect(pa, pb).Intersect == overlapping)
+            {
+                a[i] = pa;
+                b[i++] = pb;
+            }
+        }
+
+        return (a, b);
+    }
+
+    /// <summary>Random circles (radius 20–70 mm) against random polygons, half of them overlapping.</summary>
+    internal static (Circle[] Circles, ConvexPolygon[] Polygons) RandomCirclePolygonPairs(Random random)
+    {
+        var circles = new Circle[SetSize];
+        var polygons = new ConvexPolygon[SetSize];
+        for (int i = 0; i < SetSize;)
+        {
+            float rp = 30f + (50f * random.NextSingle()), rc = 20f + (50f * random.NextSingle());
+            var polygon = RandomPolygon(random, Vector2.Zero, rp);
+            float distance = (rp + rc) * (0.2f + (0.9f * random.NextSingle()));
+            float angle = 2f * MathF.PI * random.NextSingle();
+            var circle = new Circle(distance * new Vector2(MathF.Cos(angle), MathF.Sin(angle)), rc);
+            if (CollisionDetector.Detect(circle, polygon).Intersect == (i % 2 == 0))
+            {
+                circles[i] = circle;
+                polygons[i++] = polygon;
+            }
+        }
+
+        return (circles, polygons);
+    }
+
+    private static ConvexPolygon RandomPolygon(Random random, Vector2 center, float radius)
+    {
+        int count = random.Next(3, 9);
+        Span<Vector2> points = stackalloc Vector2[count];
+        float phase = 2f * MathF.PI * random.NextSingle();
+        float step = 2f * MathF.PI / count;
+        for (int k = 0; k < count; k++)
+        {
+            float angle = phase + (k * step) + (0.3f * step * ((2f * random.NextSingle()) - 1f));
+            points[k] = center + (radius * new Vector2(MathF.Cos(angle), MathF.Sin(angle)));
+        }
+
+        return new ConvexPolygon(points);
+    }
 
     private static Vector2[] Box(Vector2 center, float length, float width, float angle)
     {

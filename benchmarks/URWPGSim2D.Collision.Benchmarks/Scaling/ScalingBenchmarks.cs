@@ -1,5 +1,6 @@
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
+using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
@@ -7,41 +8,52 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 
 /// <summary>
 /// One whole cycle of a crowd scene (<see cref="CrowdScenario"/>: fish and balls at the default
-/// match's density, the pool growing with the count, fish on fixed random decisions) for 100,
-/// 1,000 and 10,000 fish and balls, with the stepper's broad phase a uniform grid or brute force
-/// (every pair of boxes tested). Both give the same match (tested); only the cost differs. The
-/// scene is played 20 cycles before measuring (the starting overlaps are resolved in the first
-/// ones); each call plays the next cycle.
+/// match's density, the pool growing with the count, fish on fixed random decisions) for 100 to
+/// 30,000 fish and balls, the stepper's broad phase a uniform grid, against the frozen baseline
+/// (<see cref="BaselineMatch"/>: the same scene played by the motion stage as it was before issue
+/// 10) measured in the same run. The scene is played 20 cycles before measuring (the starting
+/// overlaps are resolved in the first ones); each call plays the next cycle. Brute force, the
+/// broad phase's reference, is in <see cref="BruteForceScalingBenchmarks"/>.
 /// </summary>
-[MemoryDiagnoser]
+[Config(typeof(BaselineConfig))]
 public class ScalingBenchmarks
 {
+    private const int WarmCycles = 20;
     private Match _grid = null!;
-    private Match _brute = null!;
+    private BaselineMatch _baseline = null!;
 
     /// <summary>Fish and balls in the scene.</summary>
-    [Params(100, 1_000, 10_000)]
+    [Params(100, 300, 1_000, 3_000, 10_000, 30_000)]
     public int Objects { get; set; }
 
-    /// <summary>Builds the scene twice (grid and brute force) and plays 20 cycles of each.</summary>
-    [GlobalSetup]
+    /// <summary>Builds the scene and plays 20 cycles.</summary>
+    [GlobalSetup(Target = nameof(Grid))]
     public void Setup()
     {
-        var scene = CrowdScenario.Create(Objects);
-        _grid = MatchBuilder.Build(scene, broadPhase: BroadPhaseKind.UniformGrid);
-        _brute = MatchBuilder.Build(scene, broadPhase: BroadPhaseKind.BruteForce);
-        for (int i = 0; i < 20; i++)
+        _grid = MatchBuilder.Build(CrowdScenario.Create(Objects));
+        for (int i = 0; i < WarmCycles; i++)
         {
             _grid.Step();
-            _brute.Step();
+        }
+    }
+
+    /// <summary>Builds the scene for the frozen motion stage and plays 20 cycles.</summary>
+    [GlobalSetup(Target = nameof(Baseline))]
+    public void SetupBaseline()
+    {
+        var scene = CrowdScenario.Create(Objects);
+        _baseline = new BaselineMatch(MatchBuilder.Build(scene), scene.Noise, scene.Seed);
+        for (int i = 0; i < WarmCycles; i++)
+        {
+            _baseline.Step();
         }
     }
 
     /// <summary>One cycle, uniform grid broad phase.</summary>
-    [Benchmark(Baseline = true)]
+    [Benchmark]
     public void Grid() => _grid.Step();
 
-    /// <summary>One cycle, brute-force broad phase.</summary>
-    [Benchmark]
-    public void BruteForce() => _brute.Step();
+    /// <summary>One cycle of the same scene with the frozen motion stage.</summary>
+    [Benchmark(Baseline = true)]
+    public void Baseline() => _baseline.Step();
 }

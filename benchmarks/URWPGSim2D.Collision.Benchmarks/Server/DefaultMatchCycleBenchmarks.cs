@@ -1,4 +1,6 @@
 using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
+using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
@@ -6,33 +8,80 @@ namespace URWPGSim2D.Collision.Benchmarks.Server;
 
 /// <summary>
 /// One cycle of the embedded default match (4 fish, 9 balls, 4 obstacles, 4 goal blocks, walls),
-/// 500 cycles into the match so that fish and balls are in play. <see cref="Detection"/> is the
-/// detection alone: broad phase and every candidate pair's exact test at the current state (no
-/// motion, no response). <see cref="Cycle"/> is the whole 100 ms cycle: strategies, locomotion,
-/// sub-stepped motion with times of first contact and responses, rules. Each call of
-/// <see cref="Cycle"/> plays the next cycle of the same match.
+/// 500 cycles into the match so that fish and balls are in play, against the frozen baseline
+/// (<see cref="BaselineMatch"/>: the same match played by the motion stage as it was before issue
+/// 10) measured in the same run. <see cref="Detection"/> is the detection alone: broad phase and
+/// every candidate pair's exact test at the state of cycle 500 (no motion, no response).
+/// <see cref="Cycle"/> is the whole 100 ms cycle: strategies, locomotion, sub-stepped motion with
+/// times of first contact and responses, rules, reported per cycle over cycles 500 to 1,499: each
+/// iteration rebuilds the match, plays it to cycle 500 (not measured) and then plays those 1,000
+/// cycles, so every iteration measures the same work (the cost of a cycle depends much on the
+/// phase of the match).
 /// </summary>
-[MemoryDiagnoser]
+[Config(typeof(BaselineConfig))]
 public class DefaultMatchCycleBenchmarks
 {
+    private const int WarmCycles = 500;
+    private const int MeasuredCycles = 1_000;
     private Match _match = null!;
+    private BaselineMatch _baseline = null!;
 
     /// <summary>Builds the default match and plays its first 500 cycles.</summary>
-    [GlobalSetup]
+    [GlobalSetup(Target = nameof(Detection))]
+    [IterationSetup(Target = nameof(Cycle))]
     public void Setup()
     {
         _match = MatchBuilder.Build(DefaultScenario.Load());
-        for (int i = 0; i < 500; i++)
+        for (int i = 0; i < WarmCycles; i++)
         {
             _match.Step();
         }
     }
 
+    /// <summary>Builds the default match for the frozen motion stage and plays its first 500 cycles.</summary>
+    [GlobalSetup(Target = nameof(DetectionBaseline))]
+    [IterationSetup(Target = nameof(CycleBaseline))]
+    public void SetupBaseline()
+    {
+        var scenario = DefaultScenario.Load();
+        _baseline = new BaselineMatch(MatchBuilder.Build(scenario), scenario.Noise, scenario.Seed);
+        for (int i = 0; i < WarmCycles; i++)
+        {
+            _baseline.Step();
+        }
+    }
+
     /// <summary>Broad phase plus the exact test of every candidate pair; returns the deepest overlap.</summary>
     [Benchmark]
+    [BenchmarkCategory("detection")]
     public float Detection() => _match.Stepper.MeasureOverlap();
 
-    /// <summary>One whole cycle of the match.</summary>
-    [Benchmark]
-    public void Cycle() => _match.Step();
+    /// <summary>The same through the frozen stepper.</summary>
+    [Benchmark(Baseline = true)]
+    [BenchmarkCategory("detection")]
+    public float DetectionBaseline() => _baseline.Stepper.MeasureOverlap();
+
+    /// <summary>Cycles 500 to 1,499 of the match, per cycle.</summary>
+    [Benchmark(OperationsPerInvoke = MeasuredCycles)]
+    [InvocationCount(1, 1)]
+    [BenchmarkCategory("cycle")]
+    public void Cycle()
+    {
+        for (int i = 0; i < MeasuredCycles; i++)
+        {
+            _match.Step();
+        }
+    }
+
+    /// <summary>The same cycles of the same match with the frozen motion stage, per cycle.</summary>
+    [Benchmark(Baseline = true, OperationsPerInvoke = MeasuredCycles)]
+    [InvocationCount(1, 1)]
+    [BenchmarkCategory("cycle")]
+    public void CycleBaseline()
+    {
+        for (int i = 0; i < MeasuredCycles; i++)
+        {
+            _baseline.Step();
+        }
+    }
 }

@@ -68,7 +68,9 @@ public sealed partial class Stepper
 
     // Up to SettlePasses passes over the pairs of the bodies that took part in contacts this step:
     // overlaps go to the handler and the bodies that moved are checked again; returns the deepest
-    // overlap left among them.
+    // overlap left among them. When the first pass finds nothing to resolve (the usual case: the
+    // events left every pair apart), nothing moved and its depths are the answer: the pairs are not
+    // tested a second time.
     private float SettleTouched()
     {
         BodySet current = _touched;
@@ -78,6 +80,7 @@ public sealed partial class Stepper
             next.Clear();
             _changed.Clear();
             CollectPairsOf(current);
+            float quiet = 0f;
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
@@ -86,6 +89,10 @@ public sealed partial class Stepper
                 {
                     _handler!.OnContact(this, new Contact(pair.A, pair.B, PairTest.Detect(a, b), Time));
                     Mark(next, pair);
+                }
+                else
+                {
+                    quiet = MathF.Max(quiet, hit.Depth);
                 }
             }
 
@@ -96,6 +103,11 @@ public sealed partial class Stepper
 
             if (next.Count == 0)
             {
+                if (pass == 0)
+                {
+                    return quiet;
+                }
+
                 break;
             }
 

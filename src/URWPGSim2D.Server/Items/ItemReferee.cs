@@ -120,21 +120,6 @@ internal abstract class ItemReferee : ITraceItemInfo
         }
     }
 
-    /// <summary>The scenario's <paramref name="n"/>-th fish (in fish order) of team <paramref name="team"/>: its start pose.</summary>
-    protected FishDefinition NthOfTeam(int team, int n)
-    {
-        int left = n;
-        foreach (var f in Scenario.Fish)
-        {
-            if (f.Team == team && left-- == 0)
-            {
-                return f;
-            }
-        }
-
-        throw new InvalidOperationException($"team {team} has no fish {n}");
-    }
-
     /// <summary>Prepares the bodies for cycle 1 (parks frozen fish) and fills <see cref="Variables"/>.</summary>
     public void Start(World world)
     {

@@ -70,8 +70,18 @@ internal sealed class IsolatedStrategyRunner
             _warm = true;
         }
 
+        // The strategy reads its own copy: a call given up on may go on reading while the next
+        // cycles rewrite the match's snapshot and the referee's variables.
         decisions.CopyTo(_work);
-        _snapshot = snapshot;
+        if (_snapshot is null)
+        {
+            _snapshot = snapshot.CreateCopy();
+        }
+        else
+        {
+            _snapshot.CopyFrom(snapshot);
+        }
+
         _fish = fish;
         _error = null;
         _pending = true;

@@ -87,7 +87,7 @@ internal sealed class BallGrabReferee : ItemReferee
             var f = world.Fish[i];
             int other = 1 - f.Team;
             int k = next[f.Team]++;
-            var pose = NthOfTeam(other, k);
+            var pose = StartOf(other, k);
             Placement.Place(f, pose.Position, pose.Heading);
         }
 

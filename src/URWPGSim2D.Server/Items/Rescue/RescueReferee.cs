@@ -116,7 +116,7 @@ internal sealed class RescueReferee : ItemReferee
             var f = world.Fish[i];
             int k = next[f.Team]++;
             int role = f.Team == Rescuer ? 0 : 1;
-            var start = NthOfTeam(role, k);
+            var start = StartOf(role, k);
             if (role == 1 && k >= 1)
             {
                 Placement.Park(f, start.Position, start.Heading);

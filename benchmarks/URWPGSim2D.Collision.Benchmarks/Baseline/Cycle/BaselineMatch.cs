@@ -1,0 +1,137 @@
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Strategies;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
+
+/// <summary>
+/// The frozen baseline of the competition cycle: the server's <c>Match.Step</c> as of the start of
+/// issue 10's work, playing its motion stage through the frozen copies in this folder (the
+/// library's stepper in <c>Baseline/Motion</c>, the server's contact handling in
+/// <c>Baseline/Cycle</c>). Strategies, locomotion and rules are the server's own (unchanged by the
+/// speed work). Benchmarks report the current cycle as a ratio to this one, measured in the same run.
+/// </summary>
+internal sealed class BaselineMatch
+{
+    private readonly SeededRandom? _motionNoise;
+    private readonly SeededRandom? _viewNoise;
+
+    /// <summary>
+    /// Plays, with the frozen motion stage, the match <paramref name="built"/> was built for (its
+    /// world, strategies and rules; its own motion stage is never used).
+    /// </summary>
+    /// <param name="built">A match fresh from the server's match builder.</param>
+    /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
+    /// <param name="seed">Seed of the noise generators.</param>
+    /// <param name="broadPhase">The frozen stepper's broad phase (a <see cref="UniformGrid"/> when null).</param>
+    public BaselineMatch(Match built, bool noise, ulong seed, IBroadPhase? broadPhase = null)
+    {
+        World = built.World;
+        Strategies = built.Strategies;
+        Referee = built.Referee;
+        Snapshot = new MatchSnapshot(World.Fish.Length, World.Balls.Length, World.Obstacles, World.Field.Length, World.Field.Width);
+        Stepper = new CycleMotion(World, Contacts, broadPhase);
+        if (noise)
+        {
+            _motionNoise = new SeededRandom(seed);
+            _viewNoise = new SeededRandom(seed ^ 0x5DEECE66DUL);
+        }
+    }
+
+    /// <summary>The pool and its bodies.</summary>
+    public World World { get; }
+
+    /// <summary>The strategies.</summary>
+    public StrategyHost Strategies { get; }
+
+    /// <summary>What strategies see.</summary>
+    public MatchSnapshot Snapshot { get; }
+
+    /// <summary>The contacts of the last cycle and the match's counts.</summary>
+    public ContactLog Contacts { get; } = new();
+
+    /// <summary>Motion interpolation and contact handling.</summary>
+    public CycleMotion Stepper { get; }
+
+    /// <summary>The competition item's rules, or null for the plain goal rules.</summary>
+    public URWPGSim2D.Server.Items.ItemReferee? Referee { get; }
+
+    /// <summary>Whether the item's match is over (never for the plain goal rules: they play every cycle asked for).</summary>
+    public bool IsOver => Referee?.IsOver ?? false;
+
+    /// <summary>Every goal so far (plain goal rules only).</summary>
+    public List<GoalEvent> Goals { get; } = new(64);
+
+    /// <summary>Totals for the summary.</summary>
+    public MatchStatistics Statistics { get; } = new();
+
+    /// <summary>Plays one cycle.</summary>
+    public void Step()
+    {
+        FillSnapshot();
+        Strategies.Decide(Snapshot, World.Fish);
+        Referee?.AfterDecisions(World);
+        Contacts.BeginCycle();
+        Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
+        Stepper.Run();
+        World.Cycle++;
+        bool moved = Referee is null ? Rules.Apply(World, Goals) > 0 : Referee.Judge(World, Contacts.Cycle);
+        if (moved)
+        {
+            Stepper.Settle();
+        }
+
+        Locomotion.Finish(World);
+        Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+    }
+
+    private void FillSnapshot()
+    {
+        if (Referee is { } item)
+        {
+            var scores = item.Scores;
+            Snapshot.SetHeader(World.Cycle, scores[0], scores.Length > 1 ? scores[1] : 0);
+            Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
+            Snapshot.SetSidesSwapped(item.SidesSwapped);
+        }
+        else
+        {
+            Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+        }
+
+        var fish = Snapshot.FishBuffer;
+        for (int i = 0; i < fish.Length; i++)
+        {
+            var f = World.Fish[i];
+            Vector2 position = f.Position;
+            float heading = f.Heading;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+                heading = Angle.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
+            }
+
+            fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)
+            {
+                Width = f.Size.Width, Joint1 = f.Joint1, Joint2 = f.Joint2, Joint3 = f.Joint3,
+                TailLength1 = f.Size.Joint1, TailLength2 = f.Size.Joint2, TailLength3 = f.Size.Joint3,
+            };
+        }
+
+        var balls = Snapshot.BallBuffer;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            var b = World.Balls[i];
+            Vector2 position = b.Position;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+            }
+
+            balls[i] = new BallView(i, position, b.Velocity, b.Radius);
+        }
+    }
+}

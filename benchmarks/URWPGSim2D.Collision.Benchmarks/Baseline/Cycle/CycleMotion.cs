@@ -1,0 +1,51 @@
+using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
+
+/// <summary>
+/// The motion stage of a cycle: the world's bodies move through the 100 ms cycle in the collision
+/// library's <see cref="Stepper"/> (pseudo-continuous detection: every contact at its time of
+/// first contact, in time order), with the server's contact response plugged in
+/// (<see cref="ContactHandler"/>). See docs/motion.md.
+/// </summary>
+internal sealed class CycleMotion
+{
+    private readonly MotionBodies _bodies;
+    private readonly ContactHandler _handler;
+
+    public CycleMotion(World world, ContactLog log, IBroadPhase? broadPhase = null)
+    {
+        _bodies = new MotionBodies(world, broadPhase);
+        _handler = new ContactHandler(world, log, _bodies);
+    }
+
+    /// <summary>Distinct sample times of the last cycle.</summary>
+    public int SubSteps => _bodies.Stepper.SubSteps;
+
+    /// <summary>Contact events (times of first contact) of the last cycle.</summary>
+    public int Events => _bodies.Stepper.Events;
+
+    /// <summary>Deepest overlap of any pair (walls included) at the end of the last cycle (or settling), mm.</summary>
+    public float LeftoverOverlap => _bodies.Stepper.LeftoverOverlap;
+
+    /// <summary>Moves every body through one cycle, resolving contacts on the way.</summary>
+    public void Run()
+    {
+        _bodies.PushAll();
+        _bodies.Stepper.Step(PhysicsConstants.CycleSeconds, _handler);
+        _bodies.PullAll();
+    }
+
+    /// <summary>Resolves overlaps left by a jump (balls put back at their start after a goal), without motion.</summary>
+    public void Settle()
+    {
+        _bodies.PushAll();
+        _bodies.Stepper.Settle(_handler);
+        _bodies.PullAll();
+    }
+
+    /// <summary>Deepest overlap among all pairs now (no motion), mm.</summary>
+    public float MeasureOverlap() => _bodies.Stepper.MeasureOverlap();
+}

@@ -1,0 +1,488 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <summary>
+/// One body of a <see cref="Stepper"/>: its shape, its pose now, and its motion within the step.
+/// A moving body moves linearly in time from its last committed state (base pose at base time):
+/// P = P₀ + v·Δt, θ = θ₀ + ω·Δt, so it can be placed at any time of the step without touching the
+/// others. A fish's collision model is rebuilt only when its joints change; otherwise it stays
+/// where it was built and <see cref="Frame"/> carries partners into its frame. A polygon's world
+/// outline is recomputed, in place, only when a test needs it at a new pose.
+/// </summary>
+internal sealed class Body
+{
+    // Reference half-widths of tail segments 1 and 2 at their start (fractions of their lengths),
+    // and how far the caudal fin reaches from tail segment 3's axis, mm.
+    private const float TailStartHalfWidth1 = 0.266112f;
+    private const float TailStartHalfWidth2 = 0.231336f;
+    private const float CaudalReach = 50f;
+
+    private readonly Vector2 _bodyGroupLocal;
+    private readonly float _bodyGroupRadius;
+    private RigidFrame _frame;
+    private bool _frameValid;
+    private Disc _bodyDisc;
+    private Disc _tailDisc;
+    private bool _groupsValid;
+    private bool _outlineValid;
+
+    private Body(BodyKind kind, int id)
+    {
+        Kind = kind;
+        Id = id;
+    }
+
+    private Body(int id, FishModel model)
+        : this(BodyKind.Fish, id)
+    {
+        FishPose pose = model.Pose;
+        Position = pose.Position;
+        Heading = Angle.Wrap(pose.Heading);
+        Joint1 = pose.Joint1;
+        Joint2 = pose.Joint2;
+        Joint3 = pose.Joint3;
+        Model = model;
+
+        // The body group (body and pectoral fins) does not depend on the joints: it is rigid with the body.
+        Circle group = model.BodyGroup;
+        var (sin, cos) = MathF.SinCos(pose.Heading);
+        Vector2 offset = group.Center - pose.Position;
+        _bodyGroupLocal = new Vector2((offset.X * cos) + (offset.Y * sin), (-offset.X * sin) + (offset.Y * cos));
+        _bodyGroupRadius = group.Radius;
+        FishSize size = model.Size;
+        Thickness = MathF.Min(2f * 0.089964f * size.Joint3, size.Width);
+        Invalidate();
+    }
+
+    /// <summary>The body's number in its stepper.</summary>
+    public int Id { get; }
+
+    /// <summary>What the body is.</summary>
+    public BodyKind Kind { get; }
+
+    /// <summary>Whether the body moves (circle, polygon or fish).</summary>
+    public bool IsMoving => Kind <= BodyKind.Fish;
+
+    /// <summary>Index among the stepper's movers, or among its static bodies.</summary>
+    public int Slot { get; set; }
+
+    /// <summary>A moving circle's radius, mm.</summary>
+    public float Radius { get; private init; }
+
+    /// <summary>A static body's shape.</summary>
+    public Shape Shape { get; private init; }
+
+    /// <summary>A static body's bounds, or the walls' pool bounds.</summary>
+    public Aabb Bounds { get; private init; }
+
+    /// <summary>The pool whose walls this body is.</summary>
+    public Field? Field { get; private init; }
+
+    /// <summary>A moving polygon's vertices and normals about its origin, and its reach from the origin.</summary>
+    public Vector2[] LocalVertices { get; private init; } = [];
+
+    /// <summary>Outward edge normals of <see cref="LocalVertices"/>.</summary>
+    public Vector2[] LocalNormals { get; private init; } = [];
+
+    /// <summary>A moving polygon's outline at its current pose (valid after <see cref="Outline"/>).</summary>
+    public Vector2[] WorldVertices { get; private init; } = [];
+
+    /// <summary>Outward edge normals of <see cref="WorldVertices"/>.</summary>
+    public Vector2[] WorldNormals { get; private init; } = [];
+
+    /// <summary>Farthest point of a polygon from its origin, mm.</summary>
+    public float Reach { get; private set; }
+
+    /// <summary>A fish's collision model (at the pose it was last built for).</summary>
+    public FishModel? Model { get; }
+
+    /// <summary>Thinnest width, mm (a ball's diameter, the end of a fish's tail, a polygon's narrowest width; walls: infinite).</summary>
+    public float Thickness { get; private init; }
+
+    /// <summary>Position now, mm.</summary>
+    public Vector2 Position;
+
+    /// <summary>Heading now, rad, wrapped to [−π, π).</summary>
+    public float Heading;
+
+    /// <summary>A fish's joint angles, rad (fixed within a step).</summary>
+    public float Joint1, Joint2, Joint3;
+
+    /// <summary>Velocity, mm/s.</summary>
+    public Vector2 Velocity;
+
+    /// <summary>Angular velocity, rad/s (positive turns from +X toward +Z).</summary>
+    public float AngularVelocity;
+
+    /// <summary>Pose at the last committed time.</summary>
+    public Vector2 BasePosition;
+
+    /// <summary>Heading at the last committed time.</summary>
+    public float BaseHeading;
+
+    /// <summary>The last committed time (fraction of the step, 0 … 1).</summary>
+    public double BaseTime;
+
+    /// <summary>Pose at the end of the previous step (a rejected move goes back there).</summary>
+    public Vector2 StartPosition;
+
+    /// <summary>Heading at the end of the previous step.</summary>
+    public float StartHeading;
+
+    /// <summary>A fish's joints at the end of the previous step.</summary>
+    public float StartJoint1, StartJoint2, StartJoint3;
+
+    /// <summary>Contact events of the body in the current step.</summary>
+    public int Events;
+
+    /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
+    public bool Collides = true;
+
+    /// <summary>A moving circle.</summary>
+    public static Body Circle(int id, float radius, Vector2 position) =>
+        new(BodyKind.Circle, id) { Radius = radius, Position = position, Thickness = 2f * radius };
+
+    /// <summary>A moving polygon given about its origin, placed at a pose.</summary>
+    public static Body Polygon(int id, in ConvexPolygon local, Vector2 position, float heading)
+    {
+        var v = local.Vertices.ToArray();
+        var n = local.Normals.ToArray();
+        float reach = 0f;
+        foreach (Vector2 p in v)
+        {
+            reach = MathF.Max(reach, p.Length());
+        }
+
+        var body = new Body(BodyKind.Polygon, id)
+        {
+            LocalVertices = v,
+            LocalNormals = n,
+            WorldVertices = new Vector2[v.Length],
+            WorldNormals = new Vector2[v.Length],
+            Position = position,
+            Heading = Angle.Wrap(heading),
+            Thickness = Width(v, n),
+        };
+        body.Reach = reach;
+        return body;
+    }
+
+    /// <summary>A moving fish.</summary>
+    public static Body Fish(int id, FishSize size, in FishPose pose) => new(id, new FishModel(size, pose));
+
+    /// <summary>A moving fish around an existing model (at the model's pose).</summary>
+    public static Body Fish(int id, FishModel model) => new(id, model);
+
+    /// <summary>A static shape.</summary>
+    public static Body Static(int id, in Shape shape)
+    {
+        Circle c = shape.BoundingCircle;
+        Aabb bounds = shape.Kind switch
+        {
+            ShapeKind.Aabb => shape.AsAabb(),
+            ShapeKind.Circle => new Aabb(c.Center - new Vector2(c.Radius), c.Center + new Vector2(c.Radius)),
+            ShapeKind.Segment => new Aabb(Vector2.Min(shape.AsSegment().A, shape.AsSegment().B), Vector2.Max(shape.AsSegment().A, shape.AsSegment().B)),
+            ShapeKind.KDop8 => BoxOf(shape.AsKDop8().Vertices),
+            _ => BoxOf(shape.AsPolygon().Vertices),
+        };
+        float thickness = shape.Kind switch
+        {
+            ShapeKind.Circle => 2f * c.Radius,
+            ShapeKind.Aabb => MathF.Min(bounds.Max.X - bounds.Min.X, bounds.Max.Y - bounds.Min.Y),
+            ShapeKind.Segment => 0f,
+            ShapeKind.KDop8 => KDopWidth(shape.AsKDop8()),
+            _ => Width(shape.AsPolygon().Vertices, shape.AsPolygon().Normals),
+        };
+        return new Body(BodyKind.Static, id) { Shape = shape, Bounds = bounds, Thickness = thickness, Position = c.Center };
+    }
+
+    /// <summary>The walls of a pool.</summary>
+    public static Body Walls(int id, Field field) =>
+        new(BodyKind.Walls, id) { Field = field, Bounds = field.Bounds, Thickness = float.PositiveInfinity };
+
+    /// <summary>Places the body at step time <paramref name="time"/> along its motion (a step lasting <paramref name="seconds"/>).</summary>
+    public void MoveTo(double time, float seconds)
+    {
+        float span = (float)((time - BaseTime) * seconds);
+        Vector2 position = BasePosition + (Velocity * span);
+        float heading = Kind == BodyKind.Circle ? Heading : Angle.Wrap(BaseHeading + (AngularVelocity * span));
+        if (position == Position && heading == Heading)
+        {
+            return;
+        }
+
+        Position = position;
+        Heading = heading;
+        Invalidate();
+    }
+
+    /// <summary>Commits the current pose as the body's state at <paramref name="time"/>.</summary>
+    public void Rebase(double time)
+    {
+        BasePosition = Position;
+        BaseHeading = Heading;
+        BaseTime = time;
+    }
+
+    /// <summary>Marks the pose as changed: derived outlines, frames and bounds are recomputed when next needed.</summary>
+    public void Invalidate()
+    {
+        ModelStale = Kind == BodyKind.Fish;
+        _frameValid = false;
+        _groupsValid = false;
+        _outlineValid = false;
+    }
+
+    /// <summary>A polygon's outline at its current pose (vertices and normals in <see cref="WorldVertices"/>, <see cref="WorldNormals"/>).</summary>
+    public void Outline()
+    {
+        if (_outlineValid)
+        {
+            return;
+        }
+
+        var (sin, cos) = MathF.SinCos(Heading);
+        for (int i = 0; i < LocalVertices.Length; i++)
+        {
+            Vector2 v = LocalVertices[i], n = LocalNormals[i];
+            WorldVertices[i] = Position + new Vector2((v.X * cos) - (v.Y * sin), (v.X * sin) + (v.Y * cos));
+            WorldNormals[i] = new Vector2((n.X * cos) - (n.Y * sin), (n.X * sin) + (n.Y * cos));
+        }
+
+        _outlineValid = true;
+    }
+
+    /// <summary>Whether <see cref="Model"/> lags behind the pose (it is rebuilt only when a test needs it).</summary>
+    public bool ModelStale { get; private set; }
+
+    /// <summary>The fish's model exactly at the current pose (rebuilt first if it lags behind).</summary>
+    public FishModel PosedModel
+    {
+        get
+        {
+            if (ModelStale && !(JointsCurrent && Frame.IsIdentity))
+            {
+                SyncModelAt(Position, Heading);
+            }
+
+            return Model!;
+        }
+    }
+
+    /// <summary>The fish's model with the current joints, rebuilt only when they changed; related to the fish by <see cref="Frame"/>.</summary>
+    public FishModel RigidModel
+    {
+        get
+        {
+            if (!JointsCurrent)
+            {
+                SyncModelAt(Position, Heading);
+            }
+
+            return Model!;
+        }
+    }
+
+    /// <summary>The rigid motion from the model's pose to the fish's current position and heading.</summary>
+    public RigidFrame Frame
+    {
+        get
+        {
+            if (!_frameValid)
+            {
+                FishPose posed = Model!.Pose;
+                _frame = new RigidFrame(posed.Position, posed.Heading, Position, Heading);
+                _frameValid = true;
+            }
+
+            return _frame;
+        }
+    }
+
+    /// <summary>Whether the model was built with the current joint angles.</summary>
+    public bool JointsCurrent
+    {
+        get
+        {
+            FishPose posed = Model!.Pose;
+            return posed.Joint1 == Joint1 && posed.Joint2 == Joint2 && posed.Joint3 == Joint3;
+        }
+    }
+
+    /// <summary>Rebuilds the fish's model with the current joints at a given position and heading (for example in another fish's model frame).</summary>
+    public void SyncModelAt(Vector2 position, float heading)
+    {
+        Model!.SetPose(new FishPose(position, heading, Joint1, Joint2, Joint3));
+        ModelStale = position != Position || heading != Heading;
+        _frameValid = false;
+        _groupsValid = false;
+    }
+
+    /// <summary>
+    /// Two circles whose union holds the body now, without rebuilding anything: a fish's body group
+    /// and tail group circles (carried by <see cref="Frame"/>; after a joint change, the body group
+    /// carried with the body and the tail's skeleton circle); any other body's bounding circle twice.
+    /// </summary>
+    public void Groups(out Disc first, out Disc second)
+    {
+        if (Kind != BodyKind.Fish)
+        {
+            first = Kind == BodyKind.Circle ? new Disc(Position, Radius) : Kind == BodyKind.Polygon ? new Disc(Position, Reach) : new Disc(Position, Shape.BoundingCircle.Radius);
+            second = first;
+            return;
+        }
+
+        if (!_groupsValid)
+        {
+            ComputeGroups(out _bodyDisc, out _tailDisc);
+            _groupsValid = true;
+        }
+
+        first = _bodyDisc;
+        second = _tailDisc;
+    }
+
+    /// <summary>A circle enclosing the moving body now.</summary>
+    public Disc Bound()
+    {
+        switch (Kind)
+        {
+            case BodyKind.Circle:
+                return new Disc(Position, Radius);
+            case BodyKind.Polygon:
+                return new Disc(Position, Reach);
+        }
+
+        Circle root = Model!.Root;
+        if (!ModelStale)
+        {
+            return new Disc(root.Center, root.Radius);
+        }
+
+        if (!JointsCurrent)
+        {
+            Groups(out Disc body, out Disc tail);
+            return Enclosing(body, tail);
+        }
+
+        return new Disc(Frame.ToWorld(root.Center), root.Radius);
+    }
+
+    /// <summary>
+    /// A circle holding the tail (three segments and the caudal fin) at the current pose and
+    /// joints from its skeleton alone: with S1 = P − (L/2)·u, Eᵢ = Sᵢ − Lᵢ·dᵢ and the caudal
+    /// reference point A = E2 − 2·L3·d3, segment 1 lies within h1 = 0.266·L1 of S1E1, segment 2
+    /// within h2 = 0.231·L2 of E1E2, and segment 3 with the caudal fin within 50 mm of E2A.
+    /// </summary>
+    public Disc TailSkeleton()
+    {
+        FishSize size = Model!.Size;
+        Vector2 s1 = Position - (0.5f * size.Length * Direction(Heading));
+        Vector2 e1 = s1 - (size.Joint1 * Direction(Heading + Joint1));
+        Vector2 e2 = e1 - (size.Joint2 * Direction(Heading + Joint2));
+        Vector2 a = e2 - (2f * size.Joint3 * Direction(Heading + Joint3));
+        float h1 = TailStartHalfWidth1 * size.Joint1, h2 = TailStartHalfWidth2 * size.Joint2;
+        Vector2 c = 0.5f * (s1 + a);
+        float r = MathF.Max(
+            MathF.Max(Vector2.Distance(s1, c) + h1, Vector2.Distance(e1, c) + MathF.Max(h1, h2)),
+            MathF.Max(Vector2.Distance(e2, c) + MathF.Max(h2, CaudalReach), Vector2.Distance(a, c) + CaudalReach));
+        return new Disc(c, r + 0.01f);
+    }
+
+    private void ComputeGroups(out Disc body, out Disc tail)
+    {
+        if (!JointsCurrent)
+        {
+            var (sin, cos) = MathF.SinCos(Heading);
+            Vector2 local = _bodyGroupLocal;
+            body = new Disc(Position + new Vector2((local.X * cos) - (local.Y * sin), (local.X * sin) + (local.Y * cos)), _bodyGroupRadius);
+            tail = TailSkeleton();
+            return;
+        }
+
+        Circle b = Model!.BodyGroup, t = Model.TailGroup;
+        if (!ModelStale)
+        {
+            body = new Disc(b.Center, b.Radius);
+            tail = new Disc(t.Center, t.Radius);
+            return;
+        }
+
+        RigidFrame frame = Frame;
+        body = new Disc(frame.ToWorld(b.Center), b.Radius);
+        tail = new Disc(frame.ToWorld(t.Center), t.Radius);
+    }
+
+    private static Vector2 Direction(float angle)
+    {
+        var (sin, cos) = MathF.SinCos(angle);
+        return new Vector2(cos, sin);
+    }
+
+    // The smallest circle holding both circles.
+    private static Disc Enclosing(in Disc a, in Disc b)
+    {
+        float d = Vector2.Distance(a.Center, b.Center);
+        if (d + b.Radius <= a.Radius)
+        {
+            return a;
+        }
+
+        if (d + a.Radius <= b.Radius)
+        {
+            return b;
+        }
+
+        float r = 0.5f * (d + a.Radius + b.Radius);
+        Vector2 c = a.Center + ((b.Center - a.Center) * ((r - a.Radius) / d));
+        return new Disc(c, r + 0.01f);
+    }
+
+    private static Aabb BoxOf(ReadOnlySpan<Vector2> points)
+    {
+        Vector2 lo = points[0], hi = points[0];
+        foreach (Vector2 p in points)
+        {
+            lo = Vector2.Min(lo, p);
+            hi = Vector2.Max(hi, p);
+        }
+
+        return new Aabb(lo, hi);
+    }
+
+    // The narrowest width of a convex outline: the least extent along its edge normals.
+    private static float Width(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals)
+    {
+        float width = float.PositiveInfinity;
+        foreach (Vector2 n in normals)
+        {
+            float lo = float.PositiveInfinity, hi = float.NegativeInfinity;
+            foreach (Vector2 v in vertices)
+            {
+                float p = Vector2.Dot(v, n);
+                lo = MathF.Min(lo, p);
+                hi = MathF.Max(hi, p);
+            }
+
+            width = MathF.Min(width, hi - lo);
+        }
+
+        return width;
+    }
+
+    private static float KDopWidth(in KDop8 kdop)
+    {
+        float width = float.PositiveInfinity;
+        for (int axis = 0; axis < 4; axis++)
+        {
+            width = MathF.Min(width, (kdop.GetMax(axis) - kdop.GetMin(axis)) / KDop8.Axis(axis).Length());
+        }
+
+        return width;
+    }
+}

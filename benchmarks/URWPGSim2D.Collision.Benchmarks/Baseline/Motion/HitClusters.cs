@@ -1,0 +1,189 @@
+using System;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <summary>
+/// The overlapping pairs one sample found, grouped into clusters that share no moving body (pairs
+/// linked through a moving body are one cluster; static bodies and walls link nothing), each with
+/// an estimated time of first contact. Buffers grow by doubling and are reused.
+/// </summary>
+internal sealed class HitClusters
+{
+    private int[] _order = new int[16];
+    private double[] _clusterTime = new double[16];
+    private int _clusters;
+    private PairTable? _table;
+    private int[] _firstHitOf = [-1, -1, -1, -1, -1, -1, -1, -1];
+
+    /// <summary>Number of hits.</summary>
+    public int Count { get; private set; }
+
+    /// <summary>Pair slot of each hit.</summary>
+    public int[] Slot { get; private set; } = new int[16];
+
+    /// <summary>The slot's generation when the hit was found.</summary>
+    public int[] Generation { get; private set; } = new int[16];
+
+    /// <summary>The contact found.</summary>
+    public Hit[] Value { get; private set; } = new Hit[16];
+
+    /// <summary>Estimated time of first contact of each hit.</summary>
+    public double[] Estimate { get; private set; } = new double[16];
+
+    /// <summary>Cluster label of each hit (the smallest hit index of its cluster).</summary>
+    public int[] Label { get; private set; } = new int[16];
+
+    /// <summary>Makes room for <paramref name="hits"/> hits of a sample among <paramref name="movers"/> movers.</summary>
+    public void Reserve(int hits, int movers)
+    {
+        Size(hits);
+        EnsureMovers(Math.Max(0, movers - 1));
+    }
+
+    /// <summary>Copies the hits of a sample.</summary>
+    public void Load(int[] slots, Hit[] values, int count, PairTable table)
+    {
+        Size(count);
+        Count = count;
+        for (int i = 0; i < count; i++)
+        {
+            Slot[i] = slots[i];
+            Generation[i] = table.Generation[slots[i]];
+            Value[i] = values[i];
+            Label[i] = i;
+        }
+
+        _table = table;
+    }
+
+    private void Size(int count)
+    {
+        if (Slot.Length < count)
+        {
+            int size = Math.Max(count, Slot.Length * 2);
+            Slot = new int[size];
+            Generation = new int[size];
+            Value = new Hit[size];
+            Estimate = new double[size];
+            Label = new int[size];
+            _order = new int[size];
+            _clusterTime = new double[size];
+        }
+    }
+
+    /// <summary>Labels the clusters: hits that share a moving body, directly or through others, get one label.</summary>
+    public void Cluster()
+    {
+        // Union-find over the hits: each mover remembers the first hit it was seen in.
+        for (int i = 0; i < Count; i++)
+        {
+            Label[i] = i;
+        }
+
+        for (int i = 0; i < Count; i++)
+        {
+            Movers(_table!.Pair[Slot[i]], out int a, out int b);
+            Join(i, a);
+            if (b >= 0)
+            {
+                Join(i, b);
+            }
+        }
+
+        for (int i = 0; i < Count; i++)
+        {
+            Label[i] = Root(i);
+            Forget(_table!.Pair[Slot[i]]);
+        }
+
+        _clusters = 0;
+        for (int i = 0; i < Count; i++)
+        {
+            if (Label[i] != i)
+            {
+                continue;
+            }
+
+            double earliest = double.PositiveInfinity;
+            for (int k = 0; k < Count; k++)
+            {
+                earliest = Label[k] == i ? Math.Min(earliest, Estimate[k]) : earliest;
+            }
+
+            _order[_clusters] = i;
+            _clusterTime[_clusters++] = earliest;
+        }
+
+        // Insertion sort by estimated time (ties: lower label first).
+        for (int i = 1; i < _clusters; i++)
+        {
+            int label = _order[i];
+            double time = _clusterTime[i];
+            int j = i - 1;
+            while (j >= 0 && _clusterTime[j] > time)
+            {
+                _order[j + 1] = _order[j];
+                _clusterTime[j + 1] = _clusterTime[j];
+                j--;
+            }
+
+            _order[j + 1] = label;
+            _clusterTime[j + 1] = time;
+        }
+    }
+
+    // Links hit i with the first hit that mover m was seen in (the root is always the smallest index).
+    private void Join(int i, int mover)
+    {
+        EnsureMovers(mover);
+        int first = _firstHitOf[mover];
+        if (first < 0)
+        {
+            _firstHitOf[mover] = i;
+            return;
+        }
+
+        int a = Root(i), b = Root(first);
+        if (a != b)
+        {
+            Label[Math.Max(a, b)] = Math.Min(a, b);
+        }
+    }
+
+    private int Root(int i)
+    {
+        while (Label[i] != i)
+        {
+            Label[i] = Label[Label[i]];
+            i = Label[i];
+        }
+
+        return i;
+    }
+
+    private void Forget(in PlannedPair pair)
+    {
+        Movers(pair, out int a, out int b);
+        _firstHitOf[a] = -1;
+        if (b >= 0)
+        {
+            _firstHitOf[b] = -1;
+        }
+    }
+
+    private void EnsureMovers(int mover)
+    {
+        if (mover >= _firstHitOf.Length)
+        {
+            int old = _firstHitOf.Length;
+            Array.Resize(ref _firstHitOf, Math.Max(mover + 1, old * 2));
+            Array.Fill(_firstHitOf, -1, old, _firstHitOf.Length - old);
+        }
+    }
+
+    /// <summary>The cluster labels, earliest estimated contact first.</summary>
+    public ReadOnlySpan<int> ClustersByTime() => _order.AsSpan(0, _clusters);
+
+    // The moving bodies of a pair (b = −1 for a static body or the walls).
+    private static void Movers(in PlannedPair p, out int a, out int b) => (a, b) = (p.MoverA, p.MoverB);
+}

@@ -1,0 +1,56 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <summary>
+/// The rigid motion that carries a fish's collision model (built at pose P₀, θ₀) onto the fish
+/// (now at P, θ with the same joint angles): x ↦ P + R(θ − θ₀)·(x − P₀). Within a cycle the joints
+/// do not change, so a partner moved into the model's frame by the inverse motion meets the model
+/// exactly as it would meet a model rebuilt at the new pose — without rebuilding it.
+/// </summary>
+internal readonly struct RigidFrame
+{
+    private readonly Vector2 _from;
+    private readonly Vector2 _to;
+    private readonly float _cos;
+    private readonly float _sin;
+
+    /// <summary>The motion from the model's pose (<paramref name="from"/>, <paramref name="fromHeading"/>) to (<paramref name="to"/>, <paramref name="toHeading"/>).</summary>
+    public RigidFrame(Vector2 from, float fromHeading, Vector2 to, float toHeading)
+    {
+        _from = from;
+        _to = to;
+        float turn = toHeading - fromHeading;
+        if (turn == 0f)
+        {
+            _cos = 1f;
+            _sin = 0f;
+        }
+        else
+        {
+            (_sin, _cos) = MathF.SinCos(turn);
+        }
+
+        IsIdentity = turn == 0f && from == to;
+        IsTranslation = turn == 0f;
+    }
+
+    /// <summary>True when the model is exactly at the fish's pose.</summary>
+    public bool IsIdentity { get; }
+
+    /// <summary>True when the fish has not turned since the model was built.</summary>
+    public bool IsTranslation { get; }
+
+    /// <summary>A model-frame point in the world.</summary>
+    public Vector2 ToWorld(Vector2 model) => _to + Rotate(model - _from);
+
+    /// <summary>A world point in the model's frame.</summary>
+    public Vector2 ToModel(Vector2 world) => _from + RotateBack(world - _to);
+
+    /// <summary>A model-frame direction in the world.</summary>
+    public Vector2 Rotate(Vector2 v) => new((v.X * _cos) - (v.Y * _sin), (v.X * _sin) + (v.Y * _cos));
+
+    /// <summary>A world direction in the model's frame.</summary>
+    public Vector2 RotateBack(Vector2 v) => new((v.X * _cos) + (v.Y * _sin), (-v.X * _sin) + (v.Y * _cos));
+}

@@ -1,0 +1,351 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <content>The bodies: adding them, reading and changing their state, testing a pair now.</content>
+internal sealed partial class Stepper
+{
+    private readonly List<Body> _bodies = [];
+    private bool _loaded;
+    private bool _stepping;
+
+    /// <summary>Number of bodies (ids are 0 … BodyCount − 1, in the order they were added).</summary>
+    public int BodyCount => _bodies.Count;
+
+    /// <summary>Adds a moving circle (a ball).</summary>
+    /// <param name="radius">Radius, mm (positive, finite).</param>
+    /// <param name="position">Centre, mm.</param>
+    /// <returns>The body's id.</returns>
+    /// <exception cref="ArgumentException">The radius or position is invalid, or a step is running.</exception>
+    public int AddCircle(float radius, Vector2 position)
+    {
+        _ = new Circle(position, radius);
+        return Add(Body.Circle(_bodies.Count, radius, position));
+    }
+
+    /// <summary>Adds a moving convex polygon; it turns about its own origin.</summary>
+    /// <param name="shape">The outline about the body's origin, mm.</param>
+    /// <param name="position">Where the origin is, mm.</param>
+    /// <param name="heading">How far the outline is turned, rad (positive from +X toward +Z).</param>
+    /// <returns>The body's id.</returns>
+    /// <exception cref="ArgumentException">The polygon is default, the pose is not finite, or a step is running.</exception>
+    public int AddPolygon(in ConvexPolygon shape, Vector2 position, float heading)
+    {
+        if (shape.Vertices.Length == 0)
+        {
+            throw new ArgumentException("polygon is default(ConvexPolygon) and has no vertices", nameof(shape));
+        }
+
+        Guard.Finite(position, nameof(position));
+        Finite(heading, nameof(heading));
+        return Add(Body.Polygon(_bodies.Count, shape, position, heading));
+    }
+
+    /// <summary>Adds a moving fish; it turns about its body centre and its joints keep their angles within a step.</summary>
+    /// <param name="size">The fish's dimensions.</param>
+    /// <param name="pose">Its position, heading and joint angles.</param>
+    /// <returns>The body's id.</returns>
+    /// <exception cref="ArgumentException">The size is default, or a step is running.</exception>
+    public int AddFish(FishSize size, in FishPose pose) => Add(Body.Fish(_bodies.Count, size, pose));
+
+    /// <summary>Adds a static body: a circle, box, 8-DOP, convex polygon or segment (each converts to <see cref="Shape"/>).</summary>
+    /// <param name="shape">The shape, mm.</param>
+    /// <returns>The body's id.</returns>
+    /// <exception cref="ArgumentException">The shape is default, or a step is running.</exception>
+    public int AddStatic(in Shape shape)
+    {
+        if (shape.Kind == ShapeKind.Polygon && shape.AsPolygon().Vertices.Length == 0)
+        {
+            throw new ArgumentException("polygon is default(ConvexPolygon) and has no vertices", nameof(shape));
+        }
+
+        return Add(Body.Static(_bodies.Count, shape));
+    }
+
+    /// <summary>Adds the pool's four walls: every moving body must stay inside <paramref name="field"/>'s bounds (its goal blocks are added separately, as boxes).</summary>
+    /// <param name="field">The pool.</param>
+    /// <returns>The walls' id.</returns>
+    /// <exception cref="ArgumentException">The stepper has walls already, or a step is running.</exception>
+    public int AddWalls(Field field)
+    {
+        ArgumentNullException.ThrowIfNull(field);
+        foreach (Body b in _bodies)
+        {
+            if (b.Kind == BodyKind.Walls)
+            {
+                throw new ArgumentException($"the stepper has walls already (body {b.Id})", nameof(field));
+            }
+        }
+
+        return Add(Body.Walls(_bodies.Count, field));
+    }
+
+    /// <summary>What a body is.</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>Its kind.</returns>
+    public BodyKind KindOf(int body) => Get(body).Kind;
+
+    /// <summary>A body's position now, mm (a static body: its bounding circle's centre).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The position.</returns>
+    public Vector2 PositionOf(int body) => Get(body).Position;
+
+    /// <summary>A body's heading now, rad.</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The heading, wrapped to [−π, π).</returns>
+    public float HeadingOf(int body) => Get(body).Heading;
+
+    /// <summary>A moving body's velocity, mm/s.</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The velocity.</returns>
+    public Vector2 VelocityOf(int body) => Get(body).Velocity;
+
+    /// <summary>A moving body's angular velocity, rad/s.</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The angular velocity.</returns>
+    public float AngularVelocityOf(int body) => Get(body).AngularVelocity;
+
+    /// <summary>A fish's collision model at its current pose (read only: the stepper owns it).</summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <returns>The model.</returns>
+    /// <exception cref="ArgumentException">The body is not a fish.</exception>
+    public FishModel FishModelOf(int fish) => Moving(fish, BodyKind.Fish, nameof(fish)).PosedModel;
+
+    /// <summary>
+    /// Places a moving body. Between steps this is a jump (the new pose is also where a rejected
+    /// move goes back to); during a handler call it is the body's pose at <see cref="Time"/>, from
+    /// which it moves on.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <param name="position">Position, mm.</param>
+    /// <param name="heading">Heading, rad (ignored for a circle).</param>
+    /// <exception cref="ArgumentException">The body does not move, or the pose is not finite.</exception>
+    public void SetPose(int body, Vector2 position, float heading)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Guard.Finite(position, nameof(position));
+        Finite(heading, nameof(heading));
+        Touch(b);
+        b.Position = position;
+        b.Heading = b.Kind == BodyKind.Circle ? 0f : Angle.Wrap(heading);
+        b.Invalidate();
+        Commit(b);
+        if (!_stepping)
+        {
+            b.StartPosition = b.Position;
+            b.StartHeading = b.Heading;
+        }
+    }
+
+    /// <summary>Sets a fish's joint angles (they hold for the rest of the step).</summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <param name="joint1">Joint 1, rad.</param>
+    /// <param name="joint2">Joint 2, rad.</param>
+    /// <param name="joint3">Joint 3, rad.</param>
+    /// <exception cref="ArgumentException">The body is not a fish, or an angle is not finite.</exception>
+    public void SetJoints(int fish, float joint1, float joint2, float joint3)
+    {
+        Body b = Moving(fish, BodyKind.Fish, nameof(fish));
+        Finite(joint1, nameof(joint1));
+        Finite(joint2, nameof(joint2));
+        Finite(joint3, nameof(joint3));
+        Touch(b);
+        b.Joint1 = joint1;
+        b.Joint2 = joint2;
+        b.Joint3 = joint3;
+        b.Invalidate();
+        Commit(b);
+    }
+
+    /// <summary>Sets a moving body's velocity (for the rest of the step when called from a handler).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <param name="velocity">Velocity, mm/s.</param>
+    /// <param name="angularVelocity">Angular velocity, rad/s (ignored for a circle).</param>
+    /// <exception cref="ArgumentException">The body does not move, or a value is not finite.</exception>
+    public void SetVelocity(int body, Vector2 velocity, float angularVelocity = 0f)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Guard.Finite(velocity, nameof(velocity));
+        Finite(angularVelocity, nameof(angularVelocity));
+        Touch(b);
+        b.Velocity = velocity;
+        b.AngularVelocity = b.Kind == BodyKind.Circle ? 0f : angularVelocity;
+        Commit(b);
+    }
+
+    /// <summary>
+    /// Takes a moving body out of contact handling, or back in. A body that does not collide is never
+    /// paired with anything (bodies, static bodies or walls) and may even lie outside the pool; it
+    /// still moves with its velocity. Used e.g. to park a body that is out of play.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <param name="collides">True (the default for every body) to take part in contacts.</param>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public void SetCollides(int body, bool collides)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Touch(b);
+        b.Collides = collides;
+        Commit(b);
+    }
+
+    /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <exception cref="ArgumentException">The id is out of range.</exception>
+    public bool CollidesOf(int body) => Get(body).Collides;
+
+    /// <summary>Tests two bodies at their current poses (for a handler that separates them step by step).</summary>
+    /// <param name="bodyA">The first body (moving): the result's translation moves it.</param>
+    /// <param name="bodyB">The second body.</param>
+    /// <returns>The contact now, or one whose <see cref="Contact.Intersect"/> is false.</returns>
+    /// <exception cref="ArgumentException">A body is out of range, A does not move, or A and B are the same.</exception>
+    public Contact Detect(int bodyA, int bodyB)
+    {
+        Body a = Moving(bodyA, null, nameof(bodyA));
+        Body b = Get(bodyB);
+        if (a == b)
+        {
+            throw new ArgumentException($"a body cannot be tested against itself (body {bodyA})", nameof(bodyB));
+        }
+
+        return new Contact(bodyA, bodyB, PairTest.Detect(a, b), Time);
+    }
+
+    internal Body BodyAt(int id) => _bodies[id];
+
+    // Before its state changes in a handler, a body is placed at the handler's time and marked for re-planning.
+    private void Touch(Body b)
+    {
+        if (_stepping && !_changed.Marks[b.Slot])
+        {
+            b.MoveTo(Time, _planner.Seconds);
+            _changed.Add(b.Slot);
+        }
+    }
+
+    // After a change in a handler the body moves on from its new state at the handler's time.
+    private void Commit(Body b)
+    {
+        if (_stepping)
+        {
+            b.Rebase(Time);
+        }
+        else
+        {
+            b.Rebase(0.0);
+        }
+    }
+
+    private static void Remember(Body b)
+    {
+        b.StartPosition = b.Position;
+        b.StartHeading = b.Heading;
+        b.StartJoint1 = b.Joint1;
+        b.StartJoint2 = b.Joint2;
+        b.StartJoint3 = b.Joint3;
+    }
+
+    private int Add(Body body)
+    {
+        if (_stepping)
+        {
+            throw new ArgumentException("bodies cannot be added while a step runs", nameof(body));
+        }
+
+        body.BasePosition = body.Position;
+        body.BaseHeading = body.Heading;
+        Remember(body);
+        _bodies.Add(body);
+        _loaded = false;
+        return body.Id;
+    }
+
+    private Body Get(int id)
+    {
+        if ((uint)id >= (uint)_bodies.Count)
+        {
+            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", nameof(id));
+        }
+
+        return _bodies[id];
+    }
+
+    private Body Moving(int id, BodyKind? kind, string name)
+    {
+        if ((uint)id >= (uint)_bodies.Count)
+        {
+            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", name);
+        }
+
+        Body b = _bodies[id];
+        if (!b.IsMoving || (kind.HasValue && b.Kind != kind.Value))
+        {
+            throw new ArgumentException($"body {id} is a {b.Kind} body, not {(kind.HasValue ? "a " + kind.Value : "a moving")} one", name);
+        }
+
+        return b;
+    }
+
+    private static void Finite(float value, string name)
+    {
+        if (!float.IsFinite(value))
+        {
+            throw new ArgumentException($"must be finite, got {value}", name);
+        }
+    }
+
+    // The planner and the per-mover sets follow the bodies (allocates only after bodies were added).
+    private void EnsureLoaded()
+    {
+        if (_loaded)
+        {
+            return;
+        }
+
+        var movers = new List<Body>();
+        var statics = new List<Body>();
+        Body? walls = null;
+        foreach (Body b in _bodies)
+        {
+            if (b.IsMoving)
+            {
+                b.Slot = movers.Count;
+                movers.Add(b);
+            }
+            else if (b.Kind == BodyKind.Static)
+            {
+                b.Slot = statics.Count;
+                statics.Add(b);
+            }
+            else
+            {
+                walls = b;
+            }
+        }
+
+        _planner.Load([.. movers], [.. statics], walls);
+        _table.Resize(movers.Count);
+
+        // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
+        int m = movers.Count;
+        _table.Reserve((8 * m) + 64);
+        _queue.Reserve((32 * m) + 1024);
+        _due = new int[(8 * m) + 256];
+        _hitSlots = new int[(2 * m) + 64];
+        _hitValues = new Hit[(2 * m) + 64];
+        _pending = new int[(2 * m) + 16];
+        _clusters.Reserve((2 * m) + 64, m);
+        _collector.Reserve((8 * m) + 256);
+        _involved = new BodySet(movers.Count);
+        _touched = new BodySet(movers.Count);
+        _changed = new BodySet(movers.Count);
+        _spare = new BodySet(movers.Count);
+        _loaded = true;
+    }
+}

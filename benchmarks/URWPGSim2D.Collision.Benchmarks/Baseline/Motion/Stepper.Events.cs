@@ -1,0 +1,307 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <content>Contact events: clusters of hits, the time of first contact, the response, relaxation.</content>
+internal sealed partial class Stepper
+{
+    private readonly HitClusters _clusters = new();
+    private BodySet _involved = new(0);
+    private BodySet _touched = new(0);
+    private BodySet _changed = new(0);
+    private BodySet _spare = new(0);
+    private int[] _pending = new int[16];
+    private int _pendingCount;
+
+    // The hits of one sample fall into clusters that share no moving body (a fish pushing a ball
+    // here, two balls meeting there): each is its own event, taken in the order of its estimated
+    // time of first contact, so one contact does not pull unrelated bodies back in time. A hit whose
+    // pair was planned again by an earlier event is left to its new schedule.
+    private void HandleHits(double found)
+    {
+        if (_hitCount == 0)
+        {
+            return;
+        }
+
+        int count = _hitCount;
+        _clusters.Load(_hitSlots, _hitValues, count, _table);
+        for (int i = 0; i < count; i++)
+        {
+            _clusters.Estimate[i] = EstimatedContact(_clusters.Slot[i], _clusters.Value[i], found);
+        }
+
+        _clusters.Cluster();
+        foreach (int cluster in _clusters.ClustersByTime())
+        {
+            _hitCount = 0;
+            for (int i = 0; i < count; i++)
+            {
+                int slot = _clusters.Slot[i];
+                if (_clusters.Label[i] == cluster && _table.Alive[slot] && _table.Generation[slot] == _clusters.Generation[i])
+                {
+                    AddHit(slot, _clusters.Value[i]);
+                }
+            }
+
+            if (_hitCount > 0)
+            {
+                HandleEvent(found);
+            }
+        }
+    }
+
+    // One event: its bodies go back to the last time all its pairs were apart, the time of first
+    // contact is found, the handler responds there, and the bodies are committed and planned again.
+    private void HandleEvent(double found)
+    {
+        _involved.Clear();
+        double lo = found;
+        float deepest = 0f;
+        for (int i = 0; i < _hitCount; i++)
+        {
+            int slot = _hitSlots[i];
+            lo = Math.Min(lo, _table.LastFree[slot]);
+            deepest = MathF.Max(deepest, _hitValues[i].Depth);
+            Mark(_involved, _table.Pair[slot]);
+        }
+
+        // Each hit sampled apart was apart at its last sample; all were apart at lo if they share it.
+        bool apartAtLo = true;
+        for (int i = 0; i < _hitCount; i++)
+        {
+            apartAtLo &= _table.LastFree[_hitSlots[i]] == lo && _table.ApartAtLastFree[_hitSlots[i]];
+        }
+
+        bool refine = deepest > MotionTolerances.TimeOfImpactTolerance;
+        foreach (int m in _involved.Items)
+        {
+            Body body = _planner.MoverBodies[m];
+            apartAtLo &= body.BaseTime <= lo;
+            lo = Math.Max(lo, body.BaseTime);
+            refine &= body.Events < MotionTolerances.MaximumEventsPerBody;
+        }
+
+        double contact = refine && lo < found ? FirstContact(lo, found, apartAtLo) : found;
+        MoveInvolved(contact);
+        Time = contact;
+        Events++;
+        foreach (int m in _involved.Items)
+        {
+            _planner.MoverBodies[m].Events++;
+            _touched.Add(m);
+        }
+
+        _changed.Clear();
+        for (int i = 0; i < _hitCount; i++)
+        {
+            Respond(_table.Pair[_hitSlots[i]]);
+        }
+
+        Relax();
+    }
+
+    // The handler's response to one pair, if it still overlaps.
+    private void Respond(in PlannedPair pair)
+    {
+        Body a = _bodies[pair.A], b = _bodies[pair.B];
+        Hit hit = PairTest.Detect(a, b);
+        if (hit.Depth > MotionTolerances.ContactSlop)
+        {
+            _handler!.OnContact(this, new Contact(pair.A, pair.B, hit, Time));
+        }
+    }
+
+    // Commits the event's bodies (and any the handler changed) at the contact time and plans their
+    // pairs again. A response can push a body into a third one (a ball squeezed between two fish):
+    // pairs that overlap right away are responded to at once and their bodies planned again, a few
+    // passes over; what is left is sampled as usual.
+    private void Relax()
+    {
+        for (int pass = 0; ; pass++)
+        {
+            foreach (int m in _changed.Items)
+            {
+                _involved.Add(m);
+                _touched.Add(m);
+            }
+
+            _changed.Clear();
+            foreach (int m in _involved.Items)
+            {
+                _planner.MoverBodies[m].Rebase(Time);
+                _table.RemoveAllOf(m);
+            }
+
+            _pendingCount = 0;
+            _scheduler.Settling = pass < MotionTolerances.RelaxationPasses;
+            _planner.PlanFor(_involved.Items, _involved.Marks, Time, _scheduler);
+            _scheduler.Settling = false;
+            if (_pendingCount == 0)
+            {
+                return;
+            }
+
+            _involved.Clear();
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                Mark(_involved, _table.Pair[_pending[i]]);
+            }
+
+            for (int i = 0; i < _pendingCount; i++)
+            {
+                Respond(_table.Pair[_pending[i]]);
+            }
+        }
+    }
+
+    private void AddPending(int slot)
+    {
+        if (_pendingCount == _pending.Length)
+        {
+            Array.Resize(ref _pending, _pendingCount * 2);
+        }
+
+        _pending[_pendingCount++] = slot;
+    }
+
+    // False-position estimate of a hit's time of first contact (its last free time when unknown).
+    private double EstimatedContact(int slot, in Hit hit, double found)
+    {
+        float closing = ClosingRate(_table.Pair[slot], hit);
+        double guess = closing > 0f ? found - (hit.Depth / closing) : _table.LastFree[slot];
+        return Math.Clamp(guess, _table.LastFree[slot], found);
+    }
+
+    // Between the last time all hits were apart and the sample that found them (checked first
+    // unless the hits are known to be apart then): a false-position guess, then bisection until
+    // nothing involved moves more than the tolerance inside the bracket.
+    private double FirstContact(double free, double hit, bool knownApart)
+    {
+        float rate = 0f;
+        for (int i = 0; i < _hitCount; i++)
+        {
+            rate = MathF.Max(rate, _table.Rate[_hitSlots[i]]);
+        }
+
+        if (!knownApart)
+        {
+            MoveInvolved(free);
+            if (AnyHitIntersects())
+            {
+                return free;
+            }
+        }
+
+        double lo = free;
+        double hi = hit;
+        Guess(ref lo, ref hi, rate);
+        for (int iteration = 0; iteration < 48 && (hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance; iteration++)
+        {
+            double mid = 0.5 * (lo + hi);
+            MoveInvolved(mid);
+            if (AnyHitIntersects())
+            {
+                hi = mid;
+            }
+            else
+            {
+                lo = mid;
+            }
+        }
+
+        return hi;
+    }
+
+    // The deepest hit's depth shrinks at its closing rate, so it reached zero near hi − depth / rate:
+    // probe there, and just after it, to bracket the contact tightly (exact for translation).
+    private void Guess(ref double lo, ref double hi, float rate)
+    {
+        int deepest = 0;
+        for (int i = 1; i < _hitCount; i++)
+        {
+            deepest = _hitValues[i].Depth > _hitValues[deepest].Depth ? i : deepest;
+        }
+
+        float closing = ClosingRate(_table.Pair[_hitSlots[deepest]], _hitValues[deepest]);
+        if (!(closing > 0f) || rate <= 0f)
+        {
+            return;
+        }
+
+        double guess = hi - (_hitValues[deepest].Depth / closing);
+        if (!(guess > lo && guess < hi))
+        {
+            return;
+        }
+
+        MoveInvolved(guess);
+        if (AnyHitIntersects())
+        {
+            hi = guess;
+            return;
+        }
+
+        lo = guess;
+        double next = lo + (0.5 * MotionTolerances.TimeOfImpactTolerance / rate);
+        if (next < hi)
+        {
+            MoveInvolved(next);
+            if (AnyHitIntersects())
+            {
+                hi = next;
+            }
+            else
+            {
+                lo = next;
+            }
+        }
+    }
+
+    private bool AnyHitIntersects()
+    {
+        for (int i = 0; i < _hitCount; i++)
+        {
+            PlannedPair pair = _table.Pair[_hitSlots[i]];
+            if (PairTest.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    // How fast the two bodies close along the hit's normal at its action point, mm per whole step (positive when approaching).
+    private float ClosingRate(in PlannedPair pair, in Hit hit)
+    {
+        Vector2 a = PointVelocity(_bodies[pair.A], hit.Point);
+        Vector2 b = pair.MoverB >= 0 ? PointVelocity(_bodies[pair.B], hit.Point) : Vector2.Zero;
+        return -Vector2.Dot(a - b, hit.Normal) * _planner.Seconds;
+    }
+
+    private static Vector2 PointVelocity(Body body, Vector2 point)
+    {
+        Vector2 r = point - body.Position;
+        return body.Velocity + (body.AngularVelocity * new Vector2(-r.Y, r.X));
+    }
+
+    private void MoveInvolved(double time)
+    {
+        float seconds = _planner.Seconds;
+        foreach (int m in _involved.Items)
+        {
+            _planner.MoverBodies[m].MoveTo(time, seconds);
+        }
+    }
+
+    private static void Mark(BodySet set, in PlannedPair p)
+    {
+        set.Add(p.MoverA);
+        if (p.MoverB >= 0)
+        {
+            set.Add(p.MoverB);
+        }
+    }
+}

@@ -1,0 +1,222 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
+
+/// <summary>
+/// Finds the candidate pairs for the rest of a step. Every mover gets a travel from the time it
+/// is planned to the end of the step: the most any of its points moves over a whole step (|v|·dt,
+/// plus |ω|·dt times the reach of its farthest point for a turning body), and a swept circle: its
+/// bounding circle grown by that travel. The broad phase holds the swept circles' boxes and the
+/// static bodies' boxes; a pair it reports is a candidate when the swept circles (+1 mm), or the
+/// swept circle and the static box, meet. A mover is also paired with the walls when its swept
+/// circle leaves the pool. Each pair gets a limit, half the sum of the two bodies' thinnest
+/// widths (walls none), and its relative travel. A re-planned mover is queried against the
+/// others' registered swept circles, which still cover their motion to the end of the step.
+/// </summary>
+internal sealed class SweepPlanner
+{
+    private const float Margin = 1f;
+
+    private readonly IBroadPhase _broad;
+    private Body[] _movers = [];
+    private Body[] _statics = [];
+    private Body? _walls;
+    private Aabb[] _boxes = [];
+    private Vector2[] _velocity = [];
+    private float[] _spin = [];
+    private float[] _rate = [];
+    private Vector2[] _center = [];
+    private float[] _radius = [];
+    private PairList _found = new(256);
+    private IndexList _near = new(64);
+
+    public SweepPlanner(IBroadPhase broadPhase) => _broad = broadPhase;
+
+    /// <summary>Number of movers.</summary>
+    public int Movers => _movers.Length;
+
+    /// <summary>The movers, by slot.</summary>
+    public ReadOnlySpan<Body> MoverBodies => _movers;
+
+    /// <summary>Duration of the step being planned, s.</summary>
+    public float Seconds { get; set; } = 0.1f;
+
+    /// <summary>Takes a new set of bodies (movers, static bodies, walls); allocates only here.</summary>
+    public void Load(Body[] movers, Body[] statics, Body? walls)
+    {
+        _movers = movers;
+        _statics = statics;
+        _walls = walls;
+        int m = movers.Length;
+        _boxes = new Aabb[m + statics.Length];
+        _velocity = new Vector2[m];
+        _spin = new float[m];
+        _rate = new float[m];
+        _center = new Vector2[m];
+        _radius = new float[m];
+        for (int s = 0; s < statics.Length; s++)
+        {
+            _boxes[m + s] = statics[s].Bounds;
+        }
+
+        // Room for a busy step up front (pairs of the whole world, neighbours of one body).
+        _found = new PairList((8 * m) + 256);
+        _near = new IndexList(256);
+    }
+
+    /// <summary>
+    /// Every candidate pair for the movers at their current poses, from step time
+    /// <paramref name="time"/> to the end (1: no motion left), in a fixed order: by first mover, then
+    /// by partner (movers, static bodies), the walls last.
+    /// </summary>
+    public void PlanAll(double time, IPairSink sink)
+    {
+        int movers = _movers.Length;
+        for (int m = 0; m < movers; m++)
+        {
+            Measure(m, time);
+        }
+
+        _broad.Reset(_boxes, movers);
+        _broad.FindPairs(_found);
+        var found = _found.Items;
+        int k = 0;
+        for (int m = 0; m < movers; m++)
+        {
+            for (; k < found.Length && found[k].A == m; k++)
+            {
+                TryPair(m, found[k].B, sink);
+            }
+
+            TryWall(m, sink);
+        }
+    }
+
+    /// <summary>
+    /// Measures the given movers again from <paramref name="time"/> (their poses or velocities
+    /// changed) and reports every candidate pair they are part of. Pairs between two of them are
+    /// reported once (from the one with the smaller slot).
+    /// </summary>
+    public void PlanFor(ReadOnlySpan<int> movers, ReadOnlySpan<bool> isListed, double time, IPairSink sink)
+    {
+        foreach (int m in movers)
+        {
+            Measure(m, time);
+            _broad.Move(m, _boxes[m]);
+        }
+
+        int count = _movers.Length;
+        foreach (int m in movers)
+        {
+            _broad.Query(_boxes[m], _near);
+            foreach (int b in _near.Items)
+            {
+                if (b == m || (b < count && isListed[b] && b < m))
+                {
+                    continue;
+                }
+
+                if (b < count && b < m)
+                {
+                    TryPair(b, m, sink);
+                }
+                else
+                {
+                    TryPair(m, b, sink);
+                }
+            }
+
+            TryWall(m, sink);
+        }
+    }
+
+    // A mover's motion from `time` to the end of the step and its swept box.
+    private void Measure(int m, double time)
+    {
+        float dt = Seconds;
+        float remaining = (float)Math.Max(0.0, 1.0 - time);
+        Body body = _movers[m];
+        Disc bound = body.Bound();
+        _velocity[m] = body.Velocity;
+        if (body.Kind == BodyKind.Circle)
+        {
+            _spin[m] = 0f;
+        }
+        else
+        {
+            float reach = Vector2.Distance(bound.Center, body.Position) + bound.Radius;
+            _spin[m] = MathF.Abs(body.AngularVelocity) * reach * dt;
+        }
+
+        _rate[m] = (_velocity[m].Length() * dt) + _spin[m];
+        _center[m] = bound.Center;
+        _radius[m] = bound.Radius + (_rate[m] * remaining);
+        Vector2 half = new(_radius[m] + Margin);
+        _boxes[m] = new Aabb(_center[m] - half, _center[m] + half);
+    }
+
+    // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers).
+    private void TryPair(int u, int v, IPairSink sink)
+    {
+        int count = _movers.Length;
+        if (!_movers[u].Collides || (v < count && !_movers[v].Collides))
+        {
+            return;
+        }
+
+        if (v >= count)
+        {
+            TryStatic(u, v - count, sink);
+            return;
+        }
+
+        float reach = _radius[u] + _radius[v] + Margin;
+        if (Vector2.DistanceSquared(_center[u], _center[v]) >= reach * reach)
+        {
+            return;
+        }
+
+        Body a = _movers[u], b = _movers[v];
+        float limit = 0.5f * (a.Thickness + b.Thickness);
+        float rate = ((_velocity[u] - _velocity[v]).Length() * Seconds) + _spin[u] + _spin[v];
+        sink.Add(new PlannedPair(a.Id, b.Id, u, v, limit), rate);
+    }
+
+    private void TryStatic(int m, int s, IPairSink sink)
+    {
+        Body body = _statics[s];
+        Aabb box = body.Bounds;
+        Vector2 c = _center[m];
+        float r = _radius[m] + Margin;
+        Vector2 d = Vector2.Max(Vector2.Max(box.Min - c, c - box.Max), Vector2.Zero);
+        if (d.LengthSquared() >= r * r)
+        {
+            return;
+        }
+
+        Body a = _movers[m];
+        float limit = 0.5f * (a.Thickness + body.Thickness);
+        sink.Add(new PlannedPair(a.Id, body.Id, m, -1, limit), _rate[m]);
+    }
+
+    private void TryWall(int m, IPairSink sink)
+    {
+        if (_walls is null || !_movers[m].Collides)
+        {
+            return;
+        }
+
+        Aabb pool = _walls.Bounds;
+        Vector2 c = _center[m];
+        float r = _radius[m] + Margin;
+        if (c.X - r > pool.Min.X && c.X + r < pool.Max.X && c.Y - r > pool.Min.Y && c.Y + r < pool.Max.Y)
+        {
+            return;
+        }
+
+        sink.Add(new PlannedPair(_movers[m].Id, _walls.Id, m, -1, float.PositiveInfinity), _rate[m]);
+    }
+}

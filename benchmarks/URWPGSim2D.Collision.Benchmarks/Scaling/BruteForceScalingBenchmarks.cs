@@ -1,0 +1,37 @@
+using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Collision.Benchmarks.Scaling;
+
+/// <summary>
+/// The crowd scene of <see cref="ScalingBenchmarks"/> with the stepper's broad phase brute force
+/// (every pair of boxes tested), for 100, 1,000 and 10,000 fish and balls: the reference the grid
+/// is measured against (both give the same match, tested). Not run at 30,000 (seconds a cycle).
+/// </summary>
+[MemoryDiagnoser]
+[MedianColumn]
+public class BruteForceScalingBenchmarks
+{
+    private Match _brute = null!;
+
+    /// <summary>Fish and balls in the scene.</summary>
+    [Params(100, 1_000, 10_000)]
+    public int Objects { get; set; }
+
+    /// <summary>Builds the scene and plays 20 cycles.</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        _brute = MatchBuilder.Build(CrowdScenario.Create(Objects), broadPhase: BroadPhaseKind.BruteForce);
+        for (int i = 0; i < 20; i++)
+        {
+            _brute.Step();
+        }
+    }
+
+    /// <summary>One cycle, brute-force broad phase.</summary>
+    [Benchmark]
+    public void BruteForce() => _brute.Step();
+}
