@@ -14,6 +14,7 @@ internal static class ItemRegistry
         new BallGrab.BallGrabItem(),
         new Survival.SurvivalItem(),
         new Transport.TransportItem(),
+        new SynchronisedSwimming.SynchronisedSwimmingItem(),
         new Rescue.RescueItem(),
         new CrossCountry.CrossCountryItem(),
         new Polo.PoloItem(1),

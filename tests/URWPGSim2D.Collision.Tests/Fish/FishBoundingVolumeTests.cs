@@ -3,6 +3,8 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Fish;
 
@@ -64,16 +66,23 @@ public class FishBoundingVolumeTests
         var travelled = new FishModel(FishSize.Default, default);
         for (int trial = 0; trial < 2000; trial++)
         {
-            var pose = FishTestKit.Pose(rng, 1f, 1500f);
-            var sameJoints = new FishPose(FishTestKit.Point(rng, 1500f), FishTestKit.Range(rng, -3f, 3f), pose.Joint1, pose.Joint2, pose.Joint3);
-            travelled.SetPose(trial % 2 == 0 ? sameJoints : FishTestKit.Pose(rng, 1f, 1500f));
-            travelled.SetPose(pose);
-            var fresh = new FishModel(FishSize.Default, pose);
-            Assert.Equal(fresh.Root.Center, travelled.Root.Center);
-            Assert.Equal(fresh.Root.Radius, travelled.Root.Radius);
-            Assert.Equal(fresh.TailGroup.Center, travelled.TailGroup.Center);
-            Assert.Equal(fresh.TailGroup.Radius, travelled.TailGroup.Radius);
-            Assert.Equal(fresh.BodyGroup.Center, travelled.BodyGroup.Center);
+            try
+            {
+                var pose = FishTestKit.Pose(rng, 1f, 1500f);
+                var sameJoints = new FishPose(FishTestKit.Point(rng, 1500f), FishTestKit.Range(rng, -3f, 3f), pose.Joint1, pose.Joint2, pose.Joint3);
+                travelled.SetPose(trial % 2 == 0 ? sameJoints : FishTestKit.Pose(rng, 1f, 1500f));
+                travelled.SetPose(pose);
+                var fresh = new FishModel(FishSize.Default, pose);
+                Assert.Equal(fresh.Root.Center, travelled.Root.Center);
+                Assert.Equal(fresh.Root.Radius, travelled.Root.Radius);
+                Assert.Equal(fresh.TailGroup.Center, travelled.TailGroup.Center);
+                Assert.Equal(fresh.TailGroup.Radius, travelled.TailGroup.Radius);
+                Assert.Equal(fresh.BodyGroup.Center, travelled.BodyGroup.Center);
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(29, trial, e);
+            }
         }
     }
 
@@ -164,20 +173,27 @@ public class FishBoundingVolumeTests
         var rng = new Random(27);
         for (int trial = 0; trial < 2000; trial++)
         {
-            var points = new Vector2[trial % 33];
-            for (int i = 0; i < points.Length; i++)
+            try
             {
-                points[i] = FishTestKit.Point(rng, 2000f);
-            }
+                var points = new Vector2[trial % 33];
+                for (int i = 0; i < points.Length; i++)
+                {
+                    points[i] = FishTestKit.Point(rng, 2000f);
+                }
 
-            Vector2 c = FishTestKit.Point(rng, 2000f);
-            float expected = 0f;
-            foreach (var p in points)
+                Vector2 c = FishTestKit.Point(rng, 2000f);
+                float expected = 0f;
+                foreach (var p in points)
+                {
+                    expected = MathF.Max(expected, Vector2.DistanceSquared(p, c));
+                }
+
+                Assert.Equal(expected, EnclosingCircle.FarthestSquared(points, c));
+            }
+            catch (XunitException e)
             {
-                expected = MathF.Max(expected, Vector2.DistanceSquared(p, c));
+                throw RandomCaseException.At(27, trial, e);
             }
-
-            Assert.Equal(expected, EnclosingCircle.FarthestSquared(points, c));
         }
     }
 
@@ -199,35 +215,42 @@ public class FishBoundingVolumeTests
         var fish = new FishModel(FishSize.Default, default);
         for (int trial = 0; trial < 1000; trial++)
         {
-            fish.SetPose(FishTestKit.Pose(rng, spread: 1500f));
-            Vector2 lo = new(float.MaxValue), hi = new(float.MinValue);
-            foreach (var part in FishTestKit.AllParts)
+            try
             {
-                var leaf = fish.GetLeaf(part);
-                var bound = fish.GetLeafBound(part);
-                for (int axis = 0; axis < 4; axis++)
+                fish.SetPose(FishTestKit.Pose(rng, spread: 1500f));
+                Vector2 lo = new(float.MaxValue), hi = new(float.MinValue);
+                foreach (var part in FishTestKit.AllParts)
                 {
-                    float min = float.MaxValue, max = float.MinValue;
-                    foreach (var v in leaf)
+                    var leaf = fish.GetLeaf(part);
+                    var bound = fish.GetLeafBound(part);
+                    for (int axis = 0; axis < 4; axis++)
                     {
-                        float p = Vector2.Dot(v, KDop8.Axis(axis));
-                        min = MathF.Min(min, p);
-                        max = MathF.Max(max, p);
+                        float min = float.MaxValue, max = float.MinValue;
+                        foreach (var v in leaf)
+                        {
+                            float p = Vector2.Dot(v, KDop8.Axis(axis));
+                            min = MathF.Min(min, p);
+                            max = MathF.Max(max, p);
+                        }
+
+                        Assert.Equal(min, bound.GetMin(axis), 2e-3f);
+                        Assert.Equal(max, bound.GetMax(axis), 2e-3f);
                     }
 
-                    Assert.Equal(min, bound.GetMin(axis), 2e-3f);
-                    Assert.Equal(max, bound.GetMax(axis), 2e-3f);
+                    foreach (var v in leaf)
+                    {
+                        lo = Vector2.Min(lo, v);
+                        hi = Vector2.Max(hi, v);
+                    }
                 }
 
-                foreach (var v in leaf)
-                {
-                    lo = Vector2.Min(lo, v);
-                    hi = Vector2.Max(hi, v);
-                }
+                Assert.Equal(lo, fish.Bounds.Min);
+                Assert.Equal(hi, fish.Bounds.Max);
             }
-
-            Assert.Equal(lo, fish.Bounds.Min);
-            Assert.Equal(hi, fish.Bounds.Max);
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(23, trial, e);
+            }
         }
     }
 

@@ -3,6 +3,8 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Fish;
 
@@ -89,35 +91,42 @@ public class FishLeafGeometryTests
         var fish = new FishModel(FishSize.Default, default);
         for (int trial = 0; trial < 2000; trial++)
         {
-            var pose = FishTestKit.Pose(rng, spread: 1500f);
-            fish.SetPose(pose);
-            reference.SetPose(new FishPose(Vector2.Zero, 0f, pose.Joint1, pose.Joint2, pose.Joint3));
-            foreach (var part in FishTestKit.AllParts)
+            try
             {
-                var a = fish.GetLeaf(part);
-                var b = reference.GetLeaf(part);
-                for (int i = 0; i < a.Length; i++)
+                var pose = FishTestKit.Pose(rng, spread: 1500f);
+                fish.SetPose(pose);
+                reference.SetPose(new FishPose(Vector2.Zero, 0f, pose.Joint1, pose.Joint2, pose.Joint3));
+                foreach (var part in FishTestKit.AllParts)
                 {
-                    Vector2 ea = a[(i + 1) % a.Length] - a[i], eb = b[(i + 1) % b.Length] - b[i];
-                    Vector2 na = a[(i + 2) % a.Length] - a[(i + 1) % a.Length], nb = b[(i + 2) % b.Length] - b[(i + 1) % b.Length];
-                    Assert.Equal(eb.Length(), ea.Length(), 2e-3f);
-                    Assert.Equal(Angle(eb, nb), Angle(ea, na), 1e-4f);
-                }
-            }
-
-            foreach (var fin in new[] { FishPart.LeftCaudal, FishPart.RightCaudal })
-            {
-                var finA = fish.GetLeaf(fin);
-                var finB = reference.GetLeaf(fin);
-                var tailA = fish.GetLeaf(FishPart.Tail3);
-                var tailB = reference.GetLeaf(FishPart.Tail3);
-                for (int i = 0; i < finA.Length; i++)
-                {
-                    for (int j = 0; j < tailA.Length; j++)
+                    var a = fish.GetLeaf(part);
+                    var b = reference.GetLeaf(part);
+                    for (int i = 0; i < a.Length; i++)
                     {
-                        Assert.Equal(Vector2.Distance(finB[i], tailB[j]), Vector2.Distance(finA[i], tailA[j]), 2e-3f);
+                        Vector2 ea = a[(i + 1) % a.Length] - a[i], eb = b[(i + 1) % b.Length] - b[i];
+                        Vector2 na = a[(i + 2) % a.Length] - a[(i + 1) % a.Length], nb = b[(i + 2) % b.Length] - b[(i + 1) % b.Length];
+                        Assert.Equal(eb.Length(), ea.Length(), 2e-3f);
+                        Assert.Equal(Angle(eb, nb), Angle(ea, na), 1e-4f);
                     }
                 }
+
+                foreach (var fin in new[] { FishPart.LeftCaudal, FishPart.RightCaudal })
+                {
+                    var finA = fish.GetLeaf(fin);
+                    var finB = reference.GetLeaf(fin);
+                    var tailA = fish.GetLeaf(FishPart.Tail3);
+                    var tailB = reference.GetLeaf(FishPart.Tail3);
+                    for (int i = 0; i < finA.Length; i++)
+                    {
+                        for (int j = 0; j < tailA.Length; j++)
+                        {
+                            Assert.Equal(Vector2.Distance(finB[i], tailB[j]), Vector2.Distance(finA[i], tailA[j]), 2e-3f);
+                        }
+                    }
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(13, trial, e);
             }
         }
     }
@@ -130,27 +139,34 @@ public class FishLeafGeometryTests
         float[] lengths = [88f, 66f, 55f];
         for (int trial = 0; trial < 1000; trial++)
         {
-            var pose = FishTestKit.Pose(rng);
-            fish.SetPose(pose);
-            Vector2 start = pose.Position - (80f * new Vector2(MathF.Cos(pose.Heading), MathF.Sin(pose.Heading)));
-            float[] joints = [pose.Joint1, pose.Joint2, pose.Joint3];
-            for (int i = 0; i < 3; i++)
+            try
             {
-                var leaf = fish.GetLeaf(FishPart.Tail1 + i);
-                Vector2 d = new(MathF.Cos(pose.Heading + joints[i]), MathF.Sin(pose.Heading + joints[i]));
-                Vector2 end = start - (lengths[i] * d);
-
-                // Two vertices lie on the line through the start across d, two on the line through the end.
-                int atStart = 0, atEnd = 0;
-                foreach (var v in leaf)
+                var pose = FishTestKit.Pose(rng);
+                fish.SetPose(pose);
+                Vector2 start = pose.Position - (80f * new Vector2(MathF.Cos(pose.Heading), MathF.Sin(pose.Heading)));
+                float[] joints = [pose.Joint1, pose.Joint2, pose.Joint3];
+                for (int i = 0; i < 3; i++)
                 {
-                    atStart += MathF.Abs(Vector2.Dot(v - start, d)) < 2e-3f ? 1 : 0;
-                    atEnd += MathF.Abs(Vector2.Dot(v - end, d)) < 2e-3f ? 1 : 0;
-                }
+                    var leaf = fish.GetLeaf(FishPart.Tail1 + i);
+                    Vector2 d = new(MathF.Cos(pose.Heading + joints[i]), MathF.Sin(pose.Heading + joints[i]));
+                    Vector2 end = start - (lengths[i] * d);
 
-                Assert.Equal(2, atStart);
-                Assert.Equal(2, atEnd);
-                start = end;
+                    // Two vertices lie on the line through the start across d, two on the line through the end.
+                    int atStart = 0, atEnd = 0;
+                    foreach (var v in leaf)
+                    {
+                        atStart += MathF.Abs(Vector2.Dot(v - start, d)) < 2e-3f ? 1 : 0;
+                        atEnd += MathF.Abs(Vector2.Dot(v - end, d)) < 2e-3f ? 1 : 0;
+                    }
+
+                    Assert.Equal(2, atStart);
+                    Assert.Equal(2, atEnd);
+                    start = end;
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(14, trial, e);
             }
         }
     }

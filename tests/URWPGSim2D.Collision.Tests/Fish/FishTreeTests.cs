@@ -6,6 +6,8 @@ using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Fish;
 
@@ -201,18 +203,25 @@ public class FishTreeTests
         var contacts = new FishContact[8];
         for (int trial = 0; trial < 500; trial++)
         {
-            fish.SetPose(FishTestKit.Pose(rng, 0.8f, 100f));
-            Shape[] shapes = [FishTestKit.Circle(rng, 300f), FishTestKit.Aabb(rng, 300f), FishTestKit.KDop(rng, 300f), FishTestKit.Polygon(rng, 300f), FishTestKit.Segment(rng, 300f)];
-            Assert.Equal(FishCollision.Detect(fish, shapes[0].AsCircle()), FishCollision.Detect(fish, shapes[0]));
-            Assert.Equal(FishCollision.Detect(fish, shapes[1].AsAabb()), FishCollision.Detect(fish, shapes[1]));
-            Assert.Equal(FishCollision.Detect(fish, shapes[2].AsKDop8()), FishCollision.Detect(fish, shapes[2]));
-            Assert.Equal(FishCollision.Detect(fish, shapes[3].AsPolygon()), FishCollision.Detect(fish, shapes[3]));
-            Assert.Equal(FishCollision.Detect(fish, shapes[4].AsSegment()), FishCollision.Detect(fish, shapes[4]));
-            foreach (var s in shapes)
+            try
             {
-                Assert.Equal(FishCollision.Detect(fish, s).Swapped(), FishCollision.Detect(s, fish));
-                int n = FishCollision.DetectAll(s, fish, contacts);
-                Assert.Equal(FishCollision.DetectAll(fish, s, new FishContact[8]), n);
+                fish.SetPose(FishTestKit.Pose(rng, 0.8f, 100f));
+                Shape[] shapes = [FishTestKit.Circle(rng, 300f), FishTestKit.Aabb(rng, 300f), FishTestKit.KDop(rng, 300f), FishTestKit.Polygon(rng, 300f), FishTestKit.Segment(rng, 300f)];
+                Assert.Equal(FishCollision.Detect(fish, shapes[0].AsCircle()), FishCollision.Detect(fish, shapes[0]));
+                Assert.Equal(FishCollision.Detect(fish, shapes[1].AsAabb()), FishCollision.Detect(fish, shapes[1]));
+                Assert.Equal(FishCollision.Detect(fish, shapes[2].AsKDop8()), FishCollision.Detect(fish, shapes[2]));
+                Assert.Equal(FishCollision.Detect(fish, shapes[3].AsPolygon()), FishCollision.Detect(fish, shapes[3]));
+                Assert.Equal(FishCollision.Detect(fish, shapes[4].AsSegment()), FishCollision.Detect(fish, shapes[4]));
+                foreach (var s in shapes)
+                {
+                    Assert.Equal(FishCollision.Detect(fish, s).Swapped(), FishCollision.Detect(s, fish));
+                    int n = FishCollision.DetectAll(s, fish, contacts);
+                    Assert.Equal(FishCollision.DetectAll(fish, s, new FishContact[8]), n);
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(37, trial, e);
             }
         }
     }

@@ -2,6 +2,8 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 
@@ -15,25 +17,32 @@ public sealed class RigidTransformTests
         var rng = new Random(81);
         for (int trial = 0; trial < 2000; trial++)
         {
-            int n = trial % 14;
-            var local = new Vector2[n];
-            for (int i = 0; i < n; i++)
+            try
             {
-                local[i] = new Vector2((float)((rng.NextDouble() * 400) - 200), (float)((rng.NextDouble() * 400) - 200));
-            }
+                int n = trial % 14;
+                var local = new Vector2[n];
+                for (int i = 0; i < n; i++)
+                {
+                    local[i] = new Vector2((float)((rng.NextDouble() * 400) - 200), (float)((rng.NextDouble() * 400) - 200));
+                }
 
-            (float sin, float cos) = MathF.SinCos((float)(rng.NextDouble() * 20 - 10));
-            var rotation = new Vector2(cos, sin);
-            var origin = new Vector2((float)((rng.NextDouble() * 50000) - 25000), (float)((rng.NextDouble() * 50000) - 25000));
-            var placed = new Vector2[n];
-            var turned = new Vector2[n];
-            RigidTransform.Place(local, placed, origin, rotation);
-            RigidTransform.Turn(local, turned, rotation);
-            for (int i = 0; i < n; i++)
+                (float sin, float cos) = MathF.SinCos((float)(rng.NextDouble() * 20 - 10));
+                var rotation = new Vector2(cos, sin);
+                var origin = new Vector2((float)((rng.NextDouble() * 50000) - 25000), (float)((rng.NextDouble() * 50000) - 25000));
+                var placed = new Vector2[n];
+                var turned = new Vector2[n];
+                RigidTransform.Place(local, placed, origin, rotation);
+                RigidTransform.Turn(local, turned, rotation);
+                for (int i = 0; i < n; i++)
+                {
+                    Vector2 r = new((local[i].X * cos) - (local[i].Y * sin), (local[i].X * sin) + (local[i].Y * cos));
+                    Assert.Equal(r, turned[i]);
+                    Assert.Equal(origin + r, placed[i]);
+                }
+            }
+            catch (XunitException e)
             {
-                Vector2 r = new((local[i].X * cos) - (local[i].Y * sin), (local[i].X * sin) + (local[i].Y * cos));
-                Assert.Equal(r, turned[i]);
-                Assert.Equal(origin + r, placed[i]);
+                throw RandomCaseException.At(81, trial, e);
             }
         }
     }

@@ -3,6 +3,8 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 
@@ -21,41 +23,48 @@ public sealed class BodyBoundsTests
         double slackTail = 0, slackBody = 0;
         for (int trial = 0; trial < 3000; trial++)
         {
-            bool jointsChange = trial % 2 == 0;
-            fish.Position = new Vector2(Signed(random) * 1000f, Signed(random) * 800f);
-            fish.Heading = Signed(random) * MathF.PI;
-            if (jointsChange)
+            try
             {
-                fish.Joint1 = Signed(random) * 1.2f;
-                fish.Joint2 = Signed(random) * 1.2f;
-                fish.Joint3 = Signed(random) * 1.2f;
-            }
-            else
-            {
-                fish.SyncModelAt(fish.Position + new Vector2(Signed(random) * 50f, Signed(random) * 50f), fish.Heading + (Signed(random) * 0.3f));
-            }
-
-            fish.Invalidate();
-            Assert.Equal(!jointsChange, fish.JointsCurrent);
-            fish.Groups(out Disc body, out Disc tail);
-            Disc bound = fish.Bound();
-
-            FishModel exact = fish.PosedModel;
-            for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
-            {
-                bool isBody = part <= FishPart.RightPectoral;
-                Disc group = isBody ? body : tail;
-                foreach (Vector2 v in exact.GetLeaf(part))
+                bool jointsChange = trial % 2 == 0;
+                fish.Position = new Vector2(Signed(random) * 1000f, Signed(random) * 800f);
+                fish.Heading = Signed(random) * MathF.PI;
+                if (jointsChange)
                 {
-                    float inside = group.Radius - Vector2.Distance(v, group.Center);
-                    Assert.True(inside >= -1e-3f, $"trial {trial}: {part} vertex {v} is {-inside} mm outside its group circle");
-                    Assert.True(bound.Radius - Vector2.Distance(v, bound.Center) >= -1e-3f, $"trial {trial}: {part} outside the bound");
-                    if (jointsChange)
+                    fish.Joint1 = Signed(random) * 1.2f;
+                    fish.Joint2 = Signed(random) * 1.2f;
+                    fish.Joint3 = Signed(random) * 1.2f;
+                }
+                else
+                {
+                    fish.SyncModelAt(fish.Position + new Vector2(Signed(random) * 50f, Signed(random) * 50f), fish.Heading + (Signed(random) * 0.3f));
+                }
+
+                fish.Invalidate();
+                Assert.Equal(!jointsChange, fish.JointsCurrent);
+                fish.Groups(out Disc body, out Disc tail);
+                Disc bound = fish.Bound();
+
+                FishModel exact = fish.PosedModel;
+                for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
+                {
+                    bool isBody = part <= FishPart.RightPectoral;
+                    Disc group = isBody ? body : tail;
+                    foreach (Vector2 v in exact.GetLeaf(part))
                     {
-                        slackTail = isBody ? slackTail : Math.Max(slackTail, tail.Radius - exact.TailGroup.Radius);
-                        slackBody = isBody ? Math.Max(slackBody, body.Radius - exact.BodyGroup.Radius) : slackBody;
+                        float inside = group.Radius - Vector2.Distance(v, group.Center);
+                        Assert.True(inside >= -1e-3f, $"trial {trial}: {part} vertex {v} is {-inside} mm outside its group circle");
+                        Assert.True(bound.Radius - Vector2.Distance(v, bound.Center) >= -1e-3f, $"trial {trial}: {part} outside the bound");
+                        if (jointsChange)
+                        {
+                            slackTail = isBody ? slackTail : Math.Max(slackTail, tail.Radius - exact.TailGroup.Radius);
+                            slackBody = isBody ? Math.Max(slackBody, body.Radius - exact.BodyGroup.Radius) : slackBody;
+                        }
                     }
                 }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(99, trial, e);
             }
         }
 

@@ -5,6 +5,8 @@ using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
@@ -19,15 +21,22 @@ public sealed class FaceLoopsTests
         int overlapping = 0;
         for (int trial = 0; trial < 20000; trial++)
         {
-            Vector2[] a = Shape(rng, out Vector2[] na), b = Shape(rng, out _);
-            bool vector = FaceLoops.GreatestSeparationVector(a, na, b, out int face, out float separation);
-            bool scalar = FaceLoops.GreatestSeparationScalar(a, na, b, out int scalarFace, out float scalarSeparation);
-            Assert.Equal(scalar, vector);
-            if (scalar)
+            try
             {
-                overlapping++;
-                Assert.Equal(scalarFace, face);
-                Assert.Equal(scalarSeparation, separation);
+                Vector2[] a = Shape(rng, out Vector2[] na), b = Shape(rng, out _);
+                bool vector = FaceLoops.GreatestSeparationVector(a, na, b, out int face, out float separation);
+                bool scalar = FaceLoops.GreatestSeparationScalar(a, na, b, out int scalarFace, out float scalarSeparation);
+                Assert.Equal(scalar, vector);
+                if (scalar)
+                {
+                    overlapping++;
+                    Assert.Equal(scalarFace, face);
+                    Assert.Equal(scalarSeparation, separation);
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(91, trial, e);
             }
         }
 
@@ -54,24 +63,31 @@ public sealed class FaceLoopsTests
         var rng = new Random(92);
         for (int trial = 0; trial < 20000; trial++)
         {
-            Vector2[] a = Shape(rng, out Vector2[] na);
-            Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
-            bool inside = true;
-            for (int i = 0; i < na.Length; i++)
+            try
             {
-                inside &= Vector2.Dot(na[i], p - a[i]) <= 1e-3f;
-            }
-
-            Assert.Equal(inside, FaceLoops.Inside(a, na, p, 1e-3f));
-            if (na.Length > 0)
-            {
-                int least = 0;
-                for (int j = 1; j < na.Length; j++)
+                Vector2[] a = Shape(rng, out Vector2[] na);
+                Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
+                bool inside = true;
+                for (int i = 0; i < na.Length; i++)
                 {
-                    least = Vector2.Dot(na[j], p) < Vector2.Dot(na[least], p) ? j : least;
+                    inside &= Vector2.Dot(na[i], p - a[i]) <= 1e-3f;
                 }
 
-                Assert.Equal(least, FaceLoops.LeastDot(na, p));
+                Assert.Equal(inside, FaceLoops.Inside(a, na, p, 1e-3f));
+                if (na.Length > 0)
+                {
+                    int least = 0;
+                    for (int j = 1; j < na.Length; j++)
+                    {
+                        least = Vector2.Dot(na[j], p) < Vector2.Dot(na[least], p) ? j : least;
+                    }
+
+                    Assert.Equal(least, FaceLoops.LeastDot(na, p));
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(92, trial, e);
             }
         }
     }
@@ -83,27 +99,34 @@ public sealed class FaceLoopsTests
         int crossing = 0;
         for (int trial = 0; trial < 20000; trial++)
         {
-            Vector2[] a = Shape(rng, out Vector2[] na);
-            if (trial % 10 == 0)
+            try
             {
-                // An axis-aligned box: lines along x or z are parallel to two of its faces.
-                a = [new(-40f, -30f), new(50f, -30f), new(50f, 20f), new(-40f, 20f)];
-                na = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
-            }
+                Vector2[] a = Shape(rng, out Vector2[] na);
+                if (trial % 10 == 0)
+                {
+                    // An axis-aligned box: lines along x or z are parallel to two of its faces.
+                    a = [new(-40f, -30f), new(50f, -30f), new(50f, 20f), new(-40f, 20f)];
+                    na = [new(0f, -1f), new(1f, 0f), new(0f, 1f), new(-1f, 0f)];
+                }
 
-            if (a.Length < 3)
+                if (a.Length < 3)
+                {
+                    continue;
+                }
+
+                Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
+                float angle = trial % 5 == 0 ? rng.Next(4) * MathF.PI / 2f : FishTestKit.Range(rng, 0f, 6.3f);
+                Vector2 u = trial % 5 == 0 ? new Vector2(MathF.Round(MathF.Cos(angle)), MathF.Round(MathF.Sin(angle))) : new Vector2(MathF.Cos(angle), MathF.Sin(angle));
+                FaceLoops.LineInterval(a, na, p, u, out float lo, out float hi);
+                ContactRegion.PolygonLineInterval(a, na, p, u, out float scalarLo, out float scalarHi);
+                Assert.Equal(scalarLo, lo);
+                Assert.Equal(scalarHi, hi);
+                crossing += lo <= hi ? 1 : 0;
+            }
+            catch (XunitException e)
             {
-                continue;
+                throw RandomCaseException.At(94, trial, e);
             }
-
-            Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
-            float angle = trial % 5 == 0 ? rng.Next(4) * MathF.PI / 2f : FishTestKit.Range(rng, 0f, 6.3f);
-            Vector2 u = trial % 5 == 0 ? new Vector2(MathF.Round(MathF.Cos(angle)), MathF.Round(MathF.Sin(angle))) : new Vector2(MathF.Cos(angle), MathF.Sin(angle));
-            FaceLoops.LineInterval(a, na, p, u, out float lo, out float hi);
-            ContactRegion.PolygonLineInterval(a, na, p, u, out float scalarLo, out float scalarHi);
-            Assert.Equal(scalarLo, lo);
-            Assert.Equal(scalarHi, hi);
-            crossing += lo <= hi ? 1 : 0;
         }
 
         Assert.InRange(crossing, 1000, 19000);
@@ -119,22 +142,29 @@ public sealed class FaceLoopsTests
         int hits = 0;
         for (int trial = 0; trial < 2000; trial++)
         {
-            f.SetPose(FishTestKit.Pose(rng, MathF.PI, 150f));
-            g.SetPose(FishTestKit.Pose(rng, MathF.PI, 150f));
-            for (int la = 0; la < 8; la++)
+            try
             {
-                for (int lb = 0; lb < 8; lb++)
+                f.SetPose(FishTestKit.Pose(rng, MathF.PI, 150f));
+                g.SetPose(FishTestKit.Pose(rng, MathF.PI, 150f));
+                for (int la = 0; la < 8; la++)
                 {
-                    var full = ConvexSat.Detect(f.LeafView(la), g.LeafView(lb));
-                    bool overlap = ConvexSat.Depth(f.LeafView(la), g.LeafView(lb), out ContactDepth depth);
-                    Assert.Equal(full.Intersect, overlap);
-                    if (overlap)
+                    for (int lb = 0; lb < 8; lb++)
                     {
-                        hits++;
-                        Assert.Equal(full, ConvexSat.Complete(f.LeafView(la), g.LeafView(lb), depth));
-                        Assert.Equal(full.MinimumTranslationVector.LengthSquared(), depth.MtvLengthSquared);
+                        var full = ConvexSat.Detect(f.LeafView(la), g.LeafView(lb));
+                        bool overlap = ConvexSat.Depth(f.LeafView(la), g.LeafView(lb), out ContactDepth depth);
+                        Assert.Equal(full.Intersect, overlap);
+                        if (overlap)
+                        {
+                            hits++;
+                            Assert.Equal(full, ConvexSat.Complete(f.LeafView(la), g.LeafView(lb), depth));
+                            Assert.Equal(full.MinimumTranslationVector.LengthSquared(), depth.MtvLengthSquared);
+                        }
                     }
                 }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(93, trial, e);
             }
         }
 

@@ -5,6 +5,8 @@ using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
 using Xunit;
+using Xunit.Sdk;
+using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Pool;
 
@@ -81,24 +83,31 @@ public class FieldContainmentTests
         int outside = 0;
         for (int trial = 0; trial < 5000; trial++)
         {
-            var field = fields[trial % 2];
-            float hx = field.Length / 2f, hz = field.Width / 2f;
-            var c = new Circle(new Vector2(FishTestKit.Range(rng, -hx - 100f, hx + 100f), FishTestKit.Range(rng, -hz - 100f, hz + 100f)), FishTestKit.Range(rng, 10f, 120f));
-            var r = field.Contain(c);
-            bool isInside = c.Center.X - c.Radius >= -hx && c.Center.X + c.Radius <= hx && c.Center.Y - c.Radius >= -hz && c.Center.Y + c.Radius <= hz;
-            Assert.Equal(!isInside, r.Intersect);
-            if (r.Intersect)
+            try
             {
-                outside++;
-                var moved = c.Translated(XZPlane(r.MinimumTranslationVector));
-                Assert.True(
-                    MathF.Abs(moved.Center.X) + moved.Radius <= hx + 1e-3f && MathF.Abs(moved.Center.Y) + moved.Radius <= hz + 1e-3f,
-                    $"trial {trial}: still outside after the MTV");
+                var field = fields[trial % 2];
+                float hx = field.Length / 2f, hz = field.Width / 2f;
+                var c = new Circle(new Vector2(FishTestKit.Range(rng, -hx - 100f, hx + 100f), FishTestKit.Range(rng, -hz - 100f, hz + 100f)), FishTestKit.Range(rng, 10f, 120f));
+                var r = field.Contain(c);
+                bool isInside = c.Center.X - c.Radius >= -hx && c.Center.X + c.Radius <= hx && c.Center.Y - c.Radius >= -hz && c.Center.Y + c.Radius <= hz;
+                Assert.Equal(!isInside, r.Intersect);
+                if (r.Intersect)
+                {
+                    outside++;
+                    var moved = c.Translated(XZPlane(r.MinimumTranslationVector));
+                    Assert.True(
+                        MathF.Abs(moved.Center.X) + moved.Radius <= hx + 1e-3f && MathF.Abs(moved.Center.Y) + moved.Radius <= hz + 1e-3f,
+                        $"trial {trial}: still outside after the MTV");
 
-                // Each axis moves exactly by its overshoot: the shortest translation that fits.
-                float over = Math.Max(0f, c.Center.X + c.Radius - hx) + Math.Max(0f, -hx - (c.Center.X - c.Radius));
-                Assert.Equal(over, Math.Abs(r.MinimumTranslationVector.X), 1e-3f);
-                Assert.Equal(1f, r.NormalAxis.Length(), 1e-5f);
+                    // Each axis moves exactly by its overshoot: the shortest translation that fits.
+                    float over = Math.Max(0f, c.Center.X + c.Radius - hx) + Math.Max(0f, -hx - (c.Center.X - c.Radius));
+                    Assert.Equal(over, Math.Abs(r.MinimumTranslationVector.X), 1e-3f);
+                    Assert.Equal(1f, r.NormalAxis.Length(), 1e-5f);
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(51, trial, e);
             }
         }
 
@@ -113,41 +122,48 @@ public class FieldContainmentTests
         int outside = 0;
         for (int trial = 0; trial < 3000; trial++)
         {
-            var pose = new FishPose(new Vector2(FishTestKit.Range(rng, -1700f, 1700f), FishTestKit.Range(rng, -1200f, 1200f)), FishTestKit.Range(rng, -MathF.PI, MathF.PI), FishTestKit.Range(rng, -0.8f, 0.8f), FishTestKit.Range(rng, -0.8f, 0.8f), FishTestKit.Range(rng, -0.8f, 0.8f));
-            fish.SetPose(pose);
-            var contact = _field.Contain(fish);
-            bool inside = true;
-            float deepest = float.NegativeInfinity;
-            FishPart deepestPart = FishPart.Body;
-            Vector2 n = XZPlane(contact.Result.NormalAxis);
-            foreach (var part in FishTestKit.AllParts)
+            try
             {
-                foreach (var v in fish.GetLeaf(part))
+                var pose = new FishPose(new Vector2(FishTestKit.Range(rng, -1700f, 1700f), FishTestKit.Range(rng, -1200f, 1200f)), FishTestKit.Range(rng, -MathF.PI, MathF.PI), FishTestKit.Range(rng, -0.8f, 0.8f), FishTestKit.Range(rng, -0.8f, 0.8f), FishTestKit.Range(rng, -0.8f, 0.8f));
+                fish.SetPose(pose);
+                var contact = _field.Contain(fish);
+                bool inside = true;
+                float deepest = float.NegativeInfinity;
+                FishPart deepestPart = FishPart.Body;
+                Vector2 n = XZPlane(contact.Result.NormalAxis);
+                foreach (var part in FishTestKit.AllParts)
                 {
-                    inside &= MathF.Abs(v.X) <= 1500f && MathF.Abs(v.Y) <= 1000f;
-                    if (Vector2.Dot(v, -n) > deepest)
+                    foreach (var v in fish.GetLeaf(part))
                     {
-                        deepest = Vector2.Dot(v, -n);
-                        deepestPart = part;
+                        inside &= MathF.Abs(v.X) <= 1500f && MathF.Abs(v.Y) <= 1000f;
+                        if (Vector2.Dot(v, -n) > deepest)
+                        {
+                            deepest = Vector2.Dot(v, -n);
+                            deepestPart = part;
+                        }
                     }
                 }
-            }
 
-            Assert.Equal(!inside, contact.Intersect);
-            if (!contact.Intersect)
+                Assert.Equal(!inside, contact.Intersect);
+                if (!contact.Intersect)
+                {
+                    Assert.Null(contact.PartA);
+                    continue;
+                }
+
+                outside++;
+                Assert.Equal(deepestPart, contact.PartA);
+                Assert.Null(contact.PartB);
+                fish.SetPose(pose.Translated(XZPlane(contact.Result.MinimumTranslationVector)));
+                Assert.True(
+                    MathF.Max(MathF.Abs(fish.Bounds.Min.X), MathF.Abs(fish.Bounds.Max.X)) <= 1500f + 1e-3f
+                    && MathF.Max(MathF.Abs(fish.Bounds.Min.Y), MathF.Abs(fish.Bounds.Max.Y)) <= 1000f + 1e-3f,
+                    $"trial {trial}: fish still outside after the MTV: {fish.Bounds.Min} {fish.Bounds.Max}");
+            }
+            catch (XunitException e)
             {
-                Assert.Null(contact.PartA);
-                continue;
+                throw RandomCaseException.At(52, trial, e);
             }
-
-            outside++;
-            Assert.Equal(deepestPart, contact.PartA);
-            Assert.Null(contact.PartB);
-            fish.SetPose(pose.Translated(XZPlane(contact.Result.MinimumTranslationVector)));
-            Assert.True(
-                MathF.Max(MathF.Abs(fish.Bounds.Min.X), MathF.Abs(fish.Bounds.Max.X)) <= 1500f + 1e-3f
-                && MathF.Max(MathF.Abs(fish.Bounds.Min.Y), MathF.Abs(fish.Bounds.Max.Y)) <= 1000f + 1e-3f,
-                $"trial {trial}: fish still outside after the MTV: {fish.Bounds.Min} {fish.Bounds.Max}");
         }
 
         Assert.InRange(outside, 300, 2700);

@@ -1,19 +1,23 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
+using Xunit.Sdk;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
+using URWPGSim2D.Server.Tests.Support;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>
 /// <c>collide</c> with fish: hand-checked contacts on the reference's θ = 0 fish (both orders),
-/// part names, the output form, and agreement with <see cref="FishCollision"/> called directly
-/// on random pairs of every kind.
+/// part names, the output form, agreement with brute force over the reference's leaf polygons
+/// (fish–ball), and with <see cref="FishCollision"/> called directly on random pairs of every
+/// kind (the command's dispatch: which side is the fish, swapped pairs, part names).
 /// </summary>
 public sealed class CollideFishTests
 {
@@ -172,21 +176,117 @@ public sealed class CollideFishTests
         int hits = 0;
         for (int i = 0; i < expected.Count; i++)
         {
-            var e = expected[i];
-            var a = answers[i];
-            hits += e.Intersect ? 1 : 0;
-            Assert.Equal(e.Intersect, a.GetProperty("intersect").GetBoolean());
-            Assert.Equal(Floats(e.Result.MinimumTranslationVector), Floats(a, "mtv"));
-            Assert.Equal(Floats(e.Result.NormalAxis), Floats(a, "normal"));
-            Assert.Equal(Floats(e.Result.ActionPoint), Floats(a, "actionPoint"));
-            if (a.TryGetProperty("partA", out _))
+            try
             {
-                Assert.Equal(Name(e.PartA), Part(a, "partA"));
-                Assert.Equal(Name(e.PartB), Part(a, "partB"));
+                var e = expected[i];
+                var a = answers[i];
+                hits += e.Intersect ? 1 : 0;
+                Assert.Equal(e.Intersect, a.GetProperty("intersect").GetBoolean());
+                Assert.Equal(Floats(e.Result.MinimumTranslationVector), Floats(a, "mtv"));
+                Assert.Equal(Floats(e.Result.NormalAxis), Floats(a, "normal"));
+                Assert.Equal(Floats(e.Result.ActionPoint), Floats(a, "actionPoint"));
+                if (a.TryGetProperty("partA", out _))
+                {
+                    Assert.Equal(Name(e.PartA), Part(a, "partA"));
+                    Assert.Equal(Name(e.PartB), Part(a, "partB"));
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(31337, i, e);
             }
         }
 
         Assert.InRange(hits, 150, 500);
+    }
+
+    [Fact]
+    public void FishBallAnswersAgreeWithBruteForceOverTheReferenceLeaves()
+    {
+        // Independent truth: the reference's leaf polygons (ReferenceFish, from the formulas) and
+        // point–polygon distances in double. A ball intersects the fish when its centre is nearer
+        // than its radius to some leaf; the part named must be such a leaf, and when the centre is
+        // outside that leaf the depth |mtv| is the radius minus the distance.
+        const int seed = 8086;
+        var random = new Random(seed);
+        var cases = new List<(double[] Pose, double X, double Z, double R)>();
+        for (int i = 0; i < 400; i++)
+        {
+            cases.Add(([F(random, -100, 100), F(random, -100, 100), F(random, -4, 4), F(random, -1, 1), F(random, -1, 1), F(random, -1, 1)],
+                F(random, -220, 220), F(random, -220, 220), F(random, 10, 80)));
+        }
+
+        var run = CliRun.Collide(Pairs([.. cases.Select(c => Pair(Fish(c.Pose[0], c.Pose[1], c.Pose[2], c.Pose[3], c.Pose[4], c.Pose[5]), Circle(c.X, c.Z, c.R)))]));
+
+        Assert.Equal((0, string.Empty), (run.ExitCode, run.Stderr));
+        var answers = JsonDocument.Parse(run.Stdout).RootElement;
+        int hits = 0, misses = 0;
+        for (int i = 0; i < cases.Count; i++)
+        {
+            var (pose, x, z, r) = cases[i];
+            string where = $"case {i} (seed {seed}): fish at [{string.Join(", ", pose)}], ball ({x}, {z}) r {r}";
+            var leaves = ReferenceFish.Leaves(ReferenceFish.DeployedSize, (float)pose[0], (float)pose[1], (float)pose[2], (float)pose[3], (float)pose[4], (float)pose[5]);
+            double[] distance = [.. leaves.Select(leaf => Distance(leaf, (float)x, (float)z))];
+            double nearest = distance.Min();
+            var answer = answers[i];
+            bool intersect = answer.GetProperty("intersect").GetBoolean();
+            if (Math.Abs(nearest - (float)r) < 1e-2)
+            {
+                continue; // grazing: either answer is within round-off
+            }
+
+            Assert.True(intersect == nearest < (float)r, $"{where}: intersect {intersect}, but the nearest leaf is {nearest} from the centre");
+            if (!intersect)
+            {
+                misses++;
+                continue;
+            }
+
+            hits++;
+            int part = Array.IndexOf(ReferenceFish.PartNames, Part(answer, "partA"));
+            Assert.True(part >= 0 && distance[part] < (float)r + 1e-2, $"{where}: part {Part(answer, "partA")} is {(part >= 0 ? distance[part] : double.NaN)} from the centre");
+            if (distance[part] > 1e-3)
+            {
+                var (mx, mz) = Vector(answer, "mtv");
+                double depth = Math.Sqrt((mx * mx) + (mz * mz));
+                Assert.True(Math.Abs(depth - ((float)r - distance[part])) < 1e-2, $"{where}: depth {depth}, expected {(float)r - distance[part]} on {Part(answer, "partA")}");
+            }
+        }
+
+        Assert.InRange(hits, 60, 340);
+        Assert.InRange(misses, 60, 340);
+    }
+
+    // Distance from a point to a convex polygon (0 inside), in double.
+    private static double Distance((double X, double Z)[] polygon, double x, double z)
+    {
+        bool inside = true;
+        double best = double.PositiveInfinity;
+        double orientation = 0;
+        for (int k = 0; k < polygon.Length; k++)
+        {
+            var (ax, az) = polygon[k];
+            var (bx, bz) = polygon[(k + 1) % polygon.Length];
+            orientation += (ax * bz) - (bx * az);
+        }
+
+        for (int k = 0; k < polygon.Length; k++)
+        {
+            var (ax, az) = polygon[k];
+            var (bx, bz) = polygon[(k + 1) % polygon.Length];
+            double ex = bx - ax, ez = bz - az;
+            double cross = (ex * (z - az)) - (ez * (x - ax));
+            if (cross * orientation < 0)
+            {
+                inside = false;
+            }
+
+            double t = Math.Clamp((((x - ax) * ex) + ((z - az) * ez)) / ((ex * ex) + (ez * ez)), 0, 1);
+            double dx = ax + (t * ex) - x, dz = az + (t * ez) - z;
+            best = Math.Min(best, Math.Sqrt((dx * dx) + (dz * dz)));
+        }
+
+        return inside ? 0 : best;
     }
 
     private static (string Text, FishModel? Fish, Shape Shape) RandomSide(Random random, bool forceFish)
