@@ -143,9 +143,6 @@ internal sealed class Body
     /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
     public bool Collides = true;
 
-    /// <summary>The body's last exact tests (as A) against its partners, at the poses they were made.</summary>
-    public DetectMemo Memo { get; } = new();
-
     /// <summary>A moving circle.</summary>
     public static Body Circle(int id, float radius, Vector2 position) =>
         new(BodyKind.Circle, id) { Radius = radius, Position = position, Thickness = 2f * radius };

@@ -19,20 +19,8 @@ internal static class PairTest
 {
     private const int MaxOutline = ConvexPolygon.MaxVertices;
 
-    /// <summary>The contact of A and B now (MTV moves A), or no contact; a test repeated at the same poses is answered from A's <see cref="DetectMemo"/>.</summary>
-    public static Hit Detect(Body a, Body b)
-    {
-        if (a.Memo.TryGet(a, b, out Hit hit))
-        {
-            return hit;
-        }
-
-        hit = Compute(a, b);
-        a.Memo.Store(a, b, hit);
-        return hit;
-    }
-
-    private static Hit Compute(Body a, Body b) => a.Kind switch
+    /// <summary>The contact of A and B now (MTV moves A), or no contact.</summary>
+    public static Hit Detect(Body a, Body b) => a.Kind switch
     {
         BodyKind.Circle => CircleWith(new Circle(a.Position, a.Radius), b),
         BodyKind.Polygon => PolygonWith(a, b),

@@ -32,6 +32,7 @@ internal sealed class SweepPlanner
     private float[] _radius = [];
     private PairList _found = new(256);
     private IndexList _near = new(64);
+    private bool _loaded; // the broad phase holds the current bodies' boxes
 
     public SweepPlanner(IBroadPhase broadPhase) => _broad = broadPhase;
 
@@ -50,6 +51,7 @@ internal sealed class SweepPlanner
         _movers = movers;
         _statics = statics;
         _walls = walls;
+        _loaded = false;
         int m = movers.Length;
         _boxes = new Aabb[m + statics.Length];
         _velocity = new Vector2[m];
@@ -74,13 +76,8 @@ internal sealed class SweepPlanner
     /// </summary>
     public void PlanAll(double time, IPairSink sink)
     {
+        LoadAll(time);
         int movers = _movers.Length;
-        for (int m = 0; m < movers; m++)
-        {
-            Measure(m, time);
-        }
-
-        _broad.Reset(_boxes, movers);
         _broad.FindPairs(_found);
         var found = _found.Items;
         int k = 0;
@@ -95,6 +92,19 @@ internal sealed class SweepPlanner
         }
     }
 
+    // Every mover measured from the time and the broad phase rebuilt over all boxes.
+    private void LoadAll(double time)
+    {
+        int movers = _movers.Length;
+        for (int m = 0; m < movers; m++)
+        {
+            Measure(m, time);
+        }
+
+        _broad.Reset(_boxes, movers);
+        _loaded = true;
+    }
+
     /// <summary>
     /// Measures the given movers again from <paramref name="time"/> (their poses or velocities
     /// changed) and reports every candidate pair they are part of. Pairs between two of them are
@@ -102,6 +112,11 @@ internal sealed class SweepPlanner
     /// </summary>
     public void PlanFor(ReadOnlySpan<int> movers, ReadOnlySpan<bool> isListed, double time, IPairSink sink)
     {
+        if (!_loaded)
+        {
+            LoadAll(time); // nothing planned yet (settling before the first step)
+        }
+
         foreach (int m in movers)
         {
             Measure(m, time);

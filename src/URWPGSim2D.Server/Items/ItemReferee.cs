@@ -95,6 +95,9 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <summary>The most cycles the match can last: <see cref="Cycles"/>, or more for an item that plays extra periods.</summary>
     public virtual int MaxCycles => Cycles;
 
+    /// <summary>What half time changes, for its event's text (default "teams change ends").</summary>
+    protected virtual string HalfTimeChange => "teams change ends";
+
     /// <summary>Whether the current half is over before its time (e.g. three catches).</summary>
     protected virtual bool HalfDone => false;
 
@@ -153,7 +156,7 @@ internal abstract class ItemReferee : ITraceItemInfo
         {
             if (Half < Halves && !MatchDone)
             {
-                AddEvent(ItemEvent.Plain(world.Cycle, "half-time", string.Create(CultureInfo.InvariantCulture, $"half {Half} over: teams change ends")));
+                AddEvent(ItemEvent.Plain(world.Cycle, "half-time", string.Create(CultureInfo.InvariantCulture, $"half {Half} over: {HalfTimeChange}")));
                 Half++;
                 HalfStartCycle = world.Cycle;
                 moved |= OnHalfTime(world);

@@ -82,8 +82,9 @@ internal static class ItemScenarioParser
     {
         Object(e, path);
         OnlyKnown(e, path, "position", "heading", "strategy", "decision");
-        Vector2 position = e.TryGetProperty("position", out var p) ? Vector(p, path + ".position") : d.Position;
-        if (MathF.Abs(position.X) >= s.FieldLength * 0.5f || MathF.Abs(position.Y) >= s.FieldWidth * 0.5f)
+        bool placed = e.TryGetProperty("position", out var p);
+        Vector2 position = placed ? Vector(p, path + ".position") : d.Position; // the item's own pose may be a parking place off the field
+        if (placed && (MathF.Abs(position.X) >= s.FieldLength * 0.5f || MathF.Abs(position.Y) >= s.FieldWidth * 0.5f))
         {
             throw new ScenarioException(path + ".position", $"must be inside the field (|x| < {s.FieldLength * 0.5f}, |z| < {s.FieldWidth * 0.5f}), got [{position.X}, {position.Y}]");
         }

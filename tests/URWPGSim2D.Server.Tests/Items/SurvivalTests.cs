@@ -102,7 +102,8 @@ public sealed class SurvivalTests
         Assert.Equal(1, match.Referee!.Half);
         match.JudgeCycle(Meet(Prey3, Hunter0));
 
-        Assert.Equal(3, Assert.Single(match.EventsOf("half-time")).Cycle);
+        var half = Assert.Single(match.EventsOf("half-time"));
+        Assert.Equal((3, "half 1 over: hunter and hunted swap"), (half.Cycle, half.Text));
         var r = (SurvivalReferee)match.Referee;
         Assert.Equal((2, 1), (r.Half, r.Hunter));
 
@@ -186,6 +187,20 @@ public sealed class SurvivalTests
         // Gear 8 is 175 mm/s, gear 15 317 mm/s (the speed table).
         Assert.InRange(fastestPrey, 150f, 175.5f);
         Assert.True(fastestFree > 250f, $"the free fish reached only {fastestFree} mm/s");
+    }
+
+    [Fact]
+    public void AScenarioFileMayMoveTheHunterAndKeepsTheParkedFishParked()
+    {
+        // Entries without a position keep the item's, even a parking place beyond the bottom wall;
+        // a position given in the file must lie inside the field.
+        var match = ItemMatches.FromJson("""{ "item": "生存挑战", "cycles": 100, "fish": [ {"position": [1200, -800]}, {}, {"strategy": "idle"} ] }""");
+        var w = match.World;
+        Assert.Equal(new Vector2(1200f, -800f), w.Fish[Hunter0].Position);
+        Assert.Equal((new Vector2(-2115f, 1591f), true), (w.Fish[1].Position, w.Fish[1].OutOfPlay));
+        Assert.Equal((new Vector2(-1715f, 1591f), true), (w.Fish[2].Position, w.Fish[2].OutOfPlay));
+        var e = Assert.Throws<URWPGSim2D.Server.Scenario.ScenarioException>(() => ItemMatches.FromJson("""{ "item": "survival", "fish": [ {}, {"position": [-2115, 1591]} ] }"""));
+        Assert.Contains("fish[1].position", e.Message);
     }
 
     [Fact]

@@ -59,6 +59,9 @@ internal sealed class SurvivalReferee : ItemReferee
     protected override bool HalfDone => Scores[Hunter] >= SurvivalLayout.CatchesPerHalf;
 
     /// <inheritdoc/>
+    protected override string HalfTimeChange => "hunter and hunted swap";
+
+    /// <inheritdoc/>
     public override void AfterDecisions(World world)
     {
         base.AfterDecisions(world);

@@ -1,0 +1,114 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Collision.Pool;
+using Xunit;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary>
+/// The end of a step: the deepest overlap it reports (<see cref="Stepper.LeftoverOverlap"/>) is the
+/// deepest among the pairs of the bodies that took part in contacts, measured after settling; when
+/// settling resolves nothing the first pass's depths are that answer (no second pass). Settling
+/// before the first step works (the broad phase is built on demand).
+/// </summary>
+public sealed class StepperSettleTests
+{
+    private const float Slop = 0.01f; // overlaps up to this depth count as touching (MotionTolerances.ContactSlop)
+    private const float Left = 0.005f; // mm of overlap the response leaves (under the slop)
+
+    [Fact]
+    public void TheReportedOverlapIsTheDeepestLeftWhenEveryBodyRestsOnTheWall()
+    {
+        // Balls in a column against the right wall, pushed into it every step: each meets it
+        // every step, so every pair is one of the touched bodies' and the report must equal a
+        // fresh measurement of all pairs, and be the small overlap the response leaves.
+        var stepper = new Stepper();
+        stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        var balls = new int[6];
+        for (int i = 0; i < balls.Length; i++)
+        {
+            balls[i] = stepper.AddCircle(40f + (5f * i), new Vector2(1500f - (40f + (5f * i)) - (3f * i), -750f + (300f * i)));
+        }
+
+        var handler = new ShallowHandler();
+        for (int step = 0; step < 12; step++)
+        {
+            for (int i = 0; i < balls.Length; i++)
+            {
+                stepper.SetVelocity(balls[i], new Vector2(200f + (50f * i), 0f));
+            }
+
+            stepper.Step(0.1f, handler);
+            float measured = stepper.MeasureOverlap();
+            Assert.True(stepper.Events >= balls.Length, $"step {step}: {stepper.Events} events, every ball should meet the wall");
+            Assert.Equal(measured, stepper.LeftoverOverlap);
+            Assert.InRange(stepper.LeftoverOverlap, 0.5f * Left, 2f * Left);
+        }
+    }
+
+    [Theory]
+    [InlineData(1)]
+    [InlineData(2)]
+    [InlineData(3)]
+    public void TheReportedOverlapNeverExceedsAFreshMeasurementBeyondTouching(int seed)
+    {
+        // Random balls, some meeting, some not: the report covers the touched bodies' pairs, a
+        // subset of all pairs, so it is at most the deepest overlap of all pairs now, or a touching
+        // depth (under the 0.01 mm slop) sampled at the very end before a later contact moved the pair.
+        var random = new Random(seed);
+        var stepper = new Stepper();
+        stepper.AddWalls(new Field(2000f, 1500f, goalBlocks: false));
+        for (int i = 0; i < 30; i++)
+        {
+            int b = stepper.AddCircle(30f + (20f * random.NextSingle()), new Vector2((1600f * random.NextSingle()) - 800f, (1100f * random.NextSingle()) - 550f));
+            stepper.SetVelocity(b, new Vector2((3000f * random.NextSingle()) - 1500f, (3000f * random.NextSingle()) - 1500f));
+        }
+
+        var handler = new ShallowHandler();
+        stepper.Settle(handler);
+        for (int step = 0; step < 30; step++)
+        {
+            stepper.Step(0.1f, handler);
+            float measured = stepper.MeasureOverlap();
+            Assert.True(stepper.LeftoverOverlap <= MathF.Max(measured, Slop), $"seed {seed}, step {step}: reported {stepper.LeftoverOverlap} mm, measured {measured} mm");
+        }
+    }
+
+    // Pushes A (or both, half each) out along the MTV but leaves 0.005 mm of overlap, and stops the
+    // approach along the normal.
+    private sealed class ShallowHandler : IContactHandler
+    {
+        public void OnContact(Stepper stepper, in Contact contact)
+        {
+            int a = contact.BodyA, b = contact.BodyB;
+            bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
+            Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
+            Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
+            float depth = mtv.Length();
+            Vector2 push = depth > Left ? mtv * ((depth - Left) / depth) : Vector2.Zero;
+            float share = bMoves ? 0.5f : 1f;
+            stepper.SetPose(a, stepper.PositionOf(a) + (push * share), stepper.HeadingOf(a));
+            if (bMoves)
+            {
+                stepper.SetPose(b, stepper.PositionOf(b) - (push * share), stepper.HeadingOf(b));
+            }
+
+            Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
+            float vn = Vector2.Dot(va - vb, n);
+            if (vn < 0f)
+            {
+                stepper.SetVelocity(a, va - (vn * n * share), stepper.AngularVelocityOf(a));
+                if (bMoves)
+                {
+                    stepper.SetVelocity(b, vb + (vn * n * share), stepper.AngularVelocityOf(b));
+                }
+            }
+        }
+
+        public void OnMoveRejected(Stepper stepper, int body)
+        {
+        }
+    }
+}
