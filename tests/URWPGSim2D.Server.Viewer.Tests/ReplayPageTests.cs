@@ -10,8 +10,8 @@ using Microsoft.Playwright;
 using URWPGSim2D.Collision.Fish;
 using Xunit;
 using Xunit.Sdk;
+using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
-using URWPGSim2D.Server.Viewer.Tests.Support;
 
 namespace URWPGSim2D.Server.Viewer.Tests;
 

@@ -7,7 +7,7 @@ using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
 using Xunit.Sdk;
-using URWPGSim2D.Collision.Tests.Support;
+using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.Fish;
 

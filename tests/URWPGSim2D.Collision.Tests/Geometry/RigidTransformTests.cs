@@ -3,7 +3,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using Xunit;
 using Xunit.Sdk;
-using URWPGSim2D.Collision.Tests.Support;
+using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

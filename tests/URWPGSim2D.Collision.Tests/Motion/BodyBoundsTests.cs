@@ -4,7 +4,7 @@ using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using Xunit;
 using Xunit.Sdk;
-using URWPGSim2D.Collision.Tests.Support;
+using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 

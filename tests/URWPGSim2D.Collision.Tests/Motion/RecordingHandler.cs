@@ -7,10 +7,11 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
 /// A simple response for tests: records every contact, pushes the moving body (or both, half each)
-/// out along the MTV plus 0.01 mm, and removes the approaching part of the relative velocity
-/// along the normal (optionally bouncing back with restitution e).
+/// out along the MTV plus 0.01 mm (or, with <c>leaveOverlap</c> &gt; 0, out along the MTV but that
+/// much short of apart), and removes the approaching part of the relative velocity along the normal
+/// (optionally bouncing back with restitution e).
 /// </summary>
-internal sealed class RecordingHandler(float restitution = 0f) : IContactHandler
+internal sealed class RecordingHandler(float restitution = 0f, float leaveOverlap = 0f) : IContactHandler
 {
     public List<Contact> Contacts { get; } = new(1024);
 
@@ -29,7 +30,8 @@ internal sealed class RecordingHandler(float restitution = 0f) : IContactHandler
         bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
         Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
         Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
-        Vector2 push = mtv + (n * 0.01f);
+        float depth = mtv.Length();
+        Vector2 push = leaveOverlap <= 0f ? mtv + (n * 0.01f) : depth > leaveOverlap ? mtv * ((depth - leaveOverlap) / depth) : Vector2.Zero;
         float share = bMoves ? 0.5f : 1f;
         stepper.SetPose(a, stepper.PositionOf(a) + (push * share), stepper.HeadingOf(a));
         if (bMoves)

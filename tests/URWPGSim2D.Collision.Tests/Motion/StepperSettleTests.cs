@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
 using Xunit;
@@ -32,7 +31,7 @@ public sealed class StepperSettleTests
             balls[i] = stepper.AddCircle(40f + (5f * i), new Vector2(1500f - (40f + (5f * i)) - (3f * i), -750f + (300f * i)));
         }
 
-        var handler = new ShallowHandler();
+        var handler = new RecordingHandler(leaveOverlap: Left) { Record = false };
         for (int step = 0; step < 12; step++)
         {
             for (int i = 0; i < balls.Length; i++)
@@ -66,49 +65,13 @@ public sealed class StepperSettleTests
             stepper.SetVelocity(b, new Vector2((3000f * random.NextSingle()) - 1500f, (3000f * random.NextSingle()) - 1500f));
         }
 
-        var handler = new ShallowHandler();
+        var handler = new RecordingHandler(leaveOverlap: Left) { Record = false };
         stepper.Settle(handler);
         for (int step = 0; step < 30; step++)
         {
             stepper.Step(0.1f, handler);
             float measured = stepper.MeasureOverlap();
             Assert.True(stepper.LeftoverOverlap <= MathF.Max(measured, Slop), $"seed {seed}, step {step}: reported {stepper.LeftoverOverlap} mm, measured {measured} mm");
-        }
-    }
-
-    // Pushes A (or both, half each) out along the MTV but leaves 0.005 mm of overlap, and stops the
-    // approach along the normal.
-    private sealed class ShallowHandler : IContactHandler
-    {
-        public void OnContact(Stepper stepper, in Contact contact)
-        {
-            int a = contact.BodyA, b = contact.BodyB;
-            bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
-            Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
-            Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
-            float depth = mtv.Length();
-            Vector2 push = depth > Left ? mtv * ((depth - Left) / depth) : Vector2.Zero;
-            float share = bMoves ? 0.5f : 1f;
-            stepper.SetPose(a, stepper.PositionOf(a) + (push * share), stepper.HeadingOf(a));
-            if (bMoves)
-            {
-                stepper.SetPose(b, stepper.PositionOf(b) - (push * share), stepper.HeadingOf(b));
-            }
-
-            Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
-            float vn = Vector2.Dot(va - vb, n);
-            if (vn < 0f)
-            {
-                stepper.SetVelocity(a, va - (vn * n * share), stepper.AngularVelocityOf(a));
-                if (bMoves)
-                {
-                    stepper.SetVelocity(b, vb + (vn * n * share), stepper.AngularVelocityOf(b));
-                }
-            }
-        }
-
-        public void OnMoveRejected(Stepper stepper, int body)
-        {
         }
     }
 }

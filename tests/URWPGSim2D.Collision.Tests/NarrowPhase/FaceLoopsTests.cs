@@ -6,7 +6,7 @@ using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
 using Xunit;
 using Xunit.Sdk;
-using URWPGSim2D.Collision.Tests.Support;
+using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

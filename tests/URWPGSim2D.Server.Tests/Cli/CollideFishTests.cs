@@ -8,8 +8,8 @@ using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using Xunit;
 using Xunit.Sdk;
+using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
-using URWPGSim2D.Server.Tests.Support;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

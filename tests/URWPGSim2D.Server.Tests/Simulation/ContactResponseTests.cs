@@ -3,8 +3,8 @@ using System.Numerics;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
 using Xunit.Sdk;
+using URWPGSim2D.Testing;
 using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Server.Tests.Support;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

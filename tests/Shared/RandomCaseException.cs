@@ -1,7 +1,8 @@
 using System;
 using Xunit.Sdk;
+using URWPGSim2D.Testing;
 
-namespace URWPGSim2D.Server.Viewer.Tests.Support;
+namespace URWPGSim2D.Testing;
 
 /// <summary>
 /// A failed assertion inside a loop over random cases, with the case that failed (its seed and
