@@ -108,6 +108,10 @@ public sealed class LiveViewTests(Browser browser)
         // Resume: cycles stream to both; pause: they stop; a step then plays exactly one more.
         await two.ClickAsync("#server-pause");
         await two.WaitForFunctionAsync("() => urwpg.store.count >= 12", null, new() { Timeout = Wait });
+
+        // The button posts "pause" or "resume" from the status its own page last received: wait
+        // until viewer one has seen the match resume, or its click would ask to resume again.
+        await one.WaitForFunctionAsync("() => urwpg.serverStatus && !urwpg.serverStatus.paused", null, new() { Timeout = Wait });
         await one.ClickAsync("#server-pause");
         await one.WaitForFunctionAsync("() => urwpg.serverStatus.paused && urwpg.store.count === urwpg.serverStatus.cycle + 1", null, new() { Timeout = Wait });
         int held = await one.EvaluateAsync<int>("() => urwpg.serverStatus.cycle");
