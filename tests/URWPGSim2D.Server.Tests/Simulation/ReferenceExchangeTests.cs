@@ -156,6 +156,37 @@ public sealed class ReferenceExchangeTests
         Assert.Equal(30.7f, fish.Speed.Value, 1e-3f);
     }
 
+    // A fish heading +X at 300 mm/s strikes a round obstacle (radius 58) with the middle (95, ∓11.25) of a head face,
+    // square on: n = (−0.6, ±0.8) from the obstacle into the fish. v_n = 300·(−0.6) = −180; d = 110 − 95 = 15;
+    // v_n' = −0.003·(1 − 15/300)·(−180) = +0.513; Δv_n = 180.513 → v = (300, 0) + 180.513·(−0.6, ±0.8) = (191.692, ±144.410).
+    // J = 0.8·180.513 = 144.410 along n; r⊥ = 95·(±0.8) − (∓11.25)(−0.6) = ±69.25; Δθ = 144.410·(±69.25)/600000 = ±0.0166674:
+    // the head is pushed away from the obstacle (to +Z when struck on its −Z face), so the heading turns toward +Z.
+    [Theory]
+    [InlineData(-1f)]
+    [InlineData(1f)]
+    public void AFishStrikingAnObstacleWithItsHeadTurnsAwayFromIt(float side)
+    {
+        Vector2 point = new(95f, side * 11.25f);
+        Vector2 n = new(-0.6f, -side * 0.8f);
+        Vector2 centre = point - (n * (58f - 0.05f));
+        string at = string.Create(System.Globalization.CultureInfo.InvariantCulture, $"[{centre.X},{centre.Y}]");
+        var match = TestMatches.FromJson("{\"fish\":[{\"team\":0,\"position\":[0,0],\"strategy\":\"idle\"}],\"balls\":[],\"obstacles\":[{\"type\":\"round\",\"center\":" + at + ",\"radius\":58}]}");
+        var fish = match.World.Fish[0];
+        fish.Velocity = new Vector2(300f, 0f);
+        int obstacle = Array.FindIndex(match.World.Statics, s => !s.IsGoalBlock);
+        var pair = new CandidatePair(PairKind.FishStatic, 0, obstacle, 0f);
+        Hit hit = PairDetector.Detect(match.World, pair);
+        Assert.True(hit.Intersect);
+        Assert.Equal(n.X, hit.Normal.X, 1e-3f);
+        Assert.Equal(n.Y, hit.Normal.Y, 1e-3f);
+
+        new ContactResponse(match.World).Apply(pair, hit);
+
+        Assert.Equal(191.692f, fish.Velocity.X, 0.02f);
+        Assert.Equal(-side * 144.410f, fish.Velocity.Y, 0.02f);
+        Assert.Equal(-side * 0.0166674f, fish.Heading, 0.0166674f * 0.005f);
+    }
+
     [Theory]
     [InlineData(true)]
     [InlineData(false)]
