@@ -167,6 +167,26 @@ public static partial class FishCollision
             : FishContact.None;
     }
 
+    /// <summary>
+    /// Fish against fish, the second carried into the first one's frame by the rotation (cos, sin) =
+    /// <paramref name="rotation"/> and then <paramref name="translation"/> (x ↦ R·x + t), without
+    /// rebuilding it: only the leaf groups that come near are moved (see <see cref="FishInFrame"/>).
+    /// The contact is in <paramref name="a"/>'s frame.
+    /// </summary>
+    internal static FishContact Detect(FishModel a, FishModel b, Vector2 rotation, Vector2 translation)
+    {
+        Span<Vector2> vertices = stackalloc Vector2[FishLeafLayout.VertexCount];
+        Span<Vector2> normals = stackalloc Vector2[FishLeafLayout.VertexCount];
+        Span<Vector4> min = stackalloc Vector4[FishLeafLayout.LeafCount];
+        Span<Vector4> max = stackalloc Vector4[FishLeafLayout.LeafCount];
+        var moved = new FishInFrame(b, rotation, translation, vertices, normals, min, max);
+        var sink = default(DeepestSink);
+        FishTree.DescendFish(a, ref moved, ref sink);
+        return sink.Found
+            ? FishContact.OfLeaves(ConvexSat.Complete(a.LeafView(sink.LeafA), moved.LeafView(sink.LeafB), sink.Best), sink.LeafA, sink.LeafB)
+            : FishContact.None;
+    }
+
     /// <summary>Fish against a shape of any kind: dispatches to the overload for its kind.</summary>
     /// <param name="a">The fish, moved by the MTV.</param>
     /// <param name="b">The shape.</param>

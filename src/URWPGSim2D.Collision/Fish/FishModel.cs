@@ -103,6 +103,12 @@ public sealed partial class FishModel
         return new ConvexView(_vertices.AsSpan(at, count), _normals.AsSpan(at, count));
     }
 
+    /// <summary>Every leaf vertex (leaf after leaf, see <c>FishLeafLayout</c>).</summary>
+    internal ReadOnlySpan<Vector2> Vertices => _vertices;
+
+    /// <summary>Every leaf edge normal, beside <see cref="Vertices"/>.</summary>
+    internal ReadOnlySpan<Vector2> Normals => _normals;
+
     /// <summary>Lower slab values of the leaf's 8-DOP along the four axes.</summary>
     internal Vector4 LeafMin(int leaf) => _slabMin[leaf];
 

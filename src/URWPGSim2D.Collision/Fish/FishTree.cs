@@ -44,6 +44,15 @@ internal static class FishTree
     public static void Descend<TSink>(FishModel a, FishModel b, scoped ref TSink sink)
         where TSink : IContactSink, allows ref struct
     {
+        var leaves = new ModelLeaves(b);
+        DescendFish(a, ref leaves, ref sink);
+    }
+
+    /// <summary>Fish against fish, the second given by its circles and leaves (see <see cref="IFishLeaves"/>).</summary>
+    public static void DescendFish<TFish, TSink>(FishModel a, scoped ref TFish b, scoped ref TSink sink)
+        where TFish : IFishLeaves, allows ref struct
+        where TSink : IContactSink, allows ref struct
+    {
         if (!Slabs.MayOverlap(a.Root, b.Root))
         {
             return;
@@ -64,7 +73,8 @@ internal static class FishTree
                 Circle circleB = gb == 0 ? b.BodyGroup : b.TailGroup;
                 if (Slabs.MayOverlap(circleA, circleB))
                 {
-                    count = LeafPairs(a, b, ga, gb, circleB, candidates, count, sink.TakesDepths);
+                    b.Prepare(gb);
+                    count = LeafPairs(a, ref b, ga, gb, circleB, candidates, count, sink.TakesDepths);
                 }
             }
         }
@@ -79,7 +89,7 @@ internal static class FishTree
             return;
         }
 
-        DeepestFirst(a, b, candidates[..count], ref sink);
+        DeepestFirst(a, ref b, candidates[..count], ref sink);
     }
 
     /// <summary>
@@ -103,7 +113,8 @@ internal static class FishTree
     private const float BoundRelativeMargin = 1e-5f;
 
     // Candidates by decreasing bound; stop when the next bound is below the deepest depth found.
-    private static void DeepestFirst<TSink>(FishModel a, FishModel b, scoped Span<LeafPair> candidates, scoped ref TSink sink)
+    private static void DeepestFirst<TFish, TSink>(FishModel a, scoped ref TFish b, scoped Span<LeafPair> candidates, scoped ref TSink sink)
+        where TFish : IFishLeaves, allows ref struct
         where TSink : IContactSink, allows ref struct
     {
         for (int i = 1; i < candidates.Length; i++)
@@ -155,7 +166,8 @@ internal static class FishTree
     }
 
     // The leaf pairs of groups (groupA, groupB) whose 8-DOPs overlap, appended at `count` (with depth bounds if asked).
-    private static int LeafPairs(FishModel a, FishModel b, int groupA, int groupB, in Circle circleB, Span<LeafPair> candidates, int count, bool bounds)
+    private static int LeafPairs<TFish>(FishModel a, scoped ref TFish b, int groupA, int groupB, in Circle circleB, scoped Span<LeafPair> candidates, int count, bool bounds)
+        where TFish : IFishLeaves, allows ref struct
     {
         Slabs.OfCircle(circleB, out var circleMin, out var circleMax);
         int firstB = groupB == 0 ? 0 : FishLeafLayout.BodyGroupEnd;

@@ -30,6 +30,9 @@ internal sealed class Body
     private Disc _tailDisc;
     private bool _groupsValid;
     private bool _outlineValid;
+    private Vector3 _tailJoints;
+    private Vector2 _tailLocal;
+    private float _tailRadius;
 
     private Body(BodyKind kind, int id)
     {
@@ -136,6 +139,9 @@ internal sealed class Body
 
     /// <summary>A fish's joints at the end of the previous step.</summary>
     public float StartJoint1, StartJoint2, StartJoint3;
+
+    /// <summary>Changes whenever the body's shape changes (a fish's joints), so that remembered tests are not reused.</summary>
+    public int ShapeStamp;
 
     /// <summary>Contact events of the body in the current step.</summary>
     public int Events;
@@ -317,6 +323,7 @@ internal sealed class Body
     /// <summary>Rebuilds the fish's model with the current joints at a given position and heading (for example in another fish's model frame).</summary>
     public void SyncModelAt(Vector2 position, float heading)
     {
+
         Model!.SetPose(new FishPose(position, heading, Joint1, Joint2, Joint3));
         ModelStale = position != Position || heading != Heading;
         _frameValid = false;
@@ -381,17 +388,33 @@ internal sealed class Body
     /// </summary>
     public Disc TailSkeleton()
     {
-        FishSize size = Model!.Size;
-        Vector2 s1 = Position - (0.5f * size.Length * Direction(Heading));
-        Vector2 e1 = s1 - (size.Joint1 * Direction(Heading + Joint1));
-        Vector2 e2 = e1 - (size.Joint2 * Direction(Heading + Joint2));
-        Vector2 a = e2 - (2f * size.Joint3 * Direction(Heading + Joint3));
-        float h1 = TailStartHalfWidth1 * size.Joint1, h2 = TailStartHalfWidth2 * size.Joint2;
-        Vector2 c = 0.5f * (s1 + a);
-        float r = MathF.Max(
-            MathF.Max(Vector2.Distance(s1, c) + h1, Vector2.Distance(e1, c) + MathF.Max(h1, h2)),
-            MathF.Max(Vector2.Distance(e2, c) + MathF.Max(h2, CaudalReach), Vector2.Distance(a, c) + CaudalReach));
-        return new Disc(c, r + 0.01f);
+        var (sin, cos) = MathF.SinCos(Heading);
+        return TailSkeleton(sin, cos);
+    }
+
+    // The tail's circle in the body frame depends on the joints alone: computed once per joint
+    // angles, then carried with the body (its 0.01 mm slack covers the rounding of either way).
+    private Disc TailSkeleton(float sin, float cos)
+    {
+        if (_tailJoints != new Vector3(Joint1, Joint2, Joint3) || _tailRadius == 0f)
+        {
+            FishSize size = Model!.Size;
+            Vector2 s1 = new(-0.5f * size.Length, 0f);
+            Vector2 e1 = s1 - (size.Joint1 * Direction(Joint1));
+            Vector2 e2 = e1 - (size.Joint2 * Direction(Joint2));
+            Vector2 a = e2 - (2f * size.Joint3 * Direction(Joint3));
+            float h1 = TailStartHalfWidth1 * size.Joint1, h2 = TailStartHalfWidth2 * size.Joint2;
+            Vector2 c = 0.5f * (s1 + a);
+            float r = MathF.Max(
+                MathF.Max(Vector2.Distance(s1, c) + h1, Vector2.Distance(e1, c) + MathF.Max(h1, h2)),
+                MathF.Max(Vector2.Distance(e2, c) + MathF.Max(h2, CaudalReach), Vector2.Distance(a, c) + CaudalReach));
+            _tailLocal = c;
+            _tailRadius = r + 0.01f;
+            _tailJoints = new Vector3(Joint1, Joint2, Joint3);
+        }
+
+        Vector2 l = _tailLocal;
+        return new Disc(Position + new Vector2((l.X * cos) - (l.Y * sin), (l.X * sin) + (l.Y * cos)), _tailRadius);
     }
 
     private void ComputeGroups(out Disc body, out Disc tail)
@@ -401,7 +424,7 @@ internal sealed class Body
             var (sin, cos) = MathF.SinCos(Heading);
             Vector2 local = _bodyGroupLocal;
             body = new Disc(Position + new Vector2((local.X * cos) - (local.Y * sin), (local.X * sin) + (local.Y * cos)), _bodyGroupRadius);
-            tail = TailSkeleton();
+            tail = TailSkeleton(sin, cos);
             return;
         }
 

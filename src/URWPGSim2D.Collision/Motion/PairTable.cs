@@ -22,6 +22,7 @@ internal sealed class PairTable
     private int[] _free = new int[64];
     private int _freeCount;
     private int _used;
+    private int _stamp;
 
     public PairTable(int movers)
     {
@@ -55,11 +56,26 @@ internal sealed class PairTable
     /// <summary>Changes each time the slot is freed.</summary>
     public int[] Generation { get; private set; } = new int[64];
 
+    /// <summary>A mark per slot for passes over the pairs of several movers (see <see cref="NextStamp"/>).</summary>
+    public int[] Stamp { get; private set; } = new int[64];
+
     /// <summary>Whether the slot holds a pair.</summary>
     public bool[] Alive { get; private set; } = new bool[64];
 
     /// <summary>Slots ever used since the last <see cref="Clear"/> (alive or free).</summary>
     public int Used => _used;
+
+    /// <summary>A stamp no slot carries yet: a pass marks the slots it has visited with it.</summary>
+    public int NextStamp()
+    {
+        if (++_stamp == int.MaxValue)
+        {
+            Array.Clear(Stamp);
+            _stamp = 1;
+        }
+
+        return _stamp;
+    }
 
     /// <summary>Frees every slot.</summary>
     public void Clear()
@@ -186,6 +202,7 @@ internal sealed class PairTable
         ApartAtLastFree = Resized(ApartAtLastFree, size);
         Generation = Resized(Generation, size);
         Alive = Resized(Alive, size);
+        Stamp = Resized(Stamp, size);
         _moverA = Resized(_moverA, size);
         _moverB = Resized(_moverB, size);
         _edgeNext = Resized(_edgeNext, 2 * size);

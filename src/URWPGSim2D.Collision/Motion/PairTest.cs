@@ -134,21 +134,16 @@ internal static class PairTest
         return Hit.From(FishCollision.Detect(model, local)).ToWorld(frame);
     }
 
-    // B is rebuilt at its pose in A's model frame (unless it is already there); the contact is
-    // carried from A's model frame to the world.
+    // B's model is carried into A's model frame (only its leaf groups that come near are moved;
+    // neither model is rebuilt unless its joints changed); the contact is carried from A's model
+    // frame to the world.
     private static Hit FishWithFish(Body a, Body b)
     {
         FishModel modelA = a.RigidModel;
+        FishModel modelB = b.RigidModel;
         RigidFrame frameA = a.Frame;
-        Vector2 position = frameA.ToModel(b.Position);
-        float heading = Angle.Wrap(b.Heading - (a.Heading - modelA.Pose.Heading));
-        FishPose posed = b.Model!.Pose;
-        if (!b.JointsCurrent || posed.Position != position || posed.Heading != heading)
-        {
-            b.SyncModelAt(position, heading);
-        }
-
-        return Hit.From(FishCollision.Detect(modelA, b.Model)).ToWorld(frameA);
+        RigidFrame.Between(b.Frame, frameA, out Vector2 rotation, out Vector2 translation);
+        return Hit.From(FishCollision.Detect(modelA, modelB, rotation, translation)).ToWorld(frameA);
     }
 
     private static Hit FishWithStatic(Body fish, Body body)

@@ -42,6 +42,19 @@ internal readonly struct RigidFrame
     /// <summary>True when the fish has not turned since the model was built.</summary>
     public bool IsTranslation { get; }
 
+    /// <summary>
+    /// The rigid motion from the model frame of <paramref name="b"/> into the model frame of
+    /// <paramref name="a"/> (through the world): x ↦ R·x + t, R given as (cos, sin).
+    /// </summary>
+    public static void Between(in RigidFrame b, in RigidFrame a, out Vector2 rotation, out Vector2 translation)
+    {
+        float cos = (b._cos * a._cos) + (b._sin * a._sin);
+        float sin = (b._sin * a._cos) - (b._cos * a._sin);
+        rotation = new Vector2(cos, sin);
+        Vector2 turnedFrom = new((b._from.X * cos) - (b._from.Y * sin), (b._from.X * sin) + (b._from.Y * cos));
+        translation = a._from + a.RotateBack(b._to - a._to) - turnedFrom;
+    }
+
     /// <summary>A model-frame point in the world.</summary>
     public Vector2 ToWorld(Vector2 model) => _to + Rotate(model - _from);
 

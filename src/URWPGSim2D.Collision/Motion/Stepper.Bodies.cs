@@ -159,6 +159,7 @@ public sealed partial class Stepper
         b.Joint1 = joint1;
         b.Joint2 = joint2;
         b.Joint3 = joint3;
+        b.ShapeStamp++;
         b.Invalidate();
         Commit(b);
     }
@@ -214,7 +215,7 @@ public sealed partial class Stepper
             throw new ArgumentException($"a body cannot be tested against itself (body {bodyA})", nameof(bodyB));
         }
 
-        return new Contact(bodyA, bodyB, PairTest.Detect(a, b), Time);
+        return new Contact(bodyA, bodyB, _memo.Detect(a, b), Time);
     }
 
     internal Body BodyAt(int id) => _bodies[id];
@@ -330,6 +331,7 @@ public sealed partial class Stepper
         }
 
         _planner.Load([.. movers], [.. statics], walls);
+        _memo.Clear();
         _table.Resize(movers.Count);
 
         // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
@@ -346,6 +348,7 @@ public sealed partial class Stepper
         _touched = new BodySet(movers.Count);
         _changed = new BodySet(movers.Count);
         _spare = new BodySet(movers.Count);
+        _dirty = new BodySet(movers.Count);
         _loaded = true;
     }
 }

@@ -6,11 +6,15 @@ namespace URWPGSim2D.Collision.Motion;
 /// <content>Contact events: clusters of hits, the time of first contact, the response, relaxation.</content>
 public sealed partial class Stepper
 {
+    // Rounds of the false-position estimate of the time of first contact before bisection takes over.
+    private const int GuessRounds = 3;
+
     private readonly HitClusters _clusters = new();
     private BodySet _involved = new(0);
     private BodySet _touched = new(0);
     private BodySet _changed = new(0);
     private BodySet _spare = new(0);
+    private BodySet _dirty = new(0);
     private int[] _pending = new int[16];
     private int _pendingCount;
 
@@ -96,6 +100,7 @@ public sealed partial class Stepper
         _changed.Clear();
         for (int i = 0; i < _hitCount; i++)
         {
+
             Respond(_table.Pair[_hitSlots[i]]);
         }
 
@@ -106,7 +111,7 @@ public sealed partial class Stepper
     private void Respond(in PlannedPair pair)
     {
         Body a = _bodies[pair.A], b = _bodies[pair.B];
-        Hit hit = PairTest.Detect(a, b);
+        Hit hit = _memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
             _handler!.OnContact(this, new Contact(pair.A, pair.B, hit, Time));
@@ -115,45 +120,115 @@ public sealed partial class Stepper
 
     // Commits the event's bodies (and any the handler changed) at the contact time and plans their
     // pairs again. A response can push a body into a third one (a ball squeezed between two fish):
-    // pairs that overlap right away are responded to at once and their bodies planned again, a few
-    // passes over; what is left is sampled as usual.
+    // pairs that overlap right away are responded to at once, a few passes over; while such a
+    // cascade lasts, the bodies it moves are checked against the pairs already planned for them
+    // (no broad phase), and once it is quiet they are planned again, once. What is left is sampled
+    // as usual.
     private void Relax()
     {
-        for (int pass = 0; ; pass++)
+        int pass = 0;
+        CommitChanged(_involved);
+        Replan(pass++);
+        while (_pendingCount > 0)
         {
-            foreach (int m in _changed.Items)
-            {
-                _involved.Add(m);
-                _touched.Add(m);
-            }
-
-            _changed.Clear();
-            foreach (int m in _involved.Items)
-            {
-                _planner.MoverBodies[m].Rebase(Time);
-                _table.RemoveAllOf(m);
-            }
-
-            _pendingCount = 0;
-            _scheduler.Settling = pass < MotionTolerances.RelaxationPasses;
-            _planner.PlanFor(_involved.Items, _involved.Marks, Time, _scheduler);
-            _scheduler.Settling = false;
-            if (_pendingCount == 0)
-            {
-                return;
-            }
-
             _involved.Clear();
-            for (int i = 0; i < _pendingCount; i++)
+            RespondPending();
+            while (true)
             {
-                Mark(_involved, _table.Pair[_pending[i]]);
+                _dirty.Clear();
+                CommitChanged(_dirty);
+                if (pass >= MotionTolerances.RelaxationPasses)
+                {
+                    break;
+                }
+
+                pass++;
+                ScanPlanned(_dirty);
+                if (_pendingCount == 0)
+                {
+                    break;
+                }
+
+                RespondPending();
             }
 
-            for (int i = 0; i < _pendingCount; i++)
+            Replan(pass);
+        }
+    }
+
+    // The bodies the handler changed join the event (and the step's touched bodies), committed at the contact time.
+    private void CommitChanged(BodySet into)
+    {
+        foreach (int m in _changed.Items)
+        {
+            into.Add(m);
+            _involved.Add(m);
+            _touched.Add(m);
+        }
+
+        _changed.Clear();
+        foreach (int m in into.Items)
+        {
+            _planner.MoverBodies[m].Rebase(Time);
+        }
+    }
+
+    // Plans every pair of the involved bodies again; while passes are left, pairs that overlap now are pending.
+    private void Replan(int pass)
+    {
+        foreach (int m in _involved.Items)
+        {
+            _planner.MoverBodies[m].Rebase(Time);
+            _table.RemoveAllOf(m);
+        }
+
+        _pendingCount = 0;
+        _scheduler.Settling = pass < MotionTolerances.RelaxationPasses;
+        _planner.PlanFor(_involved.Items, _involved.Marks, Time, _scheduler);
+        _scheduler.Settling = false;
+    }
+
+    // The pairs already planned for the given bodies that overlap now become pending (each pair once).
+    private void ScanPlanned(BodySet bodies)
+    {
+        _pendingCount = 0;
+        int stamp = _table.NextStamp();
+        foreach (int m in bodies.Items)
+        {
+            for (int edge = _table.FirstEdge(m); edge >= 0; edge = _table.NextEdge(edge))
             {
-                Respond(_table.Pair[_pending[i]]);
+                int slot = edge >> 1;
+                if (_table.Stamp[slot] == stamp)
+                {
+                    continue;
+                }
+
+                _table.Stamp[slot] = stamp;
+                PlannedPair pair = _table.Pair[slot];
+                MovePair(pair, Time);
+                Body a = _bodies[pair.A], b = _bodies[pair.B];
+                if (_memo.DetectIfNear(a, b).Depth > MotionTolerances.ContactSlop)
+                {
+                    AddPending(slot);
+                }
             }
         }
+    }
+
+    // The handler's response to each pending pair; their bodies join the event.
+    private void RespondPending()
+    {
+        for (int i = 0; i < _pendingCount; i++)
+        {
+            Mark(_involved, _table.Pair[_pending[i]]);
+        }
+
+        for (int i = 0; i < _pendingCount; i++)
+        {
+            Respond(_table.Pair[_pending[i]]);
+        }
+
+        _pendingCount = 0;
     }
 
     private void AddPending(int slot)
@@ -196,7 +271,10 @@ public sealed partial class Stepper
 
         double lo = free;
         double hi = hit;
-        Guess(ref lo, ref hi, rate);
+        if ((hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance)
+        {
+            Guess(ref lo, ref hi, rate);
+        }
         for (int iteration = 0; iteration < 48 && (hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance; iteration++)
         {
             double mid = 0.5 * (lo + hi);
@@ -215,7 +293,9 @@ public sealed partial class Stepper
     }
 
     // The deepest hit's depth shrinks at its closing rate, so it reached zero near hi − depth / rate:
-    // probe there, and just after it, to bracket the contact tightly (exact for translation).
+    // probe there (exact for translation). While the probe still overlaps, the same estimate from
+    // its own depth moves hi on (a few rounds: turning bodies close at a changing rate); once a
+    // probe is apart, one more just after it brackets the contact tightly.
     private void Guess(ref double lo, ref double hi, float rate)
     {
         int deepest = 0;
@@ -224,39 +304,70 @@ public sealed partial class Stepper
             deepest = _hitValues[i].Depth > _hitValues[deepest].Depth ? i : deepest;
         }
 
-        float closing = ClosingRate(_table.Pair[_hitSlots[deepest]], _hitValues[deepest]);
-        if (!(closing > 0f) || rate <= 0f)
+        int slot = _hitSlots[deepest];
+        Hit hit = _hitValues[deepest];
+        for (int round = 0; round < GuessRounds; round++)
         {
-            return;
-        }
-
-        double guess = hi - (_hitValues[deepest].Depth / closing);
-        if (!(guess > lo && guess < hi))
-        {
-            return;
-        }
-
-        MoveInvolved(guess);
-        if (AnyHitIntersects())
-        {
-            hi = guess;
-            return;
-        }
-
-        lo = guess;
-        double next = lo + (0.5 * MotionTolerances.TimeOfImpactTolerance / rate);
-        if (next < hi)
-        {
-            MoveInvolved(next);
-            if (AnyHitIntersects())
+            float closing = ClosingRate(_table.Pair[slot], hit);
+            if (!(closing > 0f) || rate <= 0f)
             {
-                hi = next;
+                return;
             }
-            else
+
+            double guess = hi - (hit.Depth / closing);
+            if (!(guess > lo && guess < hi))
             {
-                lo = next;
+                return;
+            }
+
+            MoveInvolved(guess);
+            if (DeepestHitNow(out slot, out hit))
+            {
+                hi = guess;
+                if ((hi - lo) * rate <= MotionTolerances.TimeOfImpactTolerance)
+                {
+                    return;
+                }
+
+                continue;
+            }
+
+            lo = guess;
+            double next = lo + (0.5 * MotionTolerances.TimeOfImpactTolerance / rate);
+            if (next < hi)
+            {
+                MoveInvolved(next);
+                if (AnyHitIntersects())
+                {
+                    hi = next;
+                }
+                else
+                {
+                    lo = next;
+                }
+            }
+
+            return;
+        }
+    }
+
+    // The deepest of the event's pairs that overlaps now, if any.
+    private bool DeepestHitNow(out int slot, out Hit deepest)
+    {
+        slot = -1;
+        deepest = default;
+        for (int i = 0; i < _hitCount; i++)
+        {
+            PlannedPair pair = _table.Pair[_hitSlots[i]];
+            Hit hit = _memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]);
+            if (hit.Depth > MotionTolerances.ContactSlop && hit.Depth > deepest.Depth)
+            {
+                slot = _hitSlots[i];
+                deepest = hit;
             }
         }
+
+        return slot >= 0;
     }
 
     private bool AnyHitIntersects()
@@ -264,7 +375,7 @@ public sealed partial class Stepper
         for (int i = 0; i < _hitCount; i++)
         {
             PlannedPair pair = _table.Pair[_hitSlots[i]];
-            if (PairTest.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
+            if (_memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
             {
                 return true;
             }

@@ -54,7 +54,7 @@ public sealed partial class Stepper
             PlannedPair pair = _table.Pair[slot];
             Body a = _bodies[pair.A], b = _bodies[pair.B];
             float gap = PairTest.Gap(a, b);
-            Hit hit = gap > 0f ? default : PairTest.Detect(a, b);
+            Hit hit = gap > 0f ? default : _memo.Detect(a, b);
             if (hit.Depth > MotionTolerances.ContactSlop)
             {
                 AddHit(slot, hit);
@@ -142,7 +142,7 @@ public sealed partial class Stepper
             bool apart = gap > 0f;
             if (!apart && Settling)
             {
-                if (PairTest.Detect(a, b).Depth > MotionTolerances.ContactSlop)
+                if (owner._memo.Detect(a, b).Depth > MotionTolerances.ContactSlop)
                 {
                     owner.AddPending(slot);
                     return;

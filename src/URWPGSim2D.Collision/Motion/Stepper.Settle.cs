@@ -84,10 +84,10 @@ public sealed partial class Stepper
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                Hit hit = PairTest.DetectIfNear(a, b);
+                Hit hit = _memo.DetectIfNear(a, b);
                 if (hit.Depth > MotionTolerances.ContactSlop)
                 {
-                    _handler!.OnContact(this, new Contact(pair.A, pair.B, PairTest.Detect(a, b), Time));
+                    _handler!.OnContact(this, new Contact(pair.A, pair.B, _memo.Detect(a, b), Time));
                     Mark(next, pair);
                 }
                 else
@@ -140,7 +140,7 @@ public sealed partial class Stepper
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                if (PairTest.DetectIfNear(a, b).Depth > MotionTolerances.RejectOverlap)
+                if (_memo.DetectIfNear(a, b).Depth > MotionTolerances.RejectOverlap)
                 {
                     Reject(a, rejected);
                     if (pair.MoverB >= 0)
@@ -180,6 +180,7 @@ public sealed partial class Stepper
         body.Joint1 = body.StartJoint1;
         body.Joint2 = body.StartJoint2;
         body.Joint3 = body.StartJoint3;
+        body.ShapeStamp++;
         body.Velocity = default;
         body.AngularVelocity = 0f;
         body.Invalidate();
@@ -198,7 +199,7 @@ public sealed partial class Stepper
         float deepest = 0f;
         foreach (ref readonly var pair in pairs)
         {
-            deepest = MathF.Max(deepest, PairTest.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth);
+            deepest = MathF.Max(deepest, _memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth);
         }
 
         return deepest;

@@ -21,6 +21,7 @@ public sealed partial class Stepper
     private readonly SweepPlanner _planner;
     private readonly PairTable _table = new(0);
     private readonly TickQueue _queue = new();
+    private readonly TestMemo _memo = new();
     private IContactHandler? _handler;
 
     /// <summary>Creates an empty stepper.</summary>
