@@ -180,7 +180,7 @@ public sealed partial class Stepper
                 return 1.0;
             }
 
-            return (ticks < 2.0 ? 1 : 1 << (int)Math.Floor(Math.Log2(ticks))) / (double)Ticks;
+            return (ticks < 2.0 ? 1 : 1 << System.Numerics.BitOperations.Log2((uint)ticks)) / (double)Ticks;
         }
     }
 }
