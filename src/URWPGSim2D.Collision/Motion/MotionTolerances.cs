@@ -15,6 +15,13 @@ internal static class MotionTolerances
     /// <summary>Contact events a body may take part in per step with a refined time of first contact; later ones are resolved where found.</summary>
     public const int MaximumEventsPerBody = 64;
 
+    /// <summary>
+    /// Contact events a body may take part in per step before its further contacts that cannot
+    /// tunnel before the step ends (the pair's travel left is within its limit) are left to the
+    /// end of the step (a body wedged between two obstacles is pushed back and forth at one time).
+    /// </summary>
+    public const int EventsBeforeDeferring = 16;
+
     /// <summary>Passes of immediate re-resolution after a contact when a response pushes a body into a third one.</summary>
     public const int RelaxationPasses = 8;
 

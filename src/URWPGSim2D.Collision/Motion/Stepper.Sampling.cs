@@ -57,6 +57,11 @@ public sealed partial class Stepper
             Hit hit = gap > 0f ? default : _memo.Detect(a, b);
             if (hit.Depth > MotionTolerances.ContactSlop)
             {
+                if (Deferred(pair, slot, time))
+                {
+                    continue;
+                }
+
                 AddHit(slot, hit);
                 continue;
             }
@@ -92,6 +97,28 @@ public sealed partial class Stepper
         }
 
         _queue.Push(Math.Min(next, 1.0), slot, _table.Generation[slot]);
+    }
+
+    // A hit of a body that has had many events this step, which cannot tunnel before the step ends,
+    // is left to the end of the step (settling, then a rejected move if it is still deep): a body
+    // wedged between two obstacles would otherwise be pushed from one into the other at every sample.
+    private bool Deferred(in PlannedPair pair, int slot, double time)
+    {
+        Body a = _planner.MoverBodies[pair.MoverA];
+        bool busy = a.Events >= MotionTolerances.EventsBeforeDeferring
+            || (pair.MoverB >= 0 && _planner.MoverBodies[pair.MoverB].Events >= MotionTolerances.EventsBeforeDeferring);
+        if (!busy || _table.Rate[slot] * (1.0 - time) > pair.Limit)
+        {
+            return false;
+        }
+
+        _touched.Add(pair.MoverA);
+        if (pair.MoverB >= 0)
+        {
+            _touched.Add(pair.MoverB);
+        }
+
+        return true;
     }
 
     // The grid time at or before a time.
