@@ -107,18 +107,15 @@ public sealed partial class Stepper
         Relax();
     }
 
-    // The handler's response to one pair, if it still overlaps; returns the overlap it responded to (0: none).
-    private float Respond(in PlannedPair pair)
+    // The handler's response to one pair, if it still overlaps.
+    private void Respond(in PlannedPair pair)
     {
         Body a = _bodies[pair.A], b = _bodies[pair.B];
         Hit hit = _memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
             _handler!.OnContact(this, new Contact(pair.A, pair.B, hit, Time));
-            return hit.Depth;
         }
-
-        return 0f;
     }
 
     // Commits the event's bodies (and any the handler changed) at the contact time and plans their
@@ -132,12 +129,10 @@ public sealed partial class Stepper
         int pass = 0;
         CommitChanged(_involved);
         Replan(pass++);
-        long before = 0, last = 0;
-        float deepestBefore = 0f, deepestLast = 0f;
         while (_pendingCount > 0)
         {
             _involved.Clear();
-            (last, deepestLast) = (PendingKey(), RespondPending());
+            RespondPending();
             while (true)
             {
                 _dirty.Clear();
@@ -154,17 +149,7 @@ public sealed partial class Stepper
                     break;
                 }
 
-                // Pushed back and forth between the same pairs without getting shallower (a body wedged
-                // between two obstacles): more passes would not help; the end of the step settles it.
-                long key = PendingKey();
-                if (key == before && PendingDepth() > 0.5f * deepestBefore)
-                {
-                    pass = MotionTolerances.RelaxationPasses;
-                    break;
-                }
-
-                (before, deepestBefore) = (last, deepestLast);
-                (last, deepestLast) = (key, RespondPending());
+                RespondPending();
             }
 
             Replan(pass);
@@ -230,47 +215,20 @@ public sealed partial class Stepper
         }
     }
 
-    // Which pairs are pending (a fingerprint of their slots).
-    private long PendingKey()
-    {
-        long key = _pendingCount;
-        for (int i = 0; i < _pendingCount; i++)
-        {
-            key = (key * 1_000_003) + _pending[i];
-        }
-
-        return key;
-    }
-
-    // The deepest overlap among the pending pairs now.
-    private float PendingDepth()
-    {
-        float deepest = 0f;
-        for (int i = 0; i < _pendingCount; i++)
-        {
-            PlannedPair pair = _table.Pair[_pending[i]];
-            deepest = MathF.Max(deepest, _memo.Detect(_bodies[pair.A], _bodies[pair.B]).Depth);
-        }
-
-        return deepest;
-    }
-
-    // The handler's response to each pending pair; their bodies join the event. Returns the deepest overlap responded to.
-    private float RespondPending()
+    // The handler's response to each pending pair; their bodies join the event.
+    private void RespondPending()
     {
         for (int i = 0; i < _pendingCount; i++)
         {
             Mark(_involved, _table.Pair[_pending[i]]);
         }
 
-        float deepest = 0f;
         for (int i = 0; i < _pendingCount; i++)
         {
-            deepest = MathF.Max(deepest, Respond(_table.Pair[_pending[i]]));
+            Respond(_table.Pair[_pending[i]]);
         }
 
         _pendingCount = 0;
-        return deepest;
     }
 
     private void AddPending(int slot)

@@ -9,10 +9,10 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
 /// A body that cannot be separated (a wedge: every response pushes it into the other obstacle)
-/// costs a bounded number of events per step and still ends every step within the guarantee: its
-/// further contacts that cannot tunnel before the step ends are left to the end of the step, and a
-/// relaxation that pushes it back and forth between the same pairs without getting shallower stops
-/// early. (Without them the bar below takes 65 events a step.)
+/// costs a bounded number of events per step and still ends every step within the guarantee: once
+/// it has had <see cref="MotionTolerances.EventsBeforeDeferring"/> events in a step, its further
+/// contacts that cannot tunnel before the step ends are left to the end of the step. (Without that
+/// the bar below takes 65 events a step.)
 /// </summary>
 public sealed class StepperWedgeTests
 {
