@@ -18,7 +18,8 @@ internal static class MotionTolerances
     /// <summary>
     /// Contact events a body may take part in per step before its further contacts that cannot
     /// tunnel before the step ends (the pair's travel left is within its limit) are left to the
-    /// end of the step (a body wedged between two obstacles is pushed back and forth at one time).
+    /// end of the step (a body wedged between two obstacles is pushed from one into the other at
+    /// every sample); if settling there does not free it, its move is rejected.
     /// </summary>
     public const int EventsBeforeDeferring = 16;
 

@@ -349,6 +349,7 @@ public sealed partial class Stepper
         _changed = new BodySet(movers.Count);
         _spare = new BodySet(movers.Count);
         _dirty = new BodySet(movers.Count);
+        _deferred = new BodySet(movers.Count);
         _loaded = true;
     }
 }

@@ -15,6 +15,7 @@ public sealed partial class Stepper
     private BodySet _changed = new(0);
     private BodySet _spare = new(0);
     private BodySet _dirty = new(0);
+    private BodySet _deferred = new(0);
     private int[] _pending = new int[16];
     private int _pendingCount;
 

@@ -113,9 +113,11 @@ public sealed partial class Stepper
         }
 
         _touched.Add(pair.MoverA);
+        _deferred.Add(pair.MoverA);
         if (pair.MoverB >= 0)
         {
             _touched.Add(pair.MoverB);
+            _deferred.Add(pair.MoverB);
         }
 
         return true;

@@ -123,9 +123,11 @@ public sealed partial class Stepper
     // A body left inside another by more than the guarantee allows goes back to where it ended the
     // previous step, at rest; the bodies it lands in are checked in turn (the previous step's end
     // was free, so this ends). Returns the deepest overlap left.
+    // A body whose contacts were left to the end of the step (it is wedged) is rejected as soon as it
+    // still overlaps after settling.
     private float RejectOverlapping(float deepest)
     {
-        if (deepest <= MotionTolerances.RejectOverlap)
+        if (deepest <= MotionTolerances.RejectOverlap && (_deferred.Count == 0 || deepest <= MotionTolerances.ContactSlop))
         {
             return deepest;
         }
@@ -140,10 +142,23 @@ public sealed partial class Stepper
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                if (_memo.DetectIfNear(a, b).Depth > MotionTolerances.RejectOverlap)
+                float depth = _memo.DetectIfNear(a, b).Depth;
+                if (depth > MotionTolerances.RejectOverlap)
                 {
                     Reject(a, rejected);
                     if (pair.MoverB >= 0)
+                    {
+                        Reject(b, rejected);
+                    }
+                }
+                else if (depth > MotionTolerances.ContactSlop)
+                {
+                    if (_deferred.Marks[pair.MoverA])
+                    {
+                        Reject(a, rejected);
+                    }
+
+                    if (pair.MoverB >= 0 && _deferred.Marks[pair.MoverB])
                     {
                         Reject(b, rejected);
                     }

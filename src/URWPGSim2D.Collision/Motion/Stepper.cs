@@ -110,6 +110,7 @@ public sealed partial class Stepper
         _table.Clear();
         _queue.Clear();
         _touched.Clear();
+        _deferred.Clear();
         _scheduler.Settling = false;
         _planner.PlanAll(0.0, _scheduler);
     }
