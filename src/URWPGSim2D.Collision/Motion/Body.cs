@@ -146,6 +146,12 @@ internal sealed class Body
     /// <summary>Contact events of the body in the current step.</summary>
     public int Events;
 
+    /// <summary>Step time of the body's last contact event (−1: none yet in this step).</summary>
+    public double LastEventTime = -1.0;
+
+    /// <summary>Events in a row at the time of the one before (the body is pushed back and forth without getting anywhere).</summary>
+    public int EventsInPlace;
+
     /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
     public bool Collides = true;
 

@@ -23,6 +23,9 @@ internal static class MotionTolerances
     /// </summary>
     public const int EventsBeforeDeferring = 16;
 
+    /// <summary>Contact events in a row at one time after which a body counts as wedged too (see <see cref="EventsBeforeDeferring"/>).</summary>
+    public const int EventsInPlaceBeforeDeferring = 2;
+
     /// <summary>Passes of immediate re-resolution after a contact when a response pushes a body into a third one.</summary>
     public const int RelaxationPasses = 8;
 

@@ -94,7 +94,10 @@ public sealed partial class Stepper
         Events++;
         foreach (int m in _involved.Items)
         {
-            _planner.MoverBodies[m].Events++;
+            Body body = _planner.MoverBodies[m];
+            body.Events++;
+            body.EventsInPlace = body.LastEventTime == contact ? body.EventsInPlace + 1 : 0;
+            body.LastEventTime = contact;
             _touched.Add(m);
         }
 

@@ -99,14 +99,12 @@ public sealed partial class Stepper
         _queue.Push(Math.Min(next, 1.0), slot, _table.Generation[slot]);
     }
 
-    // A hit of a body that has had many events this step, which cannot tunnel before the step ends,
+    // A hit of a wedged body (many events this step, or several in a row at one time), which cannot tunnel before the step ends,
     // is left to the end of the step (settling, then a rejected move if it is still deep): a body
     // wedged between two obstacles would otherwise be pushed from one into the other at every sample.
     private bool Deferred(in PlannedPair pair, int slot, double time)
     {
-        Body a = _planner.MoverBodies[pair.MoverA];
-        bool busy = a.Events >= MotionTolerances.EventsBeforeDeferring
-            || (pair.MoverB >= 0 && _planner.MoverBodies[pair.MoverB].Events >= MotionTolerances.EventsBeforeDeferring);
+        bool busy = Wedged(_planner.MoverBodies[pair.MoverA]) || (pair.MoverB >= 0 && Wedged(_planner.MoverBodies[pair.MoverB]));
         if (!busy || _table.Rate[slot] * (1.0 - time) > pair.Limit)
         {
             return false;
@@ -122,6 +120,10 @@ public sealed partial class Stepper
 
         return true;
     }
+
+    // Many events this step, or several in a row at one time (pushed back and forth in place).
+    private static bool Wedged(Body body) =>
+        body.Events >= MotionTolerances.EventsBeforeDeferring || body.EventsInPlace >= MotionTolerances.EventsInPlaceBeforeDeferring;
 
     // The grid time at or before a time.
     private static double Grid(double time) => Math.Floor(time * Ticks) / Ticks;

@@ -105,6 +105,8 @@ public sealed partial class Stepper
         {
             body.Rebase(0.0);
             body.Events = 0;
+            body.EventsInPlace = 0;
+            body.LastEventTime = -1.0;
         }
 
         _table.Clear();
