@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
+using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 
@@ -292,8 +293,8 @@ internal static class FaceLoops
 
         high = Vector128.MinNative(high, Vector128.Shuffle(high, Vector128.Create(2, 3, 0, 1)));
         low = Vector128.MaxNative(low, Vector128.Shuffle(low, Vector128.Create(2, 3, 0, 1)));
-        hi = MathF.Min(high.GetElement(0), high.GetElement(1));
-        lo = MathF.Max(low.GetElement(0), low.GetElement(1));
+        hi = ExactMinMax.Min(high.ToScalar(), high.GetElement(1));
+        lo = ExactMinMax.Max(low.ToScalar(), low.GetElement(1));
     }
 
     // The x and z coordinates of points at, at+1, at+2, at+3 in four lanes each (a span shorter
