@@ -80,6 +80,10 @@ internal struct ConvexLanes
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public readonly int Index(int lane) => Math.Min(lane < 4 ? lane : Second + lane - 4, Count - 1);
 
+    /// <summary>A lane (0–7) that holds vertex or face <paramref name="index"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public readonly int Lane(int index) => index < 4 ? index : index - Second + 4;
+
     /// <summary>
     /// The lowest lane (0–7) whose value in <paramref name="group0"/> or <paramref name="group1"/>
     /// equals <paramref name="value"/> (broadcast); the value must be in some lane.
@@ -96,15 +100,6 @@ internal struct ConvexLanes
         var best = Vector128.MaxNative(group0, group1);
         best = Vector128.MaxNative(best, Vector128.Shuffle(best, Vector128.Create(2, 3, 0, 1)));
         return Vector128.MaxNative(best, Vector128.Shuffle(best, Vector128.Create(1, 0, 3, 2)));
-    }
-
-    /// <summary>The least lane of two groups, in every lane.</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static Vector128<float> Least(Vector128<float> group0, Vector128<float> group1)
-    {
-        var least = Vector128.MinNative(group0, group1);
-        least = Vector128.MinNative(least, Vector128.Shuffle(least, Vector128.Create(2, 3, 0, 1)));
-        return Vector128.MinNative(least, Vector128.Shuffle(least, Vector128.Create(1, 0, 3, 2)));
     }
 
     /// <summary>Lane <paramref name="lane"/> of <paramref name="v"/> in all four lanes.</summary>

@@ -28,21 +28,9 @@ internal static class ConvexSatLanes
         Vector2 origin = a.Vertices[0];
         ConvexLanes.Load(a.Vertices, a.Normals, origin, out var la);
         ConvexLanes.Load(b.Vertices, b.Normals, origin, out var lb);
-        if (!Separations(a.Normals, b.Normals, la, lb, out ContactDepth depth, out int laneA, out int laneB))
-        {
-            return CollisionDetectionResult.None;
-        }
-
-        bool referenceIsA = depth.SeparationA >= depth.SeparationB;
-        bool found = referenceIsA
-            ? FacePoint(a.Vertices, a.Normals, depth.FaceA, b.Vertices, lb.Count, IncidentEdge(la, laneA, a.Normals, depth.FaceA, lb), origin, out Vector2 point, out Vector2 onIncident)
-            : FacePoint(b.Vertices, b.Normals, depth.FaceB, a.Vertices, la.Count, IncidentEdge(lb, laneB, b.Normals, depth.FaceB, la), origin, out point, out onIncident);
-        if (!found || !InsideBoth(la, lb, point))
-        {
-            point = Fallback(a, b, la, lb, origin, depth, found, onIncident);
-        }
-
-        return CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, origin + point);
+        return Separations(a.Normals, b.Normals, la, lb, out ContactDepth depth, out int laneA, out int laneB)
+            ? Finish(a, b, la, lb, origin, depth, laneA, laneB)
+            : CollisionDetectionResult.None;
     }
 
     /// <summary>As <see cref="ConvexSat.Depth(in ConvexView, in ConvexView, out ContactDepth)"/>; the views must <see cref="Fits"/>.</summary>
@@ -62,7 +50,7 @@ internal static class ConvexSatLanes
         Vector2 origin = a.Vertices[0];
         ConvexLanes.Load(a.Vertices, a.Normals, origin, out var la);
         ConvexLanes.Load(b.Vertices, b.Normals, origin, out var lb);
-        return Finish(a, b, la, lb, origin, depth);
+        return Finish(a, b, la, lb, origin, depth, la.Lane(depth.FaceA), lb.Lane(depth.FaceB));
     }
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -117,14 +105,15 @@ internal static class ConvexSatLanes
         return Vector128.MinNative(Vector128.MinNative(d0, d1), Vector128.MinNative(d2, d3));
     }
 
-    // The action point and the result, as ConvexSat.Finish computes them.
+    // The action point and the result, as ConvexSat.Finish computes them (laneA, laneB: the lanes
+    // of the two shapes' best faces).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static CollisionDetectionResult Finish(in ConvexView a, in ConvexView b, in ConvexLanes la, in ConvexLanes lb, Vector2 origin, in ContactDepth depth)
+    private static CollisionDetectionResult Finish(in ConvexView a, in ConvexView b, in ConvexLanes la, in ConvexLanes lb, Vector2 origin, in ContactDepth depth, int laneA, int laneB)
     {
         bool referenceIsA = depth.SeparationA >= depth.SeparationB;
         bool found = referenceIsA
-            ? FacePoint(a.Vertices, a.Normals, depth.FaceA, b.Vertices, lb.Count, IncidentEdge(a.Normals[depth.FaceA], lb), origin, out Vector2 point, out Vector2 onIncident)
-            : FacePoint(b.Vertices, b.Normals, depth.FaceB, a.Vertices, la.Count, IncidentEdge(b.Normals[depth.FaceB], la), origin, out point, out onIncident);
+            ? FacePoint(a.Vertices, a.Normals, depth.FaceA, b.Vertices, lb.Count, IncidentEdge(la, laneA, lb), origin, out Vector2 point, out Vector2 onIncident)
+            : FacePoint(b.Vertices, b.Normals, depth.FaceB, a.Vertices, la.Count, IncidentEdge(lb, laneB, la), origin, out point, out onIncident);
         if (!found || !InsideBoth(la, lb, point))
         {
             point = Fallback(a, b, la, lb, origin, depth, found, onIncident);
@@ -142,30 +131,15 @@ internal static class ConvexSatLanes
             : ContactRegion.IntersectionCentroid(a, b, origin, depth.Normal) - origin;
     }
 
-    // The incident edge for a reference face of normal n: the other shape's edge whose normal has
-    // the least dot product with n (FaceLoops.LeastDot in lanes).
+    // The incident edge for the reference face in lane `lane` of `reference`: found for all four
+    // faces of the lane's group at once, which keeps the search beside the face selection rather
+    // than after it.
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int IncidentEdge(Vector2 n, in ConvexLanes incident)
+    private static int IncidentEdge(in ConvexLanes reference, int lane, in ConvexLanes incident)
     {
-        var nx = Vector128.Create(n.X);
-        var nz = Vector128.Create(n.Y);
-        var dots0 = (incident.NX0 * nx) + (incident.NZ0 * nz);
-        var dots1 = (incident.NX1 * nx) + (incident.NZ1 * nz);
-        return incident.Index(ConvexLanes.FirstLane(dots0, dots1, ConvexLanes.Least(dots0, dots1)));
-    }
-
-    // The incident edge for the reference face in lane `lane` of `reference`: all four faces of
-    // its group at once when the incident shape has one group of normals, else the one face.
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static int IncidentEdge(in ConvexLanes reference, int lane, ReadOnlySpan<Vector2> referenceNormals, int face, in ConvexLanes incident)
-    {
-        if (incident.Count <= 4)
-        {
-            var edges = lane < 4 ? IncidentEdges(reference.NX0, reference.NZ0, incident) : IncidentEdges(reference.NX1, reference.NZ1, incident);
-            return edges.GetElement(lane & 3);
-        }
-
-        return IncidentEdge(Unsafe.Add(ref MemoryMarshal.GetReference(referenceNormals), face), incident);
+        var first = Vector128.Create(lane < 4 ? -1 : 0).AsSingle();
+        var edges = IncidentEdges(Vector128.ConditionalSelect(first, reference.NX0, reference.NX1), Vector128.ConditionalSelect(first, reference.NZ0, reference.NZ1), incident);
+        return edges.GetElement(lane & 3);
     }
 
     // For four reference faces at once (normals nx, nz), the incident edge of each (lowest index
