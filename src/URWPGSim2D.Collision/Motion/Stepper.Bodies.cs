@@ -215,7 +215,7 @@ public sealed partial class Stepper
             throw new ArgumentException($"a body cannot be tested against itself (body {bodyA})", nameof(bodyB));
         }
 
-        return new Contact(bodyA, bodyB, _memo.Detect(a, b), Time);
+        return new Contact(bodyA, bodyB, _sampler.Memo.Detect(a, b), Time);
     }
 
     internal Body BodyAt(int id) => _bodies[id];
@@ -331,16 +331,13 @@ public sealed partial class Stepper
         }
 
         _planner.Load([.. movers], [.. statics], walls);
-        _memo.Clear();
         _table.Resize(movers.Count);
 
         // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
         int m = movers.Count;
         _table.Reserve((8 * m) + 64);
-        _queue.Reserve((32 * m) + 1024);
-        _due = new int[(8 * m) + 256];
-        _hitSlots = new int[(2 * m) + 64];
-        _hitValues = new Hit[(2 * m) + 64];
+        _sampler.Reserve(m);
+        LoadIslands(m);
         _pending = new int[(2 * m) + 16];
         _clusters.Reserve((2 * m) + 64, m);
         _collector.Reserve((8 * m) + 256);

@@ -25,13 +25,13 @@ public sealed partial class Stepper
     // pair was planned again by an earlier event is left to its new schedule.
     private void HandleHits(double found)
     {
-        if (_hitCount == 0)
+        if (_sampler.HitCount == 0)
         {
             return;
         }
 
-        int count = _hitCount;
-        _clusters.Load(_hitSlots, _hitValues, count, _table);
+        int count = _sampler.HitCount;
+        _clusters.Load(_sampler.HitSlots, _sampler.HitValues, count, _table);
         for (int i = 0; i < count; i++)
         {
             _clusters.Estimate[i] = EstimatedContact(_clusters.Slot[i], _clusters.Value[i], found);
@@ -40,17 +40,17 @@ public sealed partial class Stepper
         _clusters.Cluster();
         foreach (int cluster in _clusters.ClustersByTime())
         {
-            _hitCount = 0;
+            _sampler.HitCount = 0;
             for (int i = 0; i < count; i++)
             {
                 int slot = _clusters.Slot[i];
                 if (_clusters.Label[i] == cluster && _table.Alive[slot] && _table.Generation[slot] == _clusters.Generation[i])
                 {
-                    AddHit(slot, _clusters.Value[i]);
+                    _sampler.AddHit(slot, _clusters.Value[i]);
                 }
             }
 
-            if (_hitCount > 0)
+            if (_sampler.HitCount > 0)
             {
                 HandleEvent(found);
             }
@@ -64,19 +64,19 @@ public sealed partial class Stepper
         _involved.Clear();
         double lo = found;
         float deepest = 0f;
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
-            int slot = _hitSlots[i];
+            int slot = _sampler.HitSlots[i];
             lo = Math.Min(lo, _table.LastFree[slot]);
-            deepest = MathF.Max(deepest, _hitValues[i].Depth);
+            deepest = MathF.Max(deepest, _sampler.HitValues[i].Depth);
             Mark(_involved, _table.Pair[slot]);
         }
 
         // Each hit sampled apart was apart at its last sample; all were apart at lo if they share it.
         bool apartAtLo = true;
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
-            apartAtLo &= _table.LastFree[_hitSlots[i]] == lo && _table.ApartAtLastFree[_hitSlots[i]];
+            apartAtLo &= _table.LastFree[_sampler.HitSlots[i]] == lo && _table.ApartAtLastFree[_sampler.HitSlots[i]];
         }
 
         bool refine = deepest > MotionTolerances.TimeOfImpactTolerance;
@@ -102,10 +102,10 @@ public sealed partial class Stepper
         }
 
         _changed.Clear();
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
 
-            Respond(_table.Pair[_hitSlots[i]]);
+            Respond(_table.Pair[_sampler.HitSlots[i]]);
         }
 
         Relax();
@@ -115,7 +115,7 @@ public sealed partial class Stepper
     private void Respond(in PlannedPair pair)
     {
         Body a = _bodies[pair.A], b = _bodies[pair.B];
-        Hit hit = _memo.Detect(a, b);
+        Hit hit = _sampler.Memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
             _handler!.OnContact(this, new Contact(pair.A, pair.B, hit, Time));
@@ -211,7 +211,7 @@ public sealed partial class Stepper
                 PlannedPair pair = _table.Pair[slot];
                 MovePair(pair, Time);
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                if (_memo.DetectIfNear(a, b).Depth > MotionTolerances.ContactSlop)
+                if (_sampler.Memo.DetectIfNear(a, b).Depth > MotionTolerances.ContactSlop)
                 {
                     AddPending(slot);
                 }
@@ -259,9 +259,9 @@ public sealed partial class Stepper
     private double FirstContact(double free, double hit, bool knownApart)
     {
         float rate = 0f;
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
-            rate = MathF.Max(rate, _table.Rate[_hitSlots[i]]);
+            rate = MathF.Max(rate, _table.Rate[_sampler.HitSlots[i]]);
         }
 
         if (!knownApart)
@@ -303,13 +303,13 @@ public sealed partial class Stepper
     private void Guess(ref double lo, ref double hi, float rate)
     {
         int deepest = 0;
-        for (int i = 1; i < _hitCount; i++)
+        for (int i = 1; i < _sampler.HitCount; i++)
         {
-            deepest = _hitValues[i].Depth > _hitValues[deepest].Depth ? i : deepest;
+            deepest = _sampler.HitValues[i].Depth > _sampler.HitValues[deepest].Depth ? i : deepest;
         }
 
-        int slot = _hitSlots[deepest];
-        Hit hit = _hitValues[deepest];
+        int slot = _sampler.HitSlots[deepest];
+        Hit hit = _sampler.HitValues[deepest];
         for (int round = 0; round < GuessRounds; round++)
         {
             float closing = ClosingRate(_table.Pair[slot], hit);
@@ -360,13 +360,13 @@ public sealed partial class Stepper
     {
         slot = -1;
         deepest = default;
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
-            PlannedPair pair = _table.Pair[_hitSlots[i]];
-            Hit hit = _memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]);
+            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
+            Hit hit = _sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]);
             if (hit.Depth > MotionTolerances.ContactSlop && hit.Depth > deepest.Depth)
             {
-                slot = _hitSlots[i];
+                slot = _sampler.HitSlots[i];
                 deepest = hit;
             }
         }
@@ -376,10 +376,10 @@ public sealed partial class Stepper
 
     private bool AnyHitIntersects()
     {
-        for (int i = 0; i < _hitCount; i++)
+        for (int i = 0; i < _sampler.HitCount; i++)
         {
-            PlannedPair pair = _table.Pair[_hitSlots[i]];
-            if (_memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
+            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
+            if (_sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
             {
                 return true;
             }

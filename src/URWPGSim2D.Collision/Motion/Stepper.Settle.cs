@@ -84,10 +84,10 @@ public sealed partial class Stepper
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                Hit hit = _memo.DetectIfNear(a, b);
+                Hit hit = _sampler.Memo.DetectIfNear(a, b);
                 if (hit.Depth > MotionTolerances.ContactSlop)
                 {
-                    _handler!.OnContact(this, new Contact(pair.A, pair.B, _memo.Detect(a, b), Time));
+                    _handler!.OnContact(this, new Contact(pair.A, pair.B, _sampler.Memo.Detect(a, b), Time));
                     Mark(next, pair);
                 }
                 else
@@ -142,7 +142,7 @@ public sealed partial class Stepper
             foreach (ref readonly var pair in _collector.Pairs)
             {
                 Body a = _bodies[pair.A], b = _bodies[pair.B];
-                float depth = _memo.DetectIfNear(a, b).Depth;
+                float depth = _sampler.Memo.DetectIfNear(a, b).Depth;
                 if (depth > MotionTolerances.RejectOverlap)
                 {
                     Reject(a, rejected);
@@ -214,7 +214,7 @@ public sealed partial class Stepper
         float deepest = 0f;
         foreach (ref readonly var pair in pairs)
         {
-            deepest = MathF.Max(deepest, _memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth);
+            deepest = MathF.Max(deepest, _sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth);
         }
 
         return deepest;

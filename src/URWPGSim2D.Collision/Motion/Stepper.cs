@@ -20,8 +20,6 @@ public sealed partial class Stepper
 {
     private readonly SweepPlanner _planner;
     private readonly PairTable _table = new(0);
-    private readonly TickQueue _queue = new();
-    private readonly TestMemo _memo = new();
     private IContactHandler? _handler;
 
     /// <summary>Creates an empty stepper.</summary>
@@ -67,18 +65,22 @@ public sealed partial class Stepper
     public void Step(float seconds, IContactHandler handler)
     {
         Begin(seconds, handler);
-        for (double time; (time = _queue.NextTime()) >= 0.0;)
+        SampleIslands();
+        for (double time; (time = NextTime()) >= 0.0;)
         {
-            if (TakeDue(time) > 0)
+            int due = _sampler.TakeDue(time, _table);
+            _sampler.HitCount = 0;
+            if (TakeHeld(time) + due > 0)
             {
-                SubSteps++;
-                SampleDue(time);
+                _sampler.MarkSampled(time);
+                _sampler.SampleDue(time, _table, _bodies, seconds, this);
                 HandleHits(time);
             }
         }
 
+        SubSteps = _sampler.SampledTicks();
         MoveAllTo(1.0);
-        float deepest = MathF.Max(_deepestAtEnd, SettleTouched());
+        float deepest = MathF.Max(_sampler.DeepestAtEnd, SettleTouched());
         LeftoverOverlap = RejectOverlapping(deepest);
         End();
     }
@@ -98,7 +100,6 @@ public sealed partial class Stepper
         SubSteps = 0;
         Events = 0;
         RejectedMoves = 0;
-        _deepestAtEnd = 0f;
         Time = 0.0;
         _stepping = true;
         foreach (Body body in _planner.MoverBodies)
@@ -110,11 +111,12 @@ public sealed partial class Stepper
         }
 
         _table.Clear();
-        _queue.Clear();
+        _sampler.BeginStep();
         _touched.Clear();
         _deferred.Clear();
         _scheduler.Settling = false;
-        _planner.PlanAll(0.0, _scheduler);
+        _recorder ??= new Recorder(this);
+        _planner.PlanAll(0.0, _recorder);
     }
 
     // The step's end state becomes the state a rejected move of the next step goes back to.

@@ -42,6 +42,9 @@ internal sealed class SweepPlanner
     /// <summary>The movers, by slot.</summary>
     public ReadOnlySpan<Body> MoverBodies => _movers;
 
+    /// <summary>A mover's swept circle as last measured (its bounding circle grown by its travel to the end of the step).</summary>
+    public Disc SweptCircle(int m) => new(_center[m], _radius[m]);
+
     /// <summary>Duration of the step being planned, s.</summary>
     public float Seconds { get; set; } = 0.1f;
 

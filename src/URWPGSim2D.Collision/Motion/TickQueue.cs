@@ -156,6 +156,30 @@ internal sealed class TickQueue
         }
     }
 
+    /// <summary>
+    /// Moves every entry into <paramref name="into"/>, earliest tick first and in first-in first-out
+    /// order within a tick (pushing them back in that order rebuilds the same ticks), and empties the queue.
+    /// </summary>
+    public void DrainInto(QueueEntries into)
+    {
+        for (int w = 0; w < _occupied.Length; w++)
+        {
+            for (ulong bits = _occupied[w]; bits != 0; bits &= bits - 1)
+            {
+                int tick = (w * 64) + BitOperations.TrailingZeroCount(bits);
+                for (int node = _head[tick]; node != None; node = _next[node])
+                {
+                    into.Add(tick, _slot[node], _generation[node]);
+                }
+            }
+        }
+
+        Clear();
+    }
+
+    /// <summary>Schedules an entry at a grid tick (0 … <see cref="Ticks"/>), as <see cref="Push"/> does at tick / <see cref="Ticks"/>.</summary>
+    public void PushTick(int tick, int slot, int generation) => Push((double)tick / Ticks, slot, generation);
+
     /// <summary>The slot of a node.</summary>
     public int SlotOf(int node) => _slot[node];
 

@@ -55,7 +55,9 @@ internal static class LiveRun
         {
             var t = first ? teams : Reload(options, teams);
             first = false;
-            return MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
+            var match = MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
+            match.Stepper.Threads = options.Threads ?? 1;
+            return match;
         }
 
         var feed = new LiveFeed();

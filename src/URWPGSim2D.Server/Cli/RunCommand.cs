@@ -93,6 +93,7 @@ internal sealed class RunCommand : ICliCommand
 
         int cycles = options.CyclesFor(scenario);
         var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
+        match.Stepper.Threads = options.Threads ?? 1;
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
         var clock = Stopwatch.StartNew();
@@ -229,6 +230,8 @@ internal sealed class RunCommand : ICliCommand
         "100). --trace writes JSON Lines, --svg the final frame,\n" +
         "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
+        "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
+        "the same match whatever P); with --batch, P is the number of matches played at once (default: every core).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
         "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +

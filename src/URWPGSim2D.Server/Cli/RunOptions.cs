@@ -12,7 +12,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--threads P] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -41,7 +41,10 @@ internal sealed class RunOptions
     /// <summary>How many shards the batch is split into (1: the whole batch here).</summary>
     public int ShardCount { get; private set; } = 1;
 
-    /// <summary>Matches played at once (<c>--threads P</c>); default: every core.</summary>
+    /// <summary>
+    /// <c>--threads P</c>: with <c>--batch</c>, matches played at once (default: every core); for a
+    /// single match, threads its stepper spreads each cycle's islands over (default 1).
+    /// </summary>
     public int? Threads { get; private set; }
 
     /// <summary>JSON Lines result file of a batch, or null.</summary>
@@ -276,9 +279,9 @@ internal sealed class RunOptions
             throw UsageError("--minutes and --cycles both set the length; give one");
         }
 
-        if (Batch is null && (ShardCount > 1 || Threads is not null || Results is not null))
+        if (Batch is null && (ShardCount > 1 || Results is not null))
         {
-            throw UsageError("--shard, --threads and --results belong to --batch N");
+            throw UsageError("--shard and --results belong to --batch N");
         }
 
         if (Batch is not null && (Trace is not null || Svg is not null || Html is not null))

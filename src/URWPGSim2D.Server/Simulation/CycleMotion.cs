@@ -21,6 +21,13 @@ internal sealed class CycleMotion
         _handler = new ContactHandler(world, log);
     }
 
+    /// <summary>Threads the stepper spreads a cycle's islands over (1 by default; the same match whatever the number).</summary>
+    public int Threads
+    {
+        get => _bodies.Stepper.Threads;
+        set => _bodies.Stepper.Threads = value;
+    }
+
     /// <summary>Distinct sample times of the last cycle.</summary>
     public int SubSteps => _bodies.Stepper.SubSteps;
 

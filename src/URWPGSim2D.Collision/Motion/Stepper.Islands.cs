@@ -1,0 +1,235 @@
+using System;
+using System.Threading;
+
+namespace URWPGSim2D.Collision.Motion;
+
+/// <content>
+/// Islands: the movers fall into islands that cannot meet within the step as planned (see
+/// <see cref="IslandSet"/>). Each island is sampled on its own, on one of <see cref="Threads"/>
+/// threads, up to its first hit: until a contact response changes a motion nothing one island does
+/// concerns another. Its remaining queue entries and that first sample's hits are then handed to
+/// the event loop, which carries on over the whole world (a response may send a body anywhere).
+/// Islands are merged in island order, so the contacts do not depend on the number of threads.
+/// </content>
+public sealed partial class Stepper
+{
+    /// <summary>Fewest movers for which the islands are spread over threads (smaller worlds use the calling thread alone, with the same result).</summary>
+    internal const int MinimumMoversForThreads = 256;
+
+    private readonly IslandSet _islands = new();
+    private readonly HeldHits _heldByIsland = new();
+    private readonly HeldHits _held = new();
+    private IslandWorker[] _workers = [];
+    private int[] _chunkStart = new int[2];
+    private IslandRunner? _runner;
+    private Recorder? _recorder;
+    private int _threads = 1;
+    private int _nextHeld;
+
+    /// <summary>
+    /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
+    /// are sampled on up to this many threads up to their first contact. The contacts, poses and
+    /// counts are the same whatever the number; a world of fewer than 256 moving bodies uses the
+    /// calling thread alone. Threads are created once, on first need, and shared by all steppers.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is below 1 or above 1024, or a step is running.</exception>
+    public int Threads
+    {
+        get => _threads;
+        set
+        {
+            if (value < 1 || value > 1024)
+            {
+                throw new ArgumentException($"threads must be 1 to 1024, got {value}", nameof(value));
+            }
+
+            if (_stepping)
+            {
+                throw new ArgumentException("threads cannot change while a step runs", nameof(value));
+            }
+
+            _threads = value;
+        }
+    }
+
+    /// <summary>Chunks of islands the last step ran at once (tests: 1 means the calling thread alone).</summary>
+    internal int Chunks { get; private set; }
+
+    /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
+    internal long WorkerAllocatedBytes => _runner?.Allocated ?? 0L;
+
+    /// <summary>Number of islands of the last step (tests).</summary>
+    internal int IslandCount => _islands.Count;
+
+    /// <summary>The island of a moving body in the last step (tests).</summary>
+    internal int IslandOf(int body) => _islands.IslandOf[_bodies[body].Slot];
+
+    /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
+    internal Disc SweptCircleOf(int body) => _planner.SweptCircle(_bodies[body].Slot);
+
+    private void LoadIslands(int movers)
+    {
+        _islands.Load(movers);
+        _heldByIsland.Reserve((2 * movers) + 64);
+        _held.Reserve((2 * movers) + 64);
+        foreach (IslandWorker worker in _workers)
+        {
+            worker.Reserve(movers);
+        }
+    }
+
+    // After the first plan (pairs recorded, not yet sampled): islands found, each sampled up to its
+    // first hit, the results handed to the event loop.
+    private void SampleIslands()
+    {
+        _islands.Build(_table);
+        _islands.Group(_table);
+        int wanted = _planner.Movers >= MinimumMoversForThreads ? Math.Min(_threads, Math.Max(1, _islands.Count)) : 1;
+        EnsureWorkers(wanted);
+        if (_chunkStart.Length < wanted + 1)
+        {
+            _chunkStart = new int[wanted + 1];
+        }
+
+        int chunks = _islands.Split(wanted, _chunkStart);
+        Chunks = chunks;
+        _runner ??= new IslandRunner(this);
+        IslandPool.Run(_runner, chunks);
+
+        // Merged in island order (chunks are contiguous ranges of islands, in order).
+        _heldByIsland.Clear();
+        for (int c = 0; c < chunks; c++)
+        {
+            IslandWorker worker = _workers[c];
+            _sampler.Absorb(worker.Sampler);
+            QueueEntries handoff = worker.Handoff;
+            ReadOnlySpan<int> ticks = handoff.Tick, slots = handoff.Slot, generations = handoff.Generation;
+            for (int i = 0; i < handoff.Count; i++)
+            {
+                _sampler.Queue.PushTick(ticks[i], slots[i], generations[i]);
+            }
+
+            _heldByIsland.AddAll(worker.Held);
+        }
+
+        _held.SortByTick(_heldByIsland);
+        _nextHeld = 0;
+    }
+
+    private void EnsureWorkers(int count)
+    {
+        if (_workers.Length >= count)
+        {
+            return;
+        }
+
+        int old = _workers.Length;
+        Array.Resize(ref _workers, count);
+        for (int w = old; w < count; w++)
+        {
+            _workers[w] = new IslandWorker();
+            _workers[w].Reserve(_planner.Movers);
+        }
+    }
+
+    // One chunk of islands, each sampled alone in the worker's own queue until its first hit or the end of the step.
+    private void RunChunk(int chunk)
+    {
+        IslandWorker worker = _workers[chunk];
+        PairSampler sampler = worker.Sampler;
+        sampler.BeginStep();
+        worker.Handoff.Clear();
+        worker.Held.Clear();
+        ReadOnlySpan<int> start = _islands.PairStart, slots = _islands.PairSlot;
+        float seconds = _planner.Seconds;
+        for (int island = _chunkStart[chunk]; island < _chunkStart[chunk + 1]; island++)
+        {
+            // The pairs' first samples, scheduled from the start of the step in slot (plan) order.
+            for (int i = start[island]; i < start[island + 1]; i++)
+            {
+                int slot = slots[i];
+                PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
+                float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
+                _table.ApartAtLastFree[slot] = gap > 0f;
+                sampler.Schedule(_table, slot, 0.0, gap);
+            }
+
+            for (double time; (time = sampler.Queue.NextTime()) >= 0.0;)
+            {
+                if (sampler.TakeDue(time, _table) == 0)
+                {
+                    continue;
+                }
+
+                sampler.HitCount = 0;
+                sampler.SampleDue(time, _table, _bodies, seconds, null);
+                if (sampler.HitCount > 0)
+                {
+                    int tick = (int)(time * Ticks);
+                    for (int h = 0; h < sampler.HitCount; h++)
+                    {
+                        int slot = sampler.HitSlots[h];
+                        worker.Held.Add(tick, slot, _table.Generation[slot], sampler.HitValues[h]);
+                    }
+
+                    sampler.Queue.DrainInto(worker.Handoff);
+                    break;
+                }
+            }
+        }
+    }
+
+    // The earliest time with queue entries or held hits, or −1.
+    private double NextTime()
+    {
+        double queued = _sampler.Queue.NextTime();
+        if (_nextHeld == _held.Count)
+        {
+            return queued;
+        }
+
+        double held = (double)_held.Tick[_nextHeld] / Ticks;
+        return queued < 0.0 ? held : Math.Min(queued, held);
+    }
+
+    // The held hits of a time whose pairs were not planned again since, placed at the time; returns their number.
+    private int TakeHeld(double time)
+    {
+        int tick = (int)(time * Ticks);
+        int count = 0;
+        for (; _nextHeld < _held.Count && _held.Tick[_nextHeld] == tick; _nextHeld++)
+        {
+            int slot = _held.Slot[_nextHeld];
+            if (_table.Alive[slot] && _table.Generation[slot] == _held.Generation[_nextHeld])
+            {
+                MovePair(_table.Pair[slot], time);
+                _sampler.AddHit(slot, _held.Value[_nextHeld]);
+                count++;
+            }
+        }
+
+        return count;
+    }
+
+    // The first plan of a step: each pair is stored with its sampling interval; the islands schedule their pairs' samples.
+    private sealed class Recorder(Stepper owner) : IPairSink
+    {
+        public void Add(in PlannedPair pair, float rate)
+        {
+            int slot = owner._table.Add(pair, rate);
+            owner._table.Interval[slot] = Scheduler.Interval(pair.Limit, rate);
+            owner._table.LastFree[slot] = 0.0;
+        }
+    }
+
+    private sealed class IslandRunner(Stepper owner) : IslandPool.IChunkWork
+    {
+        private long _allocated;
+
+        public long Allocated => Interlocked.Read(ref _allocated);
+
+        public void RunChunk(int chunk) => owner.RunChunk(chunk);
+
+        public void CountAllocated(long bytes) => Interlocked.Add(ref _allocated, bytes);
+    }
+}

@@ -1,0 +1,131 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Motion;
+using Xunit;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary>
+/// Islands and <see cref="Stepper.Threads"/>: the islands agree with brute force (two movers whose
+/// swept circles meet are in one island), and a crowd stepped on 1, 2, 3 or 4 threads ends every
+/// step with the same poses, velocities, contacts (in order) and counts, bit for bit.
+/// </summary>
+public sealed class StepperIslandTests
+{
+    private const float Seconds = 0.1f;
+
+    [Fact]
+    public void MoversWhoseSweptCirclesMeetShareAnIsland()
+    {
+        var stepper = StepperAllocationTests.World(600);
+        var handler = new RecordingHandler(0.3f) { Record = false };
+        for (int step = 0; step < 4; step++)
+        {
+            // Each mover's swept circle from its state at the start of the step, computed here from
+            // the definition (bounding circle grown by the most any of its points moves in the step).
+            var movers = new List<int>();
+            var circles = new List<(Vector2 Center, float Radius)>();
+            for (int id = 0; id < stepper.BodyCount; id++)
+            {
+                if (stepper.KindOf(id) > BodyKind.Fish)
+                {
+                    continue;
+                }
+
+                Body body = stepper.BodyAt(id);
+                Disc bound = body.Bound();
+                float reach = body.Kind == BodyKind.Circle ? 0f : Vector2.Distance(bound.Center, body.Position) + bound.Radius;
+                float travel = (body.Velocity.Length() * Seconds) + (MathF.Abs(body.AngularVelocity) * reach * Seconds);
+                movers.Add(id);
+                circles.Add((bound.Center, bound.Radius + travel));
+            }
+
+            stepper.Step(Seconds, handler);
+            int joined = 0;
+            for (int i = 0; i < movers.Count; i++)
+            {
+                for (int j = i + 1; j < movers.Count; j++)
+                {
+                    float reach = circles[i].Radius + circles[j].Radius + 1f; // the planner's 1 mm margin
+                    if (Vector2.DistanceSquared(circles[i].Center, circles[j].Center) < reach * reach)
+                    {
+                        joined++;
+                        Assert.True(
+                            stepper.IslandOf(movers[i]) == stepper.IslandOf(movers[j]),
+                            $"step {step}: bodies {movers[i]} and {movers[j]} can meet but are in islands {stepper.IslandOf(movers[i])} and {stepper.IslandOf(movers[j])}");
+                    }
+                }
+            }
+
+            Assert.True(joined > 10, $"step {step}: only {joined} pairs can meet: the scene does not test islands");
+            Assert.InRange(stepper.IslandCount, 2, movers.Count - 1);
+        }
+    }
+
+    [Fact]
+    public void EveryThreadCountGivesTheSameSteps()
+    {
+        var reference = Run(1, out var referenceContacts);
+        Assert.True(referenceContacts.Count > 100, $"only {referenceContacts.Count} contacts: the scene does not exercise the stepper");
+        foreach (int threads in new[] { 2, 3, 4 })
+        {
+            var other = Run(threads, out var contacts);
+            Assert.Equal(reference.Count, other.Count);
+            for (int i = 0; i < reference.Count; i++)
+            {
+                Assert.True(reference[i] == other[i], $"{threads} threads: state line {i} differs: {reference[i]} against {other[i]}");
+            }
+
+            Assert.Equal(referenceContacts.Count, contacts.Count);
+            for (int i = 0; i < contacts.Count; i++)
+            {
+                Assert.True(Same(referenceContacts[i], contacts[i]), $"{threads} threads: contact {i} differs");
+            }
+        }
+    }
+
+    [Theory]
+    [InlineData(0)]
+    [InlineData(-3)]
+    [InlineData(1025)]
+    public void ThreadsOutOfRangeAreRejected(int threads)
+    {
+        var stepper = new Stepper();
+        var e = Assert.Throws<ArgumentException>(() => stepper.Threads = threads);
+        Assert.Contains($"got {threads}", e.Message, StringComparison.Ordinal);
+        Assert.Equal(1, stepper.Threads);
+    }
+
+    // 12 steps of a 1,000-body crowd (about 600 movers): per step the counts, per mover its exact state.
+    private static List<string> Run(int threads, out List<Contact> contacts)
+    {
+        var stepper = StepperAllocationTests.World(1_000);
+        stepper.Threads = threads;
+        var handler = new RecordingHandler(0.3f);
+        var lines = new List<string>();
+        for (int step = 0; step < 12; step++)
+        {
+            stepper.Step(Seconds, handler);
+            lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}, islands {stepper.IslandCount}");
+            for (int id = 0; id < stepper.BodyCount; id++)
+            {
+                if (stepper.KindOf(id) <= BodyKind.Fish)
+                {
+                    Vector2 p = stepper.PositionOf(id), v = stepper.VelocityOf(id);
+                    lines.Add($"{id}: {Bits(p.X)} {Bits(p.Y)} {Bits(stepper.HeadingOf(id))} {Bits(v.X)} {Bits(v.Y)} {Bits(stepper.AngularVelocityOf(id))}");
+                }
+            }
+        }
+
+        contacts = handler.Contacts;
+        return lines;
+    }
+
+    private static bool Same(in Contact a, in Contact b) =>
+        a.BodyA == b.BodyA && a.BodyB == b.BodyB && a.Time == b.Time
+        && a.Result.MinimumTranslationVector == b.Result.MinimumTranslationVector
+        && a.Result.NormalAxis == b.Result.NormalAxis && a.Result.ActionPoint == b.Result.ActionPoint;
+
+    private static int Bits(float value) => BitConverter.SingleToInt32Bits(value);
+}
