@@ -28,6 +28,9 @@ internal sealed class CycleMotion
         set => _bodies.Stepper.Threads = value;
     }
 
+    /// <summary>Chunks of islands the last cycle ran at once (1: the calling thread alone).</summary>
+    public int Chunks => _bodies.Stepper.Chunks;
+
     /// <summary>Distinct sample times of the last cycle.</summary>
     public int SubSteps => _bodies.Stepper.SubSteps;
 

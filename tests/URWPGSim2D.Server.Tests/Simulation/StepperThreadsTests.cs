@@ -1,0 +1,84 @@
+using System;
+using System.IO;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Tests.Cli;
+using URWPGSim2D.Server.Trace;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Simulation;
+
+/// <summary>
+/// <c>--threads P</c> for a single match: the stepper samples each cycle's islands on P threads,
+/// and the trace (poses, contacts in order, scores, events) is byte-identical for 1, 2 and 4
+/// threads, on crowds large enough to use the threads and on the default match; the CLI prints
+/// the same summary whatever P.
+/// </summary>
+public sealed class StepperThreadsTests
+{
+    [Theory]
+    [InlineData(400, 3UL)]
+    [InlineData(1_000, 1UL)]
+    public void ACrowdIsTheSameOnOneTwoAndFourThreads(int movers, ulong seed)
+    {
+        var scenario = CrowdScenario.Create(movers, seed);
+        byte[] one = Trace(scenario, 1, 25, out int chunks);
+        Assert.Equal(1, chunks);
+        Assert.Equal(one, Trace(scenario, 2, 25, out chunks));
+        Assert.Equal(2, chunks);
+        Assert.Equal(one, Trace(scenario, 4, 25, out chunks));
+        Assert.Equal(4, chunks);
+    }
+
+    [Fact]
+    public void TheDefaultMatchIsTheSameOnTwoThreads()
+    {
+        var scenario = DefaultScenario.Load();
+        Assert.Equal(Trace(scenario, 1, 150, out _), Trace(scenario, 2, 150, out _));
+    }
+
+    [Fact]
+    public void RunWithThreadsPrintsTheSameMatch()
+    {
+        string one = Summary(CliRun.Of(string.Empty, "run", "--crowd", "300", "--cycles", "8"));
+        string two = Summary(CliRun.Of(string.Empty, "run", "--crowd", "300", "--cycles", "8", "--threads", "2"));
+        Assert.Equal(one, two);
+        Assert.Contains("contacts:", one, StringComparison.Ordinal);
+    }
+
+    // The output but for its first line (wall time).
+    private static string Summary(CliRun run)
+    {
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        return run.Stdout[(run.Stdout.IndexOf('\n', StringComparison.Ordinal) + 1)..];
+    }
+
+    private static byte[] Trace(ScenarioDefinition scenario, int threads, int cycles, out int chunks)
+    {
+        string path = Path.Combine(Path.GetTempPath(), $"urwpg-threads-{Guid.NewGuid():N}.jsonl");
+        try
+        {
+            var match = MatchBuilder.Build(scenario);
+            match.Stepper.Threads = threads;
+            chunks = 0;
+            using (var trace = new TraceWriter(path))
+            {
+                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
+                for (int k = 0; k < cycles; k++)
+                {
+                    match.Step();
+                    trace.WriteCycle(match, match.Contacts.Cycle);
+                    chunks = Math.Max(chunks, match.Stepper.Chunks);
+                }
+
+                trace.Complete();
+            }
+
+            return File.ReadAllBytes(path);
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+}
