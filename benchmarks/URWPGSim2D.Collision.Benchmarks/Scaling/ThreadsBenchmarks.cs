@@ -1,0 +1,52 @@
+using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Collision.Benchmarks.Scaling;
+
+/// <summary>
+/// One whole cycle of the crowd scene of <see cref="ScalingBenchmarks"/> at 1,000 and 10,000 fish
+/// and balls, its stepper on one thread (the baseline) and on two (<c>run --threads 2</c>: the
+/// islands sampled on two threads up to their first contact); both play the same match, tested.
+/// Each scene is played 20 cycles before measuring; each call plays the next cycle.
+/// </summary>
+[MemoryDiagnoser]
+[MedianColumn]
+public class ThreadsBenchmarks
+{
+    private const int WarmCycles = 20;
+    private Match _one = null!;
+    private Match _two = null!;
+
+    /// <summary>Fish and balls in the scene.</summary>
+    [Params(1_000, 10_000)]
+    public int Objects { get; set; }
+
+    /// <summary>Builds the scene for one thread and plays 20 cycles.</summary>
+    [GlobalSetup(Target = nameof(OneThread))]
+    public void SetupOne() => _one = Warm(1);
+
+    /// <summary>Builds the scene for two threads and plays 20 cycles.</summary>
+    [GlobalSetup(Target = nameof(TwoThreads))]
+    public void SetupTwo() => _two = Warm(2);
+
+    /// <summary>One cycle, the stepper on the calling thread.</summary>
+    [Benchmark(Baseline = true)]
+    public void OneThread() => _one.Step();
+
+    /// <summary>One cycle, the stepper's islands on two threads.</summary>
+    [Benchmark]
+    public void TwoThreads() => _two.Step();
+
+    private Match Warm(int threads)
+    {
+        var match = MatchBuilder.Build(CrowdScenario.Create(Objects));
+        match.Stepper.Threads = threads;
+        for (int i = 0; i < WarmCycles; i++)
+        {
+            match.Step();
+        }
+
+        return match;
+    }
+}
