@@ -1,0 +1,150 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Server.Simulation.Kinematics;
+
+namespace URWPGSim2D.Server.Items.Demo;
+
+/// <summary>
+/// Pushes a ball in a wanted direction with a fish that turns slowly and late, and keeps it on the
+/// fish's pointed head. On the head the ball is balanced like an inverted pendulum: at speed v a ball
+/// at angle α from the heading (seen from the head tip) slides off at dα/dt ≈ (v/r)·α − (1 + h/r)·ω
+/// (r the ball radius, h the tip's distance from the centre, ω the turn rate), and ω itself follows
+/// the turn code with a one-second lag. The controller places both poles of that loop at −1.2/s:
+/// the turn it asks for is ω_ref + k₁(α − α_ref) + k₂(ω − ω_ref) with k₁ = (p + a)²/b, k₂ = 1 − 2p − a
+/// (a = v/r, b = 1 + h/r, p = 1.2), sent through <see cref="TurnCode"/>. To curve the ball's path
+/// toward the wanted direction it holds the ball slightly to the inside of the turn: a path curvature κ
+/// (the heading error over 400 mm, at most 0.35/(r·b)) needs ω_ref = κv and α_ref = κ·r·b. It slows
+/// down while the ball is off its place. α is measured where it is sharpest: the ball's exact velocity
+/// gives the contact impulse, which points from the tip to the ball's centre (<see cref="BallTrack"/>).
+/// A fish not behind its ball gets there with <see cref="Approach"/>. One value per fish, kept across cycles.
+/// </summary>
+internal struct Pusher
+{
+    /// <summary>Where the loop's poles are placed, 1/s.</summary>
+    public const float Pole = 1.2f;
+
+    /// <summary>Largest angle at which the ball is held off the heading to curve its path, rad.</summary>
+    public const float MaxHold = 0.35f;
+
+    /// <summary>Distance over which the heading error is turned away, mm (sets the path's curvature).</summary>
+    public const float TurnDistance = 400f;
+
+    /// <summary>Gap between the head tip and the ball at the approach's end, mm.</summary>
+    public const float Lead = 60f;
+
+    private bool _pushing;
+    private Approach _approach;
+
+    /// <summary>Whether the fish has the ball on its head (or is about to).</summary>
+    public readonly bool Pushing => _pushing;
+
+    /// <summary>The decision pushing the ball of <paramref name="ball"/> along <paramref name="direction"/>.</summary>
+    /// <param name="view">The fish as seen.</param>
+    /// <param name="me">The fish's estimated pose.</param>
+    /// <param name="ball">The ball's track (a contact on the head refines it).</param>
+    /// <param name="radius">Ball radius, mm.</param>
+    /// <param name="direction">Where the ball should go (a unit vector).</param>
+    /// <param name="around">Walls and obstacles, for the approach.</param>
+    /// <param name="pushVCode">Speed gear while pushing.</param>
+    public Decision Push(in FishView view, in FishTrack me, ref BallTrack ball, float radius, Vector2 direction, in Surroundings around, int pushVCode)
+    {
+        float reach = (view.BodyLength * 0.5f) + view.HeadLength;
+        Vector2 u = me.Forward;
+        Vector2 tip = me.Position + (u * reach);
+        Sharpen(me, tip, ref ball, radius);
+
+        Vector2 toBall = ball.Position - tip;
+        float gap = toBall.Length() - radius;
+        float alpha = Steering.Wrap(MathF.Atan2(toBall.Y, toBall.X) - me.Heading);
+        float error = Steering.Wrap(MathF.Atan2(direction.Y, direction.X) - me.Heading);
+        _pushing = _pushing
+            ? gap < 200f && MathF.Abs(alpha) < 1.1f && MathF.Abs(error) < 1.6f
+            : gap < 150f && MathF.Abs(alpha) < 0.7f && MathF.Abs(error) < 1.0f;
+        if (!_pushing)
+        {
+            Vector2 goal = ball.Position - (direction * (radius + reach + Lead));
+            if (!around.Ways.Free(me.Position, goal, Approach.WallMargin) && Vector2.Distance(me.Position, goal) > 300f)
+            {
+                // Obstacles in between: round them first.
+                return Travel(view, me, goal, around);
+            }
+
+            return _approach.Toward(view, me, goal, MathF.Atan2(direction.Y, direction.X), around, ball.Position, radius, pushVCode, 400f);
+        }
+
+        float b = 1f + (reach / radius);
+        float limit = MaxHold / (radius * b);
+        float curvature = Math.Clamp(error / TurnDistance, -limit, limit);
+        float speed = MathF.Max(view.Speed, 10f);
+        float a = speed / radius;
+        float hold = curvature * radius * b;
+        float rateRef = curvature * speed;
+        float k1 = (Pole + a) * (Pole + a) / b, k2 = 1f - (2f * Pole) - a;
+        float rate = rateRef + (k1 * (alpha - hold)) + (k2 * (view.AngularSpeed - rateRef));
+        float off = MathF.Abs(alpha - hold);
+        int vcode = off > 0.5f ? 1 : off > 0.3f ? Math.Min(pushVCode, 2) : pushVCode;
+        return new Decision(vcode, TurnCode.Nearest(rate));
+    }
+
+    /// <summary>
+    /// The decision taking the fish to <paramref name="goal"/> without a ball (it is not pushing
+    /// meanwhile): along the shortest way round the obstacles (<see cref="Waypath"/>) by pursuit of a
+    /// point ahead on it, at the fastest gear whose turning circle still reaches that point.
+    /// </summary>
+    /// <param name="view">The fish as seen.</param>
+    /// <param name="me">The fish's estimated pose.</param>
+    /// <param name="goal">Where to go.</param>
+    /// <param name="around">Walls and obstacles.</param>
+    /// <param name="maxVCode">Fastest gear.</param>
+    public Decision Travel(in FishView view, in FishTrack me, Vector2 goal, in Surroundings around, int maxVCode = 12)
+    {
+        _pushing = false;
+        around.Ways.Next(me.Position, goal, out Vector2 first, out Vector2 second);
+        float look = Math.Clamp(view.Speed, 150f, 300f);
+        float toFirst = Vector2.Distance(me.Position, first);
+        Vector2 carrot = first;
+        if (toFirst < look && first != second)
+        {
+            // Round the corner: a point on the next leg.
+            carrot = first + (Vector2.Normalize(second - first) * MathF.Min(look - toFirst, Vector2.Distance(first, second)));
+        }
+
+        Vector2 to = carrot - me.Position;
+        float distance = MathF.Max(to.Length(), 1f);
+        float eta = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+        float sine = MathF.Abs(eta) >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(MathF.Abs(eta)), 0.05f);
+        float fastest = Approach.PlanTurnRate * distance / (2f * sine);
+        int vcode = 1;
+        for (int v = Math.Clamp(maxVCode, 1, 14); v >= 1; v--)
+        {
+            if (SpeedTable.TargetSpeed(v) <= fastest)
+            {
+                vcode = v;
+                break;
+            }
+        }
+
+        float speed = MathF.Max(view.Speed, SpeedTable.TargetSpeed(vcode));
+        float rate = MathF.Abs(eta) > MathF.PI / 2f ? MathF.Sign(eta) * 0.35f : 2f * speed * MathF.Sin(eta) / distance;
+        return new Decision(vcode, TurnCode.For(rate, view.AngularSpeed));
+    }
+
+    // A contact impulse on a ball near the head tip points from the tip to the ball's centre: put the
+    // ball's estimate there (the heading estimate is good to about a degree; the views to ±30 mm).
+    private static void Sharpen(in FishTrack me, Vector2 tip, ref BallTrack ball, float radius)
+    {
+        if (ball.Impulse.LengthSquared() <= 4f)
+        {
+            return;
+        }
+
+        Vector2 normal = Vector2.Normalize(ball.Impulse);
+        Vector2 toBall = ball.Position - tip;
+        float seen = MathF.Atan2(toBall.Y, toBall.X);
+        float felt = MathF.Atan2(normal.Y, normal.X);
+        if (toBall.Length() < radius + 40f && MathF.Abs(Steering.Wrap(felt - me.Heading)) < 1f && MathF.Abs(Steering.Wrap(felt - seen)) < 0.8f)
+        {
+            ball.Contact(tip + (normal * radius), 0.7f);
+        }
+    }
+}
