@@ -21,18 +21,25 @@ namespace URWPGSim2D.Server.Items.Demo;
 internal struct Pusher
 {
     /// <summary>Where the loop's poles are placed, 1/s.</summary>
-    public const float Pole = 1.2f;
+    public static float Pole = 1.2f;
 
     /// <summary>Largest angle at which the ball is held off the heading to curve its path, rad.</summary>
-    public const float MaxHold = 0.35f;
+    public static float MaxHold = 0.35f;
 
     /// <summary>Distance over which the heading error is turned away, mm (sets the path's curvature).</summary>
-    public const float TurnDistance = 400f;
+    public static float TurnDistance = 400f;
 
-    /// <summary>Gap between the head tip and the ball at the approach's end, mm.</summary>
-    public const float Lead = 60f;
+    /// <summary>Heading error (rad) beyond which the push slows to gear 3 (twice that: gear 2), to round a corner tightly.</summary>
+    public static float SlowError = 0.3f;
+
+    /// <summary>Gap between the head tip and the ball where the approach ends and the run-up along the push line begins, mm.</summary>
+    public const float RunUp = 200f;
 
     private bool _pushing;
+    private bool _runUp;
+    private float _integral;
+    public static float Integral = 0.8f;
+    public float DebugAlpha, DebugHold, DebugError;
     private Approach _approach;
 
     /// <summary>Whether the fish has the ball on its head (or is about to).</summary>
@@ -62,34 +69,57 @@ internal struct Pusher
             : gap < 150f && MathF.Abs(alpha) < 0.7f && MathF.Abs(error) < 1.0f;
         if (!_pushing)
         {
-            Vector2 goal = ball.Position - (direction * (radius + reach + Lead));
+            _integral = 0f;
+            direction = Open(direction, ball.Position, radius + reach + RunUp, around);
+            float wanted = MathF.Atan2(direction.Y, direction.X);
+            Vector2 side = new(-direction.Y, direction.X);
+            Vector2 fromBall = tip - ball.Position;
+            float along = Vector2.Dot(fromBall, direction), aside = Vector2.Dot(fromBall, side);
+            error = Steering.Wrap(wanted - me.Heading);
+            _runUp = _runUp
+                ? along < -radius * 0.3f && along > -(radius + RunUp + 500f) && MathF.Abs(aside) < 40f - (0.8f * along) && MathF.Abs(error) < 1.0f
+                : along < -(radius + 20f) && along > -(radius + RunUp + 400f) && MathF.Abs(aside) < -0.6f * along && MathF.Abs(error) < 0.8f;
+            if (_runUp)
+            {
+                // On the push line behind the ball: follow it with the head tip (Stanley-type) up to the ball.
+                float heading = wanted - MathF.Atan2(aside, 150f);
+                float want = Math.Clamp(1.2f * Steering.Wrap(heading - me.Heading), -0.35f, 0.35f);
+                return new Decision(gap > 250f ? 4 : Math.Min(pushVCode, 3), TurnCode.For(want, view.AngularSpeed));
+            }
+
+            Vector2 goal = ball.Position - (direction * (radius + reach + RunUp));
             if (!around.Ways.Free(me.Position, goal, Approach.WallMargin) && Vector2.Distance(me.Position, goal) > 300f)
             {
                 // Obstacles in between: round them first.
                 return Travel(view, me, goal, around);
             }
 
-            return _approach.Toward(view, me, goal, MathF.Atan2(direction.Y, direction.X), around, ball.Position, radius, pushVCode, 400f);
+            return _approach.Toward(view, me, goal, wanted, around, ball.Position, radius, 4, RunUp - 60f, 300f);
         }
 
         float b = 1f + (reach / radius);
         float limit = MaxHold / (radius * b);
         float curvature = Math.Clamp(error / TurnDistance, -limit, limit);
         float speed = MathF.Max(view.Speed, 10f);
-        float a = speed / radius;
+        float a = MathF.Max(ball.Velocity.Length(), 0.75f * speed) / radius;
         float hold = curvature * radius * b;
         float rateRef = curvature * speed;
         float k1 = (Pole + a) * (Pole + a) / b, k2 = 1f - (2f * Pole) - a;
-        float rate = rateRef + (k1 * (alpha - hold)) + (k2 * (view.AngularSpeed - rateRef));
+        _integral = Math.Clamp(_integral + ((alpha - hold) * 0.1f), -0.5f, 0.5f);
+        float rate = rateRef + (k1 * (alpha - hold)) + (k2 * (view.AngularSpeed - rateRef)) + (Integral * _integral);
         float off = MathF.Abs(alpha - hold);
-        int vcode = off > 0.5f ? 1 : off > 0.3f ? Math.Min(pushVCode, 2) : pushVCode;
+        DebugAlpha = alpha; DebugHold = hold; DebugError = error;
+        int vcode = off > 0.5f ? 1 : off > 0.3f || MathF.Abs(error) > SlowError * 2f ? Math.Min(pushVCode, 2) : MathF.Abs(error) > SlowError ? Math.Min(pushVCode, 3) : pushVCode;
         return new Decision(vcode, TurnCode.Nearest(rate));
     }
 
     /// <summary>
     /// The decision taking the fish to <paramref name="goal"/> without a ball (it is not pushing
     /// meanwhile): along the shortest way round the obstacles (<see cref="Waypath"/>) by pursuit of a
-    /// point ahead on it, at the fastest gear whose turning circle still reaches that point.
+    /// point ahead on it. The speed is the fastest gear that can still round the next corner within
+    /// the way's margin (its turning radius at 0.28 rad/s cuts the corner by R·(1/cos(φ/2) − 1) ≤
+    /// 100 mm for a turn φ), allowing more the farther the corner is (the speed falls by a tenth per
+    /// cycle), and whose turning circle reaches the pursued point.
     /// </summary>
     /// <param name="view">The fish as seen.</param>
     /// <param name="me">The fish's estimated pose.</param>
@@ -99,8 +129,9 @@ internal struct Pusher
     public Decision Travel(in FishView view, in FishTrack me, Vector2 goal, in Surroundings around, int maxVCode = 12)
     {
         _pushing = false;
+        _runUp = false;
         around.Ways.Next(me.Position, goal, out Vector2 first, out Vector2 second);
-        float look = Math.Clamp(view.Speed, 150f, 300f);
+        float look = Math.Clamp(view.Speed * 1.2f, 150f, 350f);
         float toFirst = Vector2.Distance(me.Position, first);
         Vector2 carrot = first;
         if (toFirst < look && first != second)
@@ -114,6 +145,15 @@ internal struct Pusher
         float eta = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
         float sine = MathF.Abs(eta) >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(MathF.Abs(eta)), 0.05f);
         float fastest = Approach.PlanTurnRate * distance / (2f * sine);
+        if (first != second && toFirst > 1f)
+        {
+            Vector2 inbound = (first - me.Position) / toFirst, outbound = Vector2.Normalize(second - first);
+            float half = MathF.Acos(Math.Clamp(Vector2.Dot(inbound, outbound), -1f, 1f)) * 0.5f;
+            float cut = (1f / MathF.Max(MathF.Cos(half), 0.05f)) - 1f;
+            float corner = cut > 1e-3f ? Approach.PlanTurnRate * 100f / cut : float.PositiveInfinity;
+            fastest = MathF.Min(fastest, corner + (0.5f * toFirst));
+        }
+
         int vcode = 1;
         for (int v = Math.Clamp(maxVCode, 1, 14); v >= 1; v--)
         {
@@ -127,6 +167,25 @@ internal struct Pusher
         float speed = MathF.Max(view.Speed, SpeedTable.TargetSpeed(vcode));
         float rate = MathF.Abs(eta) > MathF.PI / 2f ? MathF.Sign(eta) * 0.35f : 2f * speed * MathF.Sin(eta) / distance;
         return new Decision(vcode, TurnCode.For(rate, view.AngularSpeed));
+    }
+
+    // The push direction nearest the wanted one whose place behind the ball (at `back`, and 150 mm
+    // farther for the run-up) keeps the approach's margin from walls and obstacles: a ball in a
+    // corner or against a wall is first pushed out along it.
+    private static Vector2 Open(Vector2 direction, Vector2 ball, float back, in Surroundings around)
+    {
+        for (int k = 0; k <= 8; k++)
+        {
+            float turn = ((k + 1) / 2) * 0.35f * ((k & 1) == 0 ? 1f : -1f);
+            float c = MathF.Cos(turn), s = MathF.Sin(turn);
+            Vector2 d = new((direction.X * c) - (direction.Y * s), (direction.X * s) + (direction.Y * c));
+            if (around.Clearance(ball - (d * back)) >= Approach.WallMargin && around.Clearance(ball - (d * (back + 150f))) >= Approach.WallMargin * 0.8f)
+            {
+                return d;
+            }
+        }
+
+        return direction;
     }
 
     // A contact impulse on a ball near the head tip points from the tip to the ball's centre: put the

@@ -51,9 +51,10 @@ internal struct RouteProgress
             Leg++;
         }
 
-        Distance(route, Leg, ball, out float along);
+        // The carrot is farther ahead the farther the ball is off the route, so it heads on, not back.
+        float off = Distance(route, Leg, ball, out float along);
         Vector2 a = route[Leg], b = route[Leg + 1];
-        float left = ahead + (Math.Clamp(along, 0f, 1f) * Vector2.Distance(a, b));
+        float left = ahead + off + (Math.Clamp(along, 0f, 1f) * Vector2.Distance(a, b));
         int i2 = Leg;
         while (i2 < last && left > Vector2.Distance(route[i2], route[i2 + 1]))
         {

@@ -17,7 +17,7 @@ namespace URWPGSim2D.Server.Items.Rescue;
 /// </summary>
 internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 {
-    private const int PushVCode = 6;
+    internal static int PushVCode = 6;
     private const float Ahead = 350f;
 
     private readonly RouteProgress[] _progress = new RouteProgress[2];
@@ -61,7 +61,7 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         for (int k = 0; k < fish.Length; k++)
         {
             FishView me = snapshot.Fish[fish[k]];
-            decisions[k] = rescuing ? Rescue(snapshot, me, k, around) : Defend(snapshot, me);
+            decisions[k] = rescuing ? Rescue(snapshot, me, k, around) : Defend(snapshot, me, k, around);
         }
     }
 
@@ -113,7 +113,46 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         return _pushers[k].Travel(me, _fish[k], spot, around);
     }
 
-    private Decision Defend(MatchSnapshot snapshot, in FishView me)
+    internal static int DefenceMode = 1;
+
+    private Decision Defend(MatchSnapshot snapshot, in FishView me, int k, in Surroundings around)
+    {
+        if (DefenceMode == 1)
+        {
+            return DefendOld(snapshot, me);
+        }
+
+        int nearest = -1;
+        float best = float.PositiveInfinity;
+        for (int i = 0; i < snapshot.Balls.Length; i++)
+        {
+            Vector2 p = _balls[i].Position;
+            bool inArea = DefenceMode switch { 3 => p.X < -600f, 4 => p.X > 600f, _ => true };
+            if (referee.HasRescued(referee.Rescuer, i) || !inArea)
+            {
+                continue;
+            }
+
+            float d = Vector2.Distance(_fish[k].Position, p);
+            if (d < best)
+            {
+                best = d;
+                nearest = i;
+            }
+        }
+
+        if (nearest < 0)
+        {
+            Vector2 post = DefenceMode == 4 ? new Vector2(1300f, 0f) : new Vector2(-1500f, 0f);
+            return Vector2.Distance(_fish[k].Position, post) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], post, around, 6);
+        }
+
+        Vector2 ball = _balls[nearest].Position;
+        Vector2 away = DefenceMode == 4 ? new Vector2(-1f, 0f) : Vector2.Normalize(new Vector2(-2150f, ball.Y) - ball);
+        return _pushers[k].Push(me, _fish[k], ref _balls[nearest], snapshot.Balls[nearest].Radius, away, around, 3);
+    }
+
+    private Decision DefendOld(MatchSnapshot snapshot, in FishView me)
     {
         int nearest = -1;
         float best = float.PositiveInfinity;

@@ -6,7 +6,7 @@ namespace URWPGSim2D.Server.Items.Rescue;
 /// <summary>
 /// The ways through the slalom of 急速救援 for the demo (<see cref="RescueDemo"/>). The walls leave
 /// a gap |z| &lt; 400 at x = ±550 and pass the centre wall (|z| ≤ 550 at x = 0) on either side. Ball 0
-/// starts at the bottom left and comes up into the left gap at about −50°, so it goes on over the
+/// starts at the bottom left and comes up through the left gap steeply, so it goes on over the
 /// centre wall (its top end) and down through the right gap — the least turning for it; ball 1 is
 /// the mirror image (under the centre wall).
 /// </summary>
@@ -18,13 +18,12 @@ internal static class RescueRoutes
     /// <summary>Where ball 1 waits meanwhile: it is not pushed beyond this x (clear of ball 0's way to the left gap).</summary>
     public const float WaitX = -1000f;
 
-    // Ball 0's route (ball 1's is its mirror in z): from the start, into the left gap, over the
-    // centre wall's top end with 300 mm to spare, down through the right gap, into the zone.
-    private static readonly Vector2[] Route0 =
-    [
-        new(-1350f, 1050f), new(-850f, 300f), new(-550f, 0f), new(-250f, -550f), new(0f, -850f),
-        new(250f, -550f), new(550f, 0f), new(950f, 150f), new(2100f, 0f),
-    ];
+    // Ball 0's route (ball 1's is its mirror in z), a path the pushed ball can follow (it curves at
+    // radii of 330 mm and more): a slight turn onto a line at −63° that crosses the left gap in its
+    // middle, an arc of radius 330 round the centre wall's top end (centre (0, −360), top at z = −690),
+    // the mirror line at +63° down through the right gap, a left turn (radius 350) and on into the
+    // zone. Every wall corner is at least 76 mm from the ball's surface on it.
+    private static readonly Vector2[] Route0 = Build();
 
     private static readonly Vector2[] Route1 = Mirror(Route0);
 
@@ -33,6 +32,36 @@ internal static class RescueRoutes
 
     /// <summary>Where fish k waits once it has nothing to push: the right-hand corner away from the other ball's last legs.</summary>
     public static Vector2 Rest(int k) => new(1300f, k == 0 ? -1150f : 1150f);
+
+    private static Vector2[] Build()
+    {
+        const float slope = 1.12f;
+        const float radius = 300f;
+        var centre = new Vector2(0f, -450f);
+        Vector2 entry = centre - (radius * new Vector2(MathF.Sin(slope), MathF.Cos(slope)));
+        var points = new System.Collections.Generic.List<Vector2> { new(-1350f, 1050f), new(-885f, 650f), entry };
+        for (int k = 1; k <= 8; k++)
+        {
+            // Over the top: the heading turns from −slope to +slope.
+            float h = -slope + (2f * slope * k / 8f);
+            points.Add(centre - (radius * new Vector2(MathF.Sin(-h), MathF.Cos(h))));
+        }
+
+        // Down the mirror line to x = 650, then left round a centre 350 mm to the side, to heading 0.
+        Vector2 exit = points[^1];
+        Vector2 down = new(MathF.Cos(slope), MathF.Sin(slope));
+        Vector2 bend = exit + (down * ((650f - exit.X) / down.X));
+        points.Add(bend);
+        Vector2 turnCentre = bend + (350f * new Vector2(MathF.Sin(slope), -MathF.Cos(slope)));
+        for (int k = 1; k <= 4; k++)
+        {
+            float h = slope * (1f - (k / 4f));
+            points.Add(turnCentre - (350f * new Vector2(MathF.Sin(h), -MathF.Cos(h))));
+        }
+
+        points.Add(new Vector2(2100f, 200f));
+        return [.. points];
+    }
 
     private static Vector2[] Mirror(Vector2[] route)
     {
