@@ -31,6 +31,7 @@ internal struct Pusher
 
     /// <summary>Heading error (rad) beyond which the push slows to gear 3 (twice that: gear 2), to round a corner tightly.</summary>
     public static float SlowError = 0.3f;
+    public static float ExitError = 1.6f;
 
     /// <summary>Gap between the head tip and the ball where the approach ends and the run-up along the push line begins, mm.</summary>
     public const float RunUp = 200f;
@@ -65,7 +66,7 @@ internal struct Pusher
         float alpha = Steering.Wrap(MathF.Atan2(toBall.Y, toBall.X) - me.Heading);
         float error = Steering.Wrap(MathF.Atan2(direction.Y, direction.X) - me.Heading);
         _pushing = _pushing
-            ? gap < 200f && MathF.Abs(alpha) < 1.1f && MathF.Abs(error) < 1.6f
+            ? gap < 200f && MathF.Abs(alpha) < 1.1f && MathF.Abs(error) < ExitError
             : gap < 150f && MathF.Abs(alpha) < 0.7f && MathF.Abs(error) < 1.0f;
         if (!_pushing)
         {
@@ -99,7 +100,7 @@ internal struct Pusher
 
         float b = 1f + (reach / radius);
         float limit = MaxHold / (radius * b);
-        float curvature = Math.Clamp(error / TurnDistance, -limit, limit);
+        float curvature = Math.Clamp(Steering.Wrap(error - alpha) / TurnDistance, -limit, limit);
         float speed = MathF.Max(view.Speed, 10f);
         float a = MathF.Max(ball.Velocity.Length(), 0.75f * speed) / radius;
         float hold = curvature * radius * b;

@@ -18,7 +18,7 @@ namespace URWPGSim2D.Server.Items.Rescue;
 internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 {
     internal static int PushVCode = 6;
-    private const float Ahead = 350f;
+    internal static float Ahead = 350f;
 
     private readonly RouteProgress[] _progress = new RouteProgress[2];
     private FishTrack[] _fish = [];
