@@ -36,7 +36,6 @@ internal struct Approach
 
     // The last choice: lead, gear and word of the path.
     private int _key;
-    public static bool DebugFree; public static int DebugCycle; public static DubinsPath DebugPath; public static Vector2 DebugGoal;
 
     // The direction of the last choice's first piece (a new path that starts turning the same way is preferred).
     private int _turn;
@@ -126,14 +125,12 @@ internal struct Approach
             }
         }
 
-        bool free = chosen >= 0;
         if (chosen < 0 && fallbackClear > -50f)
         {
             // Nothing keeps the full margins: the least bad, if it is nearly clear.
             chosen = fallback;
         }
 
-        if (view.Index == 0) { DebugFree = free; DebugPath = chosen >= 0 ? all[chosen] : default; DebugGoal = goal; DebugCycle++; }
         if (chosen < 0)
         {
             _key = -1;

@@ -10,28 +10,36 @@ namespace URWPGSim2D.Server.Items.Demo;
 /// at angle α from the heading (seen from the head tip) slides off at dα/dt ≈ (v/r)·α − (1 + h/r)·ω
 /// (r the ball radius, h the tip's distance from the centre, ω the turn rate), and ω itself follows
 /// the turn code with a one-second lag. The controller places both poles of that loop at −1.2/s:
-/// the turn it asks for is ω_ref + k₁(α − α_ref) + k₂(ω − ω_ref) with k₁ = (p + a)²/b, k₂ = 1 − 2p − a
-/// (a = v/r, b = 1 + h/r, p = 1.2), sent through <see cref="TurnCode"/>. To curve the ball's path
-/// toward the wanted direction it holds the ball slightly to the inside of the turn: a path curvature κ
-/// (the heading error over 400 mm, at most 0.35/(r·b)) needs ω_ref = κv and α_ref = κ·r·b. It slows
-/// down while the ball is off its place. α is measured where it is sharpest: the ball's exact velocity
-/// gives the contact impulse, which points from the tip to the ball's centre (<see cref="BallTrack"/>).
-/// A fish not behind its ball gets there with <see cref="Approach"/>. One value per fish, kept across cycles.
+/// the turn it asks for is ω_ref + k₁(α − α_ref) + k₂(ω − ω_ref) + kᵢ∫(α − α_ref) with
+/// k₁ = (p + a)²/b, k₂ = 1 − 2p − a (a = ball speed / r, b = 1 + h/r, p = 1.2); the integral takes out
+/// what the model gets wrong. To curve the ball's path toward the wanted direction it holds the ball
+/// to the inside of the turn: a path curvature κ (the error of the ball's own direction over 250 mm,
+/// at most 0.6/(r·b): a radius of about 300 mm) needs ω_ref = κv and α_ref = κ·r·b. It slows down
+/// in a turn and while the ball is off its place. α is measured where it is sharpest: the ball's
+/// exact velocity gives the contact impulse, which points from the tip to the ball's centre
+/// (<see cref="BallTrack"/>). A fish not behind its ball gets there with <see cref="Approach"/> (a
+/// point 200 mm behind the ball on the push line), then runs up along the line; a ball against a
+/// wall is first pushed out along it. One value per fish, kept across cycles.
 /// </summary>
 internal struct Pusher
 {
     /// <summary>Where the loop's poles are placed, 1/s.</summary>
-    public static float Pole = 1.2f;
+    public const float Pole = 1.2f;
 
     /// <summary>Largest angle at which the ball is held off the heading to curve its path, rad.</summary>
-    public static float MaxHold = 0.35f;
+    public const float MaxHold = 0.6f;
 
     /// <summary>Distance over which the heading error is turned away, mm (sets the path's curvature).</summary>
-    public static float TurnDistance = 400f;
+    public const float TurnDistance = 250f;
 
     /// <summary>Heading error (rad) beyond which the push slows to gear 3 (twice that: gear 2), to round a corner tightly.</summary>
-    public static float SlowError = 0.3f;
-    public static float ExitError = 1.6f;
+    public const float SlowError = 0.3f;
+
+    /// <summary>Heading error (rad) beyond which a fish pushing its ball gives up and comes round again.</summary>
+    public const float ExitError = 2.2f;
+
+    /// <summary>Gain of the integral of α's error (it takes out the model's mismatch, so the held angle is reached), 1/s².</summary>
+    public const float Integral = 0.8f;
 
     /// <summary>Gap between the head tip and the ball where the approach ends and the run-up along the push line begins, mm.</summary>
     public const float RunUp = 200f;
@@ -39,8 +47,6 @@ internal struct Pusher
     private bool _pushing;
     private bool _runUp;
     private float _integral;
-    public static float Integral = 0.8f;
-    public float DebugAlpha, DebugHold, DebugError;
     private Approach _approach;
 
     /// <summary>Whether the fish has the ball on its head (or is about to).</summary>
@@ -109,7 +115,6 @@ internal struct Pusher
         _integral = Math.Clamp(_integral + ((alpha - hold) * 0.1f), -0.5f, 0.5f);
         float rate = rateRef + (k1 * (alpha - hold)) + (k2 * (view.AngularSpeed - rateRef)) + (Integral * _integral);
         float off = MathF.Abs(alpha - hold);
-        DebugAlpha = alpha; DebugHold = hold; DebugError = error;
         int vcode = off > 0.5f ? 1 : off > 0.3f || MathF.Abs(error) > SlowError * 2f ? Math.Min(pushVCode, 2) : MathF.Abs(error) > SlowError ? Math.Min(pushVCode, 3) : pushVCode;
         return new Decision(vcode, TurnCode.Nearest(rate));
     }

@@ -9,23 +9,23 @@ namespace URWPGSim2D.Server.Items.Rescue;
 /// <see cref="Pusher"/> along its route (<see cref="RescueRoutes"/>): ball 0 (bottom left) goes up
 /// through the left gap, over the centre wall and down through the right gap; ball 1 the mirror way,
 /// under the centre wall, after ball 0 has cleared the left gap (until then fish 1 pushes its ball
-/// only to x = −1000). A fish far from its ball swims there through the gaps (<see cref="Waypath"/>). A
-/// fish whose ball is rescued takes the other one if the other fish is not on it, otherwise it
-/// swims out of the way. Defending, the active fish pushes the nearest ball back toward the left
-/// wall at a gentle speed (the parked fish cannot move). Positions are filtered
-/// (<see cref="FishTrack"/>, <see cref="BallTrack"/>).
+/// only to x = −1000). A fish far from its ball swims there through the gaps (<see cref="Waypath"/>).
+/// A fish whose ball is rescued swims out of the other ball's way. Defending, the active fish guards the zone: it waits at (1300, 0) and
+/// pushes any unrescued ball that comes right of the right gap (x &gt; 600) back toward the left at
+/// a gentle speed (the parked fish cannot move). Positions are filtered (<see cref="FishTrack"/>,
+/// <see cref="BallTrack"/>).
 /// </summary>
 internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 {
-    internal static int PushVCode = 6;
-    internal static float Ahead = 350f;
+    private const int PushVCode = 6;
+    private const int ClearVCode = 3;
+    private const float Ahead = 350f;
 
     private readonly RouteProgress[] _progress = new RouteProgress[2];
     private FishTrack[] _fish = [];
     private BallTrack[] _balls = [];
     private Pusher[] _pushers = [];
     private Waypath? _ways;
-    private Dribble _defence;
     private int _half;
 
     /// <inheritdoc/>
@@ -42,7 +42,6 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
             _pushers = new Pusher[fish.Length];
             _balls = new BallTrack[snapshot.Balls.Length];
             Array.Clear(_progress);
-            _defence = default;
         }
 
         for (int i = 0; i < _balls.Length; i++)
@@ -83,22 +82,14 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         }
 
         Vector2 direction = _progress[ball].Direction(route, b.Position, Ahead);
-
         return _pushers[k].Push(me, _fish[k], ref b, radius, direction, around, PushVCode);
     }
 
-    // Fish k's ball: its own while not rescued, else the other if the other fish is done with it too.
+    // Fish k's ball (its own), or −1 once that is rescued (the other fish is on the other ball).
     private int BallOf(int k)
     {
         int own = Math.Min(k, 1);
-        if (!referee.HasRescued(team, own))
-        {
-            return own;
-        }
-
-        int other = 1 - own;
-        bool otherFishBusy = _fish.Length > 1 && !referee.HasRescued(team, other);
-        return !referee.HasRescued(team, other) && !otherFishBusy ? other : -1;
+        return referee.HasRescued(team, own) ? -1 : own;
     }
 
     // Out of the way of the other ball's last legs: the corner on this fish's own side, then stop.
@@ -113,22 +104,16 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         return _pushers[k].Travel(me, _fish[k], spot, around);
     }
 
-    internal static int DefenceMode = 1;
-
+    // Defending: the active fish guards the zone from (1300, 0) and pushes any unrescued ball that
+    // comes right of the right gap back toward it, gently.
     private Decision Defend(MatchSnapshot snapshot, in FishView me, int k, in Surroundings around)
     {
-        if (DefenceMode == 1)
-        {
-            return DefendOld(snapshot, me);
-        }
-
         int nearest = -1;
         float best = float.PositiveInfinity;
-        for (int i = 0; i < snapshot.Balls.Length; i++)
+        for (int i = 0; i < snapshot.Balls.Length && i < 2; i++)
         {
             Vector2 p = _balls[i].Position;
-            bool inArea = DefenceMode switch { 3 => p.X < -600f, 4 => p.X > 600f, _ => true };
-            if (referee.HasRescued(referee.Rescuer, i) || !inArea)
+            if (referee.HasRescued(referee.Rescuer, i) || p.X <= RescueRoutes.GuardX)
             {
                 continue;
             }
@@ -143,40 +128,9 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 
         if (nearest < 0)
         {
-            Vector2 post = DefenceMode == 4 ? new Vector2(1300f, 0f) : new Vector2(-1500f, 0f);
-            return Vector2.Distance(_fish[k].Position, post) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], post, around, 6);
+            return Vector2.Distance(_fish[k].Position, RescueRoutes.Guard) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], RescueRoutes.Guard, around, 6);
         }
 
-        Vector2 ball = _balls[nearest].Position;
-        Vector2 away = DefenceMode == 4 ? new Vector2(-1f, 0f) : Vector2.Normalize(new Vector2(-2150f, ball.Y) - ball);
-        return _pushers[k].Push(me, _fish[k], ref _balls[nearest], snapshot.Balls[nearest].Radius, away, around, 3);
-    }
-
-    private Decision DefendOld(MatchSnapshot snapshot, in FishView me)
-    {
-        int nearest = -1;
-        float best = float.PositiveInfinity;
-        for (int i = 0; i < snapshot.Balls.Length; i++)
-        {
-            if (referee.HasRescued(referee.Rescuer, i))
-            {
-                continue;
-            }
-
-            float d = Vector2.Distance(me.Position, snapshot.Balls[i].Position);
-            if (d < best)
-            {
-                best = d;
-                nearest = i;
-            }
-        }
-
-        if (nearest < 0)
-        {
-            return Decision.Stop;
-        }
-
-        BallView b = snapshot.Balls[nearest];
-        return _defence.Toward(me, b.Position, b.Radius, new Vector2(-2150f, b.Position.Y), pushVCode: 4, field: new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
+        return _pushers[k].Push(me, _fish[k], ref _balls[nearest], snapshot.Balls[nearest].Radius, -Vector2.UnitX, around, ClearVCode);
     }
 }

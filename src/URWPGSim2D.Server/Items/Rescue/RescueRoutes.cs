@@ -15,6 +15,12 @@ internal static class RescueRoutes
     /// <summary>Ball 1 waits until ball 0 is right of this x (past the left gap).</summary>
     public const float ClearX = -150f;
 
+    /// <summary>The defending fish's place: in front of the zone.</summary>
+    public static readonly Vector2 Guard = new(1300f, 0f);
+
+    /// <summary>The defending fish clears balls right of this x (past the right gap).</summary>
+    public const float GuardX = 600f;
+
     /// <summary>Where ball 1 waits meanwhile: it is not pushed beyond this x (clear of ball 0's way to the left gap).</summary>
     public const float WaitX = -1000f;
 
