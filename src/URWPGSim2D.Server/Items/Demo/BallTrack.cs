@@ -72,7 +72,8 @@ internal struct BallTrack
         float speed = velocity.Length();
         if (speed < 1e-3f)
         {
-            return velocity;
+            // At rest now: a slow ball may simply have stopped in this cycle's drag.
+            return last.Length() <= (BandDeceleration(3) * Dt) + 1e-3f ? last : velocity;
         }
 
         Vector2 best = velocity;

@@ -25,10 +25,10 @@ internal static class RescueRoutes
     public const float WaitX = -1000f;
 
     // Ball 0's route (ball 1's is its mirror in z), a path the pushed ball can follow (it curves at
-    // radii of 330 mm and more): a slight turn onto a line at −63° that crosses the left gap in its
-    // middle, an arc of radius 330 round the centre wall's top end (centre (0, −360), top at z = −690),
-    // the mirror line at +63° down through the right gap, a left turn (radius 350) and on into the
-    // zone. Every wall corner is at least 76 mm from the ball's surface on it.
+    // radii of 300 mm and more): a slight turn onto a line at −64° that crosses the left gap, an arc
+    // of radius 300 round the centre wall's top end (centre (0, −450), top at z = −750), the mirror
+    // line at +64° down through the right gap, a left turn (radius 350) and on into the zone. The
+    // ball on it keeps at least 65 mm from every wall (the tests check).
     private static readonly Vector2[] Route0 = Build();
 
     private static readonly Vector2[] Route1 = Mirror(Route0);
