@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics.X86;
 
 namespace URWPGSim2D.Collision.Geometry;
 
@@ -20,6 +21,16 @@ public static class XZPlane
     /// <returns>The plane vector (X = world X, Y = world Z).</returns>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Vector2 ToPlane(Vector3 v) => new(v.X, v.Z);
+
+    /// <summary>
+    /// <see cref="Vector2.Dot"/> with the same result bit for bit, without the hardware
+    /// dot-product instruction on x86 (DPPS: about 15 cycles before the result is ready, against
+    /// 7 for two multiplications and two additions). DPPS sums four lanes,
+    /// (a.X·b.X + a.Y·b.Y) + (0 + 0), so a sum of −0 comes out as +0; the trailing + 0 does the same.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float Dot(Vector2 a, Vector2 b) =>
+        Sse.IsSupported ? ((a.X * b.X) + (a.Y * b.Y)) + 0f : Vector2.Dot(a, b);
 
     /// <summary>The 2D cross product a.X·b.Y − a.Y·b.X (the signed area of the parallelogram a, b).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
 
@@ -16,11 +17,24 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 internal static class CircleConvex
 {
     /// <summary>The MTV moves the circle; its normal points from the polygon toward the circle.</summary>
-    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon) =>
-        Depth(circle, polygon, out ContactDepth depth) ? Complete(circle, polygon, depth) : CollisionDetectionResult.None;
+    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon) => Detect(circle, polygon, vector: true);
 
     /// <summary>Whether the circle and the polygon overlap and, if so, the normal and depth (no action point).</summary>
-    public static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth)
+    public static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth) => Depth(circle, polygon, out depth, vector: true);
+
+    /// <summary>The finished contact for a <paramref name="depth"/> that <see cref="Depth(in Circle, in ConvexView, out ContactDepth)"/> found for the same circle and polygon.</summary>
+    public static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth) => Complete(circle, polygon, depth, vector: true);
+
+    /// <summary>
+    /// <see cref="Detect(in Circle, in ConvexView)"/>, four faces at a time when
+    /// <paramref name="vector"/> is set and the hardware has vectors, else one at a time (the
+    /// scalar path the vector path must equal).
+    /// </summary>
+    internal static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon, bool vector) =>
+        Depth(circle, polygon, out ContactDepth depth, vector) ? Complete(circle, polygon, depth, vector) : CollisionDetectionResult.None;
+
+    /// <summary><see cref="Depth(in Circle, in ConvexView, out ContactDepth)"/> (see <see cref="Detect(in Circle, in ConvexView, bool)"/>).</summary>
+    internal static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth, bool vector)
     {
         Vector2 c = circle.Center;
         float r = circle.Radius;
@@ -38,36 +52,10 @@ internal static class CircleConvex
         }
         else
         {
-            if (!FaceLoops.Farthest(v, nrm, c, r, out int edge, out float maxSep))
+            if (!FaceLoops.Farthest(v, nrm, c, r, out int edge, out float maxSep, vector)
+                || !Region(c, r, v, nrm, edge, maxSep, out normal, out distance))
             {
                 return false;
-            }
-
-            Vector2 v1 = v[edge];
-            Vector2 v2 = v[edge + 1 == v.Length ? 0 : edge + 1];
-            if (maxSep <= 0f && v.Length >= 3)
-            {
-                normal = nrm[edge];
-                distance = r - maxSep;
-            }
-            else if (Vector2.Dot(c - v1, v2 - v1) <= 0f)
-            {
-                if (!PointRegion(c, r, v1, out normal, out distance))
-                {
-                    return false;
-                }
-            }
-            else if (Vector2.Dot(c - v2, v1 - v2) <= 0f)
-            {
-                if (!PointRegion(c, r, v2, out normal, out distance))
-                {
-                    return false;
-                }
-            }
-            else
-            {
-                normal = nrm[edge];
-                distance = r - maxSep;
             }
         }
 
@@ -75,15 +63,69 @@ internal static class CircleConvex
         return true;
     }
 
-    /// <summary>The finished contact for a <paramref name="depth"/> that <see cref="Depth"/> found for the same circle and polygon.</summary>
-    public static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth) =>
-        CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, ActionPoint(polygon, circle.Center, circle.Radius, depth.Normal, depth.Depth));
+    /// <summary><see cref="Complete(in Circle, in ConvexView, in ContactDepth)"/> (see <see cref="Detect(in Circle, in ConvexView, bool)"/>).</summary>
+    internal static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth, bool vector)
+    {
+        ContactRegion.LineInterval(polygon, circle.Center, depth.Normal, out float lo, out float hi, vector);
+        return Finish(circle, depth, lo, hi);
+    }
+
+    /// <summary>
+    /// The Voronoi region of the centre <paramref name="c"/> once the edge of greatest separation
+    /// (<paramref name="edge"/>, <paramref name="maxSep"/> &lt; r) is known (two vertices or more):
+    /// inside, that edge's region or one of its end vertices' (false: the vertex is out of reach).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static bool Region(Vector2 c, float r, ReadOnlySpan<Vector2> v, ReadOnlySpan<Vector2> nrm, int edge, float maxSep, out Vector2 normal, out float distance)
+    {
+        Vector2 v1 = v[edge];
+        Vector2 v2 = v[edge + 1 == v.Length ? 0 : edge + 1];
+        if (maxSep <= 0f && v.Length >= 3)
+        {
+            normal = nrm[edge];
+            distance = r - maxSep;
+            return true;
+        }
+
+        // Only the signs of these dot products matter, so they skip XZPlane.Dot's + 0.
+        Vector2 a = c - v1, e = v2 - v1;
+        if ((a.X * e.X) + (a.Y * e.Y) <= 0f)
+        {
+            return PointRegion(c, r, v1, out normal, out distance);
+        }
+
+        Vector2 b = c - v2, f = v1 - v2;
+        if ((b.X * f.X) + (b.Y * f.Y) <= 0f)
+        {
+            return PointRegion(c, r, v2, out normal, out distance);
+        }
+
+        normal = nrm[edge];
+        distance = r - maxSep;
+        return true;
+    }
+
+    /// <summary>
+    /// The result once the polygon's interval [lo, hi] on the line c + t·normal is known: the
+    /// middle of its overlap with the circle's [−r, r] (or, when round-off leaves none, the point
+    /// at depth − r along the normal).
+    /// </summary>
+    internal static CollisionDetectionResult Finish(in Circle circle, in ContactDepth depth, float lo, float hi)
+    {
+        float r = circle.Radius;
+        lo = ExactMinMax.Max(lo, -r);
+        hi = ExactMinMax.Min(hi, r);
+        float t = lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth.Depth - r, -r, r);
+        return CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, circle.Center + depth.Normal * t);
+    }
 
     // Circle against a single vertex: overlap when |c − p| < r, pushed along (c − p).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static bool PointRegion(Vector2 c, float r, Vector2 p, out Vector2 normal, out float depth)
     {
         Vector2 d = c - p;
-        float dist2 = d.LengthSquared();
+        float dist2 = (d.X * d.X) + (d.Y * d.Y); // LengthSquared bit for bit: a sum of squares is never −0
+
         if (dist2 >= r * r)
         {
             normal = default;
@@ -95,15 +137,5 @@ internal static class CircleConvex
         normal = dist > 0f ? d / dist : Vector2.UnitX;
         depth = r - dist;
         return true;
-    }
-
-    // The middle of the overlap of the circle and the polygon on the line c + t·normal.
-    private static Vector2 ActionPoint(in ConvexView polygon, Vector2 c, float r, Vector2 normal, float depth)
-    {
-        ContactRegion.LineInterval(polygon, c, normal, out float lo, out float hi);
-        lo = MathF.Max(lo, -r);
-        hi = MathF.Min(hi, r);
-        float t = lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
-        return c + normal * t;
     }
 }

@@ -19,13 +19,13 @@ internal static class ContactRegion
     /// contact) the answer is <see cref="Grazing"/> for the contact <paramref name="normal"/>
     /// (unit, from b toward a).
     /// </summary>
-    public static Vector2 IntersectionCentroid(in ConvexView a, in ConvexView b, Vector2 origin, Vector2 normal)
+    public static Vector2 IntersectionCentroid(in ConvexView a, in ConvexView b, Vector2 origin, Vector2 normal, bool vector = true)
     {
         if (a.Vertices.Length < 3 || b.Vertices.Length < 3)
         {
             bool found = a.Vertices.Length <= b.Vertices.Length
-                ? FlatInside(a, b, origin, out Vector2 point)
-                : FlatInside(b, a, origin, out point);
+                ? FlatInside(a, b, origin, out Vector2 point, vector)
+                : FlatInside(b, a, origin, out point, vector);
             return found ? point : Grazing(a, b, normal, origin);
         }
 
@@ -82,9 +82,10 @@ internal static class ContactRegion
     /// <summary>
     /// The interval [lo, hi] of t for which p + t·u lies in the view (empty: lo &gt; hi).
     /// u must be a unit vector. A point or a segment gives the single crossing (or, along
-    /// the segment's own line, the segment's extent).
+    /// the segment's own line, the segment's extent). A polygon: four faces at a time where the
+    /// hardware allows and <paramref name="vector"/> is set, else one at a time.
     /// </summary>
-    public static void LineInterval(in ConvexView view, Vector2 p, Vector2 u, out float lo, out float hi)
+    public static void LineInterval(in ConvexView view, Vector2 p, Vector2 u, out float lo, out float hi, bool vector = true)
     {
         var v = view.Vertices;
         if (v.Length == 1)
@@ -99,7 +100,7 @@ internal static class ContactRegion
             return;
         }
 
-        if (Vector128.IsHardwareAccelerated)
+        if (vector && Vector128.IsHardwareAccelerated)
         {
             FaceLoops.LineInterval(v, view.Normals, p, u, out lo, out hi);
             return;
@@ -170,7 +171,7 @@ internal static class ContactRegion
 
     // The middle of the part of a point or segment `flat` that lies inside `other`; false when
     // round-off leaves no such part.
-    private static bool FlatInside(in ConvexView flat, in ConvexView other, Vector2 origin, out Vector2 point)
+    private static bool FlatInside(in ConvexView flat, in ConvexView other, Vector2 origin, out Vector2 point, bool vector)
     {
         var fv = flat.Vertices;
         if (fv.Length == 1)
@@ -189,7 +190,7 @@ internal static class ContactRegion
         Vector2 e = fv[1] - fv[0];
         float len = e.Length();
         Vector2 u = e / len;
-        LineInterval(other, a + origin, u, out float lo, out float hi);
+        LineInterval(other, a + origin, u, out float lo, out float hi, vector);
         lo = MathF.Max(lo, 0f);
         hi = MathF.Min(hi, len);
         point = origin + a + u * (0.5f * (lo + hi));

@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
+using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 
@@ -30,8 +31,8 @@ internal static class FaceLoops
     /// sᵢ ≥ 0 (apart or touching). A reference with no faces (a single point): face −1,
     /// separation −∞.
     /// </summary>
-    public static bool GreatestSeparation(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation) =>
-        Vector128.IsHardwareAccelerated
+    public static bool GreatestSeparation(ReadOnlySpan<Vector2> reference, ReadOnlySpan<Vector2> normals, ReadOnlySpan<Vector2> other, out int face, out float separation, bool vector = true) =>
+        vector && Vector128.IsHardwareAccelerated
             ? GreatestSeparationVector(reference, normals, other, out face, out separation)
             : GreatestSeparationScalar(reference, normals, other, out face, out separation);
 
@@ -112,15 +113,16 @@ internal static class FaceLoops
     /// <summary>
     /// The face whose line <paramref name="p"/> lies farthest outside, sᵢ = nᵢ·(p − vᵢ) (the
     /// first face wins a tie); false as soon as some sᵢ ≥ <paramref name="limit"/>. Four faces
-    /// at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
+    /// at a time where the hardware allows and <paramref name="vector"/> is set, with
+    /// <see cref="Vector2.Dot"/>'s roundings; else one at a time.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    public static bool Farthest(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float limit, out int face, out float distance)
+    public static bool Farthest(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float limit, out int face, out float distance, bool vector = true)
     {
         int count = normals.Length;
         face = 0;
         distance = float.NegativeInfinity;
-        if (!Vector128.IsHardwareAccelerated)
+        if (!vector || !Vector128.IsHardwareAccelerated)
         {
             for (int i = 0; i < count; i++)
             {
@@ -170,13 +172,14 @@ internal static class FaceLoops
     /// <summary>
     /// Whether n·(p − v) ≤ <paramref name="tolerance"/> for every face (normal n through vertex
     /// v, relative coordinates): p inside the convex shape, or within the tolerance of it.
-    /// Four faces at a time where the hardware allows, with <see cref="Vector2.Dot"/>'s roundings.
+    /// Four faces at a time where the hardware allows and <paramref name="vector"/> is set, with
+    /// <see cref="Vector2.Dot"/>'s roundings; else one at a time.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    public static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float tolerance)
+    public static bool Inside(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float tolerance, bool vector = true)
     {
         int count = normals.Length;
-        if (!Vector128.IsHardwareAccelerated)
+        if (!vector || !Vector128.IsHardwareAccelerated)
         {
             for (int i = 0; i < count; i++)
             {
@@ -208,14 +211,15 @@ internal static class FaceLoops
 
     /// <summary>
     /// The index of the direction with the least dot product with <paramref name="d"/> (the first
-    /// one on a tie; at least one direction): e.g. the edge most anti-parallel to a face.
+    /// one on a tie; at least one direction): e.g. the edge most anti-parallel to a face. Four at a
+    /// time where the hardware allows and <paramref name="vector"/> is set, else one at a time.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
-    public static int LeastDot(ReadOnlySpan<Vector2> directions, Vector2 d)
+    public static int LeastDot(ReadOnlySpan<Vector2> directions, Vector2 d, bool vector = true)
     {
         int count = directions.Length, index = 0;
         float least = float.PositiveInfinity;
-        if (!Vector128.IsHardwareAccelerated)
+        if (!vector || !Vector128.IsHardwareAccelerated)
         {
             for (int j = 0; j < count; j++)
             {
@@ -289,8 +293,8 @@ internal static class FaceLoops
 
         high = Vector128.MinNative(high, Vector128.Shuffle(high, Vector128.Create(2, 3, 0, 1)));
         low = Vector128.MaxNative(low, Vector128.Shuffle(low, Vector128.Create(2, 3, 0, 1)));
-        hi = MathF.Min(high.GetElement(0), high.GetElement(1));
-        lo = MathF.Max(low.GetElement(0), low.GetElement(1));
+        hi = ExactMinMax.Min(high.ToScalar(), high.GetElement(1));
+        lo = ExactMinMax.Max(low.ToScalar(), low.GetElement(1));
     }
 
     // The x and z coordinates of points at, at+1, at+2, at+3 in four lanes each (a span shorter
