@@ -205,19 +205,32 @@ public sealed class LiveViewTests(Browser browser)
         }
 
         using var process = Process.Start(start)!;
-        var stderr = process.StandardError.ReadToEndAsync();
-        string? first = process.StandardOutput.ReadLine();
-        Assert.Equal($"live view: http://127.0.0.1:{port}/ (Ctrl+C to stop)", first);
-        using (var kill = Process.Start("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+        try
         {
-            kill.WaitForExit();
-        }
+            var stderr = process.StandardError.ReadToEndAsync();
+            string? first = process.StandardOutput.ReadLine();
+            Assert.Equal($"live view: http://127.0.0.1:{port}/ (Ctrl+C to stop)", first);
+            using (var kill = Process.Start("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+            {
+                kill.WaitForExit();
+            }
 
-        string rest = process.StandardOutput.ReadToEnd();
-        Assert.True(process.WaitForExit(Wait), "the server did not end on SIGINT");
-        Assert.Equal(0, process.ExitCode);
-        Assert.StartsWith("match: 0 cycles", rest, StringComparison.Ordinal);
-        Assert.Contains("\ngoals: team 0 (chase-ball) 0, team 1 (chase-ball) 0\n", rest, StringComparison.Ordinal);
-        Assert.Equal(string.Empty, await stderr);
+            var rest = process.StandardOutput.ReadToEndAsync();
+            Assert.True(process.WaitForExit(Wait), "the server did not end on SIGINT");
+            Assert.Equal(0, process.ExitCode);
+            Assert.StartsWith("match: 0 cycles", await rest, StringComparison.Ordinal);
+            Assert.Contains("\ngoals: team 0 (chase-ball) 0, team 1 (chase-ball) 0\n", await rest, StringComparison.Ordinal);
+            Assert.Equal(string.Empty, await stderr);
+        }
+        finally
+        {
+            // A failed assertion must not leave a live server behind (it would keep its port and
+            // everything it inherited, such as a lock held by the shell that started the tests).
+            if (!process.HasExited)
+            {
+                process.Kill(entireProcessTree: true);
+                process.WaitForExit();
+            }
+        }
     }
 }
