@@ -192,13 +192,25 @@ public sealed class LiveViewTests(Browser browser)
     {
         string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
         int port = FreePort();
-        var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+        string host = Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet";
+
+        // A shell without job control starts background commands with SIGINT ignored, the runtime
+        // keeps an inherited SIG_IGN (as POSIX programs do), and a child inherits it again: a test
+        // run started in the background would give a server that cannot hear Ctrl+C. On Linux the
+        // server is started with SIGINT back at its default (coreutils' env), whatever started the tests.
+        var start = new ProcessStartInfo(OperatingSystem.IsLinux() ? "env" : host)
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             RedirectStandardInput = true,
             UseShellExecute = false,
         };
+        if (OperatingSystem.IsLinux())
+        {
+            start.ArgumentList.Add("--default-signal=INT");
+            start.ArgumentList.Add(host);
+        }
+
         foreach (var a in (string[])[server, "run", "--item", "default", "--live", "--paused", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture)])
         {
             start.ArgumentList.Add(a);
