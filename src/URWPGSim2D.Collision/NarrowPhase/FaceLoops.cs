@@ -297,6 +297,88 @@ internal static class FaceLoops
         lo = ExactMinMax.Max(low.ToScalar(), low.GetElement(1));
     }
 
+    /// <summary>
+    /// The lower end of the interval of t for which p + t·u lies in a convex polygon (three or more
+    /// vertices) when only t ≥ −<paramref name="radius"/> matters: −radius when the point
+    /// p − radius·u lies inside every face turned away from u (d = n·u &lt; 0 and
+    /// s − radius·d ≤ 0, where s = n·(p − v)); else the greatest −s/d over those faces (a zero
+    /// as +0, so that the order of the faces cannot change the bits). Four faces at a time where
+    /// the hardware allows and <paramref name="vector"/> is set, else one at a time.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    public static float FarSide(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, Vector2 p, float radius, Vector2 u, bool vector = true)
+    {
+        int count = normals.Length;
+        if (!vector || !Vector128.IsHardwareAccelerated)
+        {
+            bool beyond = false;
+            for (int i = 0; i < count; i++)
+            {
+                Vector2 n = normals[i], v = vertices[i];
+                float s = (n.X * (p.X - v.X)) + (n.Y * (p.Y - v.Y));
+                float d = (n.X * u.X) + (n.Y * u.Y);
+                beyond |= d < 0f && s - (radius * d) > 0f;
+            }
+
+            if (!beyond)
+            {
+                return -radius;
+            }
+
+            float lo = float.NegativeInfinity;
+            for (int i = 0; i < count; i++)
+            {
+                Vector2 n = normals[i], v = vertices[i];
+                float s = (n.X * (p.X - v.X)) + (n.Y * (p.Y - v.Y));
+                float d = (n.X * u.X) + (n.Y * u.Y);
+                if (d < 0f)
+                {
+                    float t = (-s / d) + 0f;
+                    lo = t > lo ? t : lo;
+                }
+            }
+
+            return lo;
+        }
+
+        var px = Vector128.Create(p.X);
+        var pz = Vector128.Create(p.Y);
+        var ux = Vector128.Create(u.X);
+        var uz = Vector128.Create(u.Y);
+        var r = Vector128.Create(radius);
+        var zero = Vector128<float>.Zero;
+        bool far = false;
+        for (int start = 0; start < count; start += 4)
+        {
+            int at = count >= 4 ? Math.Min(start, count - 4) : 0;
+            Lanes(normals, at, out var nx, out var nz);
+            Lanes(vertices, at, out var vx, out var vz);
+            var s = (nx * (px - vx)) + (nz * (pz - vz));
+            var d = (nx * ux) + (nz * uz);
+            far |= Vector128.GreaterThanAny(Vector128.ConditionalSelect(Vector128.LessThan(d, zero), s - (r * d), zero), zero);
+        }
+
+        if (!far)
+        {
+            return -radius;
+        }
+
+        var low = Vector128.Create(float.NegativeInfinity);
+        for (int start = 0; start < count; start += 4)
+        {
+            int at = count >= 4 ? Math.Min(start, count - 4) : 0;
+            Lanes(normals, at, out var nx, out var nz);
+            Lanes(vertices, at, out var vx, out var vz);
+            var s = (nx * (px - vx)) + (nz * (pz - vz));
+            var d = (nx * ux) + (nz * uz);
+            low = Vector128.MaxNative(low, Vector128.ConditionalSelect(Vector128.LessThan(d, zero), (-s / d) + zero, Vector128.Create(float.NegativeInfinity)));
+        }
+
+        low = Vector128.MaxNative(low, Vector128.Shuffle(low, Vector128.Create(2, 3, 0, 1)));
+        low = Vector128.MaxNative(low, Vector128.Shuffle(low, Vector128.Create(1, 0, 3, 2)));
+        return low.ToScalar();
+    }
+
     // The x and z coordinates of points at, at+1, at+2, at+3 in four lanes each (a span shorter
     // than four repeats its last point).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

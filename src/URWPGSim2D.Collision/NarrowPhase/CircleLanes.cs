@@ -1,0 +1,126 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
+using System.Runtime.Intrinsics.X86;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.NarrowPhase;
+
+/// <summary>
+/// <see cref="CircleConvex"/> for a polygon of three to eight vertices held in the eight lanes
+/// of <see cref="PolygonLanes"/>: one pass gives every face's separation s = n·(c − v), the
+/// greatest of them, and both end vertices' region tests of every edge; the chord of the
+/// polygon on the line through the centre along the normal reuses those separations. Every
+/// quantity is computed with the same operations in the same order as in
+/// <see cref="CircleConvex"/> and <see cref="FaceLoops"/>, so the answers are the same bit for bit.
+/// </summary>
+internal static class CircleLanes
+{
+    /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a polygon packed by <see cref="PolygonLanes.Pack"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static CollisionDetectionResult Detect(in Circle circle, float[] packed, int count) =>
+        Detect(circle, ref MemoryMarshal.GetArrayDataReference(packed), count);
+
+    /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a view whose vertex count <see cref="PolygonLanes.Fits"/>.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon)
+    {
+        Span<float> packed = stackalloc float[PolygonLanes.PackedLength];
+        PolygonLanes.Load(polygon.Vertices, polygon.Normals, out var x, out var z, out var nx, out var nz);
+        ref float p = ref MemoryMarshal.GetReference(packed);
+        x.StoreUnsafe(ref p);
+        z.StoreUnsafe(ref p, 8);
+        nx.StoreUnsafe(ref p, 16);
+        nz.StoreUnsafe(ref p, 24);
+        return Detect(circle, ref p, polygon.Vertices.Length);
+    }
+
+    // The test on lanes at `packed` (x, z, normal x, normal z; eight floats each).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static CollisionDetectionResult Detect(in Circle circle, ref float packed, int count)
+    {
+        Vector2 c = circle.Center;
+        float r = circle.Radius;
+        var x = Vector256.LoadUnsafe(ref packed);
+        var z = Vector256.LoadUnsafe(ref packed, 8);
+        var nx = Vector256.LoadUnsafe(ref packed, 16);
+        var nz = Vector256.LoadUnsafe(ref packed, 24);
+        var cx = Vector256.Create(c.X);
+        var cz = Vector256.Create(c.Y);
+        var radius = Vector256.Create(r);
+        var dx = cx - x;
+        var dz = cz - z;
+        var s = (nx * dx) + (nz * dz);
+        if (Vector256.GreaterThanOrEqualAny(s, radius))
+        {
+            return default;
+        }
+
+        var best = PolygonLanes.Greatest(s);
+        int lane = PolygonLanes.FirstLane(s, best);
+
+        // Beside the search for the farthest face, every lane's answer as if its face were the
+        // one: the edge's start v1 (this lane) and end v2 (the next vertex's lane) decide the
+        // region ((c − v1)·(v2 − v1) ≤ 0: v1's; else (c − v2)·(v1 − v2) ≤ 0: v2's; else the
+        // edge's, or inside when s ≤ 0), then the normal, depth, exit and action point of that
+        // region, so that only a lane is left to pick.
+        var zero = Vector256<float>.Zero;
+        var next = PolygonLanes.Next(count);
+        var x2 = Avx2.PermuteVar8x32(x, next);
+        var z2 = Avx2.PermuteVar8x32(z, next);
+        var bx = cx - x2;
+        var bz = cz - z2;
+        var atStart = Vector256.LessThanOrEqual((dx * (x2 - x)) + (dz * (z2 - z)), zero);
+        var atEnd = Vector256.LessThanOrEqual((bx * (x - x2)) + (bz * (z - z2)), zero);
+        var px = Vector256.ConditionalSelect(atStart, dx, bx);
+        var pz = Vector256.ConditionalSelect(atStart, dz, bz);
+        var dist2 = (px * px) + (pz * pz);
+        var dist = Vector256.Sqrt(dist2);
+        var positive = Vector256.GreaterThan(dist, zero);
+        var vertex = (atStart | atEnd) & Vector256.GreaterThan(s, zero);
+        var normalX = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, px / dist, Vector256<float>.One), nx);
+        var normalZ = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, pz / dist, zero), nz);
+        var exit = -Vector256.ConditionalSelect(vertex, dist, s);
+        var depth = radius + exit;
+        var along = Vector256.Create(0.5f) * (-radius + Vector256.MinNative(exit, radius));
+        var pointX = cx + (normalX * along);
+        var pointZ = cz + (normalZ * along);
+        uint outOfReach = (vertex & Vector256.GreaterThanOrEqual(dist2, Vector256.Create(r * r))).ExtractMostSignificantBits();
+        if (((outOfReach >> lane) & 1) != 0)
+        {
+            return default;
+        }
+
+        var pick = Vector256.CreateScalarUnsafe(lane);
+        Vector2 normal = new(Avx2.PermuteVar8x32(normalX, pick).ToScalar(), Avx2.PermuteVar8x32(normalZ, pick).ToScalar());
+        float contactDepth = Avx2.PermuteVar8x32(depth, pick).ToScalar();
+        Vector2 point = new(Avx2.PermuteVar8x32(pointX, pick).ToScalar(), Avx2.PermuteVar8x32(pointZ, pick).ToScalar());
+
+        // The far side: the point c − r·normal inside every face turned away from the normal
+        // leaves the circle's own end, −r, as the chord's lower end (FaceLoops.FarSide).
+        var dn = (nx * Vector256.Create(normal.X)) + (nz * Vector256.Create(normal.Y));
+        var away = Vector256.LessThan(dn, zero);
+        if (Vector256.GreaterThanAny(Vector256.ConditionalSelect(away, s - (radius * dn), zero), zero))
+        {
+            point = FarPoint(c, r, normal, contactDepth, Avx2.PermuteVar8x32(exit, pick).ToScalar(), s, dn);
+        }
+
+        return ContactResult.Plane(normal, contactDepth, point);
+    }
+
+    // The action point when the polygon's far side cuts the circle: CircleConvex.Finish with
+    // lo the greatest −s/d over the faces turned away from the normal (FaceLoops.FarSide).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static Vector2 FarPoint(Vector2 c, float r, Vector2 normal, float depth, float exit, Vector256<float> s, Vector256<float> dn)
+    {
+        var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, Vector256<float>.Zero), (-s / dn) + Vector256<float>.Zero, Vector256.Create(float.NegativeInfinity));
+        float lo = PolygonLanes.Greatest(low).ToScalar();
+        lo = ExactMinMax.Max(lo, -r);
+        float hi = ExactMinMax.Min(exit, r);
+        float along = lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
+        return c + normal * along;
+    }
+}
