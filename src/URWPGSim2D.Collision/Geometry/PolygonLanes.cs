@@ -19,8 +19,14 @@ namespace URWPGSim2D.Collision.Geometry;
 /// </summary>
 internal static class PolygonLanes
 {
-    /// <summary>Floats in a packed shape: x, z, normal x, normal z, eight lanes each.</summary>
-    public const int PackedLength = 32;
+    /// <summary>
+    /// Floats in a packed shape: vertex x, z, normal x, normal z, and x, z of the next vertex (the
+    /// end of the lane's edge), eight lanes each, then the vertex count (an integer's bits).
+    /// </summary>
+    public const int PackedLength = 49;
+
+    /// <summary>Where a packed shape keeps its vertex count (an integer's bits).</summary>
+    public const int CountSlot = 48;
 
     // For each count 3–8, the lane holding the vertex after each lane's vertex (the edge's end).
     private static readonly int[] NextTable = BuildNextTable();
@@ -56,8 +62,12 @@ internal static class PolygonLanes
             packed[8 + lane] = vertices[i].Y;
             packed[16 + lane] = normals[i].X;
             packed[24 + lane] = normals[i].Y;
+            int next = i + 1 == count ? 0 : i + 1;
+            packed[32 + lane] = vertices[next].X;
+            packed[40 + lane] = vertices[next].Y;
         }
 
+        packed[CountSlot] = BitConverter.Int32BitsToSingle(count);
         return packed;
     }
 
@@ -70,6 +80,25 @@ internal static class PolygonLanes
         z = Vector256.LoadUnsafe(ref p, 8);
         nx = Vector256.LoadUnsafe(ref p, 16);
         nz = Vector256.LoadUnsafe(ref p, 24);
+    }
+
+    /// <summary>The vertex count of a packed shape.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static int Count(ref float packed) => Unsafe.As<float, int>(ref Unsafe.Add(ref packed, CountSlot));
+
+    /// <summary>Packs the lanes of a view whose vertex count <see cref="Fits"/> into <paramref name="packed"/> (<see cref="PackedLength"/> floats), as <see cref="Pack"/> does.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static void Store(ReadOnlySpan<Vector2> vertices, ReadOnlySpan<Vector2> normals, ref float packed)
+    {
+        Load(vertices, normals, out var x, out var z, out var nx, out var nz);
+        var next = Next(vertices.Length);
+        x.StoreUnsafe(ref packed);
+        z.StoreUnsafe(ref packed, 8);
+        nx.StoreUnsafe(ref packed, 16);
+        nz.StoreUnsafe(ref packed, 24);
+        Avx2.PermuteVar8x32(x, next).StoreUnsafe(ref packed, 32);
+        Avx2.PermuteVar8x32(z, next).StoreUnsafe(ref packed, 40);
+        Unsafe.As<float, int>(ref Unsafe.Add(ref packed, CountSlot)) = vertices.Length;
     }
 
     /// <summary>Loads the lanes of a view whose vertex count <see cref="Fits"/> (vertices and normals interleaved x, z).</summary>

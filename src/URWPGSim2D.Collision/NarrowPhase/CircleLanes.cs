@@ -21,26 +21,22 @@ internal static class CircleLanes
 {
     /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a polygon packed by <see cref="PolygonLanes.Pack"/>.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static CollisionDetectionResult Detect(in Circle circle, float[] packed, int count) =>
-        Detect(circle, ref MemoryMarshal.GetArrayDataReference(packed), count);
+    public static CollisionDetectionResult Detect(in Circle circle, float[] packed) =>
+        Detect(circle, ref MemoryMarshal.GetArrayDataReference(packed));
 
     /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a view whose vertex count <see cref="PolygonLanes.Fits"/>.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
     public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon)
     {
         Span<float> packed = stackalloc float[PolygonLanes.PackedLength];
-        PolygonLanes.Load(polygon.Vertices, polygon.Normals, out var x, out var z, out var nx, out var nz);
         ref float p = ref MemoryMarshal.GetReference(packed);
-        x.StoreUnsafe(ref p);
-        z.StoreUnsafe(ref p, 8);
-        nx.StoreUnsafe(ref p, 16);
-        nz.StoreUnsafe(ref p, 24);
-        return Detect(circle, ref p, polygon.Vertices.Length);
+        PolygonLanes.Store(polygon.Vertices, polygon.Normals, ref p);
+        return Detect(circle, ref p);
     }
 
-    // The test on lanes at `packed` (x, z, normal x, normal z; eight floats each).
+    // The test on a packed polygon (PolygonLanes).
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static CollisionDetectionResult Detect(in Circle circle, ref float packed, int count)
+    private static CollisionDetectionResult Detect(in Circle circle, ref float packed)
     {
         Vector2 c = circle.Center;
         float r = circle.Radius;
@@ -68,9 +64,8 @@ internal static class CircleLanes
         // edge's, or inside when s ≤ 0), then the normal, depth, exit and action point of that
         // region, so that only a lane is left to pick.
         var zero = Vector256<float>.Zero;
-        var next = PolygonLanes.Next(count);
-        var x2 = Avx2.PermuteVar8x32(x, next);
-        var z2 = Avx2.PermuteVar8x32(z, next);
+        var x2 = Vector256.LoadUnsafe(ref packed, 32);
+        var z2 = Vector256.LoadUnsafe(ref packed, 40);
         var bx = cx - x2;
         var bz = cz - z2;
         var atStart = Vector256.LessThanOrEqual((dx * (x2 - x)) + (dz * (z2 - z)), zero);

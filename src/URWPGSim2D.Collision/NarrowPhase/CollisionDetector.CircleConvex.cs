@@ -47,7 +47,7 @@ public static partial class CollisionDetector
     /// <param name="b">The polygon.</param>
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
     public static CollisionDetectionResult Detect(in Circle a, in ConvexPolygon b) =>
-        b.Lanes is { } lanes && PolygonLanes.IsSupported ? CircleLanes.Detect(a, lanes, b.Vertices.Length) : CircleConvex.Detect(a, b.View());
+        b.Lanes is { } lanes && PolygonLanes.IsSupported ? CircleLanes.Detect(a, lanes) : CircleConvex.Detect(a, b.View());
 
     /// <summary>Polygon against circle: <see cref="Detect(in Circle, in ConvexPolygon)"/> swapped.</summary>
     /// <param name="a">The polygon, moved by the MTV.</param>

@@ -36,8 +36,8 @@ internal static class ConvexSatWide
         Span<float> packed = stackalloc float[2 * PolygonLanes.PackedLength];
         ref float pa = ref MemoryMarshal.GetReference(packed);
         ref float pb = ref Unsafe.Add(ref pa, PolygonLanes.PackedLength);
-        Store(a, ref pa);
-        Store(b, ref pb);
+        PolygonLanes.Store(a.Vertices, a.Normals, ref pa);
+        PolygonLanes.Store(b.Vertices, b.Normals, ref pb);
         return Detect(a, ref pa, b, ref pb);
     }
 
@@ -132,17 +132,6 @@ internal static class ConvexSatWide
         return found && !ConvexSat.IsTie(depth) && InsideBoth(xa, za, Vector256.LoadUnsafe(ref pa, 16), Vector256.LoadUnsafe(ref pa, 24), xb, zb, Vector256.LoadUnsafe(ref pb, 16), Vector256.LoadUnsafe(ref pb, 24), onIncident)
             ? onIncident
             : ContactRegion.IntersectionCentroid(a, b, origin, depth.Normal) - origin;
-    }
-
-    // A view's lanes into eight floats each of x, z, normal x, normal z.
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static void Store(in ConvexView view, ref float packed)
-    {
-        PolygonLanes.Load(view.Vertices, view.Normals, out var x, out var z, out var nx, out var nz);
-        x.StoreUnsafe(ref packed);
-        z.StoreUnsafe(ref packed, 8);
-        nx.StoreUnsafe(ref packed, 16);
-        nz.StoreUnsafe(ref packed, 24);
     }
 
     // sᵢ = min over the other shape's vertices w of nᵢ·w − nᵢ·vᵢ for all eight lanes' faces (normal
