@@ -18,8 +18,8 @@ public static partial class CollisionDetector
     /// <param name="b">The other polygon.</param>
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
     public static CollisionDetectionResult Detect(in ConvexPolygon a, in ConvexPolygon b) =>
-        a.Lanes is { } lanesA && b.Lanes is { } lanesB && PolygonLanes.IsSupported
-            ? ConvexSatWide.Detect(a.View(), lanesA, b.View(), lanesB)
+        a.Lanes is not null && b.Lanes is not null && PolygonLanes.IsSupported
+            ? ConvexSatWide.Detect(a, b)
             : ConvexSat.Detect(a.View(), b.View());
 
     /// <summary>Box against polygon: SAT over the box's two axes and the polygon's normals.</summary>

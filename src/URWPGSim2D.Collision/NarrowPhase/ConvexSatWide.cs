@@ -5,6 +5,7 @@ using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
 using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 
@@ -24,10 +25,13 @@ internal static class ConvexSatWide
     public static bool Fits(in ConvexView a, in ConvexView b) =>
         PolygonLanes.IsSupported && PolygonLanes.Fits(a.Vertices.Length) && PolygonLanes.Fits(b.Vertices.Length);
 
-    /// <summary>As <see cref="ConvexSat.Detect(in ConvexView, in ConvexView)"/> for two polygons with packed lanes (<see cref="PolygonLanes.Pack"/>).</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static CollisionDetectionResult Detect(in ConvexView a, float[] packedA, in ConvexView b, float[] packedB) =>
-        Detect(a, ref MemoryMarshal.GetArrayDataReference(packedA), b, ref MemoryMarshal.GetArrayDataReference(packedB));
+    /// <summary>As <see cref="ConvexSat.Detect(in ConvexView, in ConvexView)"/> for two polygons of at most eight vertices (both have packed lanes).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    public static CollisionDetectionResult Detect(in ConvexPolygon a, in ConvexPolygon b)
+    {
+        var pair = new PolygonPair(a, b);
+        return Detect(ref MemoryMarshal.GetArrayDataReference(a.Lanes!), ref MemoryMarshal.GetArrayDataReference(b.Lanes!), pair);
+    }
 
     /// <summary>As <see cref="ConvexSat.Detect(in ConvexView, in ConvexView)"/>; the views must <see cref="Fits"/>.</summary>
     [MethodImpl(MethodImplOptions.NoInlining)]
@@ -38,16 +42,18 @@ internal static class ConvexSatWide
         ref float pb = ref Unsafe.Add(ref pa, PolygonLanes.PackedLength);
         PolygonLanes.Store(a.Vertices, a.Normals, ref pa);
         PolygonLanes.Store(b.Vertices, b.Normals, ref pb);
-        return Detect(a, ref pa, b, ref pb);
+        var pair = new ViewPair(a, b);
+        return Detect(ref pa, ref pb, pair);
     }
 
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private static CollisionDetectionResult Detect(in ConvexView a, ref float pa, in ConvexView b, ref float pb)
+    // The test on two packed shapes; `shapes` gives the intersection centroid when the fast action point fails.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static CollisionDetectionResult Detect<TShapes>(ref float pa, ref float pb, scoped in TShapes shapes)
+        where TShapes : IShapePair, allows ref struct
     {
-        int na = a.Vertices.Length, nb = b.Vertices.Length;
-        Vector2 origin = a.Vertices[0];
-        var ox = Vector256.Create(origin.X);
-        var oz = Vector256.Create(origin.Y);
+        int na = PolygonLanes.Count(ref pa), nb = PolygonLanes.Count(ref pb);
+        var ox = Vector256.Create(pa);
+        var oz = Vector256.Create(Unsafe.Add(ref pa, 8));
         var xa = Vector256.LoadUnsafe(ref pa) - ox;
         var za = Vector256.LoadUnsafe(ref pa, 8) - oz;
         var nxa = Vector256.LoadUnsafe(ref pa, 16);
@@ -88,50 +94,85 @@ internal static class ConvexSatWide
         var bestA = PolygonLanes.Greatest(sa);
         var bestB = PolygonLanes.Greatest(sb);
         float sepA = bestA.ToScalar(), sepB = bestB.ToScalar();
-        int faceA = PolygonLanes.Index(PolygonLanes.FirstLane(sa, bestA), na);
-        int faceB = PolygonLanes.Index(PolygonLanes.FirstLane(sb, bestB), nb);
+        int laneA = PolygonLanes.FirstLane(sa, bestA);
+        int laneB = PolygonLanes.FirstLane(sb, bestB);
 
         // The reference face: the greater separation (the smaller push); ties go to a. The
         // incident edge: the other shape's edge whose normal is most anti-parallel to it.
         bool referenceIsA = sepA >= sepB;
-        ConvexView reference = referenceIsA ? a : b;
-        ConvexView incident = referenceIsA ? b : a;
-        int face = referenceIsA ? faceA : faceB;
+        int lane = referenceIsA ? laneA : laneB;
+        var pick = Vector256.CreateScalarUnsafe(lane);
+        var n = Vector2.Create(Avx2.PermuteVar8x32(referenceIsA ? nxa : nxb, pick).ToScalar(), Avx2.PermuteVar8x32(referenceIsA ? nza : nzb, pick).ToScalar());
         var mx = referenceIsA ? nxb : nxa;
         var mz = referenceIsA ? nzb : nza;
-        Vector2 n = Unsafe.Add(ref MemoryMarshal.GetReference(reference.Normals), face);
         var dots = (Vector256.Create(n.X) * mx) + (Vector256.Create(n.Y) * mz);
-        int edge = PolygonLanes.Index(PolygonLanes.FirstLane(dots, Least(dots)), incident.Vertices.Length);
-        var depth = new ContactDepth(referenceIsA ? -n : n, referenceIsA ? -sepA : -sepB, faceA, sepA, faceB, sepB);
+        var edge = Vector256.CreateScalarUnsafe(PolygonLanes.FirstLane(dots, Least(dots)));
+        var depth = new ContactDepth(referenceIsA ? -n : n, referenceIsA ? -sepA : -sepB, PolygonLanes.Index(laneA, na), sepA, PolygonLanes.Index(laneB, nb), sepB);
 
-        ref Vector2 rv = ref MemoryMarshal.GetReference(reference.Vertices);
-        ref Vector2 iv = ref MemoryMarshal.GetReference(incident.Vertices);
-        Vector2 v1 = Unsafe.Add(ref rv, face) - origin;
-        Vector2 v2 = Unsafe.Add(ref rv, face + 1 == reference.Vertices.Length ? 0 : face + 1) - origin;
-        Vector2 p1 = Unsafe.Add(ref iv, edge) - origin;
-        Vector2 p2 = Unsafe.Add(ref iv, edge + 1 == incident.Vertices.Length ? 0 : edge + 1) - origin;
+        // The reference face from v1 to v2, the incident edge from p1 to p2 (relative coordinates).
+        ref float reference = ref referenceIsA ? ref pa : ref pb;
+        ref float incident = ref referenceIsA ? ref pb : ref pa;
+        Vector2 v1 = Vector2.Create(Avx2.PermuteVar8x32(referenceIsA ? xa : xb, pick).ToScalar(), Avx2.PermuteVar8x32(referenceIsA ? za : zb, pick).ToScalar());
+        Vector2 v2 = Vector2.Create(Avx2.PermuteVar8x32(Vector256.LoadUnsafe(ref reference, 32), pick).ToScalar() - ox.ToScalar(), Avx2.PermuteVar8x32(Vector256.LoadUnsafe(ref reference, 40), pick).ToScalar() - oz.ToScalar());
+        Vector2 p1 = Vector2.Create(Avx2.PermuteVar8x32(referenceIsA ? xb : xa, edge).ToScalar(), Avx2.PermuteVar8x32(referenceIsA ? zb : za, edge).ToScalar());
+        Vector2 p2 = Vector2.Create(Avx2.PermuteVar8x32(Vector256.LoadUnsafe(ref incident, 32), edge).ToScalar() - ox.ToScalar(), Avx2.PermuteVar8x32(Vector256.LoadUnsafe(ref incident, 40), edge).ToScalar() - oz.ToScalar());
         bool found = ConvexSat.ClipIncident(n, v1, v2, p1, p2, out Vector2 point, out Vector2 onIncident);
         if (!found || !InsideBoth(xa, za, nxa, nza, xb, zb, nxb, nzb, point))
         {
-            point = Fallback(a, b, origin, depth, found, onIncident, ref pa, ref pb);
+            point = Fallback(ref pa, ref pb, shapes, depth, found, onIncident);
         }
 
+        Vector2 origin = Vector2.Create(ox.ToScalar(), oz.ToScalar());
         return ContactResult.Plane(depth.Normal, depth.Depth, origin + point);
     }
 
     // Near a corner of the incident shape: ConvexSat.Finish's second and third choices.
     [MethodImpl(MethodImplOptions.NoInlining)]
-    private static Vector2 Fallback(in ConvexView a, in ConvexView b, Vector2 origin, in ContactDepth depth, bool found, Vector2 onIncident, ref float pa, ref float pb)
+    private static Vector2 Fallback<TShapes>(ref float pa, ref float pb, scoped in TShapes shapes, in ContactDepth depth, bool found, Vector2 onIncident)
+        where TShapes : IShapePair, allows ref struct
     {
-        var ox = Vector256.Create(origin.X);
-        var oz = Vector256.Create(origin.Y);
+        var ox = Vector256.Create(pa);
+        var oz = Vector256.Create(Unsafe.Add(ref pa, 8));
         var xa = Vector256.LoadUnsafe(ref pa) - ox;
         var za = Vector256.LoadUnsafe(ref pa, 8) - oz;
         var xb = Vector256.LoadUnsafe(ref pb) - ox;
         var zb = Vector256.LoadUnsafe(ref pb, 8) - oz;
+        Vector2 origin = Vector2.Create(ox.ToScalar(), oz.ToScalar());
         return found && !ConvexSat.IsTie(depth) && InsideBoth(xa, za, Vector256.LoadUnsafe(ref pa, 16), Vector256.LoadUnsafe(ref pa, 24), xb, zb, Vector256.LoadUnsafe(ref pb, 16), Vector256.LoadUnsafe(ref pb, 24), onIncident)
             ? onIncident
-            : ContactRegion.IntersectionCentroid(a, b, origin, depth.Normal) - origin;
+            : shapes.IntersectionCentroid(origin, depth.Normal) - origin;
+    }
+
+    // The two shapes of a test, for the rare intersection centroid.
+    private interface IShapePair
+    {
+        Vector2 IntersectionCentroid(Vector2 origin, Vector2 normal);
+    }
+
+    private readonly ref struct ViewPair : IShapePair
+    {
+        private readonly ConvexView _a, _b;
+
+        public ViewPair(in ConvexView a, in ConvexView b)
+        {
+            _a = a;
+            _b = b;
+        }
+
+        public Vector2 IntersectionCentroid(Vector2 origin, Vector2 normal) => ContactRegion.IntersectionCentroid(_a, _b, origin, normal);
+    }
+
+    private readonly ref struct PolygonPair : IShapePair
+    {
+        private readonly ref readonly ConvexPolygon _a, _b;
+
+        public PolygonPair(in ConvexPolygon a, in ConvexPolygon b)
+        {
+            _a = ref a;
+            _b = ref b;
+        }
+
+        public Vector2 IntersectionCentroid(Vector2 origin, Vector2 normal) => ContactRegion.IntersectionCentroid(_a.View(), _b.View(), origin, normal);
     }
 
     // sᵢ = min over the other shape's vertices w of nᵢ·w − nᵢ·vᵢ for all eight lanes' faces (normal
