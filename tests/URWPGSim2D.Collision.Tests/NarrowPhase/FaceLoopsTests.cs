@@ -173,6 +173,70 @@ public sealed class FaceLoopsTests
 
     // A random convex shape near the origin (counter-clockwise, unit outward normals): a polygon
     // of 3 to 8 vertices on an ellipse, a segment, or a single point.
+    [Fact]
+    public void FarSideMatchesItsDefinitionInBothPaths()
+    {
+        // Polygons of 3 to 16 vertices, lines through random points in random directions, radii
+        // from small to larger than the polygon: −r when p − r·u is inside every face turned away
+        // from u, else the greatest −s/d over those faces (checked here in double).
+        var rng = new Random(93);
+        int cut = 0;
+        for (int trial = 0; trial < 20000; trial++)
+        {
+            try
+            {
+                int count = rng.Next(3, 17);
+                Vector2 c = new(FishTestKit.Range(rng, -60f, 60f), FishTestKit.Range(rng, -60f, 60f));
+                float rx = FishTestKit.Range(rng, 5f, 80f), rz = FishTestKit.Range(rng, 5f, 80f), phase = FishTestKit.Range(rng, 0f, 6.3f);
+                var points = new Vector2[count];
+                for (int i = 0; i < count; i++)
+                {
+                    float angle = phase + (i * 2f * MathF.PI / count);
+                    points[i] = c + new Vector2(rx * MathF.Cos(angle), rz * MathF.Sin(angle));
+                }
+
+                var polygon = new ConvexPolygon(points);
+                Vector2 p = new(FishTestKit.Range(rng, -120f, 120f), FishTestKit.Range(rng, -120f, 120f));
+                float angleU = FishTestKit.Range(rng, 0f, 6.3f);
+                Vector2 u = new(MathF.Cos(angleU), MathF.Sin(angleU));
+                float radius = FishTestKit.Range(rng, 1f, 200f);
+                float scalar = FaceLoops.FarSide(polygon.Vertices, polygon.Normals, p, radius, u, vector: false);
+                float vector = FaceLoops.FarSide(polygon.Vertices, polygon.Normals, p, radius, u, vector: true);
+                Assert.Equal(BitConverter.SingleToInt32Bits(scalar), BitConverter.SingleToInt32Bits(vector));
+
+                double far = double.NegativeInfinity;
+                bool beyond = false;
+                for (int i = 0; i < count; i++)
+                {
+                    Vector2 n = polygon.Normals[i], v = polygon.Vertices[i];
+                    double s = (n.X * ((double)p.X - v.X)) + (n.Y * ((double)p.Y - v.Y));
+                    double d = ((double)n.X * u.X) + ((double)n.Y * u.Y);
+                    if (d < 0)
+                    {
+                        far = Math.Max(far, -s / d);
+                        beyond |= s - (radius * d) > 1e-3;
+                    }
+                }
+
+                if (beyond)
+                {
+                    cut++;
+                    Assert.True(Math.Abs(scalar - far) <= 1e-3 * (1 + Math.Abs(far)), $"far side {scalar:R}, in double {far:R}");
+                }
+                else if (far < -radius - 1e-3)
+                {
+                    Assert.Equal(-radius, scalar);
+                }
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(93, trial, e);
+            }
+        }
+
+        Assert.InRange(cut, 2000, 18000);
+    }
+
     private static Vector2[] Shape(Random rng, out Vector2[] normals)
     {
         int kind = rng.Next(10);
