@@ -42,11 +42,11 @@ internal static class CircleConvex
         var v = polygon.Vertices;
         var nrm = polygon.Normals;
         Vector2 normal;
-        float distance, exit;
+        float distance;
         depth = default;
         if (v.Length == 1)
         {
-            if (!PointRegion(c, r, v[0], out normal, out distance, out exit))
+            if (!PointRegion(c, r, v[0], out normal, out distance))
             {
                 return false;
             }
@@ -54,42 +54,33 @@ internal static class CircleConvex
         else
         {
             if (!FaceLoops.Farthest(v, nrm, c, r, out int edge, out float maxSep, vector)
-                || !Region(c, r, v, nrm, edge, maxSep, out normal, out distance, out exit))
+                || !Region(c, r, v, nrm, edge, maxSep, out normal, out distance))
             {
                 return false;
             }
         }
 
-        depth = new ContactDepth(normal, distance, exit);
+        depth = new ContactDepth(normal, distance);
         return true;
     }
 
     /// <summary><see cref="Complete(in Circle, in ConvexView, in ContactDepth)"/> (see <see cref="Detect(in Circle, in ConvexView, bool)"/>).</summary>
     internal static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth, bool vector)
     {
-        if (polygon.Vertices.Length < 3)
-        {
-            ContactRegion.LineInterval(polygon, circle.Center, depth.Normal, out float lo, out float hi, vector);
-            return Finish(circle, depth, lo, hi);
-        }
-
-        float far = FaceLoops.FarSide(polygon.Vertices, polygon.Normals, circle.Center, circle.Radius, depth.Normal, vector);
-        return Finish(circle, depth, far, depth.Exit);
+        ContactRegion.LineInterval(polygon, circle.Center, depth.Normal, out float lo, out float hi, vector);
+        return Finish(circle, depth, lo, hi);
     }
 
     /// <summary>
     /// The Voronoi region of the centre <paramref name="c"/> once the edge of greatest separation
     /// (<paramref name="edge"/>, <paramref name="maxSep"/> &lt; r) is known (two vertices or more):
     /// inside, that edge's region or one of its end vertices' (false: the vertex is out of reach).
-    /// <paramref name="exit"/> is where the line c + t·normal leaves the polygon: at the edge
-    /// (t = −maxSep) or at the vertex (t = −|c − v|).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    internal static bool Region(Vector2 c, float r, ReadOnlySpan<Vector2> v, ReadOnlySpan<Vector2> nrm, int edge, float maxSep, out Vector2 normal, out float distance, out float exit)
+    internal static bool Region(Vector2 c, float r, ReadOnlySpan<Vector2> v, ReadOnlySpan<Vector2> nrm, int edge, float maxSep, out Vector2 normal, out float distance)
     {
         Vector2 v1 = v[edge];
         Vector2 v2 = v[edge + 1 == v.Length ? 0 : edge + 1];
-        exit = -maxSep;
         if (maxSep <= 0f && v.Length >= 3)
         {
             normal = nrm[edge];
@@ -101,13 +92,13 @@ internal static class CircleConvex
         Vector2 a = c - v1, e = v2 - v1;
         if ((a.X * e.X) + (a.Y * e.Y) <= 0f)
         {
-            return PointRegion(c, r, v1, out normal, out distance, out exit);
+            return PointRegion(c, r, v1, out normal, out distance);
         }
 
         Vector2 b = c - v2, f = v1 - v2;
         if ((b.X * f.X) + (b.Y * f.Y) <= 0f)
         {
-            return PointRegion(c, r, v2, out normal, out distance, out exit);
+            return PointRegion(c, r, v2, out normal, out distance);
         }
 
         normal = nrm[edge];
@@ -118,8 +109,7 @@ internal static class CircleConvex
     /// <summary>
     /// The result once the polygon's interval [lo, hi] on the line c + t·normal is known: the
     /// middle of its overlap with the circle's [−r, r] (or, when round-off leaves none, the point
-    /// at depth − r along the normal). A polygon's hi is the contact's exit
-    /// (<see cref="ContactDepth.Exit"/>) and its lo is <see cref="FaceLoops.FarSide"/>.
+    /// at depth − r along the normal).
     /// </summary>
     internal static CollisionDetectionResult Finish(in Circle circle, in ContactDepth depth, float lo, float hi)
     {
@@ -130,10 +120,9 @@ internal static class CircleConvex
         return CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, circle.Center + depth.Normal * t);
     }
 
-    // Circle against a single vertex: overlap when |c − p| < r, pushed along (c − p); the line
-    // through c along the normal leaves the shape at p (t = −|c − p|).
+    // Circle against a single vertex: overlap when |c − p| < r, pushed along (c − p).
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static bool PointRegion(Vector2 c, float r, Vector2 p, out Vector2 normal, out float depth, out float exit)
+    private static bool PointRegion(Vector2 c, float r, Vector2 p, out Vector2 normal, out float depth)
     {
         Vector2 d = c - p;
         float dist2 = (d.X * d.X) + (d.Y * d.Y); // LengthSquared bit for bit: a sum of squares is never −0
@@ -142,14 +131,12 @@ internal static class CircleConvex
         {
             normal = default;
             depth = 0f;
-            exit = 0f;
             return false;
         }
 
         float dist = MathF.Sqrt(dist2);
         normal = dist > 0f ? d / dist : Vector2.UnitX;
         depth = r - dist;
-        exit = -dist;
         return true;
     }
 }

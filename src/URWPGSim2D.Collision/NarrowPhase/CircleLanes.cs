@@ -80,9 +80,6 @@ internal static class CircleLanes
         var normalZ = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, pz / dist, zero), nz);
         var exit = -Vector256.ConditionalSelect(vertex, dist, s);
         var depth = radius + exit;
-        var along = Vector256.Create(0.5f) * (-radius + Vector256.MinNative(exit, radius));
-        var pointX = cx + (normalX * along);
-        var pointZ = cz + (normalZ * along);
         uint outOfReach = (vertex & Vector256.GreaterThanOrEqual(dist2, Vector256.Create(r * r))).ExtractMostSignificantBits();
         if (((outOfReach >> lane) & 1) != 0)
         {
@@ -92,30 +89,46 @@ internal static class CircleLanes
         var pick = Vector256.CreateScalarUnsafe(lane);
         Vector2 normal = new(Avx2.PermuteVar8x32(normalX, pick).ToScalar(), Avx2.PermuteVar8x32(normalZ, pick).ToScalar());
         float contactDepth = Avx2.PermuteVar8x32(depth, pick).ToScalar();
-        Vector2 point = new(Avx2.PermuteVar8x32(pointX, pick).ToScalar(), Avx2.PermuteVar8x32(pointZ, pick).ToScalar());
 
-        // The far side: the point c − r·normal inside every face turned away from the normal
-        // leaves the circle's own end, −r, as the chord's lower end (FaceLoops.FarSide).
+        // The polygon's chord on the line c + t·normal, face by face as FaceLoops.LineInterval
+        // takes it (the separations reused): its middle within the circle is almost always the
+        // lane's guess (the chord leaves the polygon where the face or vertex is, and the circle's
+        // own −r ends it on the far side), and then the guessed point stands; otherwise the point
+        // is taken again from the chord. The guess keeps the divisions off the point's path.
         var dn = (nx * Vector256.Create(normal.X)) + (nz * Vector256.Create(normal.Y));
-        var away = Vector256.LessThan(dn, zero);
-        if (Vector256.GreaterThanAny(Vector256.ConditionalSelect(away, s - (radius * dn), zero), zero))
-        {
-            point = FarPoint(c, r, normal, contactDepth, Avx2.PermuteVar8x32(exit, pick).ToScalar(), s, dn);
-        }
+        Vector2 point = c + normal * Along(s, dn, r, contactDepth);
 
         return ContactResult.Plane(normal, contactDepth, point);
     }
 
-    // The action point when the polygon's far side cuts the circle: CircleConvex.Finish with
-    // lo the greatest −s/d over the faces turned away from the normal (FaceLoops.FarSide).
-    [MethodImpl(MethodImplOptions.NoInlining)]
-    private static Vector2 FarPoint(Vector2 c, float r, Vector2 normal, float depth, float exit, Vector256<float> s, Vector256<float> dn)
+    // CircleConvex.Finish's t: the middle of the overlap of the polygon's interval on the line
+    // (t ≤ −s/d where d = n·normal > 0, t ≥ −s/d where d < 0; a face parallel to the line with the
+    // centre outside it leaves nothing) with the circle's [−r, r].
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static float Along(Vector256<float> s, Vector256<float> dn, float r, float depth)
     {
-        var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, Vector256<float>.Zero), (-s / dn) + Vector256<float>.Zero, Vector256.Create(float.NegativeInfinity));
-        float lo = PolygonLanes.Greatest(low).ToScalar();
+        var zero = Vector256<float>.Zero;
+        float lo, hi;
+        if (Vector256.EqualsAny(dn, zero) && Vector256.GreaterThanAny(Vector256.ConditionalSelect(Vector256.Equals(dn, zero), s, zero), zero))
+        {
+            lo = float.PositiveInfinity;
+            hi = float.NegativeInfinity;
+        }
+        else
+        {
+            var t = -s / dn;
+            var high = Vector256.ConditionalSelect(Vector256.GreaterThan(dn, zero), t, Vector256.Create(float.PositiveInfinity));
+            var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, zero), t, Vector256.Create(float.NegativeInfinity));
+            var h = Vector128.MinNative(high.GetLower(), high.GetUpper());
+            var l = Vector128.MaxNative(low.GetLower(), low.GetUpper());
+            h = Vector128.MinNative(h, Vector128.Shuffle(h, Vector128.Create(2, 3, 0, 1)));
+            l = Vector128.MaxNative(l, Vector128.Shuffle(l, Vector128.Create(2, 3, 0, 1)));
+            hi = ExactMinMax.Min(h.ToScalar(), h.GetElement(1));
+            lo = ExactMinMax.Max(l.ToScalar(), l.GetElement(1));
+        }
+
         lo = ExactMinMax.Max(lo, -r);
-        float hi = ExactMinMax.Min(exit, r);
-        float along = lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
-        return c + normal * along;
+        hi = ExactMinMax.Min(hi, r);
+        return lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
     }
 }

@@ -11,15 +11,10 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// </summary>
 internal readonly struct ContactDepth
 {
-    /// <summary>
-    /// A circle contact: unit normal (from b toward a), depth, and <paramref name="exit"/>: where
-    /// the line c + t·normal through the circle's centre leaves the other shape (the t of the
-    /// face or vertex the normal comes from).
-    /// </summary>
-    public ContactDepth(Vector2 normal, float depth, float exit)
+    /// <summary>A circle contact: unit normal (from b toward a) and depth.</summary>
+    public ContactDepth(Vector2 normal, float depth)
         : this(normal, depth, -1, float.NegativeInfinity, -1, float.NegativeInfinity)
     {
-        Exit = exit;
     }
 
     /// <summary>A separating-axis contact: normal, depth, and each shape's face of greatest separation.</summary>
@@ -50,9 +45,6 @@ internal readonly struct ContactDepth
 
     /// <summary>That face's separation (negative), mm.</summary>
     public float SeparationB { get; }
-
-    /// <summary>A circle contact: where the line through the centre along the normal leaves the other shape (t, mm).</summary>
-    public float Exit { get; }
 
     /// <summary>
     /// |MTV|², computed exactly as the finished <see cref="CollisionDetectionResult"/> computes it
