@@ -115,11 +115,6 @@ internal static class PolygonLanes
     public static Vector256<int> Next(int count) =>
         Vector256.LoadUnsafe(ref MemoryMarshal.GetArrayDataReference(NextTable), (nuint)(8 * (count - 3)));
 
-    /// <summary>Lane <paramref name="lane"/> of <paramref name="v"/> (any lane, known only at run time).</summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static float At(Vector256<float> v, int lane) =>
-        Avx2.PermuteVar8x32(v, Vector256.CreateScalarUnsafe(lane)).ToScalar();
-
     /// <summary>The greatest lane, in every lane.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static Vector256<float> Greatest(Vector256<float> v)

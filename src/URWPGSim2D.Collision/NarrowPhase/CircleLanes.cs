@@ -11,10 +11,12 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>
 /// <see cref="CircleConvex"/> for a polygon of three to eight vertices held in the eight lanes
-/// of <see cref="PolygonLanes"/>: one pass gives every face's separation s = n·(c − v), the
-/// greatest of them, and both end vertices' region tests of every edge; the chord of the
-/// polygon on the line through the centre along the normal reuses those separations. Every
-/// quantity is computed with the same operations in the same order as in
+/// of <see cref="PolygonLanes"/> (256-bit vectors): one pass gives every face's separation
+/// s = n·(c − v) and, beside the search for the greatest, every lane's Voronoi region, normal and
+/// depth as if its face were the farthest (both end vertices' tests, the square root and the
+/// division done for all lanes at once, off the search's path), so that only a lane is left to
+/// pick; the chord of the polygon on the line through the centre along the normal reuses the
+/// separations. Every quantity is computed with the same operations in the same order as in
 /// <see cref="CircleConvex"/> and <see cref="FaceLoops"/>, so the answers are the same bit for bit.
 /// </summary>
 internal static class CircleLanes
@@ -61,8 +63,7 @@ internal static class CircleLanes
         // Beside the search for the farthest face, every lane's answer as if its face were the
         // one: the edge's start v1 (this lane) and end v2 (the next vertex's lane) decide the
         // region ((c − v1)·(v2 − v1) ≤ 0: v1's; else (c − v2)·(v1 − v2) ≤ 0: v2's; else the
-        // edge's, or inside when s ≤ 0), then the normal, depth, exit and action point of that
-        // region, so that only a lane is left to pick.
+        // edge's, or inside when s ≤ 0), then the normal and depth of that region.
         var zero = Vector256<float>.Zero;
         var x2 = Vector256.LoadUnsafe(ref packed, 32);
         var z2 = Vector256.LoadUnsafe(ref packed, 40);
@@ -78,8 +79,7 @@ internal static class CircleLanes
         var vertex = (atStart | atEnd) & Vector256.GreaterThan(s, zero);
         var normalX = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, px / dist, Vector256<float>.One), nx);
         var normalZ = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, pz / dist, zero), nz);
-        var exit = -Vector256.ConditionalSelect(vertex, dist, s);
-        var depth = radius + exit;
+        var depth = radius - Vector256.ConditionalSelect(vertex, dist, s);
         uint outOfReach = (vertex & Vector256.GreaterThanOrEqual(dist2, Vector256.Create(r * r))).ExtractMostSignificantBits();
         if (((outOfReach >> lane) & 1) != 0)
         {
@@ -90,15 +90,10 @@ internal static class CircleLanes
         Vector2 normal = new(Avx2.PermuteVar8x32(normalX, pick).ToScalar(), Avx2.PermuteVar8x32(normalZ, pick).ToScalar());
         float contactDepth = Avx2.PermuteVar8x32(depth, pick).ToScalar();
 
-        // The polygon's chord on the line c + t·normal, face by face as FaceLoops.LineInterval
-        // takes it (the separations reused): its middle within the circle is almost always the
-        // lane's guess (the chord leaves the polygon where the face or vertex is, and the circle's
-        // own −r ends it on the far side), and then the guessed point stands; otherwise the point
-        // is taken again from the chord. The guess keeps the divisions off the point's path.
+        // The action point: the middle of the overlap of the circle and the polygon's chord on the
+        // line c + t·normal, the chord taken face by face as FaceLoops.LineInterval takes it.
         var dn = (nx * Vector256.Create(normal.X)) + (nz * Vector256.Create(normal.Y));
-        Vector2 point = c + normal * Along(s, dn, r, contactDepth);
-
-        return ContactResult.Plane(normal, contactDepth, point);
+        return ContactResult.Plane(normal, contactDepth, c + normal * Along(s, dn, r, contactDepth));
     }
 
     // CircleConvex.Finish's t: the middle of the overlap of the polygon's interval on the line
