@@ -64,7 +64,9 @@ internal static class ConvexSatWide
         var nzb = Vector256.LoadUnsafe(ref pb, 24);
 
         Vector256<float> sa, sb;
-        if (na <= 4 && nb <= 4)
+        Vector256<int> incidentEdges = default;
+        bool small = na <= 4 && nb <= 4;
+        if (small)
         {
             // a's faces beside b's, against b's vertices beside a's.
             var nx = Vector256.Create(nxa.GetLower(), nxb.GetLower());
@@ -80,6 +82,10 @@ internal static class ConvexSatWide
 
             sa = Avx.Permute2x128(s, s, 0x00);
             sb = Avx.Permute2x128(s, s, 0x11);
+
+            // Beside the choice of the reference face, the incident edge of every face that could
+            // be it: for a's faces the lane of b's most anti-parallel edge normal, for b's a's.
+            incidentEdges = IncidentEdges4(nx, nz, Vector256.Create(nxb.GetLower(), nxa.GetLower()), Vector256.Create(nzb.GetLower(), nza.GetLower()));
         }
         else
         {
@@ -105,8 +111,16 @@ internal static class ConvexSatWide
         var n = Vector2.Create(Avx2.PermuteVar8x32(referenceIsA ? nxa : nxb, pick).ToScalar(), Avx2.PermuteVar8x32(referenceIsA ? nza : nzb, pick).ToScalar());
         var mx = referenceIsA ? nxb : nxa;
         var mz = referenceIsA ? nzb : nza;
-        var dots = (Vector256.Create(n.X) * mx) + (Vector256.Create(n.Y) * mz);
-        var edge = Vector256.CreateScalarUnsafe(PolygonLanes.FirstLane(dots, Least(dots)));
+        Vector256<int> edge;
+        if (small)
+        {
+            edge = Avx2.PermuteVar8x32(incidentEdges, Vector256.CreateScalarUnsafe(referenceIsA ? laneA : laneB + 4));
+        }
+        else
+        {
+            var dots = (Vector256.Create(n.X) * mx) + (Vector256.Create(n.Y) * mz);
+            edge = Vector256.CreateScalarUnsafe(PolygonLanes.FirstLane(dots, Least(dots)));
+        }
         var depth = new ContactDepth(referenceIsA ? -n : n, referenceIsA ? -sepA : -sepB, PolygonLanes.Index(laneA, na), sepA, PolygonLanes.Index(laneB, nb), sepB);
 
         // The reference face from v1 to v2, the incident edge from p1 to p2 (relative coordinates).
@@ -198,6 +212,29 @@ internal static class ConvexSatWide
         var d2 = (nx * Avx.Permute(wx, 0b10_10_10_10)) + (nz * Avx.Permute(wz, 0b10_10_10_10));
         var d3 = (nx * Avx.Permute(wx, 0b11_11_11_11)) + (nz * Avx.Permute(wz, 0b11_11_11_11));
         return Vector256.MinNative(Vector256.MinNative(d0, d1), Vector256.MinNative(d2, d3));
+    }
+
+    // For the eight faces (normals nx, nz) of two shapes of at most four vertices side by side,
+    // the lane (0–3) of the other shape's edge whose normal m gives the least n·m (the first on a
+    // tie), m taken from each 128-bit half of mx, mz in lane order.
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static Vector256<int> IncidentEdges4(Vector256<float> nx, Vector256<float> nz, Vector256<float> mx, Vector256<float> mz)
+    {
+        var least = (nx * Avx.Permute(mx, 0b00_00_00_00)) + (nz * Avx.Permute(mz, 0b00_00_00_00));
+        var edges = Vector256<int>.Zero;
+        Earlier(ref least, ref edges, (nx * Avx.Permute(mx, 0b01_01_01_01)) + (nz * Avx.Permute(mz, 0b01_01_01_01)), 1);
+        Earlier(ref least, ref edges, (nx * Avx.Permute(mx, 0b10_10_10_10)) + (nz * Avx.Permute(mz, 0b10_10_10_10)), 2);
+        Earlier(ref least, ref edges, (nx * Avx.Permute(mx, 0b11_11_11_11)) + (nz * Avx.Permute(mz, 0b11_11_11_11)), 3);
+        return edges;
+    }
+
+    // Takes the later candidate only where it is strictly less (ties go to the earlier edge).
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static void Earlier(ref Vector256<float> least, ref Vector256<int> edges, Vector256<float> later, int edge)
+    {
+        var less = Vector256.LessThan(later, least);
+        least = Vector256.ConditionalSelect(less, later, least);
+        edges = Vector256.ConditionalSelect(less.AsInt32(), Vector256.Create(edge), edges);
     }
 
     // The least lane, in every lane.
