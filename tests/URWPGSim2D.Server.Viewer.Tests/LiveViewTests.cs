@@ -192,32 +192,57 @@ public sealed class LiveViewTests(Browser browser)
     {
         string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
         int port = FreePort();
-        var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+        string host = Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet";
+
+        // A shell without job control starts background commands with SIGINT ignored, the runtime
+        // keeps an inherited SIG_IGN (as POSIX programs do), and a child inherits it again: a test
+        // run started in the background would give a server that cannot hear Ctrl+C. On Linux the
+        // server is started with SIGINT back at its default (coreutils' env), whatever started the tests.
+        var start = new ProcessStartInfo(OperatingSystem.IsLinux() ? "env" : host)
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             RedirectStandardInput = true,
             UseShellExecute = false,
         };
+        if (OperatingSystem.IsLinux())
+        {
+            start.ArgumentList.Add("--default-signal=INT");
+            start.ArgumentList.Add(host);
+        }
+
         foreach (var a in (string[])[server, "run", "--item", "default", "--live", "--paused", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture)])
         {
             start.ArgumentList.Add(a);
         }
 
         using var process = Process.Start(start)!;
-        var stderr = process.StandardError.ReadToEndAsync();
-        string? first = process.StandardOutput.ReadLine();
-        Assert.Equal($"live view: http://127.0.0.1:{port}/ (Ctrl+C to stop)", first);
-        using (var kill = Process.Start("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+        try
         {
-            kill.WaitForExit();
-        }
+            var stderr = process.StandardError.ReadToEndAsync();
+            string? first = process.StandardOutput.ReadLine();
+            Assert.Equal($"live view: http://127.0.0.1:{port}/ (Ctrl+C to stop)", first);
+            using (var kill = Process.Start("kill", ["-INT", process.Id.ToString(System.Globalization.CultureInfo.InvariantCulture)]))
+            {
+                kill.WaitForExit();
+            }
 
-        string rest = process.StandardOutput.ReadToEnd();
-        Assert.True(process.WaitForExit(Wait), "the server did not end on SIGINT");
-        Assert.Equal(0, process.ExitCode);
-        Assert.StartsWith("match: 0 cycles", rest, StringComparison.Ordinal);
-        Assert.Contains("\ngoals: team 0 (chase-ball) 0, team 1 (chase-ball) 0\n", rest, StringComparison.Ordinal);
-        Assert.Equal(string.Empty, await stderr);
+            var rest = process.StandardOutput.ReadToEndAsync();
+            Assert.True(process.WaitForExit(Wait), "the server did not end on SIGINT");
+            Assert.Equal(0, process.ExitCode);
+            Assert.StartsWith("match: 0 cycles", await rest, StringComparison.Ordinal);
+            Assert.Contains("\ngoals: team 0 (chase-ball) 0, team 1 (chase-ball) 0\n", await rest, StringComparison.Ordinal);
+            Assert.Equal(string.Empty, await stderr);
+        }
+        finally
+        {
+            // A failed assertion must not leave a live server behind (it would keep its port and
+            // everything it inherited, such as a lock held by the shell that started the tests).
+            if (!process.HasExited)
+            {
+                process.Kill(entireProcessTree: true);
+                process.WaitForExit();
+            }
+        }
     }
 }

@@ -346,6 +346,30 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
     }
 
     [Fact]
+    public async Task AOneTeamItemShowsItsOneTeamAndItsScoreAlone()
+    {
+        // Transport: one team of two fish. The trace lists two teams and two scores (its contract's
+        // shape) but team 1 has no fish; the page shows team 0 and its score only.
+        string html = Path.Combine(match.Folder, "transport.html"), trace = Path.Combine(match.Folder, "transport.jsonl");
+        var run = RecordedMatch.Cli("run", "--item", "transport", "--cycles", "30", "--html", html, "--trace", trace);
+        Assert.True(run.Code == 0, run.Stderr);
+        using (var first = JsonDocument.Parse(File.ReadLines(trace).First()))
+        {
+            var layout = first.RootElement.GetProperty("layout");
+            Assert.Equal(2, layout.GetProperty("teams").GetArrayLength());
+            Assert.All(layout.GetProperty("fish").EnumerateArray(), f => Assert.Equal(0, f.GetProperty("team").GetInt32()));
+        }
+
+        var (page, errors, _) = await Open(html);
+        await Settle(page);
+        Assert.True(await page.IsVisibleAsync("#team0"));
+        Assert.False(await page.IsVisibleAsync("#team1"));
+        Assert.Equal("0", await page.TextContentAsync("#score"));
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
     public async Task ScreenshotForTheReadme()
     {
         // The README's picture: the page of the README's command (the default match), at cycle 1000.

@@ -11,7 +11,8 @@ namespace URWPGSim2D.Server.Rendering;
 /// Draws one frame of the match as SVG in world millimetres (x right, z down, as in the pool):
 /// water, goal mouths, goal blocks, obstacles, balls and every fish's eight leaf polygons
 /// (team 0 red, team 1 blue) with a heading line, the ids (fishN above each fish, the ball's
-/// number on each ball), the cycle and score as a caption and a legend of the colours.
+/// number on each ball), the cycle and score as a caption and a legend of the colours. The picture
+/// shows the pool, grown to take in any body outside it (a fish an item parks off the field).
 /// </summary>
 internal static class SvgFrame
 {
@@ -23,6 +24,9 @@ internal static class SvgFrame
     /// <summary>Fill of the obstacles.</summary>
     private const string ObstacleColour = "#6b5b4b";
 
+    /// <summary>Room kept round a body off the pool (its id above it, its heading line), mm.</summary>
+    private const float OffPoolMargin = 200f;
+
     /// <summary>The SVG document of the world's current state.</summary>
     /// <param name="world">The world.</param>
     /// <param name="teamNames">The teams' names for the legend (team 0 first), or null for none.</param>
@@ -31,12 +35,13 @@ internal static class SvgFrame
         var field = world.Field;
         float l = field.Length;
         float w = field.Width;
-        float top = -w / 2;
+        var (min, max) = Drawn(world);
+        float top = min.Y;
         var s = new SvgWriter("0.##");
-        s.StartDocument(-l / 2 - 20, top - 170, l + 40, w + 190, (l + 40) / 3, (w + 190) / 3);
-        s.Element("text").Attribute("x", -l / 2).Attribute("y", top - 110).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
+        s.StartDocument(min.X - 20, top - 170, max.X - min.X + 40, max.Y - min.Y + 190, (max.X - min.X + 40) / 3, (max.Y - min.Y + 190) / 3);
+        s.Element("text").Attribute("x", min.X).Attribute("y", top - 110).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
             .Content("text", string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — team 0: {world.Goals[0]}, team 1: {world.Goals[1]}"));
-        Legend(s, world, teamNames, -l / 2, top - 45);
+        Legend(s, world, teamNames, min.X, top - 45);
         Rect(s, new Vector2(-l / 2, -w / 2), new Vector2(l / 2, w / 2), "#cfe8f7", "#1b3a4b");
         float mouth = Field.GoalWidth / 2;
         Rect(s, new Vector2(-l / 2, -mouth), new Vector2(-l / 2 + Field.GoalDepth, mouth), "#f6f2c4", "none");
@@ -93,6 +98,39 @@ internal static class SvgFrame
         }
 
         return s.EndDocument().ToString();
+    }
+
+    // The region drawn below the caption: the pool, grown to hold every body outside it (a fish an
+    // item parks off the field, with room for its id and heading line) — the pool alone otherwise.
+    private static (Vector2 Min, Vector2 Max) Drawn(World world)
+    {
+        Vector2 half = new(world.Field.Length / 2, world.Field.Width / 2);
+        var outside = new FigureExtent();
+        foreach (var f in world.Fish)
+        {
+            for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
+            {
+                foreach (var p in f.Model.GetLeaf(part))
+                {
+                    if (MathF.Abs(p.X) > half.X || MathF.Abs(p.Y) > half.Y)
+                    {
+                        outside.Add(f.Position - new Vector2(OffPoolMargin));
+                        outside.Add(f.Position + new Vector2(OffPoolMargin));
+                        outside.Add(p);
+                    }
+                }
+            }
+        }
+
+        foreach (var b in world.Balls)
+        {
+            if (MathF.Abs(b.Position.X) + b.Radius > half.X || MathF.Abs(b.Position.Y) + b.Radius > half.Y)
+            {
+                outside.Add(new URWPGSim2D.Collision.Shapes.Circle(b.Position, b.Radius + 20f));
+            }
+        }
+
+        return outside.IsEmpty ? (-half, half) : (Vector2.Min(-half, outside.Min), Vector2.Max(half, outside.Max));
     }
 
     // The key: each team's colour, name and goals, then the ball and obstacle colours.

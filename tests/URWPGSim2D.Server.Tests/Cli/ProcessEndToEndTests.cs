@@ -54,7 +54,12 @@ public sealed class ProcessEndToEndTests
         var stdoutTask = process.StandardOutput.ReadToEndAsync();
         process.StandardInput.Write(stdin);
         process.StandardInput.Close();
-        Assert.True(process.WaitForExit(60_000), "the server did not exit within 60 s");
+        if (!process.WaitForExit(60_000))
+        {
+            process.Kill(entireProcessTree: true);
+            Assert.Fail("the server did not exit within 60 s");
+        }
+
         return (process.ExitCode, stdoutTask.Result, stderrTask.Result);
     }
 }

@@ -55,6 +55,48 @@ public sealed class SvgFrameTests : IDisposable
         }
     }
 
+    [Theory]
+    [InlineData("survival")]
+    [InlineData("rescue")]
+    public void FishParkedOffThePoolAreInThePicture(string item)
+    {
+        // The item parks fish at z = 1591, outside the 4500 × 3000 pool: the view box grows to hold
+        // every polygon of every fish (and their ids above them), still with the caption on top.
+        string svg = Path.Combine(_folder, item + ".svg");
+        Assert.Equal(0, CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "0", "--svg", svg).ExitCode);
+        var picture = System.Xml.Linq.XDocument.Load(svg).Root!;
+        double[] box = [.. picture.Attribute("viewBox")!.Value.Split(' ').Select(v => double.Parse(v, CultureInfo.InvariantCulture))];
+        var polygons = picture.Elements().Where(e => e.Name.LocalName == "polygon").ToList();
+        Assert.NotEmpty(polygons);
+        double lowest = double.NegativeInfinity;
+        foreach (var polygon in polygons)
+        {
+            foreach (var point in polygon.Attribute("points")!.Value.Split(' ', StringSplitOptions.RemoveEmptyEntries))
+            {
+                double[] xy = [.. point.Split(',').Select(v => double.Parse(v, CultureInfo.InvariantCulture))];
+                Assert.InRange(xy[0], box[0], box[0] + box[2]);
+                Assert.InRange(xy[1], box[1], box[1] + box[3]);
+                lowest = Math.Max(lowest, xy[1]);
+            }
+        }
+
+        Assert.True(lowest > 1500, "a fish is parked below the pool");
+        Assert.All(picture.Elements().Where(e => e.Name.LocalName == "text" && e.Value.StartsWith("fish", StringComparison.Ordinal)), t =>
+        {
+            Assert.InRange(double.Parse(t.Attribute("x")!.Value, CultureInfo.InvariantCulture), box[0], box[0] + box[2]);
+            Assert.InRange(double.Parse(t.Attribute("y")!.Value, CultureInfo.InvariantCulture), box[1], box[1] + box[3]);
+        });
+    }
+
+    [Fact]
+    public void WithEveryBodyInThePoolThePictureIsThePoolAndItsCaption()
+    {
+        // Ball-grab's 3000 × 2000 pool: 20 mm each side, 170 above for the caption and legend, 20 below.
+        string svg = Path.Combine(_folder, "ball-grab.svg");
+        Assert.Equal(0, CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "0", "--svg", svg).ExitCode);
+        Assert.Contains("viewBox=\"-1520 -1170 3040 2190\"", File.ReadAllText(svg), StringComparison.Ordinal);
+    }
+
     private static string Num(float v)
     {
         string s = v.ToString("0.##", CultureInfo.InvariantCulture);

@@ -12,6 +12,7 @@ namespace URWPGSim2D.Server.Tests.Items;
 public sealed class RescueTests
 {
     private static readonly RescueItem Item = new();
+    private static readonly ulong[] Seeds = [1, 2, 3, 4, 5, 6, 7, 8];
 
     [Fact]
     public void TheDefendersSecondFishIsParkedOutOfPlay()
@@ -139,39 +140,100 @@ public sealed class RescueTests
         Assert.Equal(touch.Cycle, ((RescueReferee)match.Referee!).Time(0, 0));
     }
 
-    [Theory]
-    [InlineData(1UL)]
-    [InlineData(2UL)]
-    [InlineData(3UL)]
-    public void TheDemoBringsABallThroughTheLeftGapInItsHalfAgainstAnIdleDefender(ulong seed)
+    [Fact]
+    public void TheDemoRoutesStartAtTheBallsKeepClearOfTheWallsAndEndInTheZone()
     {
-        // The demo does not yet rescue within a 5-minute half (docs/items.md); it gets a ball from
-        // its start in the left corner through the first gap of the slalom (x > −500).
-        var match = ItemTestMatches.Build(Item, 6000, "demo", seed, noise: true, edit: s => s with
+        var walls = RescueLayout.Walls.Select((c, i) => new ObstacleView(i, ObstacleKind.Rectangle, c, RescueLayout.WallLength, RescueLayout.WallWidth, 0f, 0f)).ToArray();
+        for (int ball = 0; ball < 2; ball++)
         {
-            Fish = s.Fish.Select(f => f.Team == 1 ? f with { Strategy = "idle" } : f).ToList(),
-        });
-        float best = float.NegativeInfinity;
-        for (int k = 0; k < 2990; k++)
-        {
-            match.Step();
-            best = System.MathF.Max(best, System.MathF.Max(match.World.Balls[0].Position.X, match.World.Balls[1].Position.X));
-        }
+            var route = RescueRoutes.Route(ball).ToArray();
+            Assert.Equal(RescueLayout.Balls[ball], route[0]);
+            Assert.True(RescueLayout.InZone(route[^1]));
 
-        Assert.True(best > -500f, $"seed {seed}: the balls got no farther than x = {best}");
-        Assert.NotNull(((RescueReferee)match.Referee!).Time(0, 0));
+            // Every point along it, 5 mm apart: the ball's surface keeps 65 mm from walls and pool sides.
+            for (int i = 0; i + 1 < route.Length; i++)
+            {
+                int steps = (int)(Vector2.Distance(route[i], route[i + 1]) / 5f) + 1;
+                for (int k = 0; k <= steps; k++)
+                {
+                    Vector2 p = Vector2.Lerp(route[i], route[i + 1], k / (float)steps);
+                    float clear = walls.Min(w => URWPGSim2D.Server.Items.Demo.Surroundings.Distance(w, p));
+                    clear = System.MathF.Min(clear, System.MathF.Min((RescueLayout.FieldLength / 2f) - System.MathF.Abs(p.X), (RescueLayout.FieldWidth / 2f) - System.MathF.Abs(p.Y)));
+                    Assert.True(clear - RescueLayout.BallRadius >= 65f, $"ball {ball} at {p}: {clear - RescueLayout.BallRadius:F1} mm from a wall");
+                }
+            }
+        }
+    }
+
+    [Fact]
+    public void TheDemoRescuesInItsHalfAgainstAnIdleDefenderForMostSeeds()
+    {
+        // Team 0 rescues in the first half (3000 of 6000 cycles); team 1 stands still. The demo is
+        // meant to rescue at least one ball in a clear majority of seeds (it does in all of 1–24 as
+        // measured, docs/items.md); small changes of contact timing must not break that.
+        var results = Seeds.Select(seed =>
+        {
+            var match = ItemTestMatches.Build(Item, 6000, "demo", seed, noise: true, edit: Idle(team: 1));
+            match.Play(3000);
+            return (seed, rescued: match.Referee!.Scores[0]);
+        }).ToList();
+
+        Assert.True(results.Count(r => r.rescued >= 1) >= 6, Describe(results));
+        Assert.True(results.Sum(r => r.rescued) >= 10, Describe(results));
+    }
+
+    [Fact]
+    public void TheSecondHalfsRescuerRescuesAgainstAnIdleDefenderForMostSeeds()
+    {
+        // Team 1 rescues in the second half, from the other team's places; team 0 stands still.
+        var results = Seeds.Select(seed =>
+        {
+            var match = ItemTestMatches.Build(Item, 6000, "demo", seed, noise: true, edit: Idle(team: 0));
+            match.PlayAll();
+            return (seed, rescued: match.Referee!.Scores[1]);
+        }).ToList();
+
+        Assert.True(results.Count(r => r.rescued >= 1) >= 6, Describe(results));
+    }
+
+    [Fact]
+    public void DemoAgainstDemoEachTeamRescuesInItsHalfForMostSeeds()
+    {
+        // The 10-minute match of `run --item rescue`: the defender guards the zone.
+        var results = Seeds.Select(seed =>
+        {
+            var match = ItemTestMatches.Build(Item, 6000, "demo", seed, noise: true);
+            match.PlayAll();
+            var r = (RescueReferee)match.Referee!;
+            Assert.All(match.EventsOf("rescue"), e => Assert.Equal(e.Cycle <= 3000 ? 0 : 1, e.Team));
+            return (seed, first: r.Scores[0], second: r.Scores[1]);
+        }).ToList();
+
+        string text = string.Join(", ", results.Select(r => $"seed {r.seed}: {r.first}-{r.second}"));
+        Assert.True(results.Count(r => r.first >= 1) >= 6, text);
+        Assert.True(results.Count(r => r.second >= 1) >= 6, text);
     }
 
     [Fact]
     public void TheSameSeedPlaysTheSameMatch()
     {
-        int[] Play(ulong seed)
+        string Play(ulong seed)
         {
-            var m = ItemTestMatches.Build(Item, 1200, "demo", seed, noise: true);
-            m.PlayAll();
-            return [.. m.Referee!.Scores, m.World.Cycle, m.Referee.Events.Count, (int)m.World.Balls[0].Position.X, (int)m.World.Fish[0].Position.Y];
+            var m = ItemTestMatches.Build(Item, 6000, "demo", seed, noise: true);
+            m.Play(3000);
+            var w = m.World;
+            return string.Join(";", m.Referee!.Events.Select(e => $"{e.Cycle}:{e.Kind}:{e.Ball}"))
+                + string.Join(";", w.Balls.Select(b => b.Position.ToString())) + string.Join(";", w.Fish.Select(f => f.Position.ToString()));
         }
 
-        Assert.Equal(Play(7), Play(7));
+        string first = Play(7);
+        Assert.Equal(first, Play(7));
+        Assert.NotEqual(first, Play(8));
     }
+
+    private static System.Func<URWPGSim2D.Server.Scenario.ScenarioDefinition, URWPGSim2D.Server.Scenario.ScenarioDefinition> Idle(int team) =>
+        s => s with { Fish = s.Fish.Select(f => f.Team == team ? f with { Strategy = "idle" } : f).ToList() };
+
+    private static string Describe(System.Collections.Generic.IEnumerable<(ulong Seed, int Rescued)> results) =>
+        string.Join(", ", results.Select(r => $"seed {r.Seed}: {r.Rescued}"));
 }

@@ -115,16 +115,26 @@ public sealed class TransportTests
         Assert.Equal(new[] { 0 }, match.Referee.Scores);
     }
 
-    [Theory]
-    [InlineData(1UL)]
-    [InlineData(2UL)]
-    [InlineData(3UL)]
-    public void TheDemoGetsABallInWithinTenMinutes(ulong seed)
+    [Fact]
+    public void TheDemoGetsBallsInWithinTenMinutesForEverySeed()
     {
-        var match = ItemMatches.Item("transport", seed);
-        match.PlayAll();
-        Assert.True(match.Referee!.Scores[0] >= 1, $"seed {seed}: no ball in its hole in {match.World.Cycle} cycles");
-        Assert.Equal(match.EventsOf("ball-in-hole").Max(e => e.Cycle), ((TransportReferee)match.Referee).LastGoalCycle);
+        // Seeds 1–8 (measured: 3, 5, 5, 4, 5, 5, 5, 4 balls; 2 to 5 over seeds 1–16, docs/items.md):
+        // every seed gets a ball in, and most get two or more.
+        var scores = new System.Collections.Generic.List<int>();
+        for (ulong seed = 1; seed <= 8; seed++)
+        {
+            var match = ItemMatches.Item("transport", seed);
+            match.PlayAll();
+            scores.Add(match.Referee!.Scores[0]);
+            if (scores[^1] > 0)
+            {
+                Assert.Equal(match.EventsOf("ball-in-hole").Max(e => e.Cycle), ((TransportReferee)match.Referee).LastGoalCycle);
+            }
+        }
+
+        string text = string.Join(", ", scores);
+        Assert.True(scores.All(s => s >= 1), $"balls in per seed: {text}");
+        Assert.True(scores.Count(s => s >= 2) >= 6, $"balls in per seed: {text}");
     }
 
     [Fact]

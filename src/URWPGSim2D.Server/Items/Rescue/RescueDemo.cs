@@ -5,20 +5,28 @@ using URWPGSim2D.Server.Items.Demo;
 namespace URWPGSim2D.Server.Items.Rescue;
 
 /// <summary>
-/// The demo strategy of 急速救援. Rescuing, fish k takes ball k (ball 0 starts near the bottom
-/// wall, ball 1 near the top) and pushes it along a route through the slalom: into the left gap at
-/// z = 0, round the centre wall on the ball's own side (z = ±1000), through the right gap and into
-/// the zone; a fish far from its ball swims the route backwards first. A fish whose ball is rescued
-/// takes the other one. Defending, the active fish pushes the nearest ball back toward the left
-/// wall at a gentle speed (the parked fish cannot move).
+/// The demo strategy of 急速救援. Rescuing, fish k takes ball k and pushes it with
+/// <see cref="Pusher"/> along its route (<see cref="RescueRoutes"/>): ball 0 (bottom left) goes up
+/// through the left gap, over the centre wall and down through the right gap; ball 1 the mirror way,
+/// under the centre wall, after ball 0 has cleared the left gap (until then fish 1 pushes its ball
+/// only to x = −1000). A fish far from its ball swims there through the gaps (<see cref="Waypath"/>).
+/// A fish whose ball is rescued swims out of the other ball's way. Defending, the active fish guards the zone: it waits at (1300, 0) and
+/// pushes any unrescued ball that comes right of the right gap (x &gt; 600) back toward the left at
+/// a gentle speed (the parked fish cannot move). Positions are filtered (<see cref="FishTrack"/>,
+/// <see cref="BallTrack"/>).
 /// </summary>
 internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 {
-    private const float Reach = 220f;
-    private readonly int[] _stage = [0, 0];
-    private Stuck[] _stuck = [];
-    private Dribble[] _dribble = [];
-    private int _half = 1;
+    private const int PushVCode = 6;
+    private const int ClearVCode = 3;
+    private const float Ahead = 350f;
+
+    private readonly RouteProgress[] _progress = new RouteProgress[2];
+    private FishTrack[] _fish = [];
+    private BallTrack[] _balls = [];
+    private Pusher[] _pushers = [];
+    private Waypath? _ways;
+    private int _half;
 
     /// <inheritdoc/>
     public string TeamName => "rescue demo";
@@ -26,103 +34,91 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
-        if (_stuck.Length != fish.Length)
+        if (_fish.Length != fish.Length || referee.Half != _half)
         {
-            _stuck = new Stuck[fish.Length];
-            _dribble = new Dribble[fish.Length];
-        }
-
-        if (referee.Half != _half)
-        {
+            // A new half: the referee has placed every body afresh.
             _half = referee.Half;
-            Array.Clear(_stage);
+            _fish = new FishTrack[fish.Length];
+            _pushers = new Pusher[fish.Length];
+            _balls = new BallTrack[snapshot.Balls.Length];
+            Array.Clear(_progress);
         }
 
+        for (int i = 0; i < _balls.Length; i++)
+        {
+            _balls[i].Update(snapshot.Balls[i]);
+        }
+
+        for (int k = 0; k < fish.Length; k++)
+        {
+            _fish[k].Update(snapshot.Fish[fish[k]]);
+        }
+
+        _ways ??= Surroundings.WaysOf(snapshot);
+        var around = new Surroundings(snapshot, _ways);
         bool rescuing = referee.Rescuer == team;
         for (int k = 0; k < fish.Length; k++)
         {
             FishView me = snapshot.Fish[fish[k]];
-            if (_stuck[k].Escaping(me, out Decision escape))
-            {
-                decisions[k] = escape;
-                continue;
-            }
-
-            decisions[k] = rescuing ? Rescue(snapshot, me, k) : Defend(snapshot, me);
+            decisions[k] = rescuing ? Rescue(snapshot, me, k, around) : Defend(snapshot, me, k, around);
         }
     }
 
-    // The route of ball b (side s = +1 for the bottom ball 0, −1 for the top ball 1), ending in the zone.
-    private static Vector2 Waypoint(int ball, int stage)
+    private Decision Rescue(MatchSnapshot snapshot, in FishView me, int k, in Surroundings around)
     {
-        float s = ball == 0 ? 1f : -1f;
-        return stage switch
+        int ball = BallOf(k);
+        if (ball < 0)
         {
-            0 => new Vector2(-850f, s * 150f),
-            1 => new Vector2(-300f, 0f),
-            2 => new Vector2(0f, s * 1000f),
-            3 => new Vector2(300f, 0f),
-            4 => new Vector2(900f, 0f),
-            _ => new Vector2(2050f, 0f),
-        };
+            return Rest(me, k, around);
+        }
+
+        float radius = snapshot.Balls[ball].Radius;
+        ref BallTrack b = ref _balls[ball];
+        ReadOnlySpan<Vector2> route = RescueRoutes.Route(ball);
+        if (ball == 1 && !referee.HasRescued(team, 0) && _balls[0].Position.X < RescueRoutes.ClearX && b.Position.X > RescueRoutes.WaitX)
+        {
+            // Ball 1 waits on its route until ball 0 is through the left gap.
+            return Decision.Stop;
+        }
+
+        Vector2 direction = _progress[ball].Direction(route, b.Position, Ahead);
+        return _pushers[k].Push(me, _fish[k], ref b, radius, direction, around, PushVCode);
     }
 
-    private Decision Rescue(MatchSnapshot snapshot, in FishView me, int k)
+    // Fish k's ball (its own), or −1 once that is rescued (the other fish is on the other ball).
+    private int BallOf(int k)
     {
-        int ball = k < 2 && !referee.HasRescued(team, k) ? k : !referee.HasRescued(team, 1 - Math.Min(k, 1)) ? 1 - Math.Min(k, 1) : -1;
-        if (ball < 0)
+        int own = Math.Min(k, 1);
+        return referee.HasRescued(team, own) ? -1 : own;
+    }
+
+    // Out of the way of the other ball's last legs: the corner on this fish's own side, then stop.
+    private Decision Rest(in FishView me, int k, in Surroundings around)
+    {
+        Vector2 spot = RescueRoutes.Rest(k);
+        if (Vector2.Distance(_fish[k].Position, spot) < 200f)
         {
             return Decision.Stop;
         }
 
-        BallView b = snapshot.Balls[ball];
-        while (_stage[ball] < 5)
-        {
-            Vector2 wp = Waypoint(ball, _stage[ball]);
-            if (Vector2.Distance(b.Position, wp) >= Reach && b.Position.X <= wp.X + 30f)
-            {
-                break;
-            }
-
-            _stage[ball]++;
-        }
-
-        int fishRegion = Region(me.Position.X), ballRegion = Region(b.Position.X);
-        if (fishRegion > ballRegion && Vector2.Distance(me.Position, b.Position) > 500f)
-        {
-            return Steering.SwimTo(me, Back(me.Position, ball == 0 ? 1f : -1f));
-        }
-
-        return _dribble[k].Toward(me, b.Position, b.Radius, Waypoint(ball, _stage[ball]), 7, field: new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
+        return _pushers[k].Travel(me, _fish[k], spot, around);
     }
 
-    // The next point of the route backwards (toward the balls' start) from a position right of its ball.
-    private static Vector2 Back(Vector2 p, float s)
-    {
-        return Region(p.X) switch
-        {
-            3 => p.X > 850f || MathF.Abs(p.Y) > 300f ? new Vector2(800f, 0f) : new Vector2(300f, 0f),
-            2 => s * p.Y < 800f ? new Vector2(250f, s * 1000f) : new Vector2(-150f, s * 1000f),
-            1 => p.X > -350f ? new Vector2(-400f, 0f) : new Vector2(-850f, 0f),
-            _ => new Vector2(-1200f, 0f),
-        };
-    }
-
-    // 0: left of the left gap, 1: between it and the centre wall, 2: between the centre wall and the right gap, 3: right of it.
-    private static int Region(float x) => x < -550f ? 0 : x < 0f ? 1 : x < 550f ? 2 : 3;
-
-    private Decision Defend(MatchSnapshot snapshot, in FishView me)
+    // Defending: the active fish guards the zone from (1300, 0) and pushes any unrescued ball that
+    // comes right of the right gap back toward it, gently.
+    private Decision Defend(MatchSnapshot snapshot, in FishView me, int k, in Surroundings around)
     {
         int nearest = -1;
         float best = float.PositiveInfinity;
-        for (int i = 0; i < snapshot.Balls.Length; i++)
+        for (int i = 0; i < snapshot.Balls.Length && i < 2; i++)
         {
-            if (referee.HasRescued(referee.Rescuer, i))
+            Vector2 p = _balls[i].Position;
+            if (referee.HasRescued(referee.Rescuer, i) || p.X <= RescueRoutes.GuardX)
             {
                 continue;
             }
 
-            float d = Vector2.Distance(me.Position, snapshot.Balls[i].Position);
+            float d = Vector2.Distance(_fish[k].Position, p);
             if (d < best)
             {
                 best = d;
@@ -132,10 +128,9 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 
         if (nearest < 0)
         {
-            return Decision.Stop;
+            return Vector2.Distance(_fish[k].Position, RescueRoutes.Guard) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], RescueRoutes.Guard, around, 6);
         }
 
-        BallView b = snapshot.Balls[nearest];
-        return _dribble[0].Toward(me, b.Position, b.Radius, new Vector2(-2150f, b.Position.Y), pushVCode: 4, field: new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
+        return _pushers[k].Push(me, _fish[k], ref _balls[nearest], snapshot.Balls[nearest].Radius, -Vector2.UnitX, around, ClearVCode);
     }
 }

@@ -13,9 +13,11 @@ namespace URWPGSim2D.Server.Items.Transport;
 /// ball is not free yet waits near its start. A fish not behind its ball goes to a stand point
 /// behind it on the push line (at most x = 1200, so its tail stays off the wall), through a lane at
 /// |z| = 650 when balls are in the way and slowly near balls, and turns on the spot toward the ball;
-/// behind it, it pushes with <see cref="Dribble"/> (gear 4, gear 2 in the last 150 mm) toward the
-/// route's waypoint, then through the hole's centre. The balls' noisy observed positions are
-/// smoothed. A ball not in after 150 s is given up and the balls waiting for it are freed.
+/// behind it, it pushes with <see cref="Pusher"/>, the lag-aware push that keeps the ball on the
+/// head (gear 4, gear 2 in the last 150 mm), toward the route's waypoint, then through the hole's
+/// centre. The balls' noisy observed positions are smoothed for the plan and filtered
+/// (<see cref="BallTrack"/>, <see cref="FishTrack"/>) for the push. A ball not in after 150 s is
+/// given up and the balls waiting for it are freed.
 /// </summary>
 internal sealed class TransportDemo(TransportReferee referee) : IStrategy
 {
@@ -39,9 +41,12 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
     private readonly bool[] _abandoned = new bool[TransportLayout.Count];
     private Job[] _jobs = [];
     private Stuck[] _stuck = [];
-    private Dribble[] _dribble = [];
     private bool[] _pushing = [];
     private Vector2[] _seen = [];
+    private FishTrack[] _tracks = [];
+    private BallTrack[] _ballTracks = [];
+    private Pusher[] _pushers = [];
+    private Waypath? _ways;
 
     /// <inheritdoc/>
     public string TeamName => "transport demo";
@@ -54,9 +59,27 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
             _jobs = new Job[fish.Length];
             Array.Fill(_jobs, new Job(-1, 0, 0));
             _stuck = new Stuck[fish.Length];
-            _dribble = new Dribble[fish.Length];
             _pushing = new bool[fish.Length];
+            _tracks = new FishTrack[fish.Length];
+            _pushers = new Pusher[fish.Length];
         }
+
+        if (_ballTracks.Length != snapshot.Balls.Length)
+        {
+            _ballTracks = new BallTrack[snapshot.Balls.Length];
+        }
+
+        for (int i = 0; i < _ballTracks.Length; i++)
+        {
+            _ballTracks[i].Update(snapshot.Balls[i]);
+        }
+
+        for (int k = 0; k < fish.Length; k++)
+        {
+            _tracks[k].Update(snapshot.Fish[fish[k]]);
+        }
+
+        _ways ??= Surroundings.WaysOf(snapshot);
 
         // The balls' observed positions are noisy (±30 mm): follow them smoothly, jumping only when a ball was knocked far.
         if (_seen.Length != snapshot.Balls.Length)
@@ -83,7 +106,7 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
                 _abandoned[job.Ball] |= !referee.InHole(job.Ball);
                 job = new Job(-1, 0, 0);
                 _pushing[k] = false;
-                _dribble[k] = default;
+                _pushers[k] = default;
             }
 
             if (job.Ball < 0)
@@ -167,8 +190,12 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
             : headAlong < -ball.Radius * 0.2f && headAlong > -(ball.Radius + 600f) && headAside < MathF.Max(ball.Radius, -headAlong * 0.6f) && error < 1.3f;
         if (_pushing[k])
         {
-            // The same tolerances as Dribble's, so it pushes from the first cycle on.
-            return _dribble[k].Toward(me, b, ball.Radius, target, Vector2.Distance(b, hole) < Fine ? FineVCode : PushVCode, new Vector2(snapshot.FieldLength, snapshot.FieldWidth));
+            // Behind the ball (the same tolerances as Dribble's): the lag-aware push, which keeps the
+            // ball on the head and curves it onto the line through the hole.
+            Vector2 tracked = _ballTracks[job.Ball].Position;
+            Vector2 toward = target - tracked;
+            Vector2 way = toward.LengthSquared() > 1f ? Vector2.Normalize(toward) : dir;
+            return _pushers[k].Push(me, _tracks[k], ref _ballTracks[job.Ball], ball.Radius, way, new Surroundings(snapshot, _ways!), Vector2.Distance(b, hole) < Fine ? FineVCode : PushVCode);
         }
 
         // Not behind the ball: to the stand point behind it (x ≤ 1200 keeps the tail off the wall),

@@ -393,7 +393,9 @@
     $('clock').textContent = formatClock(n);
     $('cycle').textContent = 'cycle ' + n + ' / ' + cycleNumber(s, Math.max(0, s.count - 1));
     const row = k * s.nt;
-    $('score').textContent = formatNumber(s.scores[row]) + ' : ' + formatNumber(s.scores[row + 1]);
+    // A one-team item (its other team has no fish) shows that team's score alone.
+    $('score').textContent = s.teamsPlaying[0] && s.teamsPlaying[1] ? formatNumber(s.scores[row]) + ' : ' + formatNumber(s.scores[row + 1])
+      : formatNumber(s.scores[row + (s.teamsPlaying[0] ? 0 : 1)]);
     const scrub = $('scrub');
     scrub.max = String(Math.max(0, s.count - 1));
     if (document.activeElement !== scrub || String(k) !== scrub.value) scrub.value = String(k);
@@ -433,10 +435,14 @@
   }
 
   function setTeams(s) {
+    // The teams that play: those with fish (both when the match has none). The trace always lists
+    // two teams and two scores; a one-team item's other team has no fish and is not shown.
+    s.teamsPlaying = [0, 1].map(t => s.layout.fish.length === 0 || s.layout.fish.some(f => f.team === t));
     for (let t = 0; t < 2; t++) {
       const team = s.layout.teams[t] || { name: 'team ' + t }, el = $('team' + t);
       el.querySelector('.swatch').style.background = api.teamColour(t);
       el.querySelector('.name').textContent = 'team ' + t + ' (' + team.name + ')';
+      el.style.display = s.teamsPlaying[t] ? '' : 'none';
     }
     $('item').textContent = s.item === 'default' ? '' : s.item;
     const follow = $('follow');

@@ -1,0 +1,224 @@
+using System;
+using System.Numerics;
+using URWPGSim2D.Server.Simulation.Kinematics;
+
+namespace URWPGSim2D.Server.Items.Demo;
+
+/// <summary>
+/// Brings a fish to a pose (a point and a heading) the way a slow-turning body must: every cycle it
+/// plans the shortest turn-limited paths (<see cref="DubinsPath"/>) from the fish's estimated pose at
+/// several speeds — each speed turns at its own radius, speed ÷ 0.28 rad/s, so a slow fish turns
+/// tightly — drops the paths that pass too close to a wall, an obstacle or the disc to avoid (the ball
+/// to be pushed), and follows the quickest one left by pursuit of a point a little ahead on it. The
+/// turn code anticipates the turn rate's lag (it approaches its gear's value by a tenth per cycle).
+/// One value per fish, kept across cycles (it remembers its last choice, to hold it unless another is
+/// clearly quicker).
+/// </summary>
+internal struct Approach
+{
+    /// <summary>Turn rate the plans assume, rad/s (below the table's 0.349 so the fish can catch up).</summary>
+    public const float PlanTurnRate = 0.28f;
+
+    /// <summary>Clearance kept between the fish's centre and a wall or obstacle, mm.</summary>
+    public const float WallMargin = 100f;
+
+    private const float Sample = 40f;
+
+    // The gear on long straight pieces.
+    private const int StraightGear = 9;
+
+    // The cheapest paths checked for clearance before the least bad one is taken.
+    private const int MaxChecked = 48;
+
+    // Distance from the body centre to the tail's end (without the caudal fin's tips), mm.
+    private const float TailReach = 250f;
+    private static readonly int[] Gears = [1, 2, 3, 4, 6, 9];
+
+    // The last choice: lead, gear and word of the path.
+    private int _key;
+
+    // The direction of the last choice's first piece (a new path that starts turning the same way is preferred).
+    private int _turn;
+
+    /// <summary>
+    /// The decision that takes the fish onto the line through <paramref name="goal"/> along
+    /// <paramref name="goalHeading"/>, arriving at a point of it up to <paramref name="nearer"/> mm
+    /// farther along or <paramref name="farther"/> mm farther back when that is quicker or the only
+    /// way clear (counting the rest of the way at <paramref name="arriveVCode"/>). When no path keeps
+    /// its margins (by more than 50 mm), the fish heads straight for the goal at a low gear.
+    /// </summary>
+    /// <param name="view">The fish as seen (for its exact speed and turn rate).</param>
+    /// <param name="me">Its estimated pose.</param>
+    /// <param name="goal">Where its centre should arrive.</param>
+    /// <param name="goalHeading">The heading it should arrive with.</param>
+    /// <param name="around">Walls and obstacles.</param>
+    /// <param name="avoid">Centre of a disc to keep clear of (the ball to be pushed).</param>
+    /// <param name="avoidRadius">Its radius, mm (0: nothing to avoid).</param>
+    /// <param name="arriveVCode">Fastest gear in the last 250 mm.</param>
+    /// <param name="nearer">How far along the line the arrival point may move, mm.</param>
+    /// <param name="farther">How far back the arrival point may move, mm (tried: half of it and all).</param>
+    public Decision Toward(in FishView view, in FishTrack me, Vector2 goal, float goalHeading, in Surroundings around, Vector2 avoid, float avoidRadius, int arriveVCode, float nearer = 0f, float farther = 0f)
+    {
+        const int leads = 4;
+        Span<float> offsets = [-nearer, 0f, farther * 0.5f, farther];
+        Span<DubinsPath> paths = stackalloc DubinsPath[8];
+        Span<DubinsPath> all = stackalloc DubinsPath[8 * leads * 6];
+        Span<float> costs = stackalloc float[8 * leads * 6];
+        Span<int> keys = stackalloc int[8 * leads * 6];
+        float reach = (view.BodyLength * 0.5f) + view.HeadLength;
+        float arriveSpeed = MathF.Max(SpeedTable.TargetSpeed(arriveVCode), 10f);
+        Vector2 back = -new Vector2(MathF.Cos(goalHeading), MathF.Sin(goalHeading));
+        int count = 0;
+        for (int l = 0; l < leads; l++)
+        {
+            if ((l == 0 && nearer <= 0f) || (l >= 2 && farther <= 0f))
+            {
+                continue;
+            }
+
+            float extra = offsets[l];
+            Vector2 point = goal + (back * extra);
+            for (int g = 0; g < Gears.Length; g++)
+            {
+                // A gear slower than the fish is now still turns at the radius of its present speed at first.
+                float speed = SpeedTable.TargetSpeed(Gears[g]);
+                float radius = MathF.Max(speed, view.Speed * 0.8f) / PlanTurnRate;
+                int n = DubinsPath.Plan(me.Position, me.Heading, point, goalHeading, radius, paths);
+                for (int i = 0; i < n; i++)
+                {
+                    int key = (((l * Gears.Length) + g) * 32) + Word(paths[i]);
+                    float cost = Duration(paths[i], speed) + (extra / arriveSpeed);
+                    all[count] = paths[i];
+                    costs[count] = key == _key ? cost * 0.85f : paths[i].Turn1 != 0 && paths[i].Turn1 == _turn ? cost * 0.9f : cost;
+                    keys[count] = key;
+                    count++;
+                }
+            }
+        }
+
+        // Cheapest first; the first one clear of walls, obstacles and the disc is taken.
+        int chosen = -1, fallback = -1;
+        float fallbackClear = float.NegativeInfinity;
+        for (int k = 0; k < Math.Min(count, MaxChecked) && chosen < 0; k++)
+        {
+            int cheapest = k;
+            for (int j = k + 1; j < count; j++)
+            {
+                if (costs[j] < costs[cheapest])
+                {
+                    cheapest = j;
+                }
+            }
+
+            (all[k], all[cheapest]) = (all[cheapest], all[k]);
+            (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
+            (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
+            float clear = Clear(all[k], around, avoid, avoidRadius, reach, fallbackClear);
+            if (clear >= 0f)
+            {
+                chosen = k;
+            }
+            else if (clear > fallbackClear)
+            {
+                fallback = k;
+                fallbackClear = clear;
+            }
+        }
+
+        if (chosen < 0 && fallbackClear > -50f)
+        {
+            // Nothing keeps the full margins: the least bad, if it is nearly clear.
+            chosen = fallback;
+        }
+
+        if (chosen < 0)
+        {
+            _key = -1;
+            Vector2 to = goal - me.Position;
+            float eta = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+            return new Decision(MathF.Abs(eta) > 1f ? 1 : 2, TurnCode.For(Math.Clamp(eta, -0.35f, 0.35f), view.AngularSpeed));
+        }
+
+        _key = keys[chosen];
+        _turn = all[chosen].Turn1;
+        int gear = Gears[(keys[chosen] / 32) % Gears.Length];
+        var path = all[chosen];
+        int vcode = gear;
+        bool straight = path.Turn1 == 0 ? path.Length1 > Braking(view.Speed) : path.Length1 < 20f && path.Turn2 == 0 && path.Length2 > Braking(view.Speed);
+        if (straight)
+        {
+            // On a straight piece with room to slow down for the next turn: faster.
+            vcode = Math.Max(gear, StraightGear);
+        }
+
+        vcode = path.Length < 250f ? Math.Min(vcode, arriveVCode) : vcode;
+        return Follow(view, me, path, SpeedTable.TargetSpeed(gear), vcode);
+    }
+
+    /// <summary>
+    /// The decision following <paramref name="path"/> (which starts at the fish) at gear
+    /// <paramref name="vcode"/>: the turn rate is the path's heading change over the next 0.7 s of
+    /// travel divided by 0.7 s (the rate lags, so it looks a little ahead), sent through <see cref="TurnCode"/>.
+    /// </summary>
+    public static Decision Follow(in FishView view, in FishTrack me, in DubinsPath path, float planSpeed, int vcode)
+    {
+        const float ahead = 0.7f;
+        float speed = MathF.Max(view.Speed, planSpeed);
+        float s = speed * ahead;
+        float turned = path.At(s).Heading - path.Heading;
+        if (s > path.Length)
+        {
+            turned = path.At(path.Length).Heading - path.Heading;
+        }
+
+        float rate = Steering.Wrap(turned) / ahead;
+        return new Decision(vcode, TurnCode.For(rate, view.AngularSpeed));
+    }
+
+    // The path's smallest margin: clearance to walls and obstacles beyond WallMargin (head tip: 25 mm)
+    // and to the avoided disc (centre: 100 mm, tip: 20 mm, the tail's middle and end: 60 mm — the
+    // tail swings while the fish turns), over samples past its first 80 mm; it stops early once
+    // below giveUp (the path cannot be chosen then).
+    private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp)
+    {
+        float worst = float.PositiveInfinity;
+        float length = path.Length;
+        for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
+        {
+            var (p, h) = path.At(s);
+            Vector2 tip = p + (new Vector2(MathF.Cos(h), MathF.Sin(h)) * reach);
+            worst = MathF.Min(worst, around.Clearance(p) - WallMargin);
+            worst = MathF.Min(worst, around.Clearance(tip) - 25f);
+            if (avoidRadius > 0f)
+            {
+                Vector2 tail = p - (new Vector2(MathF.Cos(h), MathF.Sin(h)) * TailReach);
+                worst = MathF.Min(worst, Vector2.Distance(p, avoid) - avoidRadius - 100f);
+                worst = MathF.Min(worst, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
+                worst = MathF.Min(worst, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
+                worst = MathF.Min(worst, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+            }
+
+            if (worst < giveUp)
+            {
+                break;
+            }
+        }
+
+        return worst;
+    }
+
+    // The time a path takes: turns at the plan's rate, straight pieces at the straight gear when they
+    // are long enough to get up to it and slow down again (else at the turns' speed).
+    private static float Duration(in DubinsPath p, float turnSpeed)
+    {
+        float straight = (p.Turn1 == 0 ? p.Length1 : 0f) + (p.Turn2 == 0 ? p.Length2 : 0f) + (p.Turn3 == 0 ? p.Length3 : 0f);
+        float fast = SpeedTable.TargetSpeed(StraightGear);
+        float straightTime = straight > 2f * Braking(fast) ? (straight / fast) + 1.5f : straight / turnSpeed;
+        return (p.Turning / PlanTurnRate) + straightTime;
+    }
+
+    // About how far a fish at speed v goes before it has slowed to a turning speed (a tenth less per cycle: ~1.5 s).
+    private static float Braking(float speed) => speed * 1.0f;
+
+    private static int Word(in DubinsPath p) => ((p.Turn1 + 1) * 9) + ((p.Turn2 + 1) * 3) + (p.Turn3 + 1);
+}

@@ -1,0 +1,201 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Server.Items.Demo;
+
+/// <summary>
+/// One of the shortest ways for a body that turns no tighter than a radius to go from one pose to
+/// another (L. E. Dubins, 1957): three pieces, each a turn at the radius (+1 toward +ω, i.e. from
+/// +X toward +Z; −1 the other way) or straight (0), of the given lengths (mm). <see cref="Plan"/>
+/// gives the candidates (turn-straight-turn four ways, turn-turn-turn two ways with the middle circle on
+/// either side).
+/// </summary>
+internal readonly struct DubinsPath
+{
+    /// <summary>A path from its pieces.</summary>
+    public DubinsPath(Vector2 start, float heading, float radius, int turn1, float length1, int turn2, float length2, int turn3, float length3)
+    {
+        Start = start;
+        Heading = heading;
+        Radius = radius;
+        Turn1 = (sbyte)turn1;
+        Turn2 = (sbyte)turn2;
+        Turn3 = (sbyte)turn3;
+        Length1 = length1;
+        Length2 = length2;
+        Length3 = length3;
+    }
+
+    /// <summary>Start position, mm.</summary>
+    public Vector2 Start { get; }
+
+    /// <summary>Start heading, rad.</summary>
+    public float Heading { get; }
+
+    /// <summary>Turning radius, mm.</summary>
+    public float Radius { get; }
+
+    /// <summary>Direction of the first piece (+1, −1 or 0 for straight).</summary>
+    public sbyte Turn1 { get; }
+
+    /// <summary>Direction of the second piece.</summary>
+    public sbyte Turn2 { get; }
+
+    /// <summary>Direction of the third piece.</summary>
+    public sbyte Turn3 { get; }
+
+    /// <summary>Length of the first piece, mm.</summary>
+    public float Length1 { get; }
+
+    /// <summary>Length of the second piece, mm.</summary>
+    public float Length2 { get; }
+
+    /// <summary>Length of the third piece, mm.</summary>
+    public float Length3 { get; }
+
+    /// <summary>Whole length, mm.</summary>
+    public float Length => Length1 + Length2 + Length3;
+
+    /// <summary>Total turning, rad.</summary>
+    public float Turning => ((Turn1 != 0 ? Length1 : 0f) + (Turn2 != 0 ? Length2 : 0f) + (Turn3 != 0 ? Length3 : 0f)) / Radius;
+
+    /// <summary>The pose at distance <paramref name="s"/> along the path (clamped to its ends).</summary>
+    public (Vector2 Position, float Heading) At(float s)
+    {
+        Vector2 p = Start;
+        float h = Heading;
+        s = Math.Clamp(s, 0f, Length);
+        Advance(ref p, ref h, Turn1, MathF.Min(s, Length1));
+        s -= Length1;
+        if (s > 0f)
+        {
+            Advance(ref p, ref h, Turn2, MathF.Min(s, Length2));
+            s -= Length2;
+            if (s > 0f)
+            {
+                Advance(ref p, ref h, Turn3, MathF.Min(s, Length3));
+            }
+        }
+
+        return (p, h);
+    }
+
+    /// <summary>
+    /// Fills <paramref name="paths"/> (room for 8) with the candidate paths from (<paramref name="from"/>,
+    /// <paramref name="fromHeading"/>) to (<paramref name="to"/>, <paramref name="toHeading"/>) at turning
+    /// radius <paramref name="radius"/>; returns how many exist.
+    /// </summary>
+    public static int Plan(Vector2 from, float fromHeading, Vector2 to, float toHeading, float radius, Span<DubinsPath> paths)
+    {
+        int n = 0;
+        for (int a = -1; a <= 1; a += 2)
+        {
+            for (int b = -1; b <= 1; b += 2)
+            {
+                if (TurnStraightTurn(from, fromHeading, to, toHeading, radius, a, b, out var path))
+                {
+                    paths[n++] = path;
+                }
+            }
+
+            for (int side = -1; side <= 1; side += 2)
+            {
+                if (TurnTurnTurn(from, fromHeading, to, toHeading, radius, a, side, out var ccc))
+                {
+                    paths[n++] = ccc;
+                }
+            }
+        }
+
+        return n;
+    }
+
+    // The centre of the turning circle of direction t at a pose.
+    private static Vector2 Centre(Vector2 p, float h, float r, int t) => p + (t * r * new Vector2(-MathF.Sin(h), MathF.Cos(h)));
+
+    // The heading of travel at a point of the circle (centre c) turning in direction t.
+    private static float TangentHeading(Vector2 point, Vector2 c, int t)
+    {
+        Vector2 out_ = point - c;
+        return MathF.Atan2(out_.Y, out_.X) + (t * MathF.PI * 0.5f);
+    }
+
+    // Turning from heading h1 to h2 in direction t, in [0, 2π).
+    private static float Sweep(float h1, float h2, int t)
+    {
+        float d = t * (h2 - h1);
+        d %= 2f * MathF.PI;
+        return d < 0f ? d + (2f * MathF.PI) : d;
+    }
+
+    private static bool TurnStraightTurn(Vector2 p0, float h0, Vector2 p1, float h1, float r, int t1, int t2, out DubinsPath path)
+    {
+        Vector2 c1 = Centre(p0, h0, r, t1), c2 = Centre(p1, h1, r, t2);
+        Vector2 w = c2 - c1;
+        float d = w.Length();
+        float heading, straight;
+        if (t1 == t2)
+        {
+            // Outer tangent: parallel to the line of centres.
+            straight = d;
+            heading = MathF.Atan2(w.Y, w.X);
+        }
+        else
+        {
+            // Inner tangent: crosses between the circles.
+            if (d < 2f * r)
+            {
+                path = default;
+                return false;
+            }
+
+            straight = MathF.Sqrt((d * d) - (4f * r * r));
+            heading = MathF.Atan2(w.Y, w.X) + (t1 * MathF.Atan2(2f * r, straight));
+        }
+
+        path = new DubinsPath(p0, h0, r, t1, Sweep(h0, heading, t1) * r, 0, straight, t2, Sweep(heading, h1, t2) * r);
+        return true;
+    }
+
+    private static bool TurnTurnTurn(Vector2 p0, float h0, Vector2 p1, float h1, float r, int t, int place, out DubinsPath path)
+    {
+        Vector2 c1 = Centre(p0, h0, r, t), c2 = Centre(p1, h1, r, t);
+        Vector2 w = c2 - c1;
+        float d = w.Length();
+        if (d > 4f * r || d < 1e-3f)
+        {
+            path = default;
+            return false;
+        }
+
+        // The middle circle touches both, on either side of the line of centres.
+        float h = MathF.Sqrt((4f * r * r) - (d * d * 0.25f));
+        Vector2 side = new Vector2(-w.Y, w.X) / d;
+        Vector2 c3 = ((c1 + c2) * 0.5f) + (place * h * side);
+        float a1 = TangentHeading((c1 + c3) * 0.5f, c1, t);
+        float a2 = TangentHeading((c3 + c2) * 0.5f, c2, t);
+        path = new DubinsPath(p0, h0, r, t, Sweep(h0, a1, t) * r, -t, Sweep(a1, a2, -t) * r, t, Sweep(a2, h1, t) * r);
+        return true;
+    }
+
+    private void Advance(ref Vector2 p, ref float h, int turn, float length)
+    {
+        if (length <= 0f)
+        {
+            return;
+        }
+
+        if (turn == 0)
+        {
+            p += new Vector2(MathF.Cos(h), MathF.Sin(h)) * length;
+            return;
+        }
+
+        Vector2 c = Centre(p, h, Radius, turn);
+        float swept = turn * length / Radius;
+        float cos = MathF.Cos(swept), sin = MathF.Sin(swept);
+        Vector2 r = p - c;
+        p = c + new Vector2((r.X * cos) - (r.Y * sin), (r.X * sin) + (r.Y * cos));
+        h = Steering.Wrap(h + swept);
+    }
+}

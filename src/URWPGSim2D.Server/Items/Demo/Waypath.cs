@@ -1,0 +1,238 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Server.Items.Demo;
+
+/// <summary>
+/// The shortest way between two points round the obstacles of a field: a polyline through the
+/// corners of the obstacles' bounding boxes grown by <see cref="Margin"/> (a visibility graph,
+/// searched by Dijkstra). Built once per strategy from the snapshot's obstacles (they never move);
+/// which corner sees which is worked out then, so a query only tests the segments from its two ends.
+/// A query allocates nothing.
+/// </summary>
+internal sealed class Waypath
+{
+    /// <summary>Clearance kept between the way and every obstacle's bounding box, mm.</summary>
+    public const float Margin = 150f;
+
+    // Corners sit a little beyond the grown boxes so that the legs between them do not graze.
+    private const float CornerOut = 10f;
+
+    private readonly Vector2[] _centres;
+    private readonly Vector2[] _halves;
+    private readonly Vector2 _room;
+    private readonly Vector2[] _corners;
+    private readonly bool[,] _sees;
+    private readonly float[] _distance;
+    private readonly int[] _previous;
+    private readonly bool[] _done;
+
+    /// <summary>The way-finder of a field (half its size, <paramref name="halfField"/>) and its obstacles.</summary>
+    public Waypath(ReadOnlySpan<ObstacleView> obstacles, Vector2 halfField)
+    {
+        _centres = new Vector2[obstacles.Length];
+        _halves = new Vector2[obstacles.Length];
+        for (int i = 0; i < obstacles.Length; i++)
+        {
+            _centres[i] = obstacles[i].Center;
+            _halves[i] = HalfExtent(obstacles[i]);
+        }
+
+        _room = halfField - new Vector2(Margin);
+        var corners = new System.Collections.Generic.List<Vector2>();
+        for (int i = 0; i < obstacles.Length; i++)
+        {
+            Vector2 h = _halves[i] + new Vector2(Margin + CornerOut);
+            for (int k = 0; k < 4; k++)
+            {
+                Vector2 c = _centres[i] + new Vector2((k & 1) == 0 ? -h.X : h.X, (k & 2) == 0 ? -h.Y : h.Y);
+                if (MathF.Abs(c.X) <= _room.X && MathF.Abs(c.Y) <= _room.Y && Inside(c, Margin) < 0)
+                {
+                    corners.Add(c);
+                }
+            }
+        }
+
+        _corners = [.. corners];
+        int n = _corners.Length;
+        _sees = new bool[n, n];
+        for (int a = 0; a < n; a++)
+        {
+            for (int b = a + 1; b < n; b++)
+            {
+                _sees[a, b] = _sees[b, a] = Free(_corners[a], _corners[b], Margin);
+            }
+        }
+
+        _distance = new float[n + 1];
+        _previous = new int[n + 1];
+        _done = new bool[n + 1];
+    }
+
+    /// <summary>
+    /// The first two points of the shortest way from <paramref name="from"/> to <paramref name="to"/>
+    /// (the second is <paramref name="to"/> itself when one leg does; both are when the way is
+    /// straight). Returns false, with both set to <paramref name="to"/>, when there is no way.
+    /// </summary>
+    public bool Next(Vector2 from, Vector2 to, out Vector2 first, out Vector2 second)
+    {
+        first = second = to;
+        float fromMargin = EndMargin(from), toMargin = EndMargin(to);
+        if (Free(from, to, MathF.Min(fromMargin, toMargin)))
+        {
+            return true;
+        }
+
+        // Dijkstra from `to` over the corners (index n is `from`), so each corner knows its way onward.
+        int n = _corners.Length;
+        for (int i = 0; i <= n; i++)
+        {
+            _distance[i] = float.PositiveInfinity;
+            _previous[i] = -1;
+            _done[i] = false;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            if (Free(_corners[i], to, toMargin))
+            {
+                _distance[i] = Vector2.Distance(_corners[i], to);
+            }
+        }
+
+        while (true)
+        {
+            int u = -1;
+            for (int i = 0; i <= n; i++)
+            {
+                if (!_done[i] && (u < 0 || _distance[i] < _distance[u]))
+                {
+                    u = i;
+                }
+            }
+
+            if (u < 0 || float.IsPositiveInfinity(_distance[u]) || u == n)
+            {
+                break;
+            }
+
+            _done[u] = true;
+            for (int v = 0; v <= n; v++)
+            {
+                if (_done[v])
+                {
+                    continue;
+                }
+
+                bool sees = v == n ? Free(from, _corners[u], fromMargin) : _sees[u, v];
+                Vector2 pv = v == n ? from : _corners[v];
+                float d = _distance[u] + Vector2.Distance(pv, _corners[u]);
+                if (sees && d < _distance[v])
+                {
+                    _distance[v] = d;
+                    _previous[v] = u;
+                }
+            }
+        }
+
+        int next = _previous[n];
+        if (next < 0)
+        {
+            return false;
+        }
+
+        first = _corners[next];
+        second = _previous[next] >= 0 ? _corners[_previous[next]] : to;
+        return true;
+    }
+
+    /// <summary>Whether the segment keeps <paramref name="margin"/> from every obstacle's bounding box and stays in the field.</summary>
+    public bool Free(Vector2 a, Vector2 b, float margin)
+    {
+        for (int i = 0; i < _centres.Length; i++)
+        {
+            if (Crosses(a - _centres[i], b - _centres[i], _halves[i] + new Vector2(margin)))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    // The margin a leg from or to p can keep: the full margin, or less when p itself is closer to a box.
+    private float EndMargin(Vector2 p)
+    {
+        float margin = Margin;
+        for (int i = 0; i < _centres.Length; i++)
+        {
+            Vector2 outside = Vector2.Abs(p - _centres[i]) - _halves[i];
+            float d = outside.X <= 0f && outside.Y <= 0f ? 0f : Vector2.Max(outside, Vector2.Zero).Length();
+            margin = MathF.Min(margin, MathF.Max(0f, (d * 0.7f) - 1f));
+        }
+
+        return margin;
+    }
+
+    // The index of a grown box containing p, or −1.
+    private int Inside(Vector2 p, float margin)
+    {
+        for (int i = 0; i < _centres.Length; i++)
+        {
+            Vector2 d = Vector2.Abs(p - _centres[i]) - (_halves[i] + new Vector2(margin));
+            if (d.X < 0f && d.Y < 0f)
+            {
+                return i;
+            }
+        }
+
+        return -1;
+    }
+
+    // Half the axis-aligned bounding box of an obstacle.
+    private static Vector2 HalfExtent(in ObstacleView o)
+    {
+        if (o.Kind == ObstacleKind.Round)
+        {
+            return new Vector2(o.Radius);
+        }
+
+        float c = MathF.Abs(MathF.Cos(o.Heading)), s = MathF.Abs(MathF.Sin(o.Heading));
+        return new Vector2((o.Length * c) + (o.Width * s), (o.Length * s) + (o.Width * c)) * 0.5f;
+    }
+
+    // Whether the segment a–b meets the open box (−half, half) (slab test).
+    private static bool Crosses(Vector2 a, Vector2 b, Vector2 half)
+    {
+        Vector2 d = b - a;
+        float t0 = 0f, t1 = 1f;
+        for (int axis = 0; axis < 2; axis++)
+        {
+            float p = axis == 0 ? a.X : a.Y, v = axis == 0 ? d.X : d.Y, h = axis == 0 ? half.X : half.Y;
+            if (MathF.Abs(v) < 1e-6f)
+            {
+                if (p <= -h || p >= h)
+                {
+                    return false;
+                }
+
+                continue;
+            }
+
+            float u0 = (-h - p) / v, u1 = (h - p) / v;
+            if (u0 > u1)
+            {
+                (u0, u1) = (u1, u0);
+            }
+
+            t0 = MathF.Max(t0, u0);
+            t1 = MathF.Min(t1, u1);
+            if (t0 >= t1)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+}
