@@ -17,7 +17,8 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 internal static class CircleConvex
 {
     /// <summary>The MTV moves the circle; its normal points from the polygon toward the circle.</summary>
-    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon) => Detect(circle, polygon, vector: true);
+    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon) =>
+        PolygonLanes.IsSupported && PolygonLanes.Fits(polygon.Vertices.Length) ? CircleLanes.Detect(circle, polygon) : Detect(circle, polygon, vector: true);
 
     /// <summary>Whether the circle and the polygon overlap and, if so, the normal and depth (no action point).</summary>
     public static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth) => Depth(circle, polygon, out depth, vector: true);

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -45,7 +46,8 @@ public static partial class CollisionDetector
     /// <param name="a">The circle, moved by the MTV.</param>
     /// <param name="b">The polygon.</param>
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
-    public static CollisionDetectionResult Detect(in Circle a, in ConvexPolygon b) => CircleConvex.Detect(a, b.View());
+    public static CollisionDetectionResult Detect(in Circle a, in ConvexPolygon b) =>
+        b.Lanes is { } lanes && PolygonLanes.IsSupported ? CircleLanes.Detect(a, lanes) : CircleConvex.Detect(a, b.View());
 
     /// <summary>Polygon against circle: <see cref="Detect(in Circle, in ConvexPolygon)"/> swapped.</summary>
     /// <param name="a">The polygon, moved by the MTV.</param>

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 
@@ -16,7 +17,10 @@ public static partial class CollisionDetector
     /// <param name="a">The polygon moved by the MTV.</param>
     /// <param name="b">The other polygon.</param>
     /// <returns>The contact, or <see cref="CollisionDetectionResult.None"/>.</returns>
-    public static CollisionDetectionResult Detect(in ConvexPolygon a, in ConvexPolygon b) => ConvexSat.Detect(a.View(), b.View());
+    public static CollisionDetectionResult Detect(in ConvexPolygon a, in ConvexPolygon b) =>
+        a.Lanes is not null && b.Lanes is not null && PolygonLanes.IsSupported
+            ? ConvexSatWide.Detect(a, b)
+            : ConvexSat.Detect(a.View(), b.View());
 
     /// <summary>Box against polygon: SAT over the box's two axes and the polygon's normals.</summary>
     /// <param name="a">The box, moved by the MTV.</param>

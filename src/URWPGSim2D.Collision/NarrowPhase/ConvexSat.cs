@@ -36,7 +36,8 @@ internal static class ConvexSat
 
     /// <summary>The MTV moves <paramref name="a"/>.</summary>
     public static CollisionDetectionResult Detect(in ConvexView a, in ConvexView b) =>
-        ConvexSatLanes.Fits(a, b) ? ConvexSatLanes.Detect(a, b) : Detect(a, b, vector: true);
+        ConvexSatWide.Fits(a, b) ? ConvexSatWide.Detect(a, b)
+        : ConvexSatLanes.Fits(a, b) ? ConvexSatLanes.Detect(a, b) : Detect(a, b, vector: true);
 
     /// <summary>Whether the shapes overlap and, if so, the normal and depth of the contact (no action point).</summary>
     public static bool Depth(in ConvexView a, in ConvexView b, out ContactDepth depth) =>

@@ -26,6 +26,9 @@ public readonly struct ConvexPolygon
     private readonly Vector2[]? _vertices;
     private readonly Vector2[]? _normals;
 
+    // Vertices and normals of a polygon of at most eight vertices in vector lanes (PolygonLanes), packed once.
+    private readonly float[]? _lanes;
+
     /// <summary>Creates a convex polygon, validating and normalising its vertices.</summary>
     /// <param name="vertices">3 to <see cref="MaxVertices"/> distinct finite points in either winding, forming a convex polygon of non-zero area.</param>
     /// <exception cref="ArgumentException">Too few or too many vertices, a non-finite coordinate, a repeated vertex, all vertices collinear, or a polygon that is not convex (including self-intersecting outlines).</exception>
@@ -82,6 +85,7 @@ public readonly struct ConvexPolygon
 
         _vertices = v;
         _normals = n;
+        _lanes = PolygonLanes.Fits(v.Length) ? PolygonLanes.Pack(v, n) : null;
         Vector2 c = VertexMean(v);
         float r2 = 0f;
         foreach (var p in v)
@@ -114,6 +118,9 @@ public readonly struct ConvexPolygon
 
         return new ConvexPolygon(moved);
     }
+
+    /// <summary>The polygon's lanes (<see cref="PolygonLanes.Pack"/>) when it has at most eight vertices, else null.</summary>
+    internal float[]? Lanes => _lanes;
 
     /// <summary>A view of the polygon: its own vertices and edge normals.</summary>
     internal ConvexView View()

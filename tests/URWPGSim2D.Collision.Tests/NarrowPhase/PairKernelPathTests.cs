@@ -11,10 +11,11 @@ using Xunit.Sdk;
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>
-/// The pair kernels have a vector path (polygons of three to eight vertices held in vector lanes,
-/// <see cref="ConvexSatLanes"/>; four faces at a time in <see cref="FaceLoops"/>) and a scalar
-/// path (one face at a time), and both must give the same answers bit for bit, the sign of a zero
-/// included: a last-bit difference can change a match. Each test calls both paths on the same
+/// The pair kernels have vector paths (shapes of three to eight vertices held in the eight lanes
+/// of 256-bit vectors, <see cref="ConvexSatWide"/> and <see cref="CircleLanes"/>, or in two groups
+/// of four, <see cref="ConvexSatLanes"/>; four faces at a time in <see cref="FaceLoops"/>) and a
+/// scalar path (one face at a time), and all must give the same answers bit for bit, the sign of
+/// a zero included: a last-bit difference can change a match. Each test calls both paths on the same
 /// random pairs (the ranges: 5 to 1,600 mm, ±25,000 mm, containment, near touching,
 /// apart) and compares every float's bits.
 /// </summary>
@@ -102,6 +103,60 @@ public sealed class PairKernelPathTests
     }
 
     [Fact]
+    public void PackedPolygonLanesEqualTheScalarPathBitForBit()
+    {
+        // Polygons of at most eight vertices keep their lanes packed (PolygonLanes): the public
+        // polygon–polygon and circle–polygon tests read them instead of the vertex arrays.
+        const int seed = 1013;
+        var gen = new RandomShapes(seed);
+        int packed = 0, hits = 0;
+        for (int trial = 0; trial < 16000; trial++)
+        {
+            bool circle = trial % 2 == 0;
+            var (a, b, _) = gen.Pair(circle ? ShapeKind.Circle : ShapeKind.Polygon, ShapeKind.Polygon);
+            try
+            {
+                var polygon = b.Shape.AsPolygon();
+                var view = polygon.View();
+                bool fits = PolygonLanes.Fits(view.Vertices.Length);
+                CollisionDetectionResult scalar;
+                if (circle)
+                {
+                    var c = a.Shape.AsCircle();
+                    scalar = CircleConvex.Detect(c, view, vector: false);
+                    AssertSame(scalar, CollisionDetector.Detect(c, polygon));
+                    AssertSame(scalar.Swapped(), CollisionDetector.Detect(polygon, c));
+                    if (fits && PolygonLanes.IsSupported)
+                    {
+                        AssertSame(scalar, CircleLanes.Detect(c, view));
+                    }
+                }
+                else
+                {
+                    var other = a.Shape.AsPolygon();
+                    scalar = ConvexSat.Detect(other.View(), view, vector: false);
+                    AssertSame(scalar, CollisionDetector.Detect(other, polygon));
+                    fits &= PolygonLanes.Fits(other.Vertices.Length);
+                    if (fits && PolygonLanes.IsSupported)
+                    {
+                        AssertSame(scalar, ConvexSatWide.Detect(other.View(), view));
+                    }
+                }
+
+                packed += fits ? 1 : 0;
+                hits += scalar.Intersect ? 1 : 0;
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(seed, trial, new XunitException($"{a} vs {b}: {e.Message}"));
+            }
+        }
+
+        Assert.InRange(packed, 3000, 16000);
+        Assert.InRange(hits, 3000, 15000);
+    }
+
+    [Fact]
     public void AxisAlignedAndIntegerPairsAgreeBitForBit()
     {
         // Exact zeros everywhere: axis-aligned normals (with −0 components), integer corners,
@@ -121,7 +176,10 @@ public sealed class PairKernelPathTests
                 AssertSame(scalar, ConvexSatLanes.Detect(viewA, viewB));
                 AssertSame(scalar, ConvexSat.Detect(viewA, viewB));
                 var circle = new Circle(b.Vertices[rng.Next(b.Vertices.Length)] + new Vector2(rng.Next(-3, 4), rng.Next(-3, 4)), rng.Next(1, 12));
-                AssertSame(CircleConvex.Detect(circle, viewA, vector: false), CircleConvex.Detect(circle, viewA));
+                AssertSame(scalar, CollisionDetector.Detect(a, b));
+                var circleScalar = CircleConvex.Detect(circle, viewA, vector: false);
+                AssertSame(circleScalar, CircleConvex.Detect(circle, viewA));
+                AssertSame(circleScalar, CollisionDetector.Detect(circle, a));
                 hits += scalar.Intersect ? 1 : 0;
             }
             catch (XunitException e)

@@ -152,19 +152,31 @@ public sealed class BallGrabTests
         Assert.All(keys, k => Assert.Equal(0, match.Referee().Variables.GetInt32(k)));
     }
 
-    // The demo scores against an idle opponent at seeds 1-8 but only at seed 11 of seeds 9-16
-    // (docs/items.md): this checks the three seeds the issue names, and says so.
+    // Issue 13's promise: the demo scores against an idle opponent within ten minutes. Measured
+    // (docs/items.md) over seeds 1-48 it does at 46 of them with this motion and 44 with the motion
+    // before it (the seeds that fail differ, as matches take other courses); seeds 1-8 score under
+    // both. The match is played only until the demo's first score.
     [Theory]
     [InlineData(1UL)]
     [InlineData(2UL)]
     [InlineData(3UL)]
-    public void TheDemoScoresAgainstAnIdleOpponentAtSeeds1To3(ulong seed)
+    [InlineData(4UL)]
+    [InlineData(5UL)]
+    [InlineData(6UL)]
+    [InlineData(7UL)]
+    [InlineData(8UL)]
+    public void TheDemoScoresAgainstAnIdleOpponentWithinTenMinutes(ulong seed)
     {
         var item = ItemRegistry.Find("ball-grab")!;
         var match = ItemTestMatches.Build(item, 6000, "demo", seed, noise: true,
             edit: s => s with { Fish = s.Fish.Select(f => f.Team == 1 ? f with { Strategy = "idle" } : f).ToList() });
-        match.PlayAll();
+        while (!match.IsOver && match.Referee!.Scores[0] == 0)
+        {
+            match.Step();
+        }
+
         Assert.True(match.Referee!.Scores[0] > 0, $"seed {seed}: the demo scored nothing against an idle opponent in ten minutes");
+        Assert.True(match.World.Cycle <= 6000);
         Assert.Equal(0, match.Referee.Scores[1]);
     }
 

@@ -232,16 +232,26 @@ public sealed class PoloTests
         Assert.Equal(new MatchOutcome(0, "higher score"), match.Referee!.Outcome);
     }
 
-    // Demo against demo scores at seeds 1 and 3 only: seed 2 ends 0-0 (the two demos block each
-    // other), so this checks those two seeds and says so; against an idle opponent every seed scores (below).
-    [Theory]
-    [InlineData(1UL)]
-    [InlineData(3UL)]
-    public void TheDemosScoreAgainstEachOtherAtSeeds1And3(ulong seed)
+    // Demo against demo, a 1v1 match has a goal in about half of the seeds (seeds 1-24: 13 with
+    // this motion, 11 with the motion before it; seeds 1-12: 6 and 8), the two demos often blocking
+    // each other; which seeds score changes with rounding-sized changes of the motion. No promise
+    // names this, so it is checked as a rate: at least 3 of seeds 1-12 (at a rate of one half, 12
+    // seeds fall below that about once in 50).
+    [Fact]
+    public void TheDemosScoreAgainstEachOtherInSomeOfTwelveSeeds()
     {
-        var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", seed, noise: true);
-        match.PlayAll();
-        Assert.True(match.Referee!.Scores.Sum() > 0, $"seed {seed}: no goal in ten minutes");
+        var scored = new System.Collections.Generic.List<ulong>();
+        for (ulong seed = 1; seed <= 12; seed++)
+        {
+            var match = ItemTestMatches.Build(OneVsOne, 6000, "demo", seed, noise: true);
+            match.PlayAll();
+            if (match.Referee!.Scores.Sum() > 0)
+            {
+                scored.Add(seed);
+            }
+        }
+
+        Assert.True(scored.Count >= 3, $"goals in ten minutes at seeds {string.Join(", ", scored)} only");
     }
 
     [Theory]

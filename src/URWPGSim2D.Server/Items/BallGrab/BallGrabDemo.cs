@@ -1,24 +1,43 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
-using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
 
 namespace URWPGSim2D.Server.Items.BallGrab;
 
 /// <summary>
 /// The demo strategy of 抢球博弈. Each fish takes the ball its team has not scored yet that is best
-/// worth the trip (value over distance, the two fish on different balls) and brings it into the
-/// team's box in legs: a box only opens toward its end wall, so a ball in the field is pushed
-/// round the end of a bar into the channel between the box and the wall, up the channel to a
-/// staging point beside the opening, and from there diagonally into the box; a fish caught inside
-/// a box first swims out through the opening. Works in a frame
-/// where the team's box is at +x (mirrored for the left end).
+/// worth the trip (value over distance, the two fish on different balls) and pushes it with
+/// <see cref="Pusher"/> along a route into the team's box. A box opens only toward its end wall, so
+/// the route goes past the end of the bar on the ball's side, round it into the channel between the
+/// box and the wall, down the channel to beside the opening and from there diagonally into the box
+/// (a ball stopped against the box's back wall lies wholly inside). The route starts at the ball and
+/// is made afresh every cycle from where the ball is; the ball heads for a point 300 mm ahead on it
+/// (<see cref="RouteProgress"/>), at gear 6, gear 4 once beside the box. A fish on one ball for 60 s
+/// leaves it alone for as long and takes another; a ball against an end wall (no fish gets behind
+/// it there) is taken last. A fish caught inside a box first swims out through the opening; one that
+/// has not moved for two seconds turns away (<see cref="Stuck"/>). Positions are filtered
+/// (<see cref="FishTrack"/>, <see cref="BallTrack"/>). Works in a frame where the team's box is at +x
+/// (mirrored for the left end).
 /// </summary>
 internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
 {
+    private const int PushVCode = 6;
+    private const int FineVCode = 4;
+
+    // Cycles a fish spends on one ball before it leaves that ball alone for as long and takes another.
+    private const int GiveUpCycles = 600;
+    private const float Ahead = 300f;
+
     private int[] _target = [];
     private Stuck[] _stuck = [];
+    private FishTrack[] _fish = [];
+    private Pusher[] _pushers = [];
+    private BallTrack[] _balls = [];
+    private int[] _since = [];
+    private int[] _restUntil = [];
+    private Waypath? _ways;
+    private int _half;
 
     /// <inheritdoc/>
     public string TeamName => "ball-grab demo";
@@ -26,15 +45,35 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
-        if (_target.Length != fish.Length)
+        if (_target.Length != fish.Length || referee.Half != _half)
         {
+            // A new half: the referee has placed every body afresh.
+            _half = referee.Half;
             _target = new int[fish.Length];
             _stuck = new Stuck[fish.Length];
+            _fish = new FishTrack[fish.Length];
+            _pushers = new Pusher[fish.Length];
+            _balls = new BallTrack[snapshot.Balls.Length];
+            _since = new int[fish.Length];
+            _restUntil = new int[snapshot.Balls.Length];
             Array.Fill(_target, -1);
         }
 
+        for (int i = 0; i < _balls.Length; i++)
+        {
+            _balls[i].Update(snapshot.Balls[i]);
+        }
+
+        for (int k = 0; k < fish.Length; k++)
+        {
+            _fish[k].Update(snapshot.Fish[fish[k]]);
+        }
+
+        _ways ??= Surroundings.WaysOf(snapshot);
+        var around = new Surroundings(snapshot, _ways);
         int team = snapshot.Fish[fish[0]].Team;
         int side = referee.BoxSide(team);
+        Span<Vector2> route = stackalloc Vector2[5];
         for (int k = 0; k < fish.Length; k++)
         {
             FishView me = snapshot.Fish[fish[k]];
@@ -52,20 +91,65 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
                 continue;
             }
 
-            int ball = Choose(snapshot, me, team, side, k);
+            int ball = Choose(snapshot, team, side, k);
+            if (ball != _target[k])
+            {
+                _since[k] = snapshot.Cycle;
+            }
+            else if (ball >= 0 && snapshot.Cycle - _since[k] > GiveUpCycles)
+            {
+                // Too long on one ball: leave it alone for a while and take another.
+                _restUntil[ball] = snapshot.Cycle + GiveUpCycles;
+                ball = Choose(snapshot, team, side, k);
+                _since[k] = snapshot.Cycle;
+            }
+
             _target[k] = ball;
             if (ball < 0)
             {
-                decisions[k] = Steering.SwimTo(me, new Vector2(0f, 0f), 6);
+                decisions[k] = Vector2.Distance(_fish[k].Position, Vector2.Zero) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], Vector2.Zero, around, 6);
                 continue;
             }
 
-            BallView b = snapshot.Balls[ball];
-            Vector2 q = new(b.Position.X * side, b.Position.Y);
-            Vector2 leg = NextLeg(q, b.Radius);
-            Decision d = Steering.Push(mine, q, b.Radius, leg, pushVCode: 10, approachVCode: 10);
-            decisions[k] = side > 0 ? d : new Decision(d.VCode, 14 - d.TCode);
+            float radius = snapshot.Balls[ball].Radius;
+            Vector2 q = _balls[ball].Position * new Vector2(side, 1f);
+            int n = Route(q, radius, route);
+            Vector2 way = default(RouteProgress).Direction(route[..n], q, Ahead) * new Vector2(side, 1f);
+            int vcode = q.X > BoxOuterX - 100f ? FineVCode : PushVCode;
+            decisions[k] = _pushers[k].Push(me, _fish[k], ref _balls[ball], radius, way, around, vcode);
         }
+    }
+
+    // The route of a ball at q (box frame) into the box: from the ball past the bar end on its side,
+    // round it into the channel, down the channel to beside the opening, diagonally into the box.
+    private static int Route(Vector2 q, float radius, Span<Vector2> route)
+    {
+        float s = q.Y >= 0f ? 1f : -1f;
+        float barOuter = BarZ + (BarWidth / 2f);
+        Vector2 pastBar = new(BackX - 150f, s * (barOuter + radius + 90f));
+        Vector2 channel = new(1290f, s * (barOuter + radius + 110f));
+        Vector2 beside = new(1240f, s * 380f);
+        Vector2 inside = new(BackX + radius, s * 40f);
+        int n = 0;
+        route[n++] = q;
+        bool inChannel = q.X > BoxOuterX + radius - 20f;
+        if (!inChannel)
+        {
+            if (q.X < pastBar.X && MathF.Abs(q.Y) < MathF.Abs(pastBar.Y) + 200f)
+            {
+                route[n++] = pastBar;
+            }
+
+            route[n++] = channel;
+            route[n++] = beside;
+        }
+        else if (MathF.Abs(q.Y) > MathF.Abs(beside.Y) + 60f)
+        {
+            route[n++] = beside;
+        }
+
+        route[n++] = inside;
+        return n;
     }
 
     // A fish inside either box (a U open toward its end wall, too short for the fish to turn in
@@ -88,42 +172,28 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
         return true;
     }
 
-    // Where the ball should go next, in the frame with the team's box at +x.
-    private static Vector2 NextLeg(Vector2 q, float radius)
-    {
-        float sign = q.Y >= 0f ? 1f : -1f;
-        if (q.X > BoxOuterX)
-        {
-            // In the channel: beside the opening, push diagonally in; farther along, bring it closer.
-            return MathF.Abs(q.Y) <= BoxHalfWidth ? new Vector2(BoxInnerX + 40f, -sign * 250f) : new Vector2(1250f, sign * 380f);
-        }
-
-        if (q.X > BackX - 120f && MathF.Abs(q.Y) < BarZ + radius + 40f)
-        {
-            // Behind the box's back wall or in the box already: round the bar end first.
-            return new Vector2(BoxOuterX + 60f, sign * (BarZ + radius + 110f));
-        }
-
-        // In the field: to a point past the bar end on the ball's side, then into the channel.
-        return new Vector2(BoxOuterX + 110f, sign * (BarZ + radius + 90f));
-    }
-
-    // The unscored ball with the best value per metre, not in the box already, not the partner's.
-    private int Choose(MatchSnapshot snapshot, in FishView me, int team, int side, int k)
+    // The unscored ball with the best value per metre, not in a box already, not the partner's.
+    private int Choose(MatchSnapshot snapshot, int team, int side, int k)
     {
         var balls = snapshot.Balls;
         int best = -1;
         float bestScore = float.NegativeInfinity;
         for (int i = 0; i < balls.Length; i++)
         {
-            if (referee.HasScored(team, i) || InBox(balls[i].Position, balls[i].Radius, side) || Taken(i, k))
+            if (referee.HasScored(team, i) || snapshot.Cycle < _restUntil[i] || InBox(_balls[i].Position, balls[i].Radius, side) || InBox(_balls[i].Position, balls[i].Radius, -side) || Taken(i, k))
             {
                 continue;
             }
 
             float value = (float)referee.BallValue(i);
-            float distance = Vector2.Distance(me.Position, balls[i].Position) + 200f;
+            float distance = Vector2.Distance(_fish[k].Position, _balls[i].Position) + 200f;
             float score = (value / distance) + (i == _target[k] ? 0.0015f : 0f);
+            if (MathF.Abs(_balls[i].Position.X) > HalfLength - 120f)
+            {
+                // Against an end wall no fish gets behind it to push it out: last of all.
+                score *= 0.01f;
+            }
+
             if (score > bestScore)
             {
                 bestScore = score;

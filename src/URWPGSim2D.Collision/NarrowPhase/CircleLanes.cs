@@ -1,0 +1,129 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
+using System.Runtime.Intrinsics.X86;
+using URWPGSim2D.Collision.Geometry;
+using URWPGSim2D.Collision.Shapes;
+
+namespace URWPGSim2D.Collision.NarrowPhase;
+
+/// <summary>
+/// <see cref="CircleConvex"/> for a polygon of three to eight vertices held in the eight lanes
+/// of <see cref="PolygonLanes"/> (256-bit vectors): one pass gives every face's separation
+/// s = n·(c − v) and, beside the search for the greatest, every lane's Voronoi region, normal and
+/// depth as if its face were the farthest (both end vertices' tests, the square root and the
+/// division done for all lanes at once, off the search's path), so that only a lane is left to
+/// pick; the chord of the polygon on the line through the centre along the normal reuses the
+/// separations. Every quantity is computed with the same operations in the same order as in
+/// <see cref="CircleConvex"/> and <see cref="FaceLoops"/>, so the answers are the same bit for bit.
+/// </summary>
+internal static class CircleLanes
+{
+    /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a polygon packed by <see cref="PolygonLanes.Pack"/>.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static CollisionDetectionResult Detect(in Circle circle, float[] packed) =>
+        Detect(circle, ref MemoryMarshal.GetArrayDataReference(packed));
+
+    /// <summary>As <see cref="CircleConvex.Detect(in Circle, in ConvexView)"/> for a view whose vertex count <see cref="PolygonLanes.Fits"/>.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    public static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon)
+    {
+        Span<float> packed = stackalloc float[PolygonLanes.PackedLength];
+        ref float p = ref MemoryMarshal.GetReference(packed);
+        PolygonLanes.Store(polygon.Vertices, polygon.Normals, ref p);
+        return Detect(circle, ref p);
+    }
+
+    // The test on a packed polygon (PolygonLanes).
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private static CollisionDetectionResult Detect(in Circle circle, ref float packed)
+    {
+        Vector2 c = circle.Center;
+        float r = circle.Radius;
+        var x = Vector256.LoadUnsafe(ref packed);
+        var z = Vector256.LoadUnsafe(ref packed, 8);
+        var nx = Vector256.LoadUnsafe(ref packed, 16);
+        var nz = Vector256.LoadUnsafe(ref packed, 24);
+        var cx = Vector256.Create(c.X);
+        var cz = Vector256.Create(c.Y);
+        var radius = Vector256.Create(r);
+        var dx = cx - x;
+        var dz = cz - z;
+        var s = (nx * dx) + (nz * dz);
+        if (Vector256.GreaterThanOrEqualAny(s, radius))
+        {
+            return default;
+        }
+
+        var best = PolygonLanes.Greatest(s);
+        int lane = PolygonLanes.FirstLane(s, best);
+
+        // Beside the search for the farthest face, every lane's answer as if its face were the
+        // one: the edge's start v1 (this lane) and end v2 (the next vertex's lane) decide the
+        // region ((c − v1)·(v2 − v1) ≤ 0: v1's; else (c − v2)·(v1 − v2) ≤ 0: v2's; else the
+        // edge's, or inside when s ≤ 0), then the normal and depth of that region.
+        var zero = Vector256<float>.Zero;
+        var x2 = Vector256.LoadUnsafe(ref packed, 32);
+        var z2 = Vector256.LoadUnsafe(ref packed, 40);
+        var bx = cx - x2;
+        var bz = cz - z2;
+        var atStart = Vector256.LessThanOrEqual((dx * (x2 - x)) + (dz * (z2 - z)), zero);
+        var atEnd = Vector256.LessThanOrEqual((bx * (x - x2)) + (bz * (z - z2)), zero);
+        var px = Vector256.ConditionalSelect(atStart, dx, bx);
+        var pz = Vector256.ConditionalSelect(atStart, dz, bz);
+        var dist2 = (px * px) + (pz * pz);
+        var dist = Vector256.Sqrt(dist2);
+        var positive = Vector256.GreaterThan(dist, zero);
+        var vertex = (atStart | atEnd) & Vector256.GreaterThan(s, zero);
+        var normalX = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, px / dist, Vector256<float>.One), nx);
+        var normalZ = Vector256.ConditionalSelect(vertex, Vector256.ConditionalSelect(positive, pz / dist, zero), nz);
+        var depth = radius - Vector256.ConditionalSelect(vertex, dist, s);
+        uint outOfReach = (vertex & Vector256.GreaterThanOrEqual(dist2, Vector256.Create(r * r))).ExtractMostSignificantBits();
+        if (((outOfReach >> lane) & 1) != 0)
+        {
+            return default;
+        }
+
+        var pick = Vector256.CreateScalarUnsafe(lane);
+        Vector2 normal = new(Avx2.PermuteVar8x32(normalX, pick).ToScalar(), Avx2.PermuteVar8x32(normalZ, pick).ToScalar());
+        float contactDepth = Avx2.PermuteVar8x32(depth, pick).ToScalar();
+
+        // The action point: the middle of the overlap of the circle and the polygon's chord on the
+        // line c + t·normal, the chord taken face by face as FaceLoops.LineInterval takes it.
+        var dn = (nx * Vector256.Create(normal.X)) + (nz * Vector256.Create(normal.Y));
+        return ContactResult.Plane(normal, contactDepth, c + normal * Along(s, dn, r, contactDepth));
+    }
+
+    // CircleConvex.Finish's t: the middle of the overlap of the polygon's interval on the line
+    // (t ≤ −s/d where d = n·normal > 0, t ≥ −s/d where d < 0; a face parallel to the line with the
+    // centre outside it leaves nothing) with the circle's [−r, r].
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    private static float Along(Vector256<float> s, Vector256<float> dn, float r, float depth)
+    {
+        var zero = Vector256<float>.Zero;
+        float lo, hi;
+        if (Vector256.EqualsAny(dn, zero) && Vector256.GreaterThanAny(Vector256.ConditionalSelect(Vector256.Equals(dn, zero), s, zero), zero))
+        {
+            lo = float.PositiveInfinity;
+            hi = float.NegativeInfinity;
+        }
+        else
+        {
+            var t = -s / dn;
+            var high = Vector256.ConditionalSelect(Vector256.GreaterThan(dn, zero), t, Vector256.Create(float.PositiveInfinity));
+            var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, zero), t, Vector256.Create(float.NegativeInfinity));
+            var h = Vector128.MinNative(high.GetLower(), high.GetUpper());
+            var l = Vector128.MaxNative(low.GetLower(), low.GetUpper());
+            h = Vector128.MinNative(h, Vector128.Shuffle(h, Vector128.Create(2, 3, 0, 1)));
+            l = Vector128.MaxNative(l, Vector128.Shuffle(l, Vector128.Create(2, 3, 0, 1)));
+            hi = ExactMinMax.Min(h.ToScalar(), h.GetElement(1));
+            lo = ExactMinMax.Max(l.ToScalar(), l.GetElement(1));
+        }
+
+        lo = ExactMinMax.Max(lo, -r);
+        hi = ExactMinMax.Min(hi, r);
+        return lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
+    }
+}
