@@ -28,6 +28,13 @@ internal sealed class CycleMotion
         set => _bodies.Stepper.Threads = value;
     }
 
+    /// <summary>Fewest moving bodies for which the islands are spread over threads (tests lower it).</summary>
+    public int MinimumMoversForThreads
+    {
+        get => _bodies.Stepper.MinimumMoversForThreads;
+        set => _bodies.Stepper.MinimumMoversForThreads = value;
+    }
+
     /// <summary>Chunks of islands the last cycle ran at once (1: the calling thread alone).</summary>
     public int Chunks => _bodies.Stepper.Chunks;
 

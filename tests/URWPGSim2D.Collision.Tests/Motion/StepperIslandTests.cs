@@ -66,11 +66,13 @@ public sealed class StepperIslandTests
     [Fact]
     public void EveryThreadCountGivesTheSameSteps()
     {
-        var reference = Run(1, out var referenceContacts);
+        var reference = Run(1, out var referenceContacts, out int oneChunk);
+        Assert.Equal(1, oneChunk);
         Assert.True(referenceContacts.Count > 100, $"only {referenceContacts.Count} contacts: the scene does not exercise the stepper");
         foreach (int threads in new[] { 2, 3, 4 })
         {
-            var other = Run(threads, out var contacts);
+            var other = Run(threads, out var contacts, out int chunks);
+            Assert.Equal(threads, chunks);
             Assert.Equal(reference.Count, other.Count);
             for (int i = 0; i < reference.Count; i++)
             {
@@ -98,15 +100,18 @@ public sealed class StepperIslandTests
     }
 
     // 12 steps of a 1,000-body crowd (about 600 movers): per step the counts, per mover its exact state.
-    private static List<string> Run(int threads, out List<Contact> contacts)
+    private static List<string> Run(int threads, out List<Contact> contacts, out int chunks)
     {
         var stepper = StepperAllocationTests.World(1_000);
         stepper.Threads = threads;
+        stepper.MinimumMoversForThreads = 64; // below the default, so that a test-sized crowd uses the threads
         var handler = new RecordingHandler(0.3f);
         var lines = new List<string>();
+        chunks = 0;
         for (int step = 0; step < 12; step++)
         {
             stepper.Step(Seconds, handler);
+            chunks = Math.Max(chunks, stepper.Chunks);
             lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}, islands {stepper.IslandCount}");
             for (int id = 0; id < stepper.BodyCount; id++)
             {

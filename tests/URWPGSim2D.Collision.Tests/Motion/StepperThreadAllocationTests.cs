@@ -17,6 +17,7 @@ public sealed class StepperThreadAllocationTests
     {
         var stepper = StepperAllocationTests.World(bodies);
         stepper.Threads = 2;
+        stepper.MinimumMoversForThreads = 64; // so that 1,000 bodies use the threads too
         var handler = new RecordingHandler(0.3f) { Record = false };
         for (int i = 0; i < warmUp; i++)
         {

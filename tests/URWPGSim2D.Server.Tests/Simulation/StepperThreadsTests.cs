@@ -40,8 +40,9 @@ public sealed class StepperThreadsTests
     [Fact]
     public void RunWithThreadsPrintsTheSameMatch()
     {
-        string one = Summary(CliRun.Of(string.Empty, "run", "--crowd", "300", "--cycles", "8"));
-        string two = Summary(CliRun.Of(string.Empty, "run", "--crowd", "300", "--cycles", "8", "--threads", "2"));
+        // 2,100 fish and balls: above the size below which a match uses one thread whatever --threads says.
+        string one = Summary(CliRun.Of(string.Empty, "run", "--crowd", "2100", "--cycles", "3"));
+        string two = Summary(CliRun.Of(string.Empty, "run", "--crowd", "2100", "--cycles", "3", "--threads", "2"));
         Assert.Equal(one, two);
         Assert.Contains("contacts:", one, StringComparison.Ordinal);
     }
@@ -60,6 +61,7 @@ public sealed class StepperThreadsTests
         {
             var match = MatchBuilder.Build(scenario);
             match.Stepper.Threads = threads;
+            match.Stepper.MinimumMoversForThreads = 64; // below the default, so that these crowds use the threads
             chunks = 0;
             using (var trace = new TraceWriter(path))
             {
