@@ -66,11 +66,21 @@ internal sealed class HeldHits
         }
     }
 
-    /// <summary>Puts the hits of <paramref name="from"/> into this set ordered by tick, keeping their order within a tick (a stable counting sort).</summary>
+    /// <summary>
+    /// Puts the hits of <paramref name="from"/> into this set ordered by tick, keeping their order
+    /// within a tick: a stable insertion sort for a few hits (a step usually holds a handful), a
+    /// stable counting sort over the step's ticks for many. Both give the same order.
+    /// </summary>
     public void SortByTick(HeldHits from)
     {
         Clear();
         Reserve(from.Count);
+        if (from.Count <= InsertionSortLimit)
+        {
+            InsertInOrder(from);
+            return;
+        }
+
         Array.Clear(_perTick);
         for (int i = 0; i < from.Count; i++)
         {
@@ -86,6 +96,34 @@ internal sealed class HeldHits
         {
             int at = _perTick[from._tick[i]]++;
             _tick[at] = from._tick[i];
+            _slot[at] = from._slot[i];
+            _generation[at] = from._generation[i];
+            _hit[at] = from._hit[i];
+        }
+
+        Count = from.Count;
+    }
+
+    /// <summary>Most hits sorted by insertion; above it the counting sort's pass over every tick is cheaper.</summary>
+    internal const int InsertionSortLimit = 48;
+
+    // Each hit goes in after every held hit of the same or an earlier tick (stable).
+    private void InsertInOrder(HeldHits from)
+    {
+        for (int i = 0; i < from.Count; i++)
+        {
+            int tick = from._tick[i];
+            int at = i;
+            while (at > 0 && _tick[at - 1] > tick)
+            {
+                _tick[at] = _tick[at - 1];
+                _slot[at] = _slot[at - 1];
+                _generation[at] = _generation[at - 1];
+                _hit[at] = _hit[at - 1];
+                at--;
+            }
+
+            _tick[at] = tick;
             _slot[at] = from._slot[i];
             _generation[at] = from._generation[i];
             _hit[at] = from._hit[i];
