@@ -85,6 +85,41 @@ public sealed class DocsOutputsTests
         Assert.True(problems.Count == 0, string.Join("\n\n", problems) + "\n(bash scripts/regenerate-docs-outputs.sh writes the real outputs into the docs)");
     }
 
+    /// <summary>
+    /// The merge log that docs/batch.md shows for the Slurm recipe (checked for real by .ci/slurm,
+    /// which needs a cluster) is what <c>merge</c> prints for the same batch played here, so a change
+    /// of the motion that alters it fails the suite and the regeneration rewrites it too.
+    /// </summary>
+    [Fact]
+    public void TheSlurmMergeLogIsTheMergeOfTheSameBatchPlayedHere()
+    {
+        const string file = "docs/batch.md";
+        MarkdownBlock block = MarkdownBlock.Read(file).Single(b => b.Marker == ".ci/slurm checks: merge log");
+        string[] shown = block.Text.Split('\n');
+        Assert.StartsWith("$ cat ", shown[0], StringComparison.Ordinal);
+
+        string results = Path.Combine(Path.GetTempPath(), $"urwpg-docs-merge-{Environment.ProcessId}.jsonl");
+        try
+        {
+            var (played, _, playErrors) = RunServer("", ["run", "--batch", "8", "--cycles", "200", "--results", results]);
+            Assert.True(played == 0, playErrors);
+            var (merged, stdout, mergeErrors) = RunServer("", ["merge", results]);
+            Assert.True(merged == 0, mergeErrors);
+            string actual = stdout.TrimEnd('\n');
+            if (Regenerate)
+            {
+                Rewrite(file, [(block, shown[0] + "\n" + actual)]);
+                return;
+            }
+
+            Assert.Equal(string.Join('\n', shown.Skip(1)), actual);
+        }
+        finally
+        {
+            File.Delete(results);
+        }
+    }
+
     [Fact]
     public void TheMaskHidesOnlyTimingFigures()
     {
