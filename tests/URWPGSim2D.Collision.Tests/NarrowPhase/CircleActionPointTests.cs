@@ -5,7 +5,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.NarrowPhase.Frozen;
+using Frozen = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase;
 using URWPGSim2D.Collision.Tests.Support;
 using URWPGSim2D.Testing;
 using Xunit;
@@ -160,7 +160,7 @@ public sealed class CircleActionPointTests
             {
                 var circle = a.Shape.AsCircle();
                 var (v, n) = Outline(b.Shape);
-                var frozen = FrozenCircleConvex.Detect(circle.Center, circle.Radius, v, n);
+                var frozen = Frozen.CircleConvex.Detect(circle, new ConvexView(v, n));
                 var result = CollisionDetector.Detect(a.Shape, b.Shape);
                 Assert.Equal(frozen.Intersect, result.Intersect);
                 Assert.Equal(Bits(frozen.MinimumTranslationVector), Bits(result.MinimumTranslationVector));
