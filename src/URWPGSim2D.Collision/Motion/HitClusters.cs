@@ -92,7 +92,7 @@ internal sealed class HitClusters
 
         for (int i = 0; i < Count; i++)
         {
-            Label[i] = Root(i);
+            Label[i] = DisjointSets.Root(Label, i);
             Forget(_table!.Pair[Slot[i]]);
         }
 
@@ -143,22 +143,7 @@ internal sealed class HitClusters
             return;
         }
 
-        int a = Root(i), b = Root(first);
-        if (a != b)
-        {
-            Label[Math.Max(a, b)] = Math.Min(a, b);
-        }
-    }
-
-    private int Root(int i)
-    {
-        while (Label[i] != i)
-        {
-            Label[i] = Label[Label[i]];
-            i = Label[i];
-        }
-
-        return i;
+        DisjointSets.Union(Label, i, first);
     }
 
     private void Forget(in PlannedPair pair)

@@ -54,7 +54,7 @@ internal sealed class IslandSet
         {
             if (table.Alive[slot] && table.Pair[slot].MoverB >= 0)
             {
-                Join(table.Pair[slot].MoverA, table.Pair[slot].MoverB);
+                DisjointSets.Union(_parent, table.Pair[slot].MoverA, table.Pair[slot].MoverB);
             }
         }
 
@@ -62,7 +62,7 @@ internal sealed class IslandSet
         Count = 0;
         for (int m = 0; m < movers; m++)
         {
-            int root = Root(m);
+            int root = DisjointSets.Root(_parent, m);
             if (_number[root] < 0)
             {
                 _bodies[Count] = 0;
@@ -143,24 +143,4 @@ internal sealed class IslandSet
     }
 
     private long Work(int island) => (2L * (_pairStart[island + 1] - _pairStart[island])) + _bodies[island];
-
-    private void Join(int a, int b)
-    {
-        int ra = Root(a), rb = Root(b);
-        if (ra != rb)
-        {
-            _parent[Math.Max(ra, rb)] = Math.Min(ra, rb);
-        }
-    }
-
-    private int Root(int m)
-    {
-        while (_parent[m] != m)
-        {
-            _parent[m] = _parent[_parent[m]];
-            m = _parent[m];
-        }
-
-        return m;
-    }
 }
