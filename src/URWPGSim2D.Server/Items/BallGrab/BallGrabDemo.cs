@@ -31,12 +31,10 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
 
     private int[] _target = [];
     private Stuck[] _stuck = [];
-    private FishTrack[] _fish = [];
     private Pusher[] _pushers = [];
-    private BallTrack[] _balls = [];
     private int[] _since = [];
     private int[] _restUntil = [];
-    private Waypath? _ways;
+    private readonly Tracking _tracking = new();
     private int _half;
 
     /// <inheritdoc/>
@@ -51,26 +49,14 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
             _half = referee.Half;
             _target = new int[fish.Length];
             _stuck = new Stuck[fish.Length];
-            _fish = new FishTrack[fish.Length];
             _pushers = new Pusher[fish.Length];
-            _balls = new BallTrack[snapshot.Balls.Length];
+            _tracking.Restart();
             _since = new int[fish.Length];
             _restUntil = new int[snapshot.Balls.Length];
             Array.Fill(_target, -1);
         }
 
-        for (int i = 0; i < _balls.Length; i++)
-        {
-            _balls[i].Update(snapshot.Balls[i]);
-        }
-
-        for (int k = 0; k < fish.Length; k++)
-        {
-            _fish[k].Update(snapshot.Fish[fish[k]]);
-        }
-
-        _ways ??= Surroundings.WaysOf(snapshot);
-        var around = new Surroundings(snapshot, _ways);
+        var around = _tracking.Observe(snapshot, fish);
         int team = snapshot.Fish[fish[0]].Team;
         int side = referee.BoxSide(team);
         Span<Vector2> route = stackalloc Vector2[5];
@@ -107,16 +93,16 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
             _target[k] = ball;
             if (ball < 0)
             {
-                decisions[k] = Vector2.Distance(_fish[k].Position, Vector2.Zero) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], Vector2.Zero, around, 6);
+                decisions[k] = Vector2.Distance(_tracking.Fish[k].Position, Vector2.Zero) < 200f ? Decision.Stop : _pushers[k].Travel(me, _tracking.Fish[k], Vector2.Zero, around, 6);
                 continue;
             }
 
             float radius = snapshot.Balls[ball].Radius;
-            Vector2 q = _balls[ball].Position * new Vector2(side, 1f);
+            Vector2 q = _tracking.Balls[ball].Position * new Vector2(side, 1f);
             int n = Route(q, radius, route);
             Vector2 way = default(RouteProgress).Direction(route[..n], q, Ahead) * new Vector2(side, 1f);
             int vcode = q.X > BoxOuterX - 100f ? FineVCode : PushVCode;
-            decisions[k] = _pushers[k].Push(me, _fish[k], ref _balls[ball], radius, way, around, vcode);
+            decisions[k] = _pushers[k].Push(me, _tracking.Fish[k], ref _tracking.Balls[ball], radius, way, around, vcode);
         }
     }
 
@@ -180,15 +166,15 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
         float bestScore = float.NegativeInfinity;
         for (int i = 0; i < balls.Length; i++)
         {
-            if (referee.HasScored(team, i) || snapshot.Cycle < _restUntil[i] || InBox(_balls[i].Position, balls[i].Radius, side) || InBox(_balls[i].Position, balls[i].Radius, -side) || Taken(i, k))
+            if (referee.HasScored(team, i) || snapshot.Cycle < _restUntil[i] || InBox(_tracking.Balls[i].Position, balls[i].Radius, side) || InBox(_tracking.Balls[i].Position, balls[i].Radius, -side) || Taken(i, k))
             {
                 continue;
             }
 
             float value = (float)referee.BallValue(i);
-            float distance = Vector2.Distance(_fish[k].Position, _balls[i].Position) + 200f;
+            float distance = Vector2.Distance(_tracking.Fish[k].Position, _tracking.Balls[i].Position) + 200f;
             float score = (value / distance) + (i == _target[k] ? 0.0015f : 0f);
-            if (MathF.Abs(_balls[i].Position.X) > HalfLength - 120f)
+            if (MathF.Abs(_tracking.Balls[i].Position.X) > HalfLength - 120f)
             {
                 // Against an end wall no fish gets behind it to push it out: last of all.
                 score *= 0.01f;

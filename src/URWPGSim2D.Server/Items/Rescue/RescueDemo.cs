@@ -22,10 +22,8 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
     private const float Ahead = 350f;
 
     private readonly RouteProgress[] _progress = new RouteProgress[2];
-    private FishTrack[] _fish = [];
-    private BallTrack[] _balls = [];
+    private readonly Tracking _tracking = new();
     private Pusher[] _pushers = [];
-    private Waypath? _ways;
     private int _half;
 
     /// <inheritdoc/>
@@ -34,28 +32,16 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
-        if (_fish.Length != fish.Length || referee.Half != _half)
+        if (_tracking.Fish.Length != fish.Length || referee.Half != _half)
         {
             // A new half: the referee has placed every body afresh.
             _half = referee.Half;
-            _fish = new FishTrack[fish.Length];
             _pushers = new Pusher[fish.Length];
-            _balls = new BallTrack[snapshot.Balls.Length];
+            _tracking.Restart();
             Array.Clear(_progress);
         }
 
-        for (int i = 0; i < _balls.Length; i++)
-        {
-            _balls[i].Update(snapshot.Balls[i]);
-        }
-
-        for (int k = 0; k < fish.Length; k++)
-        {
-            _fish[k].Update(snapshot.Fish[fish[k]]);
-        }
-
-        _ways ??= Surroundings.WaysOf(snapshot);
-        var around = new Surroundings(snapshot, _ways);
+        var around = _tracking.Observe(snapshot, fish);
         bool rescuing = referee.Rescuer == team;
         for (int k = 0; k < fish.Length; k++)
         {
@@ -73,16 +59,16 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         }
 
         float radius = snapshot.Balls[ball].Radius;
-        ref BallTrack b = ref _balls[ball];
+        ref BallTrack b = ref _tracking.Balls[ball];
         ReadOnlySpan<Vector2> route = RescueRoutes.Route(ball);
-        if (ball == 1 && !referee.HasRescued(team, 0) && _balls[0].Position.X < RescueRoutes.ClearX && b.Position.X > RescueRoutes.WaitX)
+        if (ball == 1 && !referee.HasRescued(team, 0) && _tracking.Balls[0].Position.X < RescueRoutes.ClearX && b.Position.X > RescueRoutes.WaitX)
         {
             // Ball 1 waits on its route until ball 0 is through the left gap.
             return Decision.Stop;
         }
 
         Vector2 direction = _progress[ball].Direction(route, b.Position, Ahead);
-        return _pushers[k].Push(me, _fish[k], ref b, radius, direction, around, PushVCode);
+        return _pushers[k].Push(me, _tracking.Fish[k], ref b, radius, direction, around, PushVCode);
     }
 
     // Fish k's ball (its own), or −1 once that is rescued (the other fish is on the other ball).
@@ -96,12 +82,12 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
     private Decision Rest(in FishView me, int k, in Surroundings around)
     {
         Vector2 spot = RescueRoutes.Rest(k);
-        if (Vector2.Distance(_fish[k].Position, spot) < 200f)
+        if (Vector2.Distance(_tracking.Fish[k].Position, spot) < 200f)
         {
             return Decision.Stop;
         }
 
-        return _pushers[k].Travel(me, _fish[k], spot, around);
+        return _pushers[k].Travel(me, _tracking.Fish[k], spot, around);
     }
 
     // Defending: the active fish guards the zone from (1300, 0) and pushes any unrescued ball that
@@ -112,13 +98,13 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
         float best = float.PositiveInfinity;
         for (int i = 0; i < snapshot.Balls.Length && i < 2; i++)
         {
-            Vector2 p = _balls[i].Position;
+            Vector2 p = _tracking.Balls[i].Position;
             if (referee.HasRescued(referee.Rescuer, i) || p.X <= RescueRoutes.GuardX)
             {
                 continue;
             }
 
-            float d = Vector2.Distance(_fish[k].Position, p);
+            float d = Vector2.Distance(_tracking.Fish[k].Position, p);
             if (d < best)
             {
                 best = d;
@@ -128,9 +114,9 @@ internal sealed class RescueDemo(int team, RescueReferee referee) : IStrategy
 
         if (nearest < 0)
         {
-            return Vector2.Distance(_fish[k].Position, RescueRoutes.Guard) < 200f ? Decision.Stop : _pushers[k].Travel(me, _fish[k], RescueRoutes.Guard, around, 6);
+            return Vector2.Distance(_tracking.Fish[k].Position, RescueRoutes.Guard) < 200f ? Decision.Stop : _pushers[k].Travel(me, _tracking.Fish[k], RescueRoutes.Guard, around, 6);
         }
 
-        return _pushers[k].Push(me, _fish[k], ref _balls[nearest], snapshot.Balls[nearest].Radius, -Vector2.UnitX, around, ClearVCode);
+        return _pushers[k].Push(me, _tracking.Fish[k], ref _tracking.Balls[nearest], snapshot.Balls[nearest].Radius, -Vector2.UnitX, around, ClearVCode);
     }
 }

@@ -43,10 +43,8 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
     private Stuck[] _stuck = [];
     private bool[] _pushing = [];
     private Vector2[] _seen = [];
-    private FishTrack[] _tracks = [];
-    private BallTrack[] _ballTracks = [];
     private Pusher[] _pushers = [];
-    private Waypath? _ways;
+    private readonly Tracking _tracking = new();
 
     /// <inheritdoc/>
     public string TeamName => "transport demo";
@@ -60,26 +58,10 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
             Array.Fill(_jobs, new Job(-1, 0, 0));
             _stuck = new Stuck[fish.Length];
             _pushing = new bool[fish.Length];
-            _tracks = new FishTrack[fish.Length];
             _pushers = new Pusher[fish.Length];
         }
 
-        if (_ballTracks.Length != snapshot.Balls.Length)
-        {
-            _ballTracks = new BallTrack[snapshot.Balls.Length];
-        }
-
-        for (int i = 0; i < _ballTracks.Length; i++)
-        {
-            _ballTracks[i].Update(snapshot.Balls[i]);
-        }
-
-        for (int k = 0; k < fish.Length; k++)
-        {
-            _tracks[k].Update(snapshot.Fish[fish[k]]);
-        }
-
-        _ways ??= Surroundings.WaysOf(snapshot);
+        var around = _tracking.Observe(snapshot, fish);
 
         // The balls' observed positions are noisy (±30 mm): follow them smoothly, jumping only when a ball was knocked far.
         if (_seen.Length != snapshot.Balls.Length)
@@ -124,7 +106,7 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
                 continue;
             }
 
-            decisions[k] = job.Ball < 0 ? Wait(me, k) : Push(snapshot, me, k, ref job, snapshot.Fish[fish[fish.Length - 1 - k]].Position);
+            decisions[k] = job.Ball < 0 ? Wait(me, k) : Push(snapshot, me, k, ref job, snapshot.Fish[fish[fish.Length - 1 - k]].Position, around);
         }
     }
 
@@ -170,7 +152,7 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
         return -1;
     }
 
-    private Decision Push(MatchSnapshot snapshot, in FishView me, int k, ref Job job, Vector2 other)
+    private Decision Push(MatchSnapshot snapshot, in FishView me, int k, ref Job job, Vector2 other, in Surroundings around)
     {
         BallView ball = snapshot.Balls[job.Ball];
         Vector2 b = _seen[job.Ball];
@@ -192,10 +174,10 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
         {
             // Behind the ball (the same tolerances as Dribble's): the lag-aware push, which keeps the
             // ball on the head and curves it onto the line through the hole.
-            Vector2 tracked = _ballTracks[job.Ball].Position;
+            Vector2 tracked = _tracking.Balls[job.Ball].Position;
             Vector2 toward = target - tracked;
             Vector2 way = toward.LengthSquared() > 1f ? Vector2.Normalize(toward) : dir;
-            return _pushers[k].Push(me, _tracks[k], ref _ballTracks[job.Ball], ball.Radius, way, new Surroundings(snapshot, _ways!), Vector2.Distance(b, hole) < Fine ? FineVCode : PushVCode);
+            return _pushers[k].Push(me, _tracking.Fish[k], ref _tracking.Balls[job.Ball], ball.Radius, way, around, Vector2.Distance(b, hole) < Fine ? FineVCode : PushVCode);
         }
 
         // Not behind the ball: to the stand point behind it (x ≤ 1200 keeps the tail off the wall),
