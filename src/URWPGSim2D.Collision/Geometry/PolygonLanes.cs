@@ -124,6 +124,15 @@ internal static class PolygonLanes
         return Vector256.MaxNative(best, Avx.Permute(best, 0b10_11_00_01));
     }
 
+    /// <summary>The least lane, in every lane.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static Vector256<float> Least(Vector256<float> v)
+    {
+        var low = Vector256.MinNative(v, Avx.Permute2x128(v, v, 0x01));
+        low = Vector256.MinNative(low, Avx.Permute(low, 0b01_00_11_10));
+        return Vector256.MinNative(low, Avx.Permute(low, 0b10_11_00_01));
+    }
+
     /// <summary>The lowest lane where <paramref name="v"/> equals <paramref name="value"/> (which must be in some lane).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static int FirstLane(Vector256<float> v, Vector256<float> value) =>

@@ -119,7 +119,7 @@ internal static class ConvexSatWide
         else
         {
             var dots = (Vector256.Create(n.X) * mx) + (Vector256.Create(n.Y) * mz);
-            edge = Vector256.CreateScalarUnsafe(PolygonLanes.FirstLane(dots, Least(dots)));
+            edge = Vector256.CreateScalarUnsafe(PolygonLanes.FirstLane(dots, PolygonLanes.Least(dots)));
         }
         var depth = new ContactDepth(referenceIsA ? -n : n, referenceIsA ? -sepA : -sepB, PolygonLanes.Index(laneA, na), sepA, PolygonLanes.Index(laneB, nb), sepB);
 
@@ -235,15 +235,6 @@ internal static class ConvexSatWide
         var less = Vector256.LessThan(later, least);
         least = Vector256.ConditionalSelect(less, later, least);
         edges = Vector256.ConditionalSelect(less.AsInt32(), Vector256.Create(edge), edges);
-    }
-
-    // The least lane, in every lane.
-    [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static Vector256<float> Least(Vector256<float> v)
-    {
-        var low = Vector256.MinNative(v, Avx.Permute2x128(v, v, 0x01));
-        low = Vector256.MinNative(low, Avx.Permute(low, 0b01_00_11_10));
-        return Vector256.MinNative(low, Avx.Permute(low, 0b10_11_00_01));
     }
 
     // FaceLoops.Inside for both shapes at once (relative coordinates).
