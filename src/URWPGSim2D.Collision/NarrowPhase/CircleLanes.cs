@@ -15,9 +15,11 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// s = n·(c − v) and, beside the search for the greatest, every lane's Voronoi region, normal and
 /// depth as if its face were the farthest (both end vertices' tests, the square root and the
 /// division done for all lanes at once, off the search's path), so that only a lane is left to
-/// pick; the chord of the polygon on the line through the centre along the normal reuses the
-/// separations. Every quantity is computed with the same operations in the same order as in
-/// <see cref="CircleConvex"/> and <see cref="FaceLoops"/>, so the answers are the same bit for bit.
+/// pick. The action point's chord is <see cref="CircleChord"/>'s: its near end from the depth, its
+/// far end −r unless the circle's far point lies outside a face (one comparison over the lanes),
+/// else the greatest −s/d over the lanes. Every quantity is computed with the same operations in
+/// the same order as in <see cref="CircleConvex"/>, <see cref="FaceLoops"/> and
+/// <see cref="CircleChord"/>, so the answers are the same bit for bit.
 /// </summary>
 internal static class CircleLanes
 {
@@ -99,7 +101,7 @@ internal static class CircleLanes
     }
 
     // CircleChord.FarEnd's slow part: the greatest −s/d over the faces with d < 0, and −r.
-    [MethodImpl(MethodImplOptions.NoInlining)]
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     private static float FarEnd(Vector256<float> s, Vector256<float> dn, float r)
     {
         var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, Vector256<float>.Zero), -s / dn, Vector256.Create(-r));
