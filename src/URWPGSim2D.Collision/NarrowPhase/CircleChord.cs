@@ -14,10 +14,11 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// itself: the line meets the face of greatest separation s at t = −s (edge region, or centre
 /// inside) or passes through the vertex at distance d from the centre at t = −d (vertex region),
 /// and the depth is r − s or r − d, so hi = depth − r;</item>
-/// <item>lo, where the line enters the polygon on the far side, matters only when it is above −r,
-/// which is exactly when the circle's far point c − r·normal lies outside the polygon: outside
-/// some face, s &gt; r·d with d = n·normal. Only then is lo taken as the greatest −s/d over the
-/// faces with d &lt; 0 (the common deep or thin-polygon case costs the test alone).</item>
+/// <item>lo, where the line enters the polygon on its far side, matters only when it is above −r,
+/// which is exactly when the circle's deepest point c − r·normal (its point farthest into the
+/// polygon) lies outside the polygon: outside some face, s &gt; r·d with d = n·normal. Only then
+/// is lo taken as the greatest −s/d over the faces with d &lt; 0; otherwise it is −r, and the
+/// test is all it costs.</item>
 /// </list>
 /// The vector path (<see cref="CircleLanes"/>) computes s, d, the test and the greatest −s/d with
 /// the same operations, so both paths give the same bits.

@@ -16,8 +16,8 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// depth as if its face were the farthest (both end vertices' tests, the square root and the
 /// division done for all lanes at once, off the search's path), so that only a lane is left to
 /// pick. The action point's chord is <see cref="CircleChord"/>'s: its near end from the depth, its
-/// far end −r unless the circle's far point lies outside a face (one comparison over the lanes),
-/// else the greatest −s/d over the lanes. Every quantity is computed with the same operations in
+/// far end −r unless the circle's deepest point lies outside a face (one comparison over the
+/// lanes), else the greatest −s/d over the lanes. Every quantity is computed with the same operations in
 /// the same order as in <see cref="CircleConvex"/>, <see cref="FaceLoops"/> and
 /// <see cref="CircleChord"/>, so the answers are the same bit for bit.
 /// </summary>
@@ -89,7 +89,7 @@ internal static class CircleLanes
         }
 
         // The picked lane's normal in every lane, its depth, and the action point (CircleChord):
-        // the far end of the chord is −r unless the circle's far point lies outside some face.
+        // the far end of the chord is −r unless the circle's deepest point lies outside some face.
         var pick = Vector256.Create(lane);
         var normalXs = Avx2.PermuteVar8x32(normalX, pick);
         var normalZs = Avx2.PermuteVar8x32(normalZ, pick);
