@@ -60,7 +60,7 @@ internal static class CircleChord
     public static float Middle(float lo, float depth, float r)
     {
         float exit = depth - r;
-        float hi = ExactMinMax.Min(exit, r);
+        float hi = exit < r ? exit : r; // r > 0: no signed zero to choose between
         return lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(exit, -r, r);
     }
 

@@ -65,14 +65,18 @@ internal static class CircleLanes
         // Beside the search for the farthest face, every lane's answer as if its face were the
         // one: the edge's start v1 (this lane) and end v2 (the next vertex's lane) decide the
         // region ((c − v1)·(v2 − v1) ≤ 0: v1's; else (c − v2)·(v1 − v2) ≤ 0: v2's; else the
-        // edge's, or inside when s ≤ 0), then the normal and depth of that region.
+        // edge's, or inside when s ≤ 0), then the normal and depth of that region. The second
+        // test is taken as (c − v2)·(v2 − v1) ≥ 0: the same sum negated, exactly (products and
+        // sums round symmetrically), so the same answer with one edge vector.
         var zero = Vector256<float>.Zero;
         var x2 = Vector256.LoadUnsafe(ref packed, 32);
         var z2 = Vector256.LoadUnsafe(ref packed, 40);
         var bx = cx - x2;
         var bz = cz - z2;
-        var atStart = Vector256.LessThanOrEqual((dx * (x2 - x)) + (dz * (z2 - z)), zero);
-        var atEnd = Vector256.LessThanOrEqual((bx * (x - x2)) + (bz * (z - z2)), zero);
+        var ex = x2 - x;
+        var ez = z2 - z;
+        var atStart = Vector256.LessThanOrEqual((dx * ex) + (dz * ez), zero);
+        var atEnd = Vector256.GreaterThanOrEqual((bx * ex) + (bz * ez), zero);
         var dist2 = Vector256.ConditionalSelect(atStart, (dx * dx) + (dz * dz), (bx * bx) + (bz * bz));
         var px = Vector256.ConditionalSelect(atStart, dx, bx);
         var pz = Vector256.ConditionalSelect(atStart, dz, bz);
