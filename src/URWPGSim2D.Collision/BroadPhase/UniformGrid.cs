@@ -149,6 +149,7 @@ internal sealed partial class UniformGrid : IBroadPhase
     {
         ArgumentNullException.ThrowIfNull(pairs);
         _sorter.Clear();
+        _sorter.Reserve(pairs.Capacity);
         PairListedProxies();
         if (_movedCount > 0)
         {
