@@ -40,10 +40,9 @@ internal static class PairTest
             }
 
             case BodyKind.Static:
-                if (b.Shape.Kind == ShapeKind.Circle)
+                if (b.RoundStatic)
                 {
-                    Circle c = b.Shape.BoundingCircle;
-                    Disc d = new(c.Center, c.Radius);
+                    Disc d = b.StaticDisc;
                     return MathF.Min(a1.GapTo(d), a2.GapTo(d));
                 }
 
