@@ -50,7 +50,7 @@ internal static class PairTest
             default:
             {
                 b.Groups(out Disc b1, out Disc b2);
-                return MathF.Min(MathF.Min(a1.GapTo(b1), a1.GapTo(b2)), MathF.Min(a2.GapTo(b1), a2.GapTo(b2)));
+                return Disc.LeastGap(a1, a2, b1, b2);
             }
         }
     }
