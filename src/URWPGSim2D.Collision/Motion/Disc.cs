@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using System.Runtime.Intrinsics;
 
 namespace URWPGSim2D.Collision.Motion;
@@ -16,6 +17,7 @@ internal readonly record struct Disc(Vector2 Center, float Radius)
     /// with the same subtractions, products, sum and square root as <see cref="GapTo(in Disc)"/>,
     /// so the answer is the same to the bit.
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
     public static float LeastGap(in Disc a1, in Disc a2, in Disc b1, in Disc b2)
     {
         if (!Vector128.IsHardwareAccelerated)
