@@ -27,6 +27,9 @@ internal sealed class PairList
     /// <summary>Number of pairs.</summary>
     public int Count { get; private set; }
 
+    /// <summary>Pairs the list holds before it grows.</summary>
+    public int Capacity => _items.Length;
+
     /// <summary>The pairs, in the order they were added.</summary>
     public ReadOnlySpan<ProxyPair> Items => _items.AsSpan(0, Count);
 

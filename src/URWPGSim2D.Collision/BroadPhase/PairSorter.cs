@@ -17,6 +17,15 @@ internal sealed class PairSorter
 
     public void Clear() => Count = 0;
 
+    /// <summary>Makes room for <paramref name="pairs"/> pairs, so that collecting that many does not grow the buffer.</summary>
+    public void Reserve(int pairs)
+    {
+        if (_unsorted.Length < pairs)
+        {
+            Array.Resize(ref _unsorted, pairs);
+        }
+    }
+
     /// <summary>Adds a pair (a &lt; b).</summary>
     public void Add(int a, int b)
     {

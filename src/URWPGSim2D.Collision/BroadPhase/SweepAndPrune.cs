@@ -70,6 +70,7 @@ internal sealed class SweepAndPrune : IBroadPhase
         var max = _store.Max;
         int n = _store.Count;
         _sorter.Clear();
+        _sorter.Reserve(pairs.Capacity);
         for (int i = 0; i < n; i++)
         {
             int a = _order[i];

@@ -120,8 +120,7 @@ internal sealed partial class UniformGrid
             {
                 int slot = --_cellStart[cell];
                 _slotProxy[slot] = p;
-                _slotMin[slot] = min[p];
-                _slotMax[slot] = max[p];
+                _slotBox[slot] = ProxyBox.Packed(min[p], max[p]);
                 _slotOf[p] = slot;
             }
         }

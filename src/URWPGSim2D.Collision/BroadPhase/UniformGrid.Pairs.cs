@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 
 namespace URWPGSim2D.Collision.BroadPhase;
 
@@ -18,8 +19,7 @@ internal sealed partial class UniformGrid
     {
         int[] cellStart = _cellStart;
         int[] proxy = _slotProxy;
-        Vector2[] min = _slotMin;
-        Vector2[] max = _slotMax;
+        Vector128<float>[] box = _slotBox;
         int moving = _store.MovingCount;
         int columns = _columns;
         for (int y = 0; y < _rows; y++)
@@ -52,16 +52,16 @@ internal sealed partial class UniformGrid
                         continue;
                     }
 
-                    Vector2 lo = min[i], hi = max[i];
+                    Vector128<float> reach = ProxyBox.Reach(box[i]);
                     bool aMoves = a < moving;
                     for (int j = i + 1; j < sameRowEnd; j++)
                     {
-                        Test(a, aMoves, lo, hi, proxy[j], min[j], max[j], moving);
+                        Test(a, aMoves, reach, proxy[j], box[j], moving);
                     }
 
                     for (int j = belowStart; j < belowEnd; j++)
                     {
-                        Test(a, aMoves, lo, hi, proxy[j], min[j], max[j], moving);
+                        Test(a, aMoves, reach, proxy[j], box[j], moving);
                     }
                 }
             }
@@ -71,6 +71,15 @@ internal sealed partial class UniformGrid
     private void Test(int a, bool aMoves, Vector2 lo, Vector2 hi, int b, Vector2 minB, Vector2 maxB, int moving)
     {
         if (b != Empty && (aMoves || b < moving) && ProxyBox.Overlap(lo, hi, minB, maxB))
+        {
+            _sorter.Add(Math.Min(a, b), Math.Max(a, b));
+        }
+    }
+
+    // The same test against a listed slot's packed box.
+    private void Test(int a, bool aMoves, Vector128<float> reachA, int b, Vector128<float> boxB, int moving)
+    {
+        if (b != Empty && (aMoves || b < moving) && ProxyBox.Overlap(reachA, boxB))
         {
             _sorter.Add(Math.Min(a, b), Math.Max(a, b));
         }
@@ -86,13 +95,14 @@ internal sealed partial class UniformGrid
         int y0 = Row(lo.Y - CellSize), y1 = Row(hi.Y);
         var min = _store.Min;
         var max = _store.Max;
+        Vector128<float> reach = ProxyBox.Reach(ProxyBox.Packed(lo, hi));
         for (int y = y0; y <= y1; y++)
         {
             int row = y * _columns;
             int end = _cellStart[row + x1 + 1];
             for (int s = _cellStart[row + x0]; s < end; s++)
             {
-                Test(a, aMoves, lo, hi, _slotProxy[s], _slotMin[s], _slotMax[s], moving);
+                Test(a, aMoves, reach, _slotProxy[s], _slotBox[s], moving);
             }
 
             for (int x = x0; x <= x1; x++)

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.BroadPhase;
@@ -37,8 +38,7 @@ internal sealed partial class UniformGrid : IBroadPhase
     private int _rows = 1;
     private int[] _cellStart = new int[2];
     private int[] _slotProxy = new int[16];
-    private Vector2[] _slotMin = new Vector2[16];
-    private Vector2[] _slotMax = new Vector2[16];
+    private Vector128<float>[] _slotBox = new Vector128<float>[16];
     private int[] _slotOf = new int[16];
     private int[] _cellOf = new int[16];
     private int[] _movedHead = [Empty];
@@ -94,8 +94,7 @@ internal sealed partial class UniformGrid : IBroadPhase
         {
             int size = Math.Max(n, _slotOf.Length * 2);
             _slotProxy = new int[size];
-            _slotMin = new Vector2[size];
-            _slotMax = new Vector2[size];
+            _slotBox = new Vector128<float>[size];
             _slotOf = new int[size];
             _cellOf = new int[size];
             _movedNext = new int[size];
@@ -117,8 +116,7 @@ internal sealed partial class UniformGrid : IBroadPhase
         {
             if (cell == _cellOf[proxy])
             {
-                _slotMin[slot] = box.Min;
-                _slotMax[slot] = box.Max;
+                _slotBox[slot] = ProxyBox.Packed(box.Min, box.Max);
                 return;
             }
 
@@ -149,6 +147,7 @@ internal sealed partial class UniformGrid : IBroadPhase
     {
         ArgumentNullException.ThrowIfNull(pairs);
         _sorter.Clear();
+        _sorter.Reserve(pairs.Capacity);
         PairListedProxies();
         if (_movedCount > 0)
         {
@@ -204,8 +203,8 @@ internal sealed partial class UniformGrid : IBroadPhase
         int y0 = Row(lo.Y - CellSize), y1 = Row(hi.Y);
         int[] cellStart = _cellStart;
         int[] slotProxy = _slotProxy;
-        Vector2[] slotMin = _slotMin;
-        Vector2[] slotMax = _slotMax;
+        Vector128<float>[] slotBox = _slotBox;
+        Vector128<float> reach = ProxyBox.Reach(ProxyBox.Packed(lo, hi));
         for (int y = y0; y <= y1; y++)
         {
             int row = y * _columns;
@@ -213,7 +212,7 @@ internal sealed partial class UniformGrid : IBroadPhase
             for (int s = cellStart[row + x0]; s < end; s++)
             {
                 int p = slotProxy[s];
-                if (p > after && ProxyBox.Overlap(lo, hi, slotMin[s], slotMax[s]))
+                if (p > after && ProxyBox.Overlap(reach, slotBox[s]))
                 {
                     sink.Add(p);
                 }

@@ -80,6 +80,12 @@ internal sealed class Body
     /// <summary>A static body's shape.</summary>
     public Shape Shape { get; private init; }
 
+    /// <summary>Whether the body is a static circle (its bounds test is <see cref="StaticDisc"/> rather than <see cref="Bounds"/>).</summary>
+    public bool RoundStatic { get; private init; }
+
+    /// <summary>A static body's bounding circle (kept so that bounds tests need not read <see cref="Shape"/>).</summary>
+    public Disc StaticDisc { get; private init; }
+
     /// <summary>A static body's bounds, or the walls' pool bounds.</summary>
     public Aabb Bounds { get; private init; }
 
@@ -210,7 +216,15 @@ internal sealed class Body
             ShapeKind.KDop8 => KDopWidth(shape.AsKDop8()),
             _ => Width(shape.AsPolygon().Vertices, shape.AsPolygon().Normals),
         };
-        return new Body(BodyKind.Static, id) { Shape = shape, Bounds = bounds, Thickness = thickness, Position = c.Center };
+        return new Body(BodyKind.Static, id)
+        {
+            Shape = shape,
+            Bounds = bounds,
+            Thickness = thickness,
+            Position = c.Center,
+            RoundStatic = shape.Kind == ShapeKind.Circle,
+            StaticDisc = new Disc(c.Center, c.Radius),
+        };
     }
 
     /// <summary>The walls of a pool.</summary>
@@ -345,7 +359,7 @@ internal sealed class Body
     {
         if (Kind != BodyKind.Fish)
         {
-            first = Kind == BodyKind.Circle ? new Disc(Position, Radius) : Kind == BodyKind.Polygon ? new Disc(Position, Reach) : new Disc(Position, Shape.BoundingCircle.Radius);
+            first = Kind == BodyKind.Circle ? new Disc(Position, Radius) : Kind == BodyKind.Polygon ? new Disc(Position, Reach) : new Disc(Position, StaticDisc.Radius);
             second = first;
             return;
         }

@@ -30,9 +30,10 @@ internal sealed class IslandSet
     /// <summary>Island i's pairs are <c>PairSlot[PairStart[i]] … PairSlot[PairStart[i + 1] − 1]</c>.</summary>
     public ReadOnlySpan<int> PairStart => _pairStart.AsSpan(0, Count + 1);
 
-    /// <summary>Sizes the storage for a world of <paramref name="movers"/> movers.</summary>
-    public void Load(int movers)
+    /// <summary>Sizes the storage for a world of <paramref name="movers"/> movers and up to <paramref name="pairs"/> planned pairs.</summary>
+    public void Load(int movers, int pairs)
     {
+        _pairSlot = new int[Math.Max(pairs, 64)];
         _parent = new int[movers];
         _number = new int[movers];
         IslandOf = new int[movers];
@@ -80,7 +81,7 @@ internal sealed class IslandSet
         int n = table.Used;
         if (_pairSlot.Length < n)
         {
-            _pairSlot = new int[Math.Max(n, _pairSlot.Length * 2)];
+            _pairSlot = new int[Math.Max(n, table.Pair.Length)];
         }
 
         Array.Clear(_pairStart, 0, Count + 1);

@@ -44,7 +44,7 @@ internal sealed class PairSampler
         _due = new int[(8 * movers) + 256];
         HitSlots = new int[(2 * movers) + 64];
         HitValues = new Hit[(2 * movers) + 64];
-        Memo.Clear();
+        Memo.Reserve(movers);
     }
 
     /// <summary>Starts a step: no entries, no sampled ticks.</summary>

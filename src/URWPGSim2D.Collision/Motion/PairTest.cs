@@ -40,10 +40,9 @@ internal static class PairTest
             }
 
             case BodyKind.Static:
-                if (b.Shape.Kind == ShapeKind.Circle)
+                if (b.RoundStatic)
                 {
-                    Circle c = b.Shape.BoundingCircle;
-                    Disc d = new(c.Center, c.Radius);
+                    Disc d = b.StaticDisc;
                     return MathF.Min(a1.GapTo(d), a2.GapTo(d));
                 }
 
@@ -51,7 +50,7 @@ internal static class PairTest
             default:
             {
                 b.Groups(out Disc b1, out Disc b2);
-                return MathF.Min(MathF.Min(a1.GapTo(b1), a1.GapTo(b2)), MathF.Min(a2.GapTo(b1), a2.GapTo(b2)));
+                return Disc.LeastGap(a1, a2, b1, b2);
             }
         }
     }

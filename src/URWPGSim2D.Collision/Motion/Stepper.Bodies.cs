@@ -335,9 +335,10 @@ public sealed partial class Stepper
 
         // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
         int m = movers.Count;
-        _table.Reserve((8 * m) + 64);
+        int pairs = (8 * m) + 64;
+        _table.Reserve(pairs);
         _sampler.Reserve(m);
-        LoadIslands(m);
+        LoadIslands(m, pairs);
         _pending = new int[(2 * m) + 16];
         _clusters.Reserve((2 * m) + 64, m);
         _collector.Reserve((8 * m) + 256);

@@ -70,9 +70,9 @@ public sealed partial class Stepper
     /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
     internal Disc SweptCircleOf(int body) => _planner.SweptCircle(_bodies[body].Slot);
 
-    private void LoadIslands(int movers)
+    private void LoadIslands(int movers, int pairs)
     {
-        _islands.Load(movers);
+        _islands.Load(movers, pairs);
         _heldByIsland.Reserve((2 * movers) + 64);
         _held.Reserve((2 * movers) + 64);
         foreach (IslandWorker worker in _workers)

@@ -176,15 +176,11 @@ internal sealed class SweepPlanner
         _boxes[m] = new Aabb(_center[m] - half, _center[m] + half);
     }
 
-    // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers).
+    // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers). The swept circles are
+    // tested first, from the planner's arrays: most pairs end there without reading either body.
     private void TryPair(int u, int v, IPairSink sink)
     {
         int count = _movers.Length;
-        if (!_movers[u].Collides || (v < count && !_movers[v].Collides))
-        {
-            return;
-        }
-
         if (v >= count)
         {
             TryStatic(u, v - count, sink);
@@ -198,15 +194,20 @@ internal sealed class SweepPlanner
         }
 
         Body a = _movers[u], b = _movers[v];
+        if (!a.Collides || !b.Collides)
+        {
+            return;
+        }
+
         float limit = 0.5f * (a.Thickness + b.Thickness);
         float rate = ((_velocity[u] - _velocity[v]).Length() * Seconds) + _spin[u] + _spin[v];
         sink.Add(new PlannedPair(a.Id, b.Id, u, v, limit), rate);
     }
 
+    // A static body's box is the one the broad phase holds (its bounds, never moved).
     private void TryStatic(int m, int s, IPairSink sink)
     {
-        Body body = _statics[s];
-        Aabb box = body.Bounds;
+        Aabb box = _boxes[_movers.Length + s];
         Vector2 c = _center[m];
         float r = _radius[m] + Margin;
         Vector2 d = Vector2.Max(Vector2.Max(box.Min - c, c - box.Max), Vector2.Zero);
@@ -215,7 +216,12 @@ internal sealed class SweepPlanner
             return;
         }
 
-        Body a = _movers[m];
+        Body a = _movers[m], body = _statics[s];
+        if (!a.Collides)
+        {
+            return;
+        }
+
         float limit = 0.5f * (a.Thickness + body.Thickness);
         sink.Add(new PlannedPair(a.Id, body.Id, m, -1, limit), _rate[m]);
     }

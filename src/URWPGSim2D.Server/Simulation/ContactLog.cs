@@ -3,13 +3,23 @@ using System;
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
-/// The contacts resolved in the current cycle (cleared each cycle; the buffer grows by doubling
-/// only when a cycle has more contacts than ever before) and the match's running counts by kind.
+/// The contacts resolved in the current cycle (cleared each cycle; the buffer is sized for the
+/// world up front and grows by doubling only when a cycle has more contacts than that) and the
+/// match's running counts by kind.
 /// </summary>
 internal sealed class ContactLog
 {
-    private ContactRecord[] _records = new ContactRecord[1024];
+    private ContactRecord[] _records;
     private readonly long[] _byKind = new long[7];
+
+    /// <summary>A log with room for a busy cycle of <paramref name="movers"/> moving bodies (four contacts each, at least 1,024).</summary>
+    public ContactLog(int movers = 0)
+    {
+        _records = new ContactRecord[Math.Max(1024, 4 * movers)];
+    }
+
+    /// <summary>Contacts a cycle may have before the buffer grows.</summary>
+    public int Capacity => _records.Length;
 
     /// <summary>This cycle's contacts in resolution order.</summary>
     public ReadOnlySpan<ContactRecord> Cycle => _records.AsSpan(0, Count);

@@ -30,6 +30,7 @@ internal sealed class Match
         World = world;
         Strategies = strategies;
         Referee = referee;
+        Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
         Stepper = new CycleMotion(world, Contacts, broadPhase);
         referee?.Start(world);
@@ -50,7 +51,7 @@ internal sealed class Match
     public MatchSnapshot Snapshot { get; }
 
     /// <summary>The contacts of the last cycle and the match's counts.</summary>
-    public ContactLog Contacts { get; } = new();
+    public ContactLog Contacts { get; }
 
     /// <summary>Motion interpolation and contact handling.</summary>
     public CycleMotion Stepper { get; }

@@ -20,8 +20,10 @@ public sealed class TestMemoTests
 {
     private const int Trials = 600;
 
-    [Fact]
-    public void RepeatedTestsAnswerAsTheTestAndChangesAreNeverMissed()
+    [Theory]
+    [InlineData(0)] // the 128 entries of a small world
+    [InlineData(1_000)] // a crowd's 1,024 entries
+    public void RepeatedTestsAnswerAsTheTestAndChangesAreNeverMissed(int movers)
     {
         var random = new Random(77);
         var field = new Field();
@@ -38,6 +40,10 @@ public sealed class TestMemoTests
             Body.Walls(7, field),
         ];
         var memo = new TestMemo();
+        if (movers > 0)
+        {
+            memo.Reserve(movers);
+        }
         int overlapping = 0;
         for (int trial = 0; trial < Trials; trial++)
         {
