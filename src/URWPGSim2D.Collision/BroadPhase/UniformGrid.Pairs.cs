@@ -118,7 +118,9 @@ internal sealed partial class UniformGrid
         }
     }
 
-    // An oversize proxy against every proxy that is not oversize, and the oversize ones with a larger index.
+    // An oversize proxy against every proxy that is not oversize, and the oversize ones with a larger
+    // index. A listed or moved box that overlaps it has its lower corner in the cells of
+    // [lo − cell, hi] (the query's argument), so only those cells are read, unless they are too many.
     private void PairOversize(int a)
     {
         int moving = _store.MovingCount;
@@ -126,9 +128,47 @@ internal sealed partial class UniformGrid
         var min = _store.Min;
         var max = _store.Max;
         Vector2 lo = min[a], hi = max[a];
-        for (int b = 0; b < _store.Count; b++)
+        int x0 = Column(lo.X - CellSize), x1 = Column(hi.X);
+        int y0 = Row(lo.Y - CellSize), y1 = Row(hi.Y);
+        if ((long)(x1 - x0 + 1) * (y1 - y0 + 1) > MaxCellsPerQuery)
         {
-            if (b != a && (_cellOf[b] != Empty || b > a))
+            for (int b = 0; b < _store.Count; b++)
+            {
+                if (b != a && (_cellOf[b] != Empty || b > a))
+                {
+                    Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
+                }
+            }
+
+            return;
+        }
+
+        Vector128<float> reach = ProxyBox.Reach(ProxyBox.Packed(lo, hi));
+        for (int y = y0; y <= y1; y++)
+        {
+            int row = y * _columns;
+            int end = _cellStart[row + x1 + 1];
+            for (int s = _cellStart[row + x0]; s < end; s++)
+            {
+                Test(a, aMoves, reach, _slotProxy[s], _slotBox[s], moving);
+            }
+
+            if (_movedCount > 0)
+            {
+                for (int x = x0; x <= x1; x++)
+                {
+                    for (int b = _movedHead[row + x]; b != Empty; b = _movedNext[b])
+                    {
+                        Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
+                    }
+                }
+            }
+        }
+
+        for (int i = 0; i < _oversizeCount; i++)
+        {
+            int b = _oversize[i];
+            if (b > a)
             {
                 Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
             }
