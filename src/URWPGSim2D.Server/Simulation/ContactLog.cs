@@ -18,9 +18,6 @@ internal sealed class ContactLog
         _records = new ContactRecord[Math.Max(1024, 4 * movers)];
     }
 
-    /// <summary>Contacts a cycle may have before the buffer grows.</summary>
-    public int Capacity => _records.Length;
-
     /// <summary>This cycle's contacts in resolution order.</summary>
     public ReadOnlySpan<ContactRecord> Cycle => _records.AsSpan(0, Count);
 
