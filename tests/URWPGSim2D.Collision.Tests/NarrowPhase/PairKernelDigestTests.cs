@@ -14,7 +14,9 @@ namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 /// pairs, which issue 10 let move by rounding (the circle's chord is now taken from its contact
 /// feature and, when needed, the far side only: <c>NarrowPhase/CircleChord</c>); those are held
 /// to lie in both shapes here and to a double-precision reference in
-/// <see cref="CircleActionPointTests"/>. The expected digest was computed at main c60096a, whose
+/// <see cref="CircleActionPointTests"/>, and pinned by a digest of their own, taken from the
+/// kernels of issue 10's circle chord (main b6e106b), so that they too move only when a change
+/// says so. The expected digest was computed at main c60096a, whose
 /// kernels gave the frozen digest of every float, by leaving the same action points out. Faster
 /// kernels must not move a single bit, because a last-bit difference can change a match (the fish
 /// leaves go through these kernels); a change that means to alter answers must say so and
@@ -29,16 +31,25 @@ public sealed class PairKernelDigestTests
     /// <summary>The digest of the frozen kernels' answers over <see cref="Corpus"/>, circle pairs' action points left out.</summary>
     private const ulong FrozenDigest = 0x24ECBE081D273147UL;
 
+    /// <summary>The digest of the circle pairs' action points over <see cref="Corpus"/> as <c>NarrowPhase/CircleChord</c> gives them (main b6e106b).</summary>
+    private const ulong CircleActionPointDigest = 0xBF105790EF806D05UL;
+
     [Fact]
     public void AnswersEqualTheFrozenKernelsBitForBit()
     {
         var digest = new Digest();
+        var circleActionPoints = new Digest();
         int hits = 0, circleContacts = 0;
         Corpus((a, b) =>
         {
             var r = CollisionDetector.Detect(a, b);
             bool circle = a.Kind == ShapeKind.Circle || b.Kind == ShapeKind.Circle;
             digest.Add(r, actionPoint: !circle);
+            if (circle)
+            {
+                circleActionPoints.Add(r.ActionPoint);
+            }
+
             hits += r.Intersect ? 1 : 0;
             if (circle && r.Intersect)
             {
@@ -49,6 +60,7 @@ public sealed class PairKernelDigestTests
         Assert.InRange(hits, 4000, 14000);
         Assert.InRange(circleContacts, 1000, 6000);
         Assert.Equal(FrozenDigest.ToString("X16"), digest.Value.ToString("X16"));
+        Assert.Equal(CircleActionPointDigest.ToString("X16"), circleActionPoints.Value.ToString("X16"));
     }
 
     // The action point lies in the circle and in the polygon, within 0.001 mm plus a few float
@@ -174,7 +186,7 @@ public sealed class PairKernelDigestTests
             }
         }
 
-        private void Add(Vector3 v)
+        public void Add(Vector3 v)
         {
             Add(BitConverter.SingleToInt32Bits(v.X));
             Add(BitConverter.SingleToInt32Bits(v.Y));
