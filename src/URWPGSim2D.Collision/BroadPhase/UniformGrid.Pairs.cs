@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// Listing the pairs. Two listed boxes that overlap have lower corners less than a cell apart, so
 /// their cells are the same or neighbours; each pair of neighbouring cells is visited once (a cell
 /// with itself, its right neighbour and the three cells below), which reads the sorted arrays in
-/// order. Moved and oversize proxies are then paired with everything by their own scans.
+/// order. Moved and oversize proxies are then paired by their own scans of the cells they cover.
 /// </content>
 internal sealed partial class UniformGrid
 {

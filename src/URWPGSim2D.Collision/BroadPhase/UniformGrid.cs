@@ -18,7 +18,8 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// fall into its border cells, which keeps every answer exact. A proxy moved to another cell by
 /// <see cref="Move"/> leaves the sorted arrays for a per-cell list until the next reset; boxes
 /// larger than a cell (the occasional outlier: a very fast object's swept box, a long static wall)
-/// are kept in a separate list and tested against everything. With objects of similar size,
+/// are kept in a separate list and tested against the boxes of the cells they cover (against
+/// everything when those are more than <see cref="MaxCellsPerQuery"/>). With objects of similar size,
 /// <see cref="FindPairs"/> costs O(n + pairs) and <see cref="Move"/> O(1).
 /// </summary>
 internal sealed partial class UniformGrid : IBroadPhase
