@@ -10,6 +10,8 @@ namespace URWPGSim2D.Collision.Motion;
 /// concerns another. Its remaining queue entries and that first sample's hits are then handed to
 /// the event loop, which carries on over the whole world (a response may send a body anywhere).
 /// Islands are merged in island order, so the contacts do not depend on the number of threads.
+/// On one thread every island is sampled at once in one queue, with the same result (see
+/// <c>SampleIslandsTogether</c>): nothing is grouped, copied back or, until a hit needs them, built.
 /// </content>
 public sealed partial class Stepper
 {
