@@ -23,16 +23,13 @@ internal static class CircleConvex
     /// <summary>Whether the circle and the polygon overlap and, if so, the normal and depth (no action point).</summary>
     public static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth) => Depth(circle, polygon, out depth, vector: true);
 
-    /// <summary>The finished contact for a <paramref name="depth"/> that <see cref="Depth(in Circle, in ConvexView, out ContactDepth)"/> found for the same circle and polygon.</summary>
-    public static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth) => Complete(circle, polygon, depth, vector: true);
-
     /// <summary>
     /// <see cref="Detect(in Circle, in ConvexView)"/>, four faces at a time when
     /// <paramref name="vector"/> is set and the hardware has vectors, else one at a time (the
     /// scalar path the vector path must equal).
     /// </summary>
     internal static CollisionDetectionResult Detect(in Circle circle, in ConvexView polygon, bool vector) =>
-        Depth(circle, polygon, out ContactDepth depth, vector) ? Complete(circle, polygon, depth, vector) : CollisionDetectionResult.None;
+        Depth(circle, polygon, out ContactDepth depth, vector) ? Complete(circle, polygon, depth) : CollisionDetectionResult.None;
 
     /// <summary><see cref="Depth(in Circle, in ConvexView, out ContactDepth)"/> (see <see cref="Detect(in Circle, in ConvexView, bool)"/>).</summary>
     internal static bool Depth(in Circle circle, in ConvexView polygon, out ContactDepth depth, bool vector)
@@ -64,11 +61,24 @@ internal static class CircleConvex
         return true;
     }
 
-    /// <summary><see cref="Complete(in Circle, in ConvexView, in ContactDepth)"/> (see <see cref="Detect(in Circle, in ConvexView, bool)"/>).</summary>
-    internal static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth, bool vector)
+    /// <summary>
+    /// The finished contact for a <paramref name="depth"/> that <see cref="Depth(in Circle, in ConvexView, out ContactDepth)"/>
+    /// found for the same circle and polygon: for a polygon the chord's ends by
+    /// <see cref="CircleChord"/> (one face at a time, the same bits as <see cref="CircleLanes"/>),
+    /// for a segment or a point their crossing of the line.
+    /// </summary>
+    public static CollisionDetectionResult Complete(in Circle circle, in ConvexView polygon, in ContactDepth depth)
     {
-        ContactRegion.LineInterval(polygon, circle.Center, depth.Normal, out float lo, out float hi, vector);
-        return Finish(circle, depth, lo, hi);
+        var v = polygon.Vertices;
+        if (v.Length >= 3)
+        {
+            float r = circle.Radius;
+            float lo = CircleChord.FarEnd(v, polygon.Normals, circle.Center, r, depth.Normal);
+            return CollisionDetectionResult.FromPlane(depth.Normal, depth.Depth, circle.Center + depth.Normal * CircleChord.Middle(lo, depth.Depth, r));
+        }
+
+        ContactRegion.LineInterval(polygon, circle.Center, depth.Normal, out float low, out float high);
+        return Finish(circle, depth, low, high);
     }
 
     /// <summary>
@@ -107,11 +117,11 @@ internal static class CircleConvex
     }
 
     /// <summary>
-    /// The result once the polygon's interval [lo, hi] on the line c + t·normal is known: the
-    /// middle of its overlap with the circle's [−r, r] (or, when round-off leaves none, the point
-    /// at depth − r along the normal).
+    /// The result once a segment's or a point's interval [lo, hi] on the line c + t·normal is
+    /// known: the middle of its overlap with the circle's [−r, r] (or, when round-off leaves none,
+    /// the point at depth − r along the normal).
     /// </summary>
-    internal static CollisionDetectionResult Finish(in Circle circle, in ContactDepth depth, float lo, float hi)
+    private static CollisionDetectionResult Finish(in Circle circle, in ContactDepth depth, float lo, float hi)
     {
         float r = circle.Radius;
         lo = ExactMinMax.Max(lo, -r);

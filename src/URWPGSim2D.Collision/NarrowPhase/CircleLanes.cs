@@ -15,9 +15,11 @@ namespace URWPGSim2D.Collision.NarrowPhase;
 /// s = n·(c − v) and, beside the search for the greatest, every lane's Voronoi region, normal and
 /// depth as if its face were the farthest (both end vertices' tests, the square root and the
 /// division done for all lanes at once, off the search's path), so that only a lane is left to
-/// pick; the chord of the polygon on the line through the centre along the normal reuses the
-/// separations. Every quantity is computed with the same operations in the same order as in
-/// <see cref="CircleConvex"/> and <see cref="FaceLoops"/>, so the answers are the same bit for bit.
+/// pick. The action point's chord is <see cref="CircleChord"/>'s: its near end from the depth, its
+/// far end −r unless the circle's deepest point lies outside a face (one comparison over the
+/// lanes), else the greatest −s/d over the lanes. Every quantity is computed with the same operations in
+/// the same order as in <see cref="CircleConvex"/>, <see cref="FaceLoops"/> and
+/// <see cref="CircleChord"/>, so the answers are the same bit for bit.
 /// </summary>
 internal static class CircleLanes
 {
@@ -63,17 +65,21 @@ internal static class CircleLanes
         // Beside the search for the farthest face, every lane's answer as if its face were the
         // one: the edge's start v1 (this lane) and end v2 (the next vertex's lane) decide the
         // region ((c − v1)·(v2 − v1) ≤ 0: v1's; else (c − v2)·(v1 − v2) ≤ 0: v2's; else the
-        // edge's, or inside when s ≤ 0), then the normal and depth of that region.
+        // edge's, or inside when s ≤ 0), then the normal and depth of that region. The second
+        // test is taken as (c − v2)·(v2 − v1) ≥ 0: the same sum negated, exactly (products and
+        // sums round symmetrically), so the same answer with one edge vector.
         var zero = Vector256<float>.Zero;
         var x2 = Vector256.LoadUnsafe(ref packed, 32);
         var z2 = Vector256.LoadUnsafe(ref packed, 40);
         var bx = cx - x2;
         var bz = cz - z2;
-        var atStart = Vector256.LessThanOrEqual((dx * (x2 - x)) + (dz * (z2 - z)), zero);
-        var atEnd = Vector256.LessThanOrEqual((bx * (x - x2)) + (bz * (z - z2)), zero);
+        var ex = x2 - x;
+        var ez = z2 - z;
+        var atStart = Vector256.LessThanOrEqual((dx * ex) + (dz * ez), zero);
+        var atEnd = Vector256.GreaterThanOrEqual((bx * ex) + (bz * ez), zero);
+        var dist2 = Vector256.ConditionalSelect(atStart, (dx * dx) + (dz * dz), (bx * bx) + (bz * bz));
         var px = Vector256.ConditionalSelect(atStart, dx, bx);
         var pz = Vector256.ConditionalSelect(atStart, dz, bz);
-        var dist2 = (px * px) + (pz * pz);
         var dist = Vector256.Sqrt(dist2);
         var positive = Vector256.GreaterThan(dist, zero);
         var vertex = (atStart | atEnd) & Vector256.GreaterThan(s, zero);
@@ -86,44 +92,23 @@ internal static class CircleLanes
             return default;
         }
 
-        var pick = Vector256.CreateScalarUnsafe(lane);
-        Vector2 normal = new(Avx2.PermuteVar8x32(normalX, pick).ToScalar(), Avx2.PermuteVar8x32(normalZ, pick).ToScalar());
+        // The picked lane's normal in every lane, its depth, and the action point (CircleChord):
+        // the far end of the chord is −r unless the circle's deepest point lies outside some face.
+        var pick = Vector256.Create(lane);
+        var normalXs = Avx2.PermuteVar8x32(normalX, pick);
+        var normalZs = Avx2.PermuteVar8x32(normalZ, pick);
+        Vector2 normal = new(normalXs.ToScalar(), normalZs.ToScalar());
         float contactDepth = Avx2.PermuteVar8x32(depth, pick).ToScalar();
-
-        // The action point: the middle of the overlap of the circle and the polygon's chord on the
-        // line c + t·normal, the chord taken face by face as FaceLoops.LineInterval takes it.
-        var dn = (nx * Vector256.Create(normal.X)) + (nz * Vector256.Create(normal.Y));
-        return ContactResult.Plane(normal, contactDepth, c + normal * Along(s, dn, r, contactDepth));
+        var dn = (nx * normalXs) + (nz * normalZs);
+        float lo = Vector256.GreaterThanAny(s, radius * dn) ? FarEnd(s, dn, r) : -r;
+        return ContactResult.Plane(normal, contactDepth, c + normal * CircleChord.Middle(lo, contactDepth, r));
     }
 
-    // CircleConvex.Finish's t: the middle of the overlap of the polygon's interval on the line
-    // (t ≤ −s/d where d = n·normal > 0, t ≥ −s/d where d < 0; a face parallel to the line with the
-    // centre outside it leaves nothing) with the circle's [−r, r].
+    // CircleChord.FarEnd's slow part: the greatest −s/d over the faces with d < 0, and −r.
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    private static float Along(Vector256<float> s, Vector256<float> dn, float r, float depth)
+    private static float FarEnd(Vector256<float> s, Vector256<float> dn, float r)
     {
-        var zero = Vector256<float>.Zero;
-        float lo, hi;
-        if (Vector256.EqualsAny(dn, zero) && Vector256.GreaterThanAny(Vector256.ConditionalSelect(Vector256.Equals(dn, zero), s, zero), zero))
-        {
-            lo = float.PositiveInfinity;
-            hi = float.NegativeInfinity;
-        }
-        else
-        {
-            var t = -s / dn;
-            var high = Vector256.ConditionalSelect(Vector256.GreaterThan(dn, zero), t, Vector256.Create(float.PositiveInfinity));
-            var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, zero), t, Vector256.Create(float.NegativeInfinity));
-            var h = Vector128.MinNative(high.GetLower(), high.GetUpper());
-            var l = Vector128.MaxNative(low.GetLower(), low.GetUpper());
-            h = Vector128.MinNative(h, Vector128.Shuffle(h, Vector128.Create(2, 3, 0, 1)));
-            l = Vector128.MaxNative(l, Vector128.Shuffle(l, Vector128.Create(2, 3, 0, 1)));
-            hi = ExactMinMax.Min(h.ToScalar(), h.GetElement(1));
-            lo = ExactMinMax.Max(l.ToScalar(), l.GetElement(1));
-        }
-
-        lo = ExactMinMax.Max(lo, -r);
-        hi = ExactMinMax.Min(hi, r);
-        return lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(depth - r, -r, r);
+        var low = Vector256.ConditionalSelect(Vector256.LessThan(dn, Vector256<float>.Zero), -s / dn, Vector256.Create(-r));
+        return CircleChord.Unsigned(PolygonLanes.Greatest(low).ToScalar());
     }
 }

@@ -18,8 +18,10 @@ namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 /// The circle–polygon contact against independent truth: cases worked by hand, a double-precision
 /// reference (the contact by exhaustive search, the chord of the polygon on the line through the
 /// centre along the normal clipped face by face in double; the action point is the middle of its
-/// overlap with the circle), and the frozen kernel of before issue 10 (every bit the same), on
-/// every path: the packed lanes of a polygon, the lanes of a view, the loops.
+/// overlap with the circle), and the frozen kernel of before issue 10: every bit of the contact
+/// (intersection, MTV, normal) the same, the action point — whose chord is now taken from the
+/// contact feature and the far side (<c>NarrowPhase/CircleChord</c>) — moved by rounding only;
+/// on every path: the packed lanes of a polygon, the lanes of a view, the loops.
 /// </summary>
 public sealed class CircleActionPointTests
 {
@@ -97,7 +99,7 @@ public sealed class CircleActionPointTests
         const int seed = 1020;
         var gen = new RandomShapes(seed);
         double worstPoint = 0, worstDepth = 0, worstNormal = 0, largestPointError = 0;
-        int compared = 0;
+        int compared = 0, farSide = 0;
         for (int trial = 0; trial < 30000; trial++)
         {
             var (a, b, _) = gen.Pair(ShapeKind.Circle, EdgeNormalled[trial % 2]);
@@ -129,6 +131,7 @@ public sealed class CircleActionPointTests
                 }
 
                 compared++;
+                farSide += reference.FarSide ? 1 : 0;
                 double normalError = Point2.Distance(Point2.FromWorld(result.NormalAxis), reference.Normal);
                 worstNormal = Math.Max(worstNormal, normalError / 1e-4);
                 Assert.True(normalError <= 1e-4, $"normal {result.NormalAxis}, reference {reference.Normal}");
@@ -143,16 +146,20 @@ public sealed class CircleActionPointTests
             }
         }
 
-        _output.WriteLine($"{compared} contacts compared; worst errors as fractions of the allowance: depth {worstDepth:F3}, normal {worstNormal:F3}, action point {worstPoint:F3} (largest {largestPointError:G3} mm)");
+        _output.WriteLine($"{compared} contacts compared ({farSide} with the polygon's far side inside the circle); worst errors as fractions of the allowance: depth {worstDepth:F3}, normal {worstNormal:F3}, action point {worstPoint:F3} (largest {largestPointError:G3} mm)");
         Assert.InRange(compared, 8000, 30000);
+
+        // Both ends of CircleChord are exercised: contacts whose chord the far side cuts, and the rest.
+        Assert.InRange(farSide, 1000, compared - 1000);
     }
 
     [Fact]
-    public void EveryBitIsTheFrozenKernels()
+    public void ContactsAreTheFrozenKernelsBitForBitAndActionPointsMoveByRoundingOnly()
     {
         const int seed = 1021;
         var gen = new RandomShapes(seed);
-        int hits = 0;
+        int hits = 0, moved = 0;
+        double worstMove = 0;
         for (int trial = 0; trial < 120000; trial++)
         {
             var (a, b, _) = gen.Pair(ShapeKind.Circle, PolygonLike[trial % 3]);
@@ -165,8 +172,19 @@ public sealed class CircleActionPointTests
                 Assert.Equal(frozen.Intersect, result.Intersect);
                 Assert.Equal(Bits(frozen.MinimumTranslationVector), Bits(result.MinimumTranslationVector));
                 Assert.Equal(Bits(frozen.NormalAxis), Bits(result.NormalAxis));
-                Assert.Equal(Bits(frozen.ActionPoint), Bits(result.ActionPoint));
+                double move = Vector3.Distance(frozen.ActionPoint, result.ActionPoint);
+                double allowed = Allowed(Scale(circle, v.Select(Point2.From).ToArray()), circle.Radius);
+                moved += move > 0 ? 1 : 0;
                 hits += result.Intersect ? 1 : 0;
+                if (b.Shape.Kind != ShapeKind.KDop8)
+                {
+                    worstMove = Math.Max(worstMove, move / allowed);
+                    Assert.True(move <= allowed, $"action point {result.ActionPoint}, frozen {frozen.ActionPoint} ({move:R} mm apart)");
+                }
+                else if (result.Intersect)
+                {
+                    AssertInBoth(result.ActionPoint, circle, v, n, allowed);
+                }
             }
             catch (XunitException e)
             {
@@ -174,7 +192,21 @@ public sealed class CircleActionPointTests
             }
         }
 
+        _output.WriteLine($"{hits} contacts; {moved} action points moved, the farthest (polygons, boxes) by {worstMove:F3} of the allowance");
         Assert.InRange(hits, 40000, 110000);
+    }
+
+    // The point lies in the circle and in the polygon (vertices v, outward face normals n), within `allowed`.
+    private static void AssertInBoth(Vector3 point, in Circle circle, Vector2[] v, Vector2[] n, double allowed)
+    {
+        Point2 p = Point2.FromWorld(point);
+        double fromCentre = Point2.Distance(p, Point2.From(circle.Center));
+        Assert.True(fromCentre <= circle.Radius + allowed, $"action point {point} is {fromCentre - circle.Radius:G3} mm outside the circle");
+        for (int i = 0; i < v.Length; i++)
+        {
+            double outside = Point2.Dot(Point2.From(n[i]), p - Point2.From(v[i]));
+            Assert.True(outside <= allowed, $"action point {point} is {outside:G3} mm outside face {i}");
+        }
     }
 
     // How far a result may be from the truth: 0.001 mm, plus a few float steps at the
@@ -188,7 +220,7 @@ public sealed class CircleActionPointTests
     // The circle–polygon contact in double precision, by exhaustive search: the nearest point of
     // the polygon (centre outside) or the nearest edge line (inside), then the polygon's chord on
     // the line through the centre along the normal, clipped face by face.
-    private static (double Depth, Point2 Normal, Point2 ActionPoint, double Conditioning, bool WellConditioned) Reference(in Circle circle, Point2[] core)
+    private static (double Depth, Point2 Normal, Point2 ActionPoint, double Conditioning, bool WellConditioned, bool FarSide) Reference(in Circle circle, Point2[] core)
     {
         Point2 c = Point2.From(circle.Center);
         double r = circle.Radius;
@@ -216,7 +248,7 @@ public sealed class CircleActionPointTests
 
         var faces = Enumerable.Range(0, count).Select(i => (core[(i + 1) % count] - core[i]).RightPerp.Normalized()).ToArray();
         var (lo, hi, conditioning) = Chord(core, faces, c, normal, r);
-        return (depth, normal, c + (normal * (0.5 * (lo + hi))), conditioning, wellConditioned && lo <= hi);
+        return (depth, normal, c + (normal * (0.5 * (lo + hi))), conditioning, wellConditioned && lo <= hi, lo > -r);
     }
 
     // The chord [lo, hi] ∩ [−r, r] of the polygon (vertices `core`, outward unit face normals
