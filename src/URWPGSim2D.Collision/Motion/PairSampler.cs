@@ -15,7 +15,7 @@ internal sealed class PairSampler
 {
     private const int Ticks = TickQueue.Ticks;
 
-    private readonly ulong[] _sampled = new ulong[(Ticks + 64) / 64];
+    private ulong[] _sampled = new ulong[(Ticks + 64) / 64];
     private int[] _due = new int[256];
     private int _dueCount;
 
@@ -65,6 +65,44 @@ internal sealed class PairSampler
         {
             int slot = Queue.SlotOf(node);
             if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
+            {
+                if (_dueCount == _due.Length)
+                {
+                    Array.Resize(ref _due, _due.Length * 2);
+                }
+
+                _due[_dueCount++] = slot;
+            }
+        }
+
+        Queue.Recycle(first);
+        if (_dueCount > 0)
+        {
+            MarkSampled(time);
+        }
+
+        return _dueCount;
+    }
+
+    /// <summary>
+    /// Takes the entries of a sample time as <see cref="TakeDue"/> does, except those of pairs whose
+    /// island has stopped (<paramref name="stopped"/> by island, <paramref name="islandOf"/> by mover):
+    /// these are appended to <paramref name="parked"/> in queue order. Returns the number of entries
+    /// due (the tick counts as sampled when there are any).
+    /// </summary>
+    public int TakeDueOfRunning(double time, PairTable table, ReadOnlySpan<int> islandOf, ReadOnlySpan<bool> stopped, QueueEntries parked)
+    {
+        _dueCount = 0;
+        int tick = (int)(time * Ticks);
+        int first = Queue.Take(time);
+        for (int node = first; node >= 0; node = Queue.Next(node))
+        {
+            int slot = Queue.SlotOf(node);
+            if (stopped[islandOf[table.Pair[slot].MoverA]])
+            {
+                parked.Add(tick, slot, Queue.GenerationOf(node));
+            }
+            else if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
             {
                 if (_dueCount == _due.Length)
                 {
@@ -177,6 +215,16 @@ internal sealed class PairSampler
         }
 
         DeepestAtEnd = MathF.Max(DeepestAtEnd, other.DeepestAtEnd);
+    }
+
+    /// <summary>
+    /// Takes another sampler's sampled ticks and deepest end overlap in place of this one's (which
+    /// go to the other): the same as <see cref="Absorb"/> when this one has sampled nothing yet this step.
+    /// </summary>
+    public void TakeSampled(PairSampler other)
+    {
+        (_sampled, other._sampled) = (other._sampled, _sampled);
+        DeepestAtEnd = other.DeepestAtEnd;
     }
 
     /// <summary>Number of distinct ticks sampled this step.</summary>

@@ -10,6 +10,8 @@ namespace URWPGSim2D.Collision.Motion;
 /// concerns another. Its remaining queue entries and that first sample's hits are then handed to
 /// the event loop, which carries on over the whole world (a response may send a body anywhere).
 /// Islands are merged in island order, so the contacts do not depend on the number of threads.
+/// On one thread every island is sampled at once in one queue, with the same result (see
+/// <c>SampleIslandsTogether</c>): nothing is grouped, copied back or, until a hit needs them, built.
 /// </content>
 public sealed partial class Stepper
 {
@@ -22,12 +24,17 @@ public sealed partial class Stepper
     private readonly IslandSet _islands = new();
     private readonly HeldHits _heldByIsland = new();
     private readonly HeldHits _held = new();
+    private readonly QueueEntries _parked = new();
+    private bool[] _stopped = [];
+    private int[] _perIsland = [];
+    private int[] _order = [];
     private IslandWorker[] _workers = [];
     private int[] _chunkStart = new int[2];
     private IslandRunner? _runner;
     private Recorder? _recorder;
     private int _threads = 1;
     private int _nextHeld;
+    private bool _islandsBuilt;
 
     /// <summary>
     /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
@@ -61,11 +68,11 @@ public sealed partial class Stepper
     /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
     internal long WorkerAllocatedBytes => _runner?.Allocated ?? 0L;
 
-    /// <summary>Number of islands of the last step (tests).</summary>
-    internal int IslandCount => _islands.Count;
+    /// <summary>Number of islands of the last step, or −1 when it did not need them (one thread and no hit before the event loop; tests).</summary>
+    internal int IslandCount => _islandsBuilt ? _islands.Count : -1;
 
-    /// <summary>The island of a moving body in the last step (tests).</summary>
-    internal int IslandOf(int body) => _islands.IslandOf[_bodies[body].Slot];
+    /// <summary>The island of a moving body in the last step, or −1 when it did not need them (tests).</summary>
+    internal int IslandOf(int body) => _islandsBuilt ? _islands.IslandOf[_bodies[body].Slot] : -1;
 
     /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
     internal Disc SweptCircleOf(int body) => _planner.SweptCircle(_bodies[body].Slot);
@@ -75,6 +82,10 @@ public sealed partial class Stepper
         _islands.Load(movers, pairs);
         _heldByIsland.Reserve((2 * movers) + 64);
         _held.Reserve((2 * movers) + 64);
+        _parked.Reserve((8 * movers) + 256);
+        _stopped = new bool[movers];
+        _perIsland = new int[movers + 1];
+        _order = new int[(8 * movers) + 256];
         foreach (IslandWorker worker in _workers)
         {
             worker.Reserve(movers);
@@ -85,10 +96,23 @@ public sealed partial class Stepper
     // first hit, the results handed to the event loop.
     private void SampleIslands()
     {
-        _islands.Build(_table);
-        _islands.Group(_table);
-        int wanted = _planner.Movers >= MinimumMoversForThreads ? Math.Min(_threads, Math.Max(1, _islands.Count)) : 1;
+        _islandsBuilt = false;
+        int wanted = 1;
+        if (_threads > 1 && _planner.Movers >= MinimumMoversForThreads)
+        {
+            BuildIslands();
+            wanted = Math.Min(_threads, Math.Max(1, _islands.Count));
+        }
+
         EnsureWorkers(wanted);
+        if (wanted == 1)
+        {
+            Chunks = 1;
+            SampleIslandsTogether(_workers[0].Sampler);
+            return;
+        }
+
+        _islands.Group(_table);
         if (_chunkStart.Length < wanted + 1)
         {
             _chunkStart = new int[wanted + 1];
@@ -118,6 +142,144 @@ public sealed partial class Stepper
         _held.SortByTick(_heldByIsland);
         _nextHeld = 0;
     }
+
+    // One thread: every island sampled at once in one queue, in time order, each up to its first hit
+    // (then its later entries are parked). The same samples in the same order within each island as
+    // when each island runs alone (islands share no mover, and a pair's clock is its own); the held
+    // hits (by tick, then island) and the parked entries (by island, then tick) are handed to the
+    // event loop in the order the islands one by one give.
+    private void SampleIslandsTogether(PairSampler sampler)
+    {
+        sampler.BeginStep();
+        float seconds = _planner.Seconds;
+        for (int slot = 0; slot < _table.Used; slot++)
+        {
+            if (_table.Alive[slot])
+            {
+                PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
+                float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
+                _table.ApartAtLastFree[slot] = gap > 0f;
+                sampler.Schedule(_table, slot, 0.0, gap);
+            }
+        }
+
+        _held.Clear();
+        _parked.Clear();
+        _nextHeld = 0;
+        bool anyStopped = false;
+        ReadOnlySpan<int> islandOf = _islands.IslandOf;
+        for (double time; (time = sampler.Queue.NextTime()) >= 0.0;)
+        {
+            int due = anyStopped
+                ? sampler.TakeDueOfRunning(time, _table, islandOf, _stopped, _parked)
+                : sampler.TakeDue(time, _table);
+            if (due == 0)
+            {
+                continue;
+            }
+
+            sampler.HitCount = 0;
+            sampler.SampleDue(time, _table, _bodies, seconds, null);
+            if (sampler.HitCount > 0)
+            {
+                HoldByIsland(sampler, (int)(time * Ticks));
+                anyStopped = true;
+            }
+        }
+
+        _sampler.TakeSampled(sampler);
+        if (anyStopped)
+        {
+            HandParkedToQueue();
+            for (int i = 0; i < _held.Count; i++)
+            {
+                _stopped[IslandOfSlot(_held.Slot[i])] = false;
+            }
+        }
+    }
+
+    // The hits of one sample, held in island order (stable: a sampled island's hits keep their order); their islands stop.
+    private void HoldByIsland(PairSampler sampler, int tick)
+    {
+        BuildIslands();
+        int count = sampler.HitCount;
+        if (_order.Length < count)
+        {
+            _order = new int[count * 2];
+        }
+
+        for (int h = 0; h < count; h++)
+        {
+            int island = IslandOfSlot(sampler.HitSlots[h]);
+            int at = h;
+            while (at > 0 && IslandOfSlot(sampler.HitSlots[_order[at - 1]]) > island)
+            {
+                _order[at] = _order[at - 1];
+                at--;
+            }
+
+            _order[at] = h;
+        }
+
+        for (int i = 0; i < count; i++)
+        {
+            int h = _order[i];
+            int slot = sampler.HitSlots[h];
+            _held.Add(tick, slot, _table.Generation[slot], sampler.HitValues[h]);
+            _stopped[IslandOfSlot(slot)] = true;
+        }
+    }
+
+    // The parked entries (by tick, queue order within one) pushed into the event loop's queue by island, then tick (a stable counting sort).
+    private void HandParkedToQueue()
+    {
+        int n = _parked.Count, islands = _islands.Count;
+        if (n == 0)
+        {
+            return;
+        }
+
+        if (_order.Length < n)
+        {
+            _order = new int[n * 2];
+        }
+
+        Span<int> start = _perIsland.AsSpan(0, islands + 1);
+        start.Clear();
+        ReadOnlySpan<int> ticks = _parked.Tick, slots = _parked.Slot, generations = _parked.Generation;
+        for (int i = 0; i < n; i++)
+        {
+            start[IslandOfSlot(slots[i]) + 1]++;
+        }
+
+        for (int k = 1; k <= islands; k++)
+        {
+            start[k] += start[k - 1];
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            _order[start[IslandOfSlot(slots[i])]++] = i;
+        }
+
+        for (int k = 0; k < n; k++)
+        {
+            int i = _order[k];
+            _sampler.Queue.PushTick(ticks[i], slots[i], generations[i]);
+        }
+    }
+
+    // The islands of the pairs planned at the start of the step, found once (the pre-pass does not change the plan).
+    private void BuildIslands()
+    {
+        if (!_islandsBuilt)
+        {
+            _islands.Build(_table);
+            _islandsBuilt = true;
+        }
+    }
+
+    private int IslandOfSlot(int slot) => _islands.IslandOf[_table.Pair[slot].MoverA];
 
     private void EnsureWorkers(int count)
     {

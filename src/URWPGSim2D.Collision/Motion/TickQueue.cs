@@ -38,7 +38,8 @@ internal sealed class TickQueue
     /// <summary>Empties every tick.</summary>
     public void Clear()
     {
-        for (int w = 0; w < _occupied.Length; w++)
+        // No tick below the lowest known one has entries (an empty queue, once looked at, has none left to clear).
+        for (int w = Math.Min(_lowest, Ticks) >> 6; w < _occupied.Length; w++)
         {
             ulong bits = _occupied[w];
             while (bits != 0)

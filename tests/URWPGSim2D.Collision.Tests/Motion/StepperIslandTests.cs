@@ -19,6 +19,8 @@ public sealed class StepperIslandTests
     public void MoversWhoseSweptCirclesMeetShareAnIsland()
     {
         var stepper = StepperAllocationTests.World(600);
+        stepper.Threads = 2; // islands are then found at the start of every step (one thread finds them only at a first hit)
+        stepper.MinimumMoversForThreads = 64;
         var handler = new RecordingHandler(0.3f) { Record = false };
         for (int step = 0; step < 4; step++)
         {
@@ -61,6 +63,43 @@ public sealed class StepperIslandTests
             Assert.True(joined > 10, $"step {step}: only {joined} pairs can meet: the scene does not test islands");
             Assert.InRange(stepper.IslandCount, 2, movers.Count - 1);
         }
+    }
+
+    [Fact]
+    public void OneThreadFindsTheSameIslandsAtItsFirstHit()
+    {
+        // One thread finds the islands only when a step's first sample with a hit needs them, from
+        // the pairs planned at the start of the step; two threads find them first thing. Stepped side by side.
+        var one = StepperAllocationTests.World(600);
+        var two = StepperAllocationTests.World(600);
+        two.Threads = 2;
+        two.MinimumMoversForThreads = 64;
+        var handlerOne = new RecordingHandler(0.3f) { Record = false };
+        var handlerTwo = new RecordingHandler(0.3f) { Record = false };
+        int compared = 0;
+        for (int step = 0; step < 4; step++)
+        {
+            one.Step(Seconds, handlerOne);
+            two.Step(Seconds, handlerTwo);
+            Assert.Equal(1, one.Chunks);
+            Assert.Equal(2, two.Chunks);
+            if (one.IslandCount < 0)
+            {
+                continue;
+            }
+
+            compared++;
+            Assert.Equal(two.IslandCount, one.IslandCount);
+            for (int id = 0; id < one.BodyCount; id++)
+            {
+                if (one.KindOf(id) <= BodyKind.Fish)
+                {
+                    Assert.True(one.IslandOf(id) == two.IslandOf(id), $"step {step}: body {id} in island {one.IslandOf(id)} on one thread, {two.IslandOf(id)} on two");
+                }
+            }
+        }
+
+        Assert.True(compared > 0, "no step had a hit before its event loop: the islands of one thread were not compared");
     }
 
     [Fact]
@@ -112,7 +151,7 @@ public sealed class StepperIslandTests
         {
             stepper.Step(Seconds, handler);
             chunks = Math.Max(chunks, stepper.Chunks);
-            lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}, islands {stepper.IslandCount}");
+            lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}");
             for (int id = 0; id < stepper.BodyCount; id++)
             {
                 if (stepper.KindOf(id) <= BodyKind.Fish)
