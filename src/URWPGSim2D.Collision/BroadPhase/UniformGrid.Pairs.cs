@@ -93,29 +93,7 @@ internal sealed partial class UniformGrid
         Vector2 lo = _store.Min[a], hi = _store.Max[a];
         int x0 = Column(lo.X - CellSize), x1 = Column(hi.X);
         int y0 = Row(lo.Y - CellSize), y1 = Row(hi.Y);
-        var min = _store.Min;
-        var max = _store.Max;
-        Vector128<float> reach = ProxyBox.Reach(ProxyBox.Packed(lo, hi));
-        for (int y = y0; y <= y1; y++)
-        {
-            int row = y * _columns;
-            int end = _cellStart[row + x1 + 1];
-            for (int s = _cellStart[row + x0]; s < end; s++)
-            {
-                Test(a, aMoves, reach, _slotProxy[s], _slotBox[s], moving);
-            }
-
-            for (int x = x0; x <= x1; x++)
-            {
-                for (int b = _movedHead[row + x]; b != Empty; b = _movedNext[b])
-                {
-                    if (b > a)
-                    {
-                        Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
-                    }
-                }
-            }
-        }
+        PairInCells(a, aMoves, lo, hi, x0, x1, y0, y1, movedAbove: a);
     }
 
     // An oversize proxy against every proxy that is not oversize, and the oversize ones with a larger
@@ -143,6 +121,25 @@ internal sealed partial class UniformGrid
             return;
         }
 
+        PairInCells(a, aMoves, lo, hi, x0, x1, y0, y1, movedAbove: -1);
+        for (int i = 0; i < _oversizeCount; i++)
+        {
+            int b = _oversize[i];
+            if (b > a)
+            {
+                Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
+            }
+        }
+    }
+
+    // Proxy a (box [lo, hi]) against the listed boxes of the cells x0…x1 × y0…y1 and the moved
+    // proxies of those cells with an index above movedAbove (a moved proxy's own pairs with moved
+    // ones are found from the smaller index; an oversize proxy takes every moved one).
+    private void PairInCells(int a, bool aMoves, Vector2 lo, Vector2 hi, int x0, int x1, int y0, int y1, int movedAbove)
+    {
+        int moving = _store.MovingCount;
+        var min = _store.Min;
+        var max = _store.Max;
         Vector128<float> reach = ProxyBox.Reach(ProxyBox.Packed(lo, hi));
         for (int y = y0; y <= y1; y++)
         {
@@ -159,18 +156,12 @@ internal sealed partial class UniformGrid
                 {
                     for (int b = _movedHead[row + x]; b != Empty; b = _movedNext[b])
                     {
-                        Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
+                        if (b > movedAbove)
+                        {
+                            Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
+                        }
                     }
                 }
-            }
-        }
-
-        for (int i = 0; i < _oversizeCount; i++)
-        {
-            int b = _oversize[i];
-            if (b > a)
-            {
-                Test(a, aMoves, lo, hi, b, min[b], max[b], moving);
             }
         }
     }

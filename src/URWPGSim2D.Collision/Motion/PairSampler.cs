@@ -66,22 +66,11 @@ internal sealed class PairSampler
             int slot = Queue.SlotOf(node);
             if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
             {
-                if (_dueCount == _due.Length)
-                {
-                    Array.Resize(ref _due, _due.Length * 2);
-                }
-
-                _due[_dueCount++] = slot;
+                AddDue(slot);
             }
         }
 
-        Queue.Recycle(first);
-        if (_dueCount > 0)
-        {
-            MarkSampled(time);
-        }
-
-        return _dueCount;
+        return EndTake(time, first);
     }
 
     /// <summary>
@@ -104,15 +93,27 @@ internal sealed class PairSampler
             }
             else if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
             {
-                if (_dueCount == _due.Length)
-                {
-                    Array.Resize(ref _due, _due.Length * 2);
-                }
-
-                _due[_dueCount++] = slot;
+                AddDue(slot);
             }
         }
 
+        return EndTake(time, first);
+    }
+
+    // One more pair due at the sample (the list grows only while a world's first busy steps size it).
+    private void AddDue(int slot)
+    {
+        if (_dueCount == _due.Length)
+        {
+            Array.Resize(ref _due, _due.Length * 2);
+        }
+
+        _due[_dueCount++] = slot;
+    }
+
+    // The taken nodes go back to the queue's free list; the tick counts as sampled when any was due.
+    private int EndTake(double time, int first)
+    {
         Queue.Recycle(first);
         if (_dueCount > 0)
         {
