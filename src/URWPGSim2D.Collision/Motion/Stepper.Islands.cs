@@ -156,10 +156,7 @@ public sealed partial class Stepper
         {
             if (_table.Alive[slot])
             {
-                PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
-                float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
-                _table.ApartAtLastFree[slot] = gap > 0f;
-                sampler.Schedule(_table, slot, 0.0, gap);
+                ScheduleFirst(sampler, slot, seconds);
             }
         }
 
@@ -196,6 +193,15 @@ public sealed partial class Stepper
                 _stopped[IslandOfSlot(_held.Slot[i])] = false;
             }
         }
+    }
+
+    // A planned pair's first sample, scheduled from the start of the step by its gap there.
+    private void ScheduleFirst(PairSampler sampler, int slot, float seconds)
+    {
+        PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
+        float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
+        _table.ApartAtLastFree[slot] = gap > 0f;
+        sampler.Schedule(_table, slot, 0.0, gap);
     }
 
     // The hits of one sample, held in island order (stable: a sampled island's hits keep their order); their islands stop.
@@ -312,11 +318,7 @@ public sealed partial class Stepper
             // The pairs' first samples, scheduled from the start of the step in slot (plan) order.
             for (int i = start[island]; i < start[island + 1]; i++)
             {
-                int slot = slots[i];
-                PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
-                float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
-                _table.ApartAtLastFree[slot] = gap > 0f;
-                sampler.Schedule(_table, slot, 0.0, gap);
+                ScheduleFirst(sampler, slots[i], seconds);
             }
 
             for (double time; (time = sampler.Queue.NextTime()) >= 0.0;)
