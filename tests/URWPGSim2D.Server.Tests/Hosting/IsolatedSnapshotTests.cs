@@ -1,10 +1,10 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>
 /// A strategy on its own thread reads a snapshot that its runner owns: a call given up on that

@@ -2,9 +2,9 @@ using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Collision.Benchmarks.Strategies;
+namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 
 /// <summary>
 /// The cost of the original strategy API in a 2 × 2 match (the default match, 500 cycles in).
@@ -21,9 +21,9 @@ namespace URWPGSim2D.Collision.Benchmarks.Strategies;
 public class CompatCycleBenchmarks
 {
     private Match _match = null!;
-    private StrategyHost _sdk = null!;
-    private StrategyHost _mixed = null!;
-    private StrategyHost _compat = null!;
+    private StrategyCaller _sdk = null!;
+    private StrategyCaller _mixed = null!;
+    private StrategyCaller _compat = null!;
     private MissionBuilder _builder = null!;
 
     /// <summary>Builds the match, plays its first 500 cycles and sets up the three strategy line-ups.</summary>
@@ -63,10 +63,10 @@ public class CompatCycleBenchmarks
     [Benchmark]
     public object MissionCopy() => _builder.Build(_match.Snapshot);
 
-    private StrategyHost Host(IStrategy team0, IStrategy team1)
+    private StrategyCaller Host(IStrategy team0, IStrategy team1)
     {
         int[] fish0 = [.. TeamFish(0)], fish1 = [.. TeamFish(1)];
-        return new StrategyHost(
+        return new StrategyCaller(
             [new StrategySlot("team 0", team0, 0, fish0, isolated: false), new StrategySlot("team 1", team1, 1, fish1, isolated: false)],
             MatchBuilder.DefaultStrategyTimeoutMs);
     }

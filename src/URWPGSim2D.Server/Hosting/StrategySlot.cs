@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// One strategy instance and the fish it controls, with its last decisions and fault counts.

@@ -3,9 +3,9 @@ using System.Collections.Generic;
 using System.IO;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>Compiles C# source into a strategy DLL in a fresh temporary folder, as a team would ship it.</summary>
 internal static class StrategyAssemblyBuilder

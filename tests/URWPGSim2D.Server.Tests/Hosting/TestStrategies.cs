@@ -1,7 +1,7 @@
 using System;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>Swims straight at full speed until cycle <see cref="FailFrom"/>, then throws every cycle.</summary>
 internal sealed class ThrowingStrategy : IStrategy

@@ -1,10 +1,10 @@
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>A strategy that throws or runs too long does not stop the match; its fish keep their last decisions.</summary>
 public sealed class StrategyFaultTests

@@ -4,7 +4,7 @@ using System.IO;
 using System.Reflection;
 using System.Runtime.Loader;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// The collectible AssemblyLoadContext of one team's strategy: its own dependencies resolve from its

@@ -1,7 +1,7 @@
 using System;
 using URWPGSim2D.Server.Simulation;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Asks every strategy slot, in a fixed order, for its fish's decisions. A strategy that throws,
@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Strategies;
 /// past its deadline leaves its fish on their last decisions; the fault is counted for the summary
 /// and the results file, and the match goes on.
 /// </summary>
-internal sealed class StrategyHost(StrategySlot[] slots, int timeoutMs)
+internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
 {
     /// <summary>The slots, in decision order.</summary>
     public StrategySlot[] Slots { get; } = slots;

@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Built-in <c>chase-ball</c>: each fish swims to the ball nearest to it and pushes it toward the

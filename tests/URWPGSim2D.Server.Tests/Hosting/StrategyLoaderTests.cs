@@ -1,11 +1,11 @@
 using System.IO;
 using System.Runtime.Loader;
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>User strategies from compiled assemblies, each in its own load context.</summary>
 public sealed class StrategyLoaderTests

@@ -3,7 +3,7 @@ using System.IO;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary><c>run --strategy TEAM=SPEC</c> end to end: compile errors before the match, faults in the summary, built-in names.</summary>
 public sealed class StrategyCliTests : IDisposable

@@ -8,7 +8,7 @@ using System.Text;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Compiles a team's strategy sources in process (Roslyn) against the framework, the strategy SDK and

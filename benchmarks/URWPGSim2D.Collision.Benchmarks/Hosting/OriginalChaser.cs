@@ -2,7 +2,7 @@ using System;
 using URWPGSim2D.Common;
 using Decision = URWPGSim2D.Common.Decision;
 
-namespace URWPGSim2D.Collision.Benchmarks.Strategies;
+namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 
 /// <summary>
 /// A strategy in the original API's style for the benchmarks: every fish heads for the ball

@@ -1,7 +1,7 @@
 using System;
 using System.Threading;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Measures a strategy call against its deadline. The server's clock (<see cref="ThreadTimeClock"/>)

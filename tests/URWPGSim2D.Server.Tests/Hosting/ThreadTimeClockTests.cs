@@ -1,9 +1,9 @@
 using System;
 using System.Threading;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>The real deadline clock counts the strategy thread's CPU time, not wall time.</summary>
 public sealed class ThreadTimeClockTests

@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// A user strategy could not be loaded. The message is one line for the command line; compile

@@ -1,7 +1,7 @@
 using System;
 using System.Threading;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// A deterministic deadline clock for tests: no real time counts, only what the strategy under test

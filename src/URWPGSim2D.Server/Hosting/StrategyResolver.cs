@@ -6,7 +6,7 @@ using System.Reflection;
 using URWPGSim2D.Compat.Hosting;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Creates a team's strategy from <c>--strategy TEAM=SPEC</c>. SPEC is a built-in name

@@ -7,14 +7,14 @@ using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>
-/// Strategies in the original's style (tests/…/Strategies/Original, written for this repository),
+/// Strategies in the original's style (tests/…/Hosting/Original, written for this repository),
 /// compiled from source and from a DLL and played for a few hundred cycles.
 /// </summary>
 public sealed class OriginalStrategyTests
@@ -22,7 +22,7 @@ public sealed class OriginalStrategyTests
     private const string OneFishOneBall =
         """{"noise":false,"fish":[{"team":0,"position":[-600,0]},{"team":1,"position":[1300,900],"heading":3.14159,"strategy":"idle"}],"balls":[{"position":[-200,100]}]}""";
 
-    internal static string Folder(string name) => Path.Combine(AppContext.BaseDirectory, "Strategies", "Original", name);
+    internal static string Folder(string name) => Path.Combine(AppContext.BaseDirectory, "Hosting", "Original", name);
 
     /// <summary>The strategy object a team wrote (inside the adapter), to read what it recorded.</summary>
     internal static object Inner(IStrategy strategy) => Assert.IsType<OriginalStrategyAdapter>(strategy).Strategy;

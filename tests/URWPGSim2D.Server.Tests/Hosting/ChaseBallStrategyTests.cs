@@ -5,7 +5,7 @@ using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Strategies;
+namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>
 /// The built-in chase-ball strategy, pinned by what it must do in a match (noise off): it turns

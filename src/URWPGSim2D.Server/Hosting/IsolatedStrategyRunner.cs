@@ -1,7 +1,7 @@
 using System;
 using System.Threading;
 
-namespace URWPGSim2D.Server.Strategies;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread with a per-call
