@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using System.Security.Cryptography;
-using System.Text;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -113,34 +112,30 @@ public sealed class TraceDigestTests
         Assert.NotEqual(Digest("item ball-grab", 1), Digest("item ball-grab", 2));
     }
 
-    // The digest of the trace of a scene played as `run` plays it.
+    // The digest of the trace of a scene played as `run` plays it (the one match loop).
     private static string Digest(string scene, ulong seed)
     {
         var (scenario, cycles) = Scene(scene, seed);
-        var match = MatchBuilder.Build(scenario, seed: seed, cycles: cycles);
-        using var hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
-        var lines = new TraceLine(match);
-        Add(hash, lines.Write(ReadOnlySpan<ContactRecord>.Empty));
-        try
-        {
-            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
-            {
-                match.Step();
-                Add(hash, lines.Write(match.Contacts.Cycle));
-            }
-        }
-        finally
-        {
-            match.Strategies.Stop();
-        }
-
-        return Convert.ToHexStringLower(hash.GetHashAndReset());
+        using var hash = new TraceHash();
+        using var loop = new MatchLoop(new MatchSettings(scenario, cycles, seed).Build(), cycles, hash);
+        loop.Play();
+        return hash.Digest();
     }
 
-    private static void Add(IncrementalHash hash, ReadOnlySpan<byte> line)
+    // SHA-256 of the lines and their newlines.
+    private sealed class TraceHash : ITraceSink, IDisposable
     {
-        hash.AppendData(line);
-        hash.AppendData("\n"u8);
+        private readonly IncrementalHash _hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+
+        public void WriteLine(ReadOnlySpan<byte> line)
+        {
+            _hash.AppendData(line);
+            _hash.AppendData("\n"u8);
+        }
+
+        public string Digest() => Convert.ToHexStringLower(_hash.GetHashAndReset());
+
+        public void Dispose() => _hash.Dispose();
     }
 
     private static (ScenarioDefinition Scenario, int Cycles) Scene(string scene, ulong seed)
