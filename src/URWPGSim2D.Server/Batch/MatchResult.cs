@@ -56,7 +56,7 @@ internal sealed record MatchResult(
         {
             if (slot.Faults > 0)
             {
-                (faults ??= []).Add(new TeamFaults(slot.Team, slot.Label, slot.Exceptions, slot.Timeouts, slot.BadAnswers, slot.FirstFault ?? string.Empty));
+                (faults ??= []).Add(new TeamFaults(slot.Team, slot.Label, slot.Exceptions, slot.Timeouts, slot.BadAnswers, slot.FirstFault ?? string.Empty, slot.Crashes));
             }
         }
 

@@ -135,6 +135,11 @@ internal static class ResultFile
                 w.WriteNumber("exceptions", f.Exceptions);
                 w.WriteNumber("timeouts", f.Timeouts);
                 w.WriteNumber("badAnswers", f.BadAnswers);
+                if (f.Crashes > 0)
+                {
+                    w.WriteNumber("crashes", f.Crashes); // compatible addition: present only when the host ended
+                }
+
                 w.WriteString("first", f.First);
                 w.WriteEndObject();
             }
@@ -255,12 +260,13 @@ internal static class ResultFile
             var f = list[i];
             int team = Field(f, "team").GetInt32();
             int exceptions = Field(f, "exceptions").GetInt32(), timeouts = Field(f, "timeouts").GetInt32(), bad = Field(f, "badAnswers").GetInt32();
-            if (team is < 0 or > 1 || exceptions < 0 || timeouts < 0 || bad < 0 || exceptions + timeouts + bad == 0)
+            int crashes = f.TryGetProperty("crashes", out var crashed) ? crashed.GetInt32() : 0;
+            if (team is < 0 or > 1 || exceptions < 0 || timeouts < 0 || bad < 0 || crashes is < 0 or > 1 || exceptions + timeouts + bad + crashes == 0)
             {
                 throw new ResultFileException($"\"faults\"[{i}] must name team 0 or 1 and counts >= 0 that are not all 0, got {Short(f.GetRawText())}");
             }
 
-            faults[i] = new TeamFaults(team, Field(f, "strategy").GetString()!, exceptions, timeouts, bad, Field(f, "first").GetString()!);
+            faults[i] = new TeamFaults(team, Field(f, "strategy").GetString()!, exceptions, timeouts, bad, Field(f, "first").GetString()!, crashes);
             sum += faults[i].Total;
         }
 

@@ -10,8 +10,9 @@ namespace URWPGSim2D.Server.Batch;
 /// <param name="Timeouts">Calls that missed their deadline, or skipped while one was still running.</param>
 /// <param name="BadAnswers">Calls that returned null or too few decisions.</param>
 /// <param name="First">The first fault: its cycle and message.</param>
-internal sealed record TeamFaults(int Team, string Strategy, int Exceptions, int Timeouts, int BadAnswers, string First)
+/// <param name="Crashes">1 when the strategy's host ended before the match did (results files without the field: 0).</param>
+internal sealed record TeamFaults(int Team, string Strategy, int Exceptions, int Timeouts, int BadAnswers, string First, int Crashes = 0)
 {
     /// <summary>All faults of the strategy.</summary>
-    public int Total => Exceptions + Timeouts + BadAnswers;
+    public int Total => Exceptions + Timeouts + BadAnswers + Crashes;
 }

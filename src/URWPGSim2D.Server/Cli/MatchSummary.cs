@@ -49,7 +49,11 @@ internal static class MatchSummary
             }
 
             any = true;
-            s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts, {slot.BadAnswers} bad answers; its fish kept their last decisions; first: {slot.FirstFault}");
+            s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts, {slot.BadAnswers} bad answers");
+            s.Append(slot.Crashes == 0
+                ? "; its fish kept their last decisions"
+                : string.Create(c, $", strategy host ended in cycle {slot.EndedInCycle}; its fish kept their last decisions until then and stopped after"));
+            s.Append(c, $"; first: {slot.FirstFault}");
         }
 
         s.Append(any ? "\n" : " none\n");

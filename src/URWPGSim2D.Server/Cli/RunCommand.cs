@@ -67,6 +67,7 @@ internal sealed class RunCommand : ICliCommand
         }
 
         TeamStrategy?[] teams;
+        HostSandbox.Warn = console.ErrorLine;
         try
         {
             teams = LoadTeams(options);
@@ -130,8 +131,12 @@ internal sealed class RunCommand : ICliCommand
     public static MatchSettings Settings(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams) =>
         new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1);
 
-    /// <summary>The strategy assemblies of the command line, loaded (a fresh instance each call).</summary>
-    /// <exception cref="StrategyLoadException">An assembly cannot be used; the message starts with the option.</exception>
+    /// <summary>
+    /// The strategies of the command line: with <c>--isolation process</c> (the default) readied for
+    /// strategy hosts (sources compiled once per run; every match built from them starts fresh hosts),
+    /// with <c>--isolation none</c> loaded in process (a fresh instance each call). Built-in names run in process.
+    /// </summary>
+    /// <exception cref="StrategyLoadException">A strategy cannot be used, or <c>--sandbox required</c> cannot be met; the message starts with the option.</exception>
     public static TeamStrategy?[] LoadTeams(RunOptions options)
     {
         var teams = new TeamStrategy?[2];
@@ -141,7 +146,15 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
-                    teams[t] = new TeamStrategy(Path.GetFileName(spec), StrategyResolver.Load(spec), Isolated: true);
+                    var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec) : null;
+                    if (prepared is not null)
+                    {
+                        HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
+                    }
+
+                    teams[t] = prepared is null
+                        ? new TeamStrategy(Path.GetFileName(spec), StrategyResolver.Load(spec), Isolated: true)
+                        : TeamStrategy.Hosted(Path.GetFileName(spec), prepared, options.HostSettings);
                 }
                 catch (StrategyLoadException e)
                 {

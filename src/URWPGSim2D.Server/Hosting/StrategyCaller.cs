@@ -14,6 +14,8 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     /// <summary>The slots, in decision order.</summary>
     public StrategySlot[] Slots { get; } = slots;
 
+    private (int Cycle, int Goals0, int Goals1) _last;
+
     /// <summary>Time limit of an isolated strategy per cycle, ms.</summary>
     public int TimeoutMs { get; } = timeoutMs;
 
@@ -32,26 +34,38 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
-    /// <summary>Ends the threads of the isolated strategies (after the match).</summary>
-    public void Stop()
+    /// <summary>Ends the threads of the isolated strategies and the strategy hosts (after the match), telling hosts the result.</summary>
+    /// <param name="cycles">Cycles played.</param>
+    /// <param name="goals0">Team 0's final score.</param>
+    /// <param name="goals1">Team 1's final score.</param>
+    public void Stop(int cycles, int goals0, int goals1)
     {
         foreach (var slot in Slots)
         {
             slot.Runner?.Stop();
+            slot.Hosted?.Stop(new Protocol.EndMessage(cycles, goals0, goals1, slot.Faults));
         }
     }
+
+    /// <summary>Ends the threads of the isolated strategies and the strategy hosts, with the score of the last cycle's snapshot.</summary>
+    public void Stop() => Stop(_last.Cycle, _last.Goals0, _last.Goals1);
 
     /// <summary>Runs every strategy on <paramref name="snapshot"/> and writes the fish's decisions.</summary>
     public void Decide(MatchSnapshot snapshot, FishState[] fish)
     {
+        _last = (snapshot.Cycle, snapshot.GoalsOf(0), snapshot.GoalsOf(1));
         foreach (var slot in Slots)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
-            if (slot.Runner is null)
+            if (slot.Hosted is { } hosted)
+            {
+                Hosted(slot, hosted, snapshot);
+            }
+            else if (slot.Runner is null)
             {
                 try
                 {
-                    slot.Strategy.Decide(snapshot, slot.Fish, slot.Scratch);
+                    slot.Strategy!.Decide(snapshot, slot.Fish, slot.Scratch);
                     slot.Scratch.CopyTo(slot.Decisions, 0);
                 }
                 catch (Exception e)
@@ -81,6 +95,41 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 Decision d = slot.Decisions[k];
                 fish[slot.Fish[k]].Decision = new Decision(d.VCode, d.TCode);
             }
+        }
+    }
+
+    // One cycle of a strategy in its own process: the same faults as in the server's process, and
+    // an ended host stops the team's fish for the rest of the match.
+    private void Hosted(StrategySlot slot, HostedStrategy hosted, MatchSnapshot snapshot)
+    {
+        if (slot.EndedInCycle > 0)
+        {
+            return;
+        }
+
+        int cycle = snapshot.Cycle + 1;
+        switch (hosted.Decide(snapshot, slot.Scratch, out string? message))
+        {
+            case HostedStrategy.Outcome.Decided:
+                slot.Scratch.CopyTo(slot.Decisions, 0);
+                break;
+            case HostedStrategy.Outcome.Exception:
+                slot.Exceptions++;
+                slot.FirstFault ??= $"cycle {cycle}: {message}";
+                break;
+            case HostedStrategy.Outcome.BadAnswer:
+                slot.BadAnswers++;
+                slot.FirstFault ??= $"cycle {cycle}: {message}";
+                break;
+            case HostedStrategy.Outcome.TimedOut:
+                slot.Timeouts++;
+                slot.FirstFault ??= $"cycle {cycle}: no decision within {TimeoutMs} ms";
+                break;
+            default:
+                slot.EndedInCycle = cycle;
+                slot.FirstFault ??= $"cycle {cycle}: strategy host ended: {message}";
+                Array.Fill(slot.Decisions, Decision.Stop);
+                break;
         }
     }
 

@@ -7,7 +7,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// A user strategy could not be loaded. The message is one line for the command line; compile
 /// errors add one <see cref="Details"/> line each (<c>file(line,col): error CSnnnn: message</c>).
 /// </summary>
-internal sealed class StrategyLoadException : Exception
+internal class StrategyLoadException : Exception
 {
     /// <summary>Creates the exception.</summary>
     /// <param name="message">What went wrong, one line.</param>

@@ -39,16 +39,79 @@ internal static class StrategyResolver
             return new ChaseBallStrategy();
         }
 
-        int hash = spec.LastIndexOf('#');
-        bool typed = hash > 0 && (spec[..hash].EndsWith(".dll", StringComparison.OrdinalIgnoreCase)
-            || spec[..hash].EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || Directory.Exists(spec[..hash]));
-        string path = typed ? spec[..hash] : spec;
-        string? typeName = typed ? spec[(hash + 1)..] : null;
-        if (Directory.Exists(path) || path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase))
+        (string path, string? typeName) = Split(spec);
+        if (IsSources(path))
         {
             return FromSources(path, typeName);
         }
 
+        string full = CheckAssembly(spec, path);
+        return Create(LoadAssembly(new StrategyLoadContext(path, full), path, full), path, typeName);
+    }
+
+    /// <summary>
+    /// Readies the strategy named by <paramref name="spec"/> for strategy hosts without running any of
+    /// its code: sources are compiled (once per run) to a file of the run's folder, and the assembly's
+    /// strategy class is looked up. Null for a built-in name (built-ins run in the server's process).
+    /// </summary>
+    /// <exception cref="StrategyLoadException">The strategy cannot be used (same messages as <see cref="Load"/>).</exception>
+    [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
+    public static PreparedStrategy? Prepare(string spec)
+    {
+        if (spec is "idle" or "chase-ball")
+        {
+            return null;
+        }
+
+        (string path, string? typeName) = Split(spec);
+        string suffix = typeName is null ? "" : "#" + typeName;
+        if (IsSources(path))
+        {
+            var files = Sources(path);
+            byte[] image = CompiledImages.Get(path, files);
+            var context = new StrategyLoadContext(path, null);
+            try
+            {
+                using var stream = new MemoryStream(image, writable: false);
+                FindType(context.LoadFromStream(stream), path, typeName);
+            }
+            finally
+            {
+                context.Unload();
+            }
+
+            string dll = CompiledImages.File(path, files);
+            return new PreparedStrategy(dll + suffix, [Path.GetDirectoryName(dll)!, Path.GetFullPath(path)]);
+        }
+
+        string full = CheckAssembly(spec, path);
+        var check = new StrategyLoadContext(path, full);
+        try
+        {
+            FindType(LoadAssembly(check, path, full), path, typeName);
+        }
+        finally
+        {
+            check.Unload();
+        }
+
+        return new PreparedStrategy(full + suffix, [Path.GetDirectoryName(full)!]);
+    }
+
+    // SPEC = PATH or PATH#Type.
+    private static (string Path, string? TypeName) Split(string spec)
+    {
+        int hash = spec.LastIndexOf('#');
+        bool typed = hash > 0 && (spec[..hash].EndsWith(".dll", StringComparison.OrdinalIgnoreCase)
+            || spec[..hash].EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || Directory.Exists(spec[..hash]));
+        return typed ? (spec[..hash], spec[(hash + 1)..]) : (spec, null);
+    }
+
+    private static bool IsSources(string path) => Directory.Exists(path) || path.EndsWith(".cs", StringComparison.OrdinalIgnoreCase);
+
+    // The full path of an existing .dll, or a load error.
+    private static string CheckAssembly(string spec, string path)
+    {
         if (!path.EndsWith(".dll", StringComparison.OrdinalIgnoreCase))
         {
             throw new StrategyLoadException(
@@ -61,21 +124,33 @@ internal static class StrategyResolver
             throw new StrategyLoadException($"strategy assembly not found: {path}");
         }
 
-        Assembly assembly;
+        return full;
+    }
+
+    [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
+    private static Assembly LoadAssembly(StrategyLoadContext context, string path, string full)
+    {
         try
         {
-            assembly = new StrategyLoadContext(path, full).LoadFromAssemblyPath(full);
+            return context.LoadFromAssemblyPath(full);
         }
         catch (Exception e) when (e is BadImageFormatException or FileLoadException or IOException)
         {
             throw new StrategyLoadException($"cannot load strategy assembly {path}: {e.Message}");
         }
-
-        return Create(assembly, path, typeName);
     }
 
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
     private static IStrategy FromSources(string path, string? typeName)
+    {
+        byte[] image = CompiledImages.Get(path, Sources(path));
+        var context = new StrategyLoadContext(path, null);
+        using var stream = new MemoryStream(image, writable: false);
+        return Create(context.LoadFromStream(stream), path, typeName);
+    }
+
+    // The .cs files of a folder or file spec.
+    private static List<string> Sources(string path)
     {
         if (!Directory.Exists(path) && !File.Exists(path))
         {
@@ -97,20 +172,7 @@ internal static class StrategyResolver
             throw new StrategyLoadException($"no .cs files in {path}");
         }
 
-        string name = "Strategy_" + Path.GetFileNameWithoutExtension(Path.TrimEndingDirectorySeparator(path));
-        byte[] image;
-        try
-        {
-            image = StrategyCompiler.Compile(name, files);
-        }
-        catch (StrategyLoadException e)
-        {
-            throw new StrategyLoadException($"cannot compile {path}: {e.Message}", e.Details);
-        }
-
-        var context = new StrategyLoadContext(path, null);
-        using var stream = new MemoryStream(image, writable: false);
-        return Create(context.LoadFromStream(stream), path, typeName);
+        return files;
     }
 
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
@@ -126,7 +188,7 @@ internal static class StrategyResolver
         catch (Exception e)
         {
             string why = e is TargetInvocationException { InnerException: { } inner } ? inner.Message : e.Message;
-            throw new StrategyLoadException($"cannot create strategy {type.FullName} from {path}: {why}");
+            throw new StrategyCreationException($"cannot create strategy {type.FullName} from {path}: {why}");
         }
 
         return instance is OriginalStrategy original ? new OriginalStrategyAdapter(original) : (IStrategy)instance;
@@ -134,7 +196,7 @@ internal static class StrategyResolver
 
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
     [UnconditionalSuppressMessage("Trimming", "IL2075", Justification = Justification)]
-    private static Type FindType(Assembly assembly, string path, string? typeName)
+    internal static Type FindType(Assembly assembly, string path, string? typeName)
     {
         Type[] exported;
         try

@@ -5,27 +5,46 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// One strategy instance and the fish it controls, with its last decisions and fault counts.
 /// Built-in strategies run inline; loaded (user) strategies run isolated on their own thread with
-/// a time limit.
+/// a time limit, or in a strategy host process (<see cref="Hosted"/>).
 /// </summary>
 internal sealed class StrategySlot
 {
+    /// <summary>A slot whose strategy runs in the server's process.</summary>
     public StrategySlot(string label, IStrategy strategy, int team, int[] fish, bool isolated, StrategyClock? clock = null)
+        : this(label, team, fish)
+    {
+        Strategy = strategy;
+        Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team, clock ?? new ThreadTimeClock()) : null;
+    }
+
+    /// <summary>A slot whose strategy runs in a strategy host process.</summary>
+    public StrategySlot(string label, HostedStrategy hosted, int team, int[] fish)
+        : this(label, team, fish)
+    {
+        Hosted = hosted;
+    }
+
+    private StrategySlot(string label, int team, int[] fish)
     {
         Label = label;
-        Strategy = strategy;
         Team = team;
         Fish = fish;
         Decisions = new Decision[fish.Length];
         Scratch = new Decision[fish.Length];
         Array.Fill(Decisions, Decision.Stop);
-        Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team, clock ?? new ThreadTimeClock()) : null;
     }
 
     /// <summary>What the user asked for ("chase-ball", a path...).</summary>
     public string Label { get; }
 
-    /// <summary>The strategy.</summary>
-    public IStrategy Strategy { get; }
+    /// <summary>The strategy (in the server's process), or null for a hosted one.</summary>
+    public IStrategy? Strategy { get; }
+
+    /// <summary>The strategy host of a strategy that runs in its own process, or null.</summary>
+    public HostedStrategy? Hosted { get; }
+
+    /// <summary>The cycle (1-based) in which the strategy host ended, or 0 while it runs.</summary>
+    public int EndedInCycle { get; set; }
 
     /// <summary>Team of its fish.</summary>
     public int Team { get; }
@@ -51,8 +70,11 @@ internal sealed class StrategySlot
     /// <summary>Cycles in which it answered with something unusable (for example too few decisions).</summary>
     public int BadAnswers { get; set; }
 
-    /// <summary>All faults: exceptions, time-outs and bad answers.</summary>
-    public int Faults => Exceptions + Timeouts + BadAnswers;
+    /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created), else 0.</summary>
+    public int Crashes => EndedInCycle > 0 ? 1 : 0;
+
+    /// <summary>All faults: exceptions, time-outs, bad answers and an ended host.</summary>
+    public int Faults => Exceptions + Timeouts + BadAnswers + Crashes;
 
     /// <summary>The first fault's message.</summary>
     public string? FirstFault { get; set; }

@@ -62,11 +62,12 @@ internal static class MatchBuilder
 
         var world = new World(field, fish, balls, views, statics);
         var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
-        var host = new StrategyCaller(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee), strategyTimeoutMs);
+        var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles);
+        var host = new StrategyCaller(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match), strategyTimeoutMs);
         return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase, referee);
     }
 
-    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee)
+    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee, MatchFacts match)
     {
         var slots = new List<StrategySlot>();
         var teamDone = new bool[2];
@@ -96,11 +97,22 @@ internal static class MatchBuilder
             else if (!teamDone[d.Team])
             {
                 teamDone[d.Team] = true;
-                slots.Add(new StrategySlot(team.Label, team.Strategy, d.Team, Members(scenario, d.Team, null), team.Isolated, team.Clock));
+                int[] members = Members(scenario, d.Team, null);
+                slots.Add(team.Host is { } prepared
+                    ? new StrategySlot(team.Label, new HostedStrategy(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members)
+                    : new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock));
             }
         }
 
         return slots.ToArray();
+    }
+
+    // What a strategy host is told of the match (docs/protocol.md, assignment).
+    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles)
+    {
+        public Protocol.AssignmentMessage Assignment(int team, int[] fish) => new(
+            Protocol.ProtocolVersion.Current, team, Referee?.Item.Slug ?? "", Referee?.Item.ChineseName ?? "match", fish,
+            World.Fish.Length, World.Balls.Length, Referee?.Cycles ?? 0, DeadlineMs, World.Field.Length, World.Field.Width, World.Obstacles);
     }
 
     // The fish of a team (those on the given built-in strategy, or all when null), by index.

@@ -4,7 +4,13 @@ namespace URWPGSim2D.Server.Scenario;
 
 /// <summary>A strategy that takes over a whole team (from <c>--strategy TEAM=path</c> or a test).</summary>
 /// <param name="Label">What to call it in the summary.</param>
-/// <param name="Strategy">The strategy instance.</param>
+/// <param name="Strategy">The strategy instance (in the server's process), or null when <paramref name="Host"/> is given.</param>
 /// <param name="Isolated">Run it on its own thread with a time limit (loaded strategies always are).</param>
 /// <param name="Clock">The deadline clock of an isolated strategy (null: its thread's CPU time; tests pass a <see cref="ManualStrategyClock"/>).</param>
-internal sealed record TeamStrategy(string Label, IStrategy Strategy, bool Isolated, StrategyClock? Clock = null);
+/// <param name="Host">A strategy for strategy host processes: every match built with it starts a fresh host.</param>
+/// <param name="Settings">The hosts' sandbox and memory settings (null: the defaults).</param>
+internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null)
+{
+    /// <summary>A team played by a strategy host process per match.</summary>
+    public static TeamStrategy Hosted(string label, PreparedStrategy host, HostSettings settings) => new(label, null, true, null, host, settings);
+}

@@ -1,0 +1,197 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Runtime.InteropServices;
+using System.Threading;
+
+namespace URWPGSim2D.Server.Hosting;
+
+/// <summary>
+/// One strategy host process (<c>host SPEC</c> of this program) with its pipes: sandboxed by
+/// bubblewrap when asked and available, with an empty environment but for what .NET needs, its GC
+/// heap limited, CPU time and core dumps limited by <c>prlimit</c>, and its scratch folder as working
+/// directory. A watchdog kills it when an answer takes longer than the server allows. What it
+/// writes to standard error is kept (its last lines) for the fault report.
+/// </summary>
+internal sealed class HostProcess : IDisposable
+{
+    private const int TailLines = 4;
+    private readonly Process _process;
+    private readonly Queue<string> _tail = new();
+    private readonly Timer _watchdog;
+    private volatile bool _killedByWatchdog;
+
+    private HostProcess(Process process, string scratch, bool sandboxed)
+    {
+        _process = process;
+        Scratch = scratch;
+        Sandboxed = sandboxed;
+        _watchdog = new Timer(_ => Kill(byWatchdog: true));
+        _process.ErrorDataReceived += (_, e) =>
+        {
+            if (e.Data is { } line)
+            {
+                lock (_tail)
+                {
+                    _tail.Enqueue(line.Length > 300 ? line[..300] : line);
+                    if (_tail.Count > TailLines)
+                    {
+                        _tail.Dequeue();
+                    }
+                }
+            }
+        };
+        _process.BeginErrorReadLine();
+    }
+
+    /// <summary>The stream to the host (its standard input).</summary>
+    public Stream ToHost => _process.StandardInput.BaseStream;
+
+    /// <summary>The stream from the host (its standard output).</summary>
+    public Stream FromHost => _process.StandardOutput.BaseStream;
+
+    /// <summary>The host's private scratch folder (its working directory).</summary>
+    public string Scratch { get; }
+
+    /// <summary>Whether it runs in the bubblewrap sandbox.</summary>
+    public bool Sandboxed { get; }
+
+    /// <summary>Whether the watchdog killed it.</summary>
+    public bool KilledByWatchdog => _killedByWatchdog;
+
+    /// <summary>Starts a host for the strategy <paramref name="loadSpec"/>.</summary>
+    /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
+    /// <param name="readOnly">Files and folders of the strategy the host may read.</param>
+    /// <param name="sandbox">Whether to use bubblewrap (the caller has checked it works).</param>
+    /// <param name="memoryMb">GC heap hard limit, MiB.</param>
+    /// <param name="cpuSeconds">CPU time limit of the whole host, s.</param>
+    public static HostProcess Start(string loadSpec, IEnumerable<string> readOnly, bool sandbox, int memoryMb, int cpuSeconds)
+    {
+        string scratch = RunFolder.NewScratch();
+        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        string dotnetRoot = DotnetRoot();
+        var environment = new Dictionary<string, string>(StringComparer.Ordinal)
+        {
+            ["PATH"] = "/usr/bin:/bin",
+            ["HOME"] = scratch,
+            ["TMPDIR"] = scratch,
+            ["DOTNET_ROOT"] = dotnetRoot,
+            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
+            ["DOTNET_NOLOGO"] = "1",
+            ["DOTNET_EnableDiagnostics"] = "0", // no debugger/diagnostics sockets
+            ["DOTNET_gcServer"] = "0",
+            ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
+            ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
+        };
+
+        var command = new List<string>();
+        if (sandbox)
+        {
+            var paths = new List<string>(readOnly) { dotnetRoot, Path.GetDirectoryName(server)! };
+            command.Add(Sandbox.Bwrap);
+            command.AddRange(Sandbox.Arguments(paths, scratch, environment));
+        }
+
+        if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
+        {
+            command.AddRange(["/usr/bin/prlimit", $"--cpu={cpuSeconds}", "--core=0", "--"]);
+        }
+
+        command.AddRange([Path.Combine(dotnetRoot, OperatingSystem.IsWindows() ? "dotnet.exe" : "dotnet"), server, "host", loadSpec]);
+        var start = new ProcessStartInfo(command[0])
+        {
+            UseShellExecute = false,
+            RedirectStandardInput = true,
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            WorkingDirectory = scratch,
+        };
+        for (int i = 1; i < command.Count; i++)
+        {
+            start.ArgumentList.Add(command[i]);
+        }
+
+        start.Environment.Clear();
+        foreach (var pair in environment)
+        {
+            start.Environment[pair.Key] = pair.Value;
+        }
+
+        var process = Process.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
+        return new HostProcess(process, scratch, sandbox);
+    }
+
+    /// <summary>Kills the host if no <see cref="Disarm"/> comes within <paramref name="limit"/>.</summary>
+    public void Arm(TimeSpan limit) => _watchdog.Change(limit, Timeout.InfiniteTimeSpan);
+
+    /// <summary>Stops the watchdog.</summary>
+    public void Disarm() => _watchdog.Change(Timeout.Infinite, Timeout.Infinite);
+
+    /// <summary>Waits up to <paramref name="ms"/> for the host to exit; true when it has.</summary>
+    public bool WaitForExit(int ms) => _process.WaitForExit(ms);
+
+    /// <summary>How the host ended, for the fault report: exit code or signal and its last lines of standard error.</summary>
+    public string Ending()
+    {
+        _process.WaitForExit(2000);
+        string how;
+        if (!_process.HasExited)
+        {
+            how = "it stopped answering";
+        }
+        else
+        {
+            int code = _process.ExitCode;
+            how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+        }
+
+        _process.WaitForExit(); // drain the rest of standard error
+        string tail;
+        lock (_tail)
+        {
+            tail = string.Join(" | ", _tail);
+        }
+
+        return tail.Length == 0 ? how : $"{how}: {tail}";
+    }
+
+    /// <summary>Kills the host and everything it started.</summary>
+    public void Kill(bool byWatchdog = false)
+    {
+        if (byWatchdog)
+        {
+            _killedByWatchdog = true;
+        }
+
+        try
+        {
+            _process.Kill(entireProcessTree: true);
+        }
+        catch (Exception e) when (e is InvalidOperationException or System.ComponentModel.Win32Exception or NotSupportedException)
+        {
+            // already gone
+        }
+    }
+
+    /// <inheritdoc/>
+    public void Dispose()
+    {
+        _watchdog.Dispose();
+        if (!_process.WaitForExit(0))
+        {
+            Kill();
+        }
+
+        _process.WaitForExit(5000);
+        _process.Dispose();
+        RunFolder.Delete(Scratch);
+    }
+
+    private static string DotnetRoot()
+    {
+        // .../shared/Microsoft.NETCore.App/<version>/ -> the folder of the dotnet program
+        string runtime = Path.TrimEndingDirectorySeparator(RuntimeEnvironment.GetRuntimeDirectory());
+        return Path.GetFullPath(Path.Combine(runtime, "..", "..", ".."));
+    }
+}

@@ -1,0 +1,68 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Tests.Cli;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Hosting;
+
+/// <summary>
+/// A well-behaved strategy plays the same match in a sandboxed strategy host as in the server's
+/// process: the traces are byte-identical for every item, two seeds each, with an SDK strategy and
+/// with one in the original's API (which reads the item's mission variables and the half-time swap).
+/// </summary>
+public sealed class IsolationDeterminismTests : IDisposable
+{
+    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-same-").FullName;
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    public static IEnumerable<object[]> Items()
+    {
+        foreach (var item in ItemRegistry.All)
+        {
+            yield return [item.Slug];
+        }
+    }
+
+    [Theory]
+    [MemberData(nameof(Items))]
+    public void A_hosted_strategy_plays_the_same_match_as_in_process(string item)
+    {
+        string sdk = Path.Combine(_folder, "Steady.cs");
+        File.WriteAllText(sdk, """
+            using System;
+            using URWPGSim2D.Strategies;
+            public sealed class Steady : IStrategy
+            {
+                private int _calls;
+                public string TeamName => "steady";
+                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
+                {
+                    _calls++;
+                    for (int i = 0; i < d.Length; i++)
+                    {
+                        var me = s.Fish[fish[i]];
+                        var target = s.Balls.Length > 0 ? s.Balls[i % s.Balls.Length].Position : System.Numerics.Vector2.Zero;
+                        float want = MathF.Atan2(target.Y - me.Position.Y, target.X - me.Position.X) - me.Heading;
+                        int turn = 7 + (int)Math.Clamp(MathF.Round(MathF.IEEERemainder(want, MathF.Tau) * 4), -7, 7);
+                        d[i] = new Decision((_calls + s.Variables.Count + (s.SidesSwapped ? 3 : 0)) % 6 + 9, turn);
+                    }
+                }
+            }
+            """);
+        foreach (string spec in new[] { sdk, OriginalStrategyTests.Folder("Dribbler") })
+        {
+            foreach (string seed in new[] { "1", "2" })
+            {
+                string inProcess = Path.Combine(_folder, "none.jsonl"), hosted = Path.Combine(_folder, "process.jsonl");
+                var a = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", "120", "--strategy", "0=" + spec, "--trace", inProcess, "--isolation", "none");
+                var b = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", "120", "--strategy", "0=" + spec, "--trace", hosted, "--sandbox", "required");
+                Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
+                Assert.Contains("strategy faults: none", b.Stdout, StringComparison.Ordinal);
+                Assert.True(File.ReadAllBytes(inProcess).AsSpan().SequenceEqual(File.ReadAllBytes(hosted)), $"{item} seed {seed} {Path.GetFileName(spec)}: the traces differ");
+            }
+        }
+    }
+}
