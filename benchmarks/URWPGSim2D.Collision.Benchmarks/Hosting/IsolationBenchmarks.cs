@@ -1,0 +1,105 @@
+using System;
+using System.IO;
+using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+
+namespace URWPGSim2D.Collision.Benchmarks.Hosting;
+
+/// <summary>
+/// The cost of running a team's strategy in a sandboxed strategy host instead of the server's
+/// process. Both cases ask team 0 (two fish, a small SDK strategy compiled from source) for one
+/// cycle's decisions on the default match's snapshot 500 cycles in: <see cref="InProcess"/> (the
+/// baseline) on its own thread in the server (<c>--isolation none</c>), <see cref="Hosted"/> in its
+/// host process (snapshot out as a protocol line, decisions back). The difference is the per-cycle
+/// cost of isolation. <see cref="HostStartToFirstDecision"/> starts a host for the already compiled
+/// strategy, takes its first decision and stops it.
+/// </summary>
+[MemoryDiagnoser]
+public class IsolationBenchmarks
+{
+    private const string Source = """
+        using System;
+        using URWPGSim2D.Strategies;
+        public sealed class Ahead : IStrategy
+        {
+            public string TeamName => "ahead";
+            public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
+            {
+                for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, s.Fish[fish[i]].Heading > 0 ? 5 : 9);
+            }
+        }
+        """;
+
+    private Match _match = null!;
+    private StrategyCaller _inProcess = null!;
+    private StrategyCaller _hosted = null!;
+    private PreparedStrategy _prepared = null!;
+    private string _folder = null!;
+    private int[] _fish0 = null!;
+
+    /// <summary>Compiles the strategy, plays 500 cycles and starts both line-ups (the host's first call included).</summary>
+    [GlobalSetup]
+    public void Setup()
+    {
+        _folder = Directory.CreateTempSubdirectory("urwpg-bench-").FullName;
+        string file = Path.Combine(_folder, "Ahead.cs");
+        File.WriteAllText(file, Source);
+        _prepared = StrategyResolver.Prepare(file)!;
+        _match = MatchBuilder.Build(DefaultScenario.Load(), null, cycles: 10_000_000);
+        for (int i = 0; i < 500; i++)
+        {
+            _match.Step();
+        }
+
+        _fish0 = [.. TeamFish(0)];
+        _inProcess = new StrategyCaller([new StrategySlot("team 0", StrategyResolver.Load(file), 0, _fish0, isolated: true)], MatchBuilder.DefaultStrategyTimeoutMs);
+        _hosted = new StrategyCaller([new StrategySlot("team 0", Start(), 0, _fish0)], MatchBuilder.DefaultStrategyTimeoutMs);
+        _inProcess.Decide(_match.Snapshot, _match.World.Fish);
+        _hosted.Decide(_match.Snapshot, _match.World.Fish);
+    }
+
+    /// <summary>Stops the host and deletes the strategy's folder.</summary>
+    [GlobalCleanup]
+    public void Cleanup()
+    {
+        _inProcess.Stop();
+        _hosted.Stop();
+        Directory.Delete(_folder, recursive: true);
+    }
+
+    /// <summary>Team 0's decisions for one cycle, strategy on its thread in the server's process.</summary>
+    [Benchmark(Baseline = true)]
+    public void InProcess() => _inProcess.Decide(_match.Snapshot, _match.World.Fish);
+
+    /// <summary>Team 0's decisions for one cycle, strategy in its sandboxed host process.</summary>
+    [Benchmark]
+    public void Hosted() => _hosted.Decide(_match.Snapshot, _match.World.Fish);
+
+    /// <summary>Starting a host for the compiled strategy up to its first decision, then stopping it.</summary>
+    [Benchmark]
+    public int HostStartToFirstDecision()
+    {
+        var caller = new StrategyCaller([new StrategySlot("team 0", Start(), 0, _fish0)], MatchBuilder.DefaultStrategyTimeoutMs);
+        caller.Decide(_match.Snapshot, _match.World.Fish);
+        int faults = caller.TotalFaults;
+        caller.Stop();
+        return faults == 0 ? 0 : throw new InvalidOperationException("the host faulted: " + caller.Slots[0].FirstFault);
+    }
+
+    private HostedStrategy Start() => new(_prepared, HostSettings.Default, new URWPGSim2D.Protocol.AssignmentMessage(
+        1, 0, "", "match", _fish0, _match.World.Fish.Length, _match.World.Balls.Length, 0, MatchBuilder.DefaultStrategyTimeoutMs,
+        _match.World.Field.Length, _match.World.Field.Width, _match.World.Obstacles), 10_000);
+
+    private System.Collections.Generic.IEnumerable<int> TeamFish(int team)
+    {
+        for (int i = 0; i < _match.World.Fish.Length; i++)
+        {
+            if (_match.World.Fish[i].Team == team)
+            {
+                yield return i;
+            }
+        }
+    }
+}
