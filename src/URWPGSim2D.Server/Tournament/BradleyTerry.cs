@@ -10,12 +10,17 @@ namespace URWPGSim2D.Server.Tournament;
 /// game still gets a finite strength, each entrant may be given <c>prior</c> virtual draws against
 /// a fixed opponent of strength 0 (a penalised likelihood; 0 gives the plain maximum likelihood,
 /// which exists only when no group of entrants won every game against the rest). Fitted by
-/// Hunter's minorisation–maximisation iteration, which increases the likelihood at every step.
+/// Newton's method with step halving (the likelihood never decreases) for up to
+/// <see cref="NewtonLimit"/> entrants, and otherwise, or when Newton has not converged, by Hunter's
+/// minorisation–maximisation iteration, which increases the likelihood at every step too.
 /// </summary>
 internal static class BradleyTerry
 {
     /// <summary>Rating points per natural-log unit of strength: 400 points are odds of 10 to 1.</summary>
     public static readonly double PointsPerUnit = 400 / Math.Log(10);
+
+    /// <summary>Most entrants fitted by Newton's method (each step solves a dense system of that size).</summary>
+    public const int NewtonLimit = 64;
 
     /// <summary>Iterations before the fit gives up converging (never reached in the tests' cases).</summary>
     public const int MaximumIterations = 200_000;
@@ -83,10 +88,190 @@ internal static class BradleyTerry
     /// <summary>The fit (not centred) from sufficient statistics: each entrant's total score and the games of each pair (symmetric, row-major).</summary>
     internal static double[] Solve(int entrants, double[] wins, double[] pairs, double prior, double[]? start)
     {
+        var theta = start is null ? new double[entrants] : (double[])start.Clone();
+        if (entrants <= NewtonLimit && Newton(entrants, wins, pairs, prior, theta))
+        {
+            return theta;
+        }
+
+        return Minorise(entrants, wins, pairs, prior, theta);
+    }
+
+    // Newton steps on the (penalised) log-likelihood, halved until it does not decrease; true when converged.
+    private static bool Newton(int n, double[] wins, double[] pairs, double prior, double[] theta)
+    {
+        var gradient = new double[n];
+        var matrix = new double[n * n];
+        var step = new double[n];
+        var trial = new double[n];
+        double current = Objective(n, wins, pairs, prior, theta);
+        for (int iteration = 0; iteration < 100; iteration++)
+        {
+            Array.Clear(matrix);
+            for (int i = 0; i < n; i++)
+            {
+                double s = Sigmoid(theta[i]);
+                gradient[i] = wins[i] + (prior * (0.5 - s));
+                matrix[(i * n) + i] = prior * s * (1 - s);
+                for (int j = 0; j < n; j++)
+                {
+                    double count = pairs[(i * n) + j];
+                    if (count > 0)
+                    {
+                        double p = Sigmoid(theta[i] - theta[j]);
+                        gradient[i] -= count * p;
+                        double w = count * p * (1 - p);
+                        matrix[(i * n) + i] += w;
+                        matrix[(i * n) + j] -= w;
+                    }
+                }
+
+                if (prior == 0)
+                {
+                    for (int j = 0; j < n; j++)
+                    {
+                        matrix[(i * n) + j] += 1; // only differences count: J makes the system regular, the step sums to 0
+                    }
+                }
+            }
+
+            if (!SolveLinear(n, matrix, gradient, step))
+            {
+                return false;
+            }
+
+            double scale = 1;
+            double value = double.NegativeInfinity;
+            for (int halving = 0; halving < 40; halving++, scale /= 2)
+            {
+                for (int i = 0; i < n; i++)
+                {
+                    trial[i] = theta[i] + (scale * step[i]);
+                }
+
+                value = Objective(n, wins, pairs, prior, trial);
+                if (value >= current - (1e-12 * Math.Abs(current)))
+                {
+                    break;
+                }
+            }
+
+            double largest = 0;
+            for (int i = 0; i < n; i++)
+            {
+                largest = Math.Max(largest, Math.Abs(trial[i] - theta[i]));
+                theta[i] = trial[i];
+            }
+
+            current = value;
+            if (largest < 1e-12)
+            {
+                return true;
+            }
+
+            if (largest > 50)
+            {
+                return false; // running off to infinity (no maximum without the prior)
+            }
+        }
+
+        return false;
+    }
+
+    // The log-likelihood from sufficient statistics (with the prior's virtual draws).
+    private static double Objective(int n, double[] wins, double[] pairs, double prior, double[] theta)
+    {
+        double sum = 0;
+        for (int i = 0; i < n; i++)
+        {
+            sum += (wins[i] * theta[i]) + (prior * ((0.5 * theta[i]) - LogOnePlusExp(theta[i])));
+            for (int j = i + 1; j < n; j++)
+            {
+                double count = pairs[(i * n) + j];
+                if (count > 0)
+                {
+                    double high = Math.Max(theta[i], theta[j]);
+                    sum -= count * (high + LogOnePlusExp(-Math.Abs(theta[i] - theta[j])));
+                }
+            }
+        }
+
+        return sum;
+    }
+
+    private static double LogOnePlusExp(double x) => x > 0 ? x + Math.Log(1 + Math.Exp(-x)) : Math.Log(1 + Math.Exp(x));
+
+    private static double Sigmoid(double x) => x >= 0 ? 1 / (1 + Math.Exp(-x)) : Math.Exp(x) / (1 + Math.Exp(x));
+
+    // Gaussian elimination with partial pivoting of a (symmetric positive definite) system; false when singular.
+    private static bool SolveLinear(int n, double[] a, double[] b, double[] x)
+    {
+        var m = (double[])a.Clone();
+        var r = (double[])b.Clone();
+        for (int c = 0; c < n; c++)
+        {
+            int pivot = c;
+            for (int k = c + 1; k < n; k++)
+            {
+                if (Math.Abs(m[(k * n) + c]) > Math.Abs(m[(pivot * n) + c]))
+                {
+                    pivot = k;
+                }
+            }
+
+            if (Math.Abs(m[(pivot * n) + c]) < 1e-300)
+            {
+                return false;
+            }
+
+            if (pivot != c)
+            {
+                for (int k = 0; k < n; k++)
+                {
+                    (m[(c * n) + k], m[(pivot * n) + k]) = (m[(pivot * n) + k], m[(c * n) + k]);
+                }
+
+                (r[c], r[pivot]) = (r[pivot], r[c]);
+            }
+
+            for (int k = c + 1; k < n; k++)
+            {
+                double f = m[(k * n) + c] / m[(c * n) + c];
+                if (f == 0)
+                {
+                    continue;
+                }
+
+                for (int j = c; j < n; j++)
+                {
+                    m[(k * n) + j] -= f * m[(c * n) + j];
+                }
+
+                r[k] -= f * r[c];
+            }
+        }
+
+        for (int c = n - 1; c >= 0; c--)
+        {
+            double sum = r[c];
+            for (int j = c + 1; j < n; j++)
+            {
+                sum -= m[(c * n) + j] * x[j];
+            }
+
+            x[c] = sum / m[(c * n) + c];
+        }
+
+        return true;
+    }
+
+    /// <summary>Hunter's MM iteration from <paramref name="start"/> (not centred); used beyond <see cref="NewtonLimit"/> entrants or when Newton does not converge.</summary>
+    internal static double[] Minorise(int entrants, double[] wins, double[] pairs, double prior, double[] start)
+    {
         var gamma = new double[entrants];
         for (int i = 0; i < entrants; i++)
         {
-            gamma[i] = start is null ? 1 : Math.Exp(start[i]);
+            gamma[i] = Math.Exp(start[i]);
         }
 
         var next = new double[entrants];

@@ -18,6 +18,10 @@ internal static class EntrantLoader
     public static TeamStrategy? Create(Entrant entrant) =>
         entrant.Spec == Entrant.Demo ? null : new TeamStrategy(entrant.Name, StrategyResolver.Load(entrant.Spec), Isolated: true);
 
+    /// <summary>The one-line reason of a load failure: the message, and the first compile error when there are some.</summary>
+    public static string Reason(StrategyLoadException e) =>
+        StandingsText.Line(e.Details.Count == 0 ? e.Message : $"{e.Message.TrimEnd(':', ' ')}; first: {e.Details[0]}");
+
     /// <summary>Null when the entrant loads, else its one-line reason.</summary>
     public static string? Check(Entrant entrant)
     {
@@ -28,11 +32,11 @@ internal static class EntrantLoader
         }
         catch (StrategyLoadException e)
         {
-            return Tournament.StandingsText.Line(e.Message);
+            return Reason(e);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            return Tournament.StandingsText.Line($"{e.GetType().Name}: {e.Message}"); // hostile code: whatever it throws, the tournament goes on
+            return StandingsText.Line($"{e.GetType().Name}: {e.Message}"); // hostile code: whatever it throws, the tournament goes on
         }
     }
 }

@@ -23,7 +23,7 @@ internal sealed record Standings(
     /// <param name="header">The tournament.</param>
     /// <param name="teams">Teams per match (1 or 2).</param>
     /// <param name="records">Its records.</param>
-    /// <param name="errors">Per entrant, why it could not be loaded in this run, or null (records' reasons come first).</param>
+    /// <param name="errors">Per entrant, why it could not be loaded in this run, or null (then the reason its forfeit records give).</param>
     /// <param name="replicates">Bootstrap replicates.</param>
     public static Standings Compute(TournamentHeader header, int teams, IEnumerable<TournamentRecord> records, IReadOnlyList<string?>? errors = null, int replicates = PairRatings.Replicates)
     {
@@ -36,6 +36,11 @@ internal sealed record Standings(
         }
 
         var error = new string?[n];
+        for (int i = 0; i < n && errors is not null; i++)
+        {
+            error[i] = errors[i]; // this run's reason first: the freshest
+        }
+
         foreach (var r in sorted)
         {
             for (int k = 0; k < r.Forfeits.Count; k++)
@@ -43,11 +48,6 @@ internal sealed record Standings(
                 int e = index[r.Entrants[r.Forfeits[k]]];
                 error[e] ??= r.Reasons[k];
             }
-        }
-
-        for (int i = 0; i < n && errors is not null; i++)
-        {
-            error[i] ??= errors[i];
         }
 
         var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : TwoTeam(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);

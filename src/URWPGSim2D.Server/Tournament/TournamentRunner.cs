@@ -86,7 +86,7 @@ internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader H
                 }
                 catch (StrategyLoadException e)
                 {
-                    error = StandingsText.Line(e.Message); // loaded before, not now: forfeit this match
+                    error = EntrantLoader.Reason(e); // loaded before, not now: forfeit this match
                 }
             }
 
