@@ -128,7 +128,7 @@ internal sealed class TournamentCommand : ICliCommand
         int inShard = schedule.Matches.Count(m => m.Index % header.ShardCount == header.ShardIndex);
         string share = header.ShardCount > 1 ? string.Create(CultureInfo.InvariantCulture, $" (shard {header.ShardIndex}/{header.ShardCount}: {inShard})") : string.Empty;
         console.Out.Write(string.Create(CultureInfo.InvariantCulture,
-            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {header.Seeds} seeds, {header.Matches} matches{share}; {toPlay.Count} to play, {inShard - toPlay.Count} already there{(dropped > 0 ? $", {dropped} broken lines dropped" : string.Empty)}\n"));
+            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, {Plural(header.Matches, "match")}{share}; {toPlay.Count} to play, {inShard - toPlay.Count} already there{(dropped > 0 ? $", {dropped} broken lines dropped" : string.Empty)}\n"));
 
         // What is already there is rewritten whole (dropping broken lines), then each finished match is appended.
         TournamentFile.Write(results, header, kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex));
@@ -270,6 +270,9 @@ internal sealed class TournamentCommand : ICliCommand
             o.Threads ?? 1, o.Threads is not null, o.Partition, o.TimeLimit, "tournament", ["tournament", .. o.PassedOn, "--merge"]);
         return SlurmRun.WriteJobs(job, schedule.Matches.Count, o.Submit, console, "tournament");
     }
+
+    private static string Plural(int count, string noun) =>
+        string.Create(CultureInfo.InvariantCulture, $"{count} {noun}{(count == 1 ? string.Empty : noun.EndsWith('h') ? "es" : "s")}");
 
     private static int Refuse(CliConsole console, string message)
     {

@@ -13,7 +13,7 @@ namespace URWPGSim2D.Server.Tournament;
 /// </summary>
 internal static class TournamentResume
 {
-    /// <summary>The kept records by index, and the number of lines dropped.</summary>
+    /// <summary>The kept records by index, and the number of lines dropped as broken (not counting forfeits whose entrant loads now).</summary>
     /// <param name="header">The tournament asked for.</param>
     /// <param name="schedule">Its schedule.</param>
     /// <param name="files">Result files to read (missing ones are skipped).</param>
@@ -39,13 +39,13 @@ internal static class TournamentResume
             dropped += broken;
             foreach (var r in records)
             {
-                if (Fits(r, schedule, header, errors))
-                {
-                    kept[r.Index] = r;
-                }
-                else
+                if (!Fits(r, schedule, header))
                 {
                     dropped++;
+                }
+                else if (Stands(r, schedule, errors))
+                {
+                    kept[r.Index] = r;
                 }
             }
         }
@@ -53,8 +53,8 @@ internal static class TournamentResume
         return (kept, dropped);
     }
 
-    /// <summary>Whether a record is the scheduled match's, and still stands.</summary>
-    public static bool Fits(TournamentRecord r, TournamentSchedule schedule, TournamentHeader header, IReadOnlyList<string?> errors)
+    /// <summary>Whether a record is the scheduled match's (index, seed and entrants).</summary>
+    public static bool Fits(TournamentRecord r, TournamentSchedule schedule, TournamentHeader header)
     {
         if (r.Index < 0 || r.Index >= schedule.Matches.Count)
         {
@@ -77,7 +77,21 @@ internal static class TournamentResume
 
         foreach (int team in r.Forfeits)
         {
-            if (team < 0 || team >= m.Sides.Count || errors[m.Sides[team]] is null)
+            if (team < 0 || team >= m.Sides.Count)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>Whether a fitting record still stands: a played match always, a forfeit while its entrants still cannot be loaded.</summary>
+    public static bool Stands(TournamentRecord r, TournamentSchedule schedule, IReadOnlyList<string?> errors)
+    {
+        foreach (int team in r.Forfeits)
+        {
+            if (errors[schedule.Matches[r.Index].Sides[team]] is null)
             {
                 return false; // the entrant loads now: play the match
             }
