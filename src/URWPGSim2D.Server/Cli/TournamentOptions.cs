@@ -5,7 +5,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tournament;
 
 namespace URWPGSim2D.Server.Cli;

@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.Threading;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Tournament;
 
