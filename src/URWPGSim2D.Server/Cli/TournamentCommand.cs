@@ -37,7 +37,16 @@ internal sealed class TournamentCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        var schedule = new TournamentSchedule(o.Item.TeamCount, o.Entrants.Count, o.Seeds, o.FirstSeed);
+        TournamentSchedule schedule;
+        try
+        {
+            schedule = new TournamentSchedule(o.Item.TeamCount, o.Entrants.Count, o.Seeds, o.FirstSeed);
+        }
+        catch (ArgumentException e)
+        {
+            return Refuse(console, $"--seeds {o.Seeds} --seed {o.FirstSeed}: {e.Message.Split(" (Parameter", 2)[0]}");
+        }
+
         var whole = new TournamentHeader(o.Item.Slug, o.Entrants, o.Seeds, o.FirstSeed, o.Cycles, o.StrategyTimeoutMs, schedule.Matches.Count);
         string folder;
         try
