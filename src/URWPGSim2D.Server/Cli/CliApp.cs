@@ -38,6 +38,7 @@ internal sealed class CliApp
         new RenderCommand(),
         new MergeCommand(),
         new ViewCommand(),
+        new TournamentCommand(),
         new HostCommand(),
     ];
 
