@@ -22,8 +22,10 @@ internal static class Gjk
     /// The distance between the core of <paramref name="a"/> moved by <paramref name="offsetA"/>
     /// and the core of <paramref name="b"/>, with the closest points (world, A's point already moved).
     /// 0 when the cores overlap or touch (the points are then a common point, approximately).
+    /// <paramref name="separation"/> is pointA − pointB computed in the local frame (precise even
+    /// when the gap is far below the float step of the world coordinates).
     /// </summary>
-    public static float Distance(scoped in QueryShape a, Vector2 offsetA, scoped in QueryShape b, out Vector2 pointA, out Vector2 pointB)
+    public static float Distance(scoped in QueryShape a, Vector2 offsetA, scoped in QueryShape b, out Vector2 pointA, out Vector2 pointB, out Vector2 separation)
     {
         var va = a.Vertices;
         var vb = b.Vertices;
@@ -98,7 +100,8 @@ internal static class Gjk
         Vector2 frame = origin + offsetA;
         pointA = frame + pa;
         pointB = frame + pb;
-        return s.Count == 3 ? 0f : (pa - pb).Length();
+        separation = s.Count == 3 ? Vector2.Zero : pa - pb;
+        return separation.Length();
     }
 
     // The normal of edge w1w2 on the origin's side (not normalised).

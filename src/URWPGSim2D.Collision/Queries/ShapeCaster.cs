@@ -9,15 +9,12 @@ namespace URWPGSim2D.Collision.Queries;
 /// at each step the distance d between the shapes and the rate at which the translation closes it
 /// along the closest-point normal bound the time still free of contact, and the shape is advanced
 /// by exactly that bound. Never past the contact; it stops once the gap is at most the tolerance
-/// (<see cref="ShapeQuery.CastTolerance"/> plus a few float steps of the coordinates).
+/// (<see cref="ShapeQuery.CastTolerance"/>; distances are measured in a frame local to the shapes, so the tolerance holds anywhere in the field).
 /// </summary>
 internal static class ShapeCaster
 {
     /// <summary>Steps before giving up and reporting the contact reached so far (a lower bound of the time).</summary>
     public const int MaxIterations = 50;
-
-    /// <summary>Float steps of the largest coordinate added to the tolerance: the positions themselves are no finer.</summary>
-    private const float CoordinateTolerance = 4.8e-7f;
 
     /// <summary>
     /// Casts <paramref name="a"/> along <paramref name="translation"/> against <paramref name="b"/>.
@@ -27,12 +24,12 @@ internal static class ShapeCaster
     public static bool Cast(scoped in QueryShape a, Vector2 translation, scoped in QueryShape b, out float fraction, out Vector2 point, out Vector2 normal, out float startGap)
     {
         float radius = a.Radius + b.Radius;
-        float tolerance = ShapeQuery.CastTolerance + (CoordinateTolerance * Scale(a.Vertices[0], b.Vertices[0], translation));
+        float tolerance = ShapeQuery.CastTolerance;
         float t = 0f;
         startGap = 0f;
         for (int iteration = 0; iteration < MaxIterations; iteration++)
         {
-            float d = Gjk.Distance(a, t * translation, b, out Vector2 pa, out Vector2 pb);
+            float d = Gjk.Distance(a, t * translation, b, out _, out Vector2 pb, out Vector2 separation);
             float gap = d - radius;
             if (iteration == 0)
             {
@@ -41,12 +38,12 @@ internal static class ShapeCaster
                 {
                     fraction = 0f;
                     point = pb;
-                    normal = d > 0f ? (pa - pb) / d : default;
+                    normal = d > 0f ? separation / d : default;
                     return true;
                 }
             }
 
-            Vector2 n = d > 0f ? (pa - pb) / d : -SafeNormalize(translation);
+            Vector2 n = d > 0f ? separation / d : -SafeNormalize(translation);
             if (gap <= tolerance)
             {
                 fraction = t;
@@ -80,12 +77,6 @@ internal static class ShapeCaster
         point = default;
         normal = default;
         return false;
-    }
-
-    private static float Scale(Vector2 a, Vector2 b, Vector2 translation)
-    {
-        Vector2 m = Vector2.Max(Vector2.Abs(a), Vector2.Max(Vector2.Abs(b), Vector2.Abs(a + translation)));
-        return MathF.Max(m.X, m.Y);
     }
 
     private static Vector2 SafeNormalize(Vector2 v)

@@ -19,12 +19,12 @@ namespace URWPGSim2D.Collision.Queries;
 /// 8-DOPs, a line crossing for segments, a quadratic for circles). Distances come from a GJK
 /// descent that ends on the closest features, so on polygons they are the exact vertex–edge
 /// distance up to round-off (about 10⁻⁶ of the shapes' size). Casts advance conservatively and stop
-/// within <see cref="CastTolerance"/> mm (plus a few float steps of the coordinates) of the contact,
+/// within <see cref="CastTolerance"/> mm of the contact,
 /// never past it. Overlaps are decided by the narrow phase, so touching is not overlapping, as there.
 /// </remarks>
 public static partial class ShapeQuery
 {
-    /// <summary>The largest gap, mm, a cast leaves between the shapes at the contact it reports (plus 4.8·10⁻⁷ of the largest coordinate: float steps).</summary>
+    /// <summary>The largest gap, mm, a cast leaves between the shapes at the contact it reports (it never reports a time past the contact).</summary>
     public const float CastTolerance = 1e-3f;
 
     /// <summary>The distance between two shapes and a closest point on each.</summary>
@@ -39,7 +39,7 @@ public static partial class ShapeQuery
     /// <returns>The gap and closest points.</returns>
     public static DistanceResult Distance(in ConvexPolygon a, in ConvexPolygon b)
     {
-        float d = Gjk.Distance(QueryShape.Of(a), default, QueryShape.Of(b), out Vector2 pa, out Vector2 pb);
+        float d = Gjk.Distance(QueryShape.Of(a), default, QueryShape.Of(b), out Vector2 pa, out Vector2 pb, out _);
         if (d > 0f)
         {
             return new DistanceResult(d, pa, pb);
@@ -126,7 +126,7 @@ public static partial class ShapeQuery
                 }
 
                 var qb = b.Part(j, ref bufferB);
-                float d = Gjk.Distance(qa, default, qb, out Vector2 pa, out Vector2 pb);
+                float d = Gjk.Distance(qa, default, qb, out Vector2 pa, out Vector2 pb, out Vector2 separation);
                 float gap = d - qa.Radius - qb.Radius;
                 if (gap < best)
                 {
@@ -135,7 +135,7 @@ public static partial class ShapeQuery
                     partB = j;
                     if (d > 0f)
                     {
-                        Vector2 n = (pb - pa) / d;
+                        Vector2 n = -separation / d;
                         bestA = pa + (qa.Radius * n);
                         bestB = pb - (qb.Radius * n);
                     }
@@ -173,13 +173,13 @@ public static partial class ShapeQuery
         for (int i = 0; i < a.Count; i++)
         {
             var qa = a.Part(i, ref bufferA);
-            float d = Gjk.Distance(qa, default, qp, out Vector2 pa, out _);
+            float d = Gjk.Distance(qa, default, qp, out Vector2 pa, out _, out Vector2 separation);
             float gap = d - qa.Radius;
             if (gap < best)
             {
                 best = gap;
                 part = i;
-                bestA = d > 0f ? pa + ((point - pa) * (qa.Radius / d)) : point;
+                bestA = d > 0f ? pa - (separation * (qa.Radius / d)) : point;
             }
         }
 
