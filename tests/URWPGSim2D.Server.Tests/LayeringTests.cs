@@ -16,7 +16,7 @@ namespace URWPGSim2D.Server.Tests;
 /// </summary>
 public sealed partial class LayeringTests
 {
-    private static readonly string[] Lower = ["Json", "Scenario", "Trace", "Simulation", "Items", "Rendering", "Batch", "Viewer", "Hosting"];
+    private static readonly string[] Lower = ["Json", "Scenario", "Trace", "Simulation", "Items", "Rendering", "Batch", "Viewer", "Hosting", "Tournament"];
 
     [Fact]
     public void NoLowerFolderReachesUpIntoCli()
