@@ -35,6 +35,7 @@ internal sealed class CliApp
     [
         new RunCommand(),
         new CollideCommand(),
+        new QueryCommand(),
         new ShapesCommand(),
         new RenderCommand(),
         new MergeCommand(),
