@@ -1,17 +1,20 @@
+extern alias baseline;
+
 using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Collision.Shapes;
-using FrozenCircleConvex = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase.CircleConvex;
-using FrozenSat = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase.ConvexSat;
+using FrozenDetector = baseline::URWPGSim2D.Collision.CollisionDetector;
+using FrozenResult = baseline::URWPGSim2D.Collision.CollisionDetectionResult;
+using FrozenShapes = baseline::URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 
 /// <summary>
 /// Single-pair narrow-phase costs with the full result (MTV, normal, action point), each category
-/// against the frozen copy of the kernel as it was before issue 10 (<c>Baseline/NarrowPhase</c>),
-/// measured in the same run: the speed-up column is baseline median / current median. The random
+/// against the same pair in the frozen baseline (the library of the commit tagged
+/// <c>benchmark-baseline</c>, through its own <c>CollisionDetector</c>), measured in the same run: the speed-up column is baseline median / current median. The random
 /// sets (1,000 pairs, fixed seed) report the cost per pair.
 /// </summary>
 [Config(typeof(BaselineConfig))]
@@ -25,6 +28,10 @@ public class PairBenchmarks
     private Vector2[] _boxArrayA = [], _boxArrayB = [], _octArrayA = [], _octArrayB = [];
     private ConvexPolygon[] _setA = [], _setB = [], _apartA = [], _apartB = [], _circlePolygons = [];
     private Circle[] _circles = [];
+    private FrozenShapes.Circle _frozenCircleA;
+    private FrozenShapes.ConvexPolygon _frozenBoxA, _frozenBoxB, _frozenOctA, _frozenOctB, _frozenPolygon;
+    private FrozenShapes.ConvexPolygon[] _frozenSetA = [], _frozenSetB = [], _frozenApartA = [], _frozenApartB = [], _frozenCirclePolygons = [];
+    private FrozenShapes.Circle[] _frozenCircles = [];
 
     /// <summary>Builds overlapping pairs of every benchmarked kind and the random sets.</summary>
     [GlobalSetup]
@@ -48,6 +55,13 @@ public class PairBenchmarks
         (_setA, _setB) = RandomPolygonPairs(new Random(10), overlapping: true);
         (_apartA, _apartB) = RandomPolygonPairs(new Random(11), overlapping: false);
         (_circles, _circlePolygons) = RandomCirclePolygonPairs(new Random(12));
+
+        // The same shapes for the frozen baseline.
+        _frozenCircleA = Frozen(_circleA);
+        (_frozenBoxA, _frozenBoxB, _frozenOctA, _frozenOctB, _frozenPolygon) = (Frozen(_boxA), Frozen(_boxB), Frozen(_octA), Frozen(_octB), Frozen(_polygon));
+        (_frozenSetA, _frozenSetB) = (Array.ConvertAll(_setA, Frozen), Array.ConvertAll(_setB, Frozen));
+        (_frozenApartA, _frozenApartB) = (Array.ConvertAll(_apartA, Frozen), Array.ConvertAll(_apartB, Frozen));
+        (_frozenCircles, _frozenCirclePolygons) = (Array.ConvertAll(_circles, Frozen), Array.ConvertAll(_circlePolygons, Frozen));
     }
 
     /// <summary>Circle against circle (no baseline: unchanged kernel, for scale).</summary>
@@ -63,7 +77,7 @@ public class PairBenchmarks
     /// <summary>The same two boxes through the frozen SAT.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("box-box")]
-    public CollisionDetectionResult BoxBoxBaseline() => FrozenSat.Detect(_boxA.View(), _boxB.View());
+    public FrozenResult BoxBoxBaseline() => FrozenDetector.Detect(_frozenBoxA, _frozenBoxB);
 
     /// <summary>Textbook allocating SAT on the same two boxes (MTV only, no action point).</summary>
     [Benchmark]
@@ -78,7 +92,7 @@ public class PairBenchmarks
     /// <summary>The same two octagons through the frozen SAT.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("octagon-octagon")]
-    public CollisionDetectionResult OctagonOctagonBaseline() => FrozenSat.Detect(_octA.View(), _octB.View());
+    public FrozenResult OctagonOctagonBaseline() => FrozenDetector.Detect(_frozenOctA, _frozenOctB);
 
     /// <summary>Textbook allocating SAT on the same two octagons.</summary>
     [Benchmark]
@@ -93,7 +107,7 @@ public class PairBenchmarks
     /// <summary>The same circle and hexagon through the frozen kernel.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("circle-hexagon")]
-    public CollisionDetectionResult CirclePolygonBaseline() => FrozenCircleConvex.Detect(_circleA, _polygon.View());
+    public FrozenResult CirclePolygonBaseline() => FrozenDetector.Detect(_frozenCircleA, _frozenPolygon);
 
     /// <summary>1,000 random overlapping convex polygon pairs (3–8 vertices), per pair.</summary>
     [Benchmark(OperationsPerInvoke = SetSize)]
@@ -115,9 +129,9 @@ public class PairBenchmarks
     public float RandomPolygonsBaseline()
     {
         float sum = 0f;
-        for (int i = 0; i < _setA.Length; i++)
+        for (int i = 0; i < _frozenSetA.Length; i++)
         {
-            sum += FrozenSat.Detect(_setA[i].View(), _setB[i].View()).MinimumTranslationVector.X;
+            sum += FrozenDetector.Detect(_frozenSetA[i], _frozenSetB[i]).MinimumTranslationVector.X;
         }
 
         return sum;
@@ -145,7 +159,7 @@ public class PairBenchmarks
         float sum = 0f;
         for (int i = 0; i < _apartA.Length; i++)
         {
-            sum += FrozenSat.Detect(_apartA[i].View(), _apartB[i].View()).Intersect ? 1f : 0f;
+            sum += FrozenDetector.Detect(_frozenApartA[i], _frozenApartB[i]).Intersect ? 1f : 0f;
         }
 
         return sum;
@@ -173,7 +187,7 @@ public class PairBenchmarks
         float sum = 0f;
         for (int i = 0; i < _circles.Length; i++)
         {
-            sum += FrozenCircleConvex.Detect(_circles[i], _circlePolygons[i].View()).MinimumTranslationVector.X;
+            sum += FrozenDetector.Detect(_frozenCircles[i], _frozenCirclePolygons[i]).MinimumTranslationVector.X;
         }
 
         return sum;
@@ -188,6 +202,10 @@ public class PairBenchmarks
     [Benchmark]
     [BenchmarkCategory("other kinds")]
     public CollisionDetectionResult AabbAabb() => CollisionDetector.Detect(_aabbA, _aabbB);
+
+    private static FrozenShapes.ConvexPolygon Frozen(ConvexPolygon polygon) => new(polygon.Vertices);
+
+    private static FrozenShapes.Circle Frozen(Circle circle) => new(circle.Center, circle.Radius);
 
     /// <summary>
     /// Random convex polygons of 3–8 vertices (points at sorted, jittered angles on a circle of

@@ -1,8 +1,11 @@
+extern alias baseline;
+
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
+using BaselineBuilder = baseline::URWPGSim2D.Server.Scenario.MatchBuilder;
+using BaselineMatch = baseline::URWPGSim2D.Server.Simulation.Match;
 
 namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 
@@ -10,8 +13,8 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// One whole cycle of a crowd scene (<see cref="CrowdScenario"/>: fish and balls at the default
 /// match's density, the pool growing with the count, fish on fixed random decisions) for 100 to
 /// 30,000 fish and balls, the stepper's broad phase a uniform grid, against the frozen baseline
-/// (<see cref="BaselineMatch"/>: the same scene played by the motion stage as it was before issue
-/// 10) measured in the same run. The scene is played 20 cycles before measuring (the starting
+/// (<see cref="BaselineMatch"/>: the same scene played by the whole server of the commit tagged
+/// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. The scene is played 20 cycles before measuring (the starting
 /// overlaps are resolved in the first ones); each call plays the next cycle. Brute force, the
 /// broad phase's reference, is in <see cref="BruteForceScalingBenchmarks"/>.
 /// </summary>
@@ -41,8 +44,7 @@ public class ScalingBenchmarks
     [GlobalSetup(Target = nameof(Baseline))]
     public void SetupBaseline()
     {
-        var scene = CrowdScenario.Create(Objects);
-        _baseline = new BaselineMatch(MatchBuilder.Build(scene), scene.Noise, scene.Seed);
+        _baseline = BaselineBuilder.Build(baseline::URWPGSim2D.Server.Scenario.CrowdScenario.Create(Objects));
         for (int i = 0; i < WarmCycles; i++)
         {
             _baseline.Step();

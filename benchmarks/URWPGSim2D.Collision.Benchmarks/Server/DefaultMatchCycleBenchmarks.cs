@@ -1,16 +1,19 @@
+extern alias baseline;
+
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
+using BaselineBuilder = baseline::URWPGSim2D.Server.Scenario.MatchBuilder;
+using BaselineMatch = baseline::URWPGSim2D.Server.Simulation.Match;
 
 namespace URWPGSim2D.Collision.Benchmarks.Server;
 
 /// <summary>
 /// One cycle of the embedded default match (4 fish, 9 balls, 4 obstacles, 4 goal blocks, walls),
 /// 500 cycles into the match so that fish and balls are in play, against the frozen baseline
-/// (<see cref="BaselineMatch"/>: the same match played by the motion stage as it was before issue
-/// 10) measured in the same run. <see cref="Detection"/> is the detection alone: broad phase and
+/// (<see cref="BaselineMatch"/>: the same match played by the whole server of the commit tagged
+/// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. <see cref="Detection"/> is the detection alone: broad phase and
 /// every candidate pair's exact test at the state of cycle 500 (no motion, no response).
 /// <see cref="Cycle"/> is the whole 100 ms cycle: strategies, locomotion, sub-stepped motion with
 /// times of first contact and responses, rules, reported per cycle over cycles 500 to 1,499: each
@@ -51,8 +54,7 @@ public class DefaultMatchCycleBenchmarks
     [IterationSetup(Target = nameof(CycleBaseline))]
     public void SetupBaseline()
     {
-        var scenario = DefaultScenario.Load();
-        _baseline = new BaselineMatch(MatchBuilder.Build(scenario), scenario.Noise, scenario.Seed);
+        _baseline = BaselineBuilder.Build(baseline::URWPGSim2D.Server.Scenario.DefaultScenario.Load());
         for (int i = 0; i < WarmCycles; i++)
         {
             _baseline.Step();
@@ -75,8 +77,7 @@ public class DefaultMatchCycleBenchmarks
     {
         for (int i = 0; i < Seeds; i++)
         {
-            var scenario = DefaultScenario.Load();
-            _seedBaselines[i] = new BaselineMatch(MatchBuilder.Build(scenario, seed: (ulong)(i + 1)), scenario.Noise, (ulong)(i + 1));
+            _seedBaselines[i] = BaselineBuilder.Build(baseline::URWPGSim2D.Server.Scenario.DefaultScenario.Load(), seed: (ulong)(i + 1));
         }
     }
 

@@ -96,7 +96,7 @@ internal static class BatchRun
     {
         var probe = MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), options.Seed, options.Noise, options.StrategyTimeoutMs);
         probe.Strategies.Stop();
-        return MatchSummary.TeamLabel(probe, 0) + ";" + MatchSummary.TeamLabel(probe, 1);
+        return probe.TeamLabel(0) + ";" + probe.TeamLabel(1);
     }
 
     private static string NoiseText(RunOptions options) => options.Noise switch

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Text;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -83,7 +84,7 @@ internal sealed class CliApp
             }
 
             ICliCommand command = Array.Find(_commands, c => c.Name == args[0])
-                ?? throw new CliUsageException($"unknown command {CliText.Quote(args[0])}", Synopsis);
+                ?? throw new CliUsageException($"unknown command {MessageText.Quote(args[0])}", Synopsis);
             return command.Run(args.AsSpan(1), console);
         }
         catch (CliUsageException ex)
@@ -91,7 +92,7 @@ internal sealed class CliApp
             console.ErrorLine(ex.Line);
             return ExitCodes.BadInput;
         }
-        catch (CliInputException ex)
+        catch (InputException ex)
         {
             console.ErrorLine(ex.Line);
             return ExitCodes.BadInput;

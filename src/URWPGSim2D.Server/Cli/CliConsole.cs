@@ -1,4 +1,5 @@
 using System.IO;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -11,7 +12,7 @@ namespace URWPGSim2D.Server.Cli;
 /// <param name="Error">Standard error: usage text and one-line error messages.</param>
 internal sealed record CliConsole(TextReader In, TextWriter Out, TextWriter Error)
 {
-    /// <summary>Writes one error line to <see cref="Error"/>, escaping whatever would break it (<see cref="CliText.Escape"/>).</summary>
+    /// <summary>Writes one error line to <see cref="Error"/>, escaping whatever would break it (<see cref="MessageText.Escape"/>).</summary>
     /// <param name="line">The message; user text echoed in it may hold anything.</param>
-    public void ErrorLine(string line) => Error.WriteLine(CliText.Escape(line));
+    public void ErrorLine(string line) => Error.WriteLine(MessageText.Escape(line));
 }

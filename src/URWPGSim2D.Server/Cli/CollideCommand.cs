@@ -56,19 +56,19 @@ internal sealed class CollideCommand : ICliCommand
     /// <summary>Parses and validates the whole input; the first problem in document order is reported.</summary>
     /// <param name="text">The input text.</param>
     /// <returns>The shape pairs, in input order.</returns>
-    /// <exception cref="CliInputException">Malformed JSON or an invalid pair.</exception>
+    /// <exception cref="InputException">Malformed JSON or an invalid pair.</exception>
     /// <param name="limit">The most pairs accepted (<see cref="InputLimits"/>).</param>
     /// <param name="command">The command reading them, for the limit's message.</param>
     internal static (InputShape A, InputShape B)[] ReadPairs(string text, int limit = InputLimits.Pairs, string command = "collide")
     {
         InputLimits.CheckCount(text, RootName, limit, command);
         var dtos = JsonInput.Deserialize(text, InputJsonContext.Default.PairDtoArray, RootName, ExpectedKind)
-            ?? throw new CliInputException(RootName, "must be an array of {\"a\": SHAPE, \"b\": SHAPE} objects, got null");
+            ?? throw new InputException(RootName, "must be an array of {\"a\": SHAPE, \"b\": SHAPE} objects, got null");
         var pairs = new (InputShape A, InputShape B)[dtos.Length];
         for (int i = 0; i < dtos.Length; i++)
         {
             string path = $"{RootName}[{i}]";
-            var dto = dtos[i] ?? throw new CliInputException(path, "must be an object {\"a\": SHAPE, \"b\": SHAPE}, got null");
+            var dto = dtos[i] ?? throw new InputException(path, "must be an object {\"a\": SHAPE, \"b\": SHAPE}, got null");
             pairs[i] = (ShapeJson.Read(dto.A, path + ".a"), ShapeJson.Read(dto.B, path + ".b"));
         }
 

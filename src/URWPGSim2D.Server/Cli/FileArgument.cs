@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -36,7 +37,7 @@ internal static class FileArgument
 
         if (file.StartsWith('-') && file != InputText.StandardInput)
         {
-            throw new CliUsageException($"{command}: unknown option {CliText.Quote(file)}", usage);
+            throw new CliUsageException($"{command}: unknown option {MessageText.Quote(file)}", usage);
         }
 
         return file;

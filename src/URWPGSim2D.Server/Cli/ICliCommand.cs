@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -19,7 +20,7 @@ internal interface ICliCommand
 
     /// <summary>
     /// Runs the command. Bad arguments throw <see cref="CliUsageException"/>, bad input throws
-    /// <see cref="CliInputException"/>; in both cases nothing may have been written to stdout.
+    /// <see cref="InputException"/>; in both cases nothing may have been written to stdout.
     /// </summary>
     /// <param name="arguments">The arguments after the command name.</param>
     /// <param name="console">The streams to use.</param>

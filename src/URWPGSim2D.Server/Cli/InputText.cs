@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Text;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -14,7 +15,7 @@ internal static class InputText
     /// <param name="file">A file path, or <c>-</c> for <paramref name="stdin"/>.</param>
     /// <param name="stdin">The standard input reader.</param>
     /// <returns>The text.</returns>
-    /// <exception cref="CliInputException">The file does not exist or cannot be read; the path is the file name as given.</exception>
+    /// <exception cref="InputException">The file does not exist or cannot be read; the path is the file name as given.</exception>
     public static string Read(string file, TextReader stdin)
     {
         if (file == StandardInput)
@@ -27,18 +28,18 @@ internal static class InputText
             var info = new FileInfo(file);
             if (info.Exists && info.Length > InputLimits.InputBytes)
             {
-                throw new CliInputException(file, InputLimits.TooLarge(info.Length));
+                throw new InputException(file, InputLimits.TooLarge(info.Length));
             }
 
             return File.ReadAllText(file);
         }
         catch (Exception ex) when (ex is FileNotFoundException or DirectoryNotFoundException)
         {
-            throw new CliInputException(file, "file not found");
+            throw new InputException(file, "file not found");
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw new CliInputException(file, $"cannot read file: {ex.Message}");
+            throw new InputException(file, $"cannot read file: {ex.Message}");
         }
     }
 
@@ -46,7 +47,7 @@ internal static class InputText
     /// <param name="reader">The input.</param>
     /// <param name="name">The input's name in the message (<c>-</c> for stdin).</param>
     /// <returns>The text.</returns>
-    /// <exception cref="CliInputException">The input is too large.</exception>
+    /// <exception cref="InputException">The input is too large.</exception>
     public static string ReadLimited(TextReader reader, string name)
     {
         var text = new StringBuilder();
@@ -57,7 +58,7 @@ internal static class InputText
             text.Append(buffer, 0, read);
             if (text.Length > InputLimits.InputBytes)
             {
-                throw new CliInputException(name, $"the input is more than {InputLimits.InputBytes >> 20} Mi characters, the limit (docs/cli.md, Limits)");
+                throw new InputException(name, $"the input is more than {InputLimits.InputBytes >> 20} Mi characters, the limit (docs/cli.md, Limits)");
             }
         }
 

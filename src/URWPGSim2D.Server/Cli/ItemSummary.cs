@@ -20,7 +20,7 @@ internal static class ItemSummary
         s.Append("score:");
         for (int t = 0; t < referee.Scores.Length; t++)
         {
-            s.Append(c, $" team {t} ({MatchSummary.TeamLabel(match, t)}) {ScoreText(referee.Scores[t])}").Append(t + 1 < referee.Scores.Length ? "," : "\n");
+            s.Append(c, $" team {t} ({match.TeamLabel(t)}) {ScoreText(referee.Scores[t])}").Append(t + 1 < referee.Scores.Length ? "," : "\n");
         }
 
         s.Append(c, $"events: {referee.Events.Count}\n");
@@ -32,7 +32,7 @@ internal static class ItemSummary
         var outcome = referee.Outcome;
         string state = referee.IsOver ? string.Empty : " (not over)";
         s.Append(outcome.Winner >= 0
-            ? string.Create(c, $"winner: team {outcome.Winner} ({MatchSummary.TeamLabel(match, outcome.Winner)}) by {outcome.Rule}{state}\n")
+            ? string.Create(c, $"winner: team {outcome.Winner} ({match.TeamLabel(outcome.Winner)}) by {outcome.Rule}{state}\n")
             : string.Create(c, $"winner: none, {outcome.Rule}{state}\n"));
     }
 

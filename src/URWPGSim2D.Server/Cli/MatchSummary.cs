@@ -26,7 +26,7 @@ internal static class MatchSummary
         }
         else
         {
-            s.Append(c, $"goals: team 0 ({TeamLabel(match, 0)}) {match.World.Goals[0]}, team 1 ({TeamLabel(match, 1)}) {match.World.Goals[1]}\n");
+            s.Append(c, $"goals: team 0 ({match.TeamLabel(0)}) {match.World.Goals[0]}, team 1 ({match.TeamLabel(1)}) {match.World.Goals[1]}\n");
         }
 
         s.Append("contacts:");
@@ -58,20 +58,5 @@ internal static class MatchSummary
 
         s.Append(any ? "\n" : " none\n");
         return s.ToString();
-    }
-
-    /// <summary>The strategy labels of a team, joined.</summary>
-    public static string TeamLabel(Match match, int team)
-    {
-        var labels = new List<string>();
-        foreach (var slot in match.Strategies.Slots)
-        {
-            if (slot.Team == team && !labels.Contains(slot.Label))
-            {
-                labels.Add(slot.Label);
-            }
-        }
-
-        return labels.Count == 0 ? "no fish" : string.Join("+", labels);
     }
 }

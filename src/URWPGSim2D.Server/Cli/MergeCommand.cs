@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -50,7 +51,7 @@ internal sealed class MergeCommand : ICliCommand
             }
             else if (a.StartsWith("--", StringComparison.Ordinal))
             {
-                throw UsageError($"unknown option {CliText.Quote(a)}");
+                throw UsageError($"unknown option {MessageText.Quote(a)}");
             }
             else
             {

@@ -1,4 +1,5 @@
 using System.IO;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -12,7 +13,7 @@ internal static class OutputFile
     /// <summary>Fails when <paramref name="path"/> cannot be an output file.</summary>
     /// <param name="option">The option that names the file, e.g. <c>--svg</c>; the start of the message.</param>
     /// <param name="path">The path given, or null when the option is absent (no check).</param>
-    /// <exception cref="CliInputException">The folder does not exist, or the path is a folder or not a valid path.</exception>
+    /// <exception cref="InputException">The folder does not exist, or the path is a folder or not a valid path.</exception>
     public static void Check(string option, string? path)
     {
         if (path is null)
@@ -27,18 +28,18 @@ internal static class OutputFile
         }
         catch (System.Exception e) when (e is System.ArgumentException or System.NotSupportedException or PathTooLongException)
         {
-            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (not a valid path)");
+            throw new InputException(option, $"cannot write {MessageText.Quote(path)} (not a valid path)");
         }
 
         if (path.Length == 0 || Directory.Exists(full))
         {
-            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (it is a folder, give a file name)");
+            throw new InputException(option, $"cannot write {MessageText.Quote(path)} (it is a folder, give a file name)");
         }
 
         string? folder = Path.GetDirectoryName(full);
         if (folder is not null && !Directory.Exists(folder))
         {
-            throw new CliInputException(option, $"cannot write {CliText.Quote(path)} (folder {CliText.Quote(folder)} does not exist)");
+            throw new InputException(option, $"cannot write {MessageText.Quote(path)} (folder {MessageText.Quote(folder)} does not exist)");
         }
     }
 }

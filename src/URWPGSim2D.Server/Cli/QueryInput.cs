@@ -34,7 +34,7 @@ internal static class QueryInput
     /// <summary>Parses and validates the whole input; the first problem in document order is reported.</summary>
     /// <param name="text">The input text.</param>
     /// <returns>The shapes and the queries.</returns>
-    /// <exception cref="CliInputException">Malformed JSON, an invalid SHAPE or an invalid query.</exception>
+    /// <exception cref="InputException">Malformed JSON, an invalid SHAPE or an invalid query.</exception>
     public static (InputShape[] Shapes, InputQuery[] Queries) Read(string text)
     {
         QueryInputDto? dto;
@@ -42,19 +42,19 @@ internal static class QueryInput
         {
             dto = JsonInput.Deserialize(text, InputJsonContext.Default.QueryInputDto, "$", ExpectedKind);
         }
-        catch (CliInputException e) when (e.Path.StartsWith('$'))
+        catch (InputException e) when (e.Path.StartsWith('$'))
         {
             // Paths start at the document's fields: "$.shapes[2]" is shapes[2]; "$" is the document.
             string path = e.Path.Length > 2 ? e.Path[2..] : "input";
-            throw new CliInputException(path, e.Message);
+            throw new InputException(path, e.Message);
         }
 
         if (dto is null)
         {
-            throw new CliInputException("input", "must be an object {\"shapes\": [SHAPE, ...], \"queries\": [QUERY, ...]}, got null");
+            throw new InputException("input", "must be an object {\"shapes\": [SHAPE, ...], \"queries\": [QUERY, ...]}, got null");
         }
 
-        var shapeDtos = dto.Shapes ?? throw new CliInputException("shapes", FieldReader.MissingMessage);
+        var shapeDtos = dto.Shapes ?? throw new InputException("shapes", FieldReader.MissingMessage);
         CheckCount(shapeDtos.Length, "shapes", InputLimits.Shapes);
         var shapes = new InputShape[shapeDtos.Length];
         for (int i = 0; i < shapes.Length; i++)
@@ -62,7 +62,7 @@ internal static class QueryInput
             shapes[i] = ShapeJson.Read(shapeDtos[i], $"shapes[{i}]");
         }
 
-        var queryDtos = dto.Queries ?? throw new CliInputException("queries", FieldReader.MissingMessage);
+        var queryDtos = dto.Queries ?? throw new InputException("queries", FieldReader.MissingMessage);
         CheckCount(queryDtos.Length, "queries", InputLimits.Pairs);
         var queries = new InputQuery[queryDtos.Length];
         for (int i = 0; i < queries.Length; i++)
@@ -77,7 +77,7 @@ internal static class QueryInput
     {
         if (dto is null)
         {
-            throw new CliInputException(path, FieldReader.MissingMessage);
+            throw new InputException(path, FieldReader.MissingMessage);
         }
 
         var fields = new FieldReader(path);
@@ -95,7 +95,7 @@ internal static class QueryInput
             case "overlap":
                 return new InputQuery(QueryKind.Overlap, -1, -1, default, default, Box(dto.Aabb, fields));
             default:
-                throw new CliInputException(fields.PathOf("type"), $"unknown query type {CliText.Quote(type)} (distance, ray, cast or overlap)");
+                throw new InputException(fields.PathOf("type"), $"unknown query type {MessageText.Quote(type)} (distance, ray, cast or overlap)");
         }
     }
 
@@ -104,7 +104,7 @@ internal static class QueryInput
         int index = value ?? throw fields.Missing(field);
         if ((uint)index >= (uint)shapes.Length)
         {
-            throw new CliInputException(fields.PathOf(field), shapes.Length == 0
+            throw new InputException(fields.PathOf(field), shapes.Length == 0
                 ? $"must be a shape index, but there are no shapes; got {index}"
                 : $"must be a shape index 0 … {shapes.Length - 1}, got {index}");
         }
@@ -115,7 +115,7 @@ internal static class QueryInput
     private static Vector2 Finite(Vector2 point, string field, FieldReader fields) =>
         float.IsFinite(point.X) && float.IsFinite(point.Y)
             ? point
-            : throw new CliInputException(fields.PathOf(field), $"must have finite coordinates, got [{point.X}, {point.Y}]");
+            : throw new InputException(fields.PathOf(field), $"must have finite coordinates, got [{point.X}, {point.Y}]");
 
     private static Aabb Box(QueryBoxDto? dto, FieldReader fields)
     {
@@ -140,7 +140,7 @@ internal static class QueryInput
     {
         if (count > limit)
         {
-            throw new CliInputException(path, $"more than {limit} elements, the limit of query (docs/cli.md, Limits)");
+            throw new InputException(path, $"more than {limit} elements, the limit of query (docs/cli.md, Limits)");
         }
     }
 

@@ -49,7 +49,7 @@ internal sealed class RenderCommand : ICliCommand
         }
         catch (Exception ex) when (ex is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw new CliInputException(output, $"cannot write file: {ex.Message.ReplaceLineEndings(" ")}");
+            throw new InputException(output, $"cannot write file: {ex.Message.ReplaceLineEndings(" ")}");
         }
 
         return ExitCodes.Success;

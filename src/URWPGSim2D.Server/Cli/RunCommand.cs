@@ -5,6 +5,7 @@ using System.IO;
 using System.Security.Cryptography;
 using System.Text;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -120,7 +121,7 @@ internal sealed class RunCommand : ICliCommand
                 fish.SyncModel(); // the picture shows every leaf exactly where the fish is
             }
 
-            SvgFrame.Write(match.World, options.Svg, [MatchSummary.TeamLabel(match, 0), MatchSummary.TeamLabel(match, 1)]);
+            SvgFrame.Write(match.World, options.Svg, [match.TeamLabel(0), match.TeamLabel(1)]);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));
@@ -203,7 +204,7 @@ internal sealed class RunCommand : ICliCommand
 
             return path == "-" ? InputText.ReadLimited(console.In, path) : File.ReadAllText(path);
         }
-        catch (CliInputException e)
+        catch (InputException e)
         {
             throw new ScenarioException(path, e.Message);
         }

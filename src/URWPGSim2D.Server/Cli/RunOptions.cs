@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -169,7 +170,7 @@ internal sealed class RunOptions
 
             if (!name.StartsWith("--", StringComparison.Ordinal))
             {
-                throw UsageError($"unexpected argument {CliText.Quote(name)}");
+                throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
             if (name is "--live" or "--paused")
@@ -201,10 +202,10 @@ internal sealed class RunOptions
                 case "--item":
                     o.Item = value == "default" || ItemRegistry.Find(value) is not null
                         ? value
-                        : throw UsageError($"--item must be one of {ItemRegistry.Names()} (or the original's name), got {CliText.Quote(value)}");
+                        : throw UsageError($"--item must be one of {ItemRegistry.Names()} (or the original's name), got {MessageText.Quote(value)}");
                     break;
                 case "--minutes":
-                    o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {CliText.Quote(value)}") };
+                    o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {MessageText.Quote(value)}") };
                     break;
                 case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Server.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
                 case "--batch": o.Batch = (int)Number(name, value, 1, MaximumBatch); break;
@@ -212,17 +213,17 @@ internal sealed class RunOptions
                 case "--results": o.Results = value; break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;
                 case "--shards": o.SlurmShards = (int)Number(name, value, 1, global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.MaximumShards); break;
-                case "--partition": o.Partition = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {CliText.Quote(value)}"); break;
-                case "--time": o.TimeLimit = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {CliText.Quote(value)}"); break;
+                case "--partition": o.Partition = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
+                case "--time": o.TimeLimit = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
                 case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
                 case "--html": o.Html = value; break;
                 case "--port": o.Port = (int)Number(name, value, 1, 65535); break;
-                case "--host": o.Host = value.Length > 0 && !value.Contains('/', StringComparison.Ordinal) ? value : throw UsageError($"--host must be an address or host name, got {CliText.Quote(value)}"); break;
+                case "--host": o.Host = value.Length > 0 && !value.Contains('/', StringComparison.Ordinal) ? value : throw UsageError($"--host must be an address or host name, got {MessageText.Quote(value)}"); break;
                 case "--speed":
                     o.Speed = double.TryParse(value, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out double x) && x >= 0.01 && x <= 1000
-                        ? x : throw UsageError($"--speed must be a number 0.01..1000 (times real time), got {CliText.Quote(value)}");
+                        ? x : throw UsageError($"--speed must be a number 0.01..1000 (times real time), got {MessageText.Quote(value)}");
                     break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
@@ -235,19 +236,19 @@ internal sealed class RunOptions
                     break;
                 case "--strategy-memory": o.StrategyMemoryMb = (int)Number(name, value, 64, 1_048_576); break;
                 case "--noise":
-                    o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {CliText.Quote(value)}") };
+                    o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {MessageText.Quote(value)}") };
                     break;
                 case "--strategy":
                     int eq = value.IndexOf('=', StringComparison.Ordinal);
                     if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
                     {
-                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 or 1, got {CliText.Quote(value)}");
+                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 or 1, got {MessageText.Quote(value)}");
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];
                     break;
                 default:
-                    throw UsageError($"unknown option {CliText.Quote(name)}");
+                    throw UsageError($"unknown option {MessageText.Quote(name)}");
             }
         }
 
@@ -274,7 +275,7 @@ internal sealed class RunOptions
             || !int.TryParse(value.AsSpan(slash + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int count)
             || count < 1 || index >= count)
         {
-            throw UsageError($"--shard must be I/K with 0 <= I < K (e.g. 0/4), got {CliText.Quote(value)}");
+            throw UsageError($"--shard must be I/K with 0 <= I < K (e.g. 0/4), got {MessageText.Quote(value)}");
         }
 
         ShardIndex = index;
@@ -360,7 +361,7 @@ internal sealed class RunOptions
     {
         if (!long.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out long v) || v < min || v > max)
         {
-            throw UsageError($"{name} must be an integer {min}..{max}, got {CliText.Quote(value)}");
+            throw UsageError($"{name} must be an integer {min}..{max}, got {MessageText.Quote(value)}");
         }
 
         return v;

@@ -12,19 +12,19 @@ internal static class ShapesInput
     /// <summary>Parses and validates the whole input; the first problem in document order is reported.</summary>
     /// <param name="text">The input text.</param>
     /// <returns>The shapes, in input order.</returns>
-    /// <exception cref="CliInputException">Malformed JSON or an invalid SHAPE (<c>shapes[3].joints: ...</c>).</exception>
+    /// <exception cref="InputException">Malformed JSON or an invalid SHAPE (<c>shapes[3].joints: ...</c>).</exception>
     /// <param name="limit">The most SHAPEs accepted (<see cref="InputLimits"/>).</param>
     /// <param name="command">The command reading them, for the limit's message.</param>
     public static InputShape[] Read(string text, int limit = InputLimits.Shapes, string command = "shapes")
     {
         InputLimits.CheckCount(text, RootName, limit, command);
         var dtos = JsonInput.Deserialize(text, InputJsonContext.Default.ShapeDtoArray, RootName, ExpectedKind)
-            ?? throw new CliInputException(RootName, "must be an array of SHAPE objects, got null");
+            ?? throw new InputException(RootName, "must be an array of SHAPE objects, got null");
         var shapes = new InputShape[dtos.Length];
         for (int i = 0; i < dtos.Length; i++)
         {
             string path = $"{RootName}[{i}]";
-            shapes[i] = ShapeJson.Read(dtos[i] ?? throw new CliInputException(path, "must be a shape object {\"type\": ..., ...}, got null"), path);
+            shapes[i] = ShapeJson.Read(dtos[i] ?? throw new InputException(path, "must be a shape object {\"type\": ..., ...}, got null"), path);
         }
 
         return shapes;

@@ -5,6 +5,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tournament;
 
@@ -139,7 +140,7 @@ internal sealed class TournamentOptions
 
             if (!name.StartsWith("--", StringComparison.Ordinal))
             {
-                throw UsageError($"unexpected argument {CliText.Quote(name)}");
+                throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
             if (i + 1 >= args.Length)
@@ -162,13 +163,13 @@ internal sealed class TournamentOptions
             switch (name)
             {
                 case "--item":
-                    o.Item = ItemRegistry.Find(value) ?? throw UsageError($"--item must be one of {string.Join(", ", ItemSlugs())} (or the original's name), got {CliText.Quote(value)}");
+                    o.Item = ItemRegistry.Find(value) ?? throw UsageError($"--item must be one of {string.Join(", ", ItemSlugs())} (or the original's name), got {MessageText.Quote(value)}");
                     break;
                 case "--entrant": o.Entrants.Add(ParseEntrant(value)); break;
                 case "--seeds": o.Seeds = (int)Number(name, value, 1, 100_000); break;
                 case "--seed": o.FirstSeed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--minutes":
-                    o.Cycles = value switch { "10" => 6000, "5" => 3000, "3" => 1800, "1" => 600, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {CliText.Quote(value)}") };
+                    o.Cycles = value switch { "10" => 6000, "5" => 3000, "3" => 1800, "1" => 600, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {MessageText.Quote(value)}") };
                     break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 1, 1_000_000); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
@@ -176,11 +177,11 @@ internal sealed class TournamentOptions
                 case "--out": o.Out = value.Length > 0 ? value : throw UsageError("--out needs a folder, got \"\""); break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;
                 case "--shards": o.SlurmShards = (int)Number(name, value, 1, SlurmJob.MaximumShards); break;
-                case "--partition": o.Partition = SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {CliText.Quote(value)}"); break;
-                case "--time": o.TimeLimit = SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {CliText.Quote(value)}"); break;
+                case "--partition": o.Partition = SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
+                case "--time": o.TimeLimit = SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
                 case "--shard": o.ParseShard(value); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
-                default: throw UsageError($"unknown option {CliText.Quote(name)}");
+                default: throw UsageError($"unknown option {MessageText.Quote(name)}");
             }
         }
 
@@ -222,7 +223,7 @@ internal sealed class TournamentOptions
         {
             if (!names.Add(e.Name))
             {
-                throw UsageError($"--entrant: the name {CliText.Quote(e.Name)} is given twice (names must differ)");
+                throw UsageError($"--entrant: the name {MessageText.Quote(e.Name)} is given twice (names must differ)");
             }
         }
 
@@ -253,13 +254,13 @@ internal sealed class TournamentOptions
         int eq = value.IndexOf('=', StringComparison.Ordinal);
         if (eq <= 0 || eq == value.Length - 1)
         {
-            throw UsageError($"--entrant must be NAME=SPEC (e.g. mine=strategies/Mine.cs, or rival=demo), got {CliText.Quote(value)}");
+            throw UsageError($"--entrant must be NAME=SPEC (e.g. mine=strategies/Mine.cs, or rival=demo), got {MessageText.Quote(value)}");
         }
 
         string name = value[..eq], spec = value[(eq + 1)..];
         if (name.Length > MaximumName || name.AsSpan().IndexOfAnyInRange('\0', '\u001f') >= 0 || name.Contains('\u007f', StringComparison.Ordinal) || name.Trim() != name)
         {
-            throw UsageError($"--entrant: a name must be 1-{MaximumName} printable characters without spaces at its ends, got {CliText.Quote(name)}");
+            throw UsageError($"--entrant: a name must be 1-{MaximumName} printable characters without spaces at its ends, got {MessageText.Quote(name)}");
         }
 
         if (spec == Entrant.Demo || StrategyResolver.BuiltInNames.Contains(spec))
@@ -272,7 +273,7 @@ internal sealed class TournamentOptions
         bool exists = File.Exists(path) || Directory.Exists(path) || File.Exists(spec) || Directory.Exists(spec);
         if (!exists)
         {
-            throw UsageError($"--entrant {name}: {CliText.Quote(spec)} is not demo, a built-in strategy ({string.Join(", ", StrategyResolver.BuiltInNames)}), or an existing .dll, .cs file or folder");
+            throw UsageError($"--entrant {name}: {MessageText.Quote(spec)} is not demo, a built-in strategy ({string.Join(", ", StrategyResolver.BuiltInNames)}), or an existing .dll, .cs file or folder");
         }
 
         return new Entrant(name, spec);
@@ -286,7 +287,7 @@ internal sealed class TournamentOptions
             || !int.TryParse(value.AsSpan(slash + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int count)
             || count < 1 || index >= count || count > SlurmJob.MaximumShards)
         {
-            throw UsageError($"--shard must be I/K with 0 <= I < K <= {SlurmJob.MaximumShards} (e.g. 0/4), got {CliText.Quote(value)}");
+            throw UsageError($"--shard must be I/K with 0 <= I < K <= {SlurmJob.MaximumShards} (e.g. 0/4), got {MessageText.Quote(value)}");
         }
 
         ShardIndex = index;
@@ -304,7 +305,7 @@ internal sealed class TournamentOptions
     private static long Number(string name, string value, long min, long max) =>
         long.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out long n) && n >= min && n <= max
             ? n
-            : throw UsageError($"{name} must be an integer {min}..{max}, got {CliText.Quote(value)}");
+            : throw UsageError($"{name} must be an integer {min}..{max}, got {MessageText.Quote(value)}");
 
     private static CliUsageException UsageError(string message) => new("tournament: " + message, CliApp.ProgramName + " " + Usage);
 }

@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Text;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Viewer;
 
@@ -49,7 +50,7 @@ internal sealed class ViewCommand : ICliCommand
             }
             else if (a.StartsWith("--", StringComparison.Ordinal) && a != "-")
             {
-                throw UsageError($"unknown option {CliText.Quote(a)}");
+                throw UsageError($"unknown option {MessageText.Quote(a)}");
             }
             else if (trace is null)
             {
@@ -57,7 +58,7 @@ internal sealed class ViewCommand : ICliCommand
             }
             else
             {
-                throw UsageError($"unexpected argument {CliText.Quote(a)} (one TRACE file)");
+                throw UsageError($"unexpected argument {MessageText.Quote(a)} (one TRACE file)");
             }
         }
 
@@ -85,16 +86,16 @@ internal sealed class ViewCommand : ICliCommand
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
         {
-            throw new CliInputException(trace, $"cannot read the trace ({e.Message})");
+            throw new InputException(trace, $"cannot read the trace ({e.Message})");
         }
         catch (TraceFormatException e)
         {
-            throw new CliInputException($"{trace}:{lineNumber}", e.Message);
+            throw new InputException($"{trace}:{lineNumber}", e.Message);
         }
 
         if (replay.Count == 0)
         {
-            throw new CliInputException(trace, "the trace has no cycle line");
+            throw new InputException(trace, "the trace has no cycle line");
         }
 
         AtomicFile.WriteAllText(html, ReplayPage.Replay(replay.ToJson()));

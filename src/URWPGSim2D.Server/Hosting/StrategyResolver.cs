@@ -3,8 +3,9 @@ using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Reflection;
-using URWPGSim2D.Compat.Hosting;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
+using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -251,5 +252,5 @@ internal static class StrategyResolver
         throw new StrategyLoadException($"{path} has several strategy classes ({string.Join(", ", names)}): pick one with {path}#TypeName");
     }
 
-    private static string CliQuote(string value) => Cli.CliText.Quote(value);
+    private static string CliQuote(string value) => MessageText.Quote(value);
 }

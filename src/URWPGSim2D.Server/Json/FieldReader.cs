@@ -1,12 +1,11 @@
 using System;
 using System.Numerics;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Json;
 
 /// <summary>
 /// Reads the fields of one input object with path-aware errors: a field that is absent or null,
-/// or an array of the wrong length, becomes a <see cref="CliInputException"/> naming
+/// or an array of the wrong length, becomes a <see cref="InputException"/> naming
 /// <c>OBJECT.FIELD</c>. Values themselves (finite, positive, ...) are checked by the library.
 /// </summary>
 /// <param name="objectPath">The path of the object being read, e.g. <c>pairs[3].a</c>.</param>
@@ -54,7 +53,7 @@ internal readonly struct FieldReader(string objectPath)
         var v = value ?? throw Missing(field);
         if (v.Length != 4)
         {
-            throw new CliInputException(PathOf(field), $"must be an array of 4 numbers [s0, s1, s2, s3], got {v.Length}");
+            throw new InputException(PathOf(field), $"must be an array of 4 numbers [s0, s1, s2, s3], got {v.Length}");
         }
 
         return v;
@@ -71,7 +70,7 @@ internal readonly struct FieldReader(string objectPath)
         var v = value ?? throw Missing(field);
         if (v.Length != count)
         {
-            throw new CliInputException(PathOf(field), $"must be an array of {count} numbers {form}, got {v.Length}");
+            throw new InputException(PathOf(field), $"must be an array of {count} numbers {form}, got {v.Length}");
         }
 
         return v;
@@ -88,7 +87,7 @@ internal readonly struct FieldReader(string objectPath)
         for (int i = 0; i < v.Length; i++)
         {
             string path = $"{PathOf(field)}[{i}]";
-            points[i] = ToPoint(v[i] ?? throw new CliInputException(path, "must be an array of 2 numbers [x, z], got null"), path);
+            points[i] = ToPoint(v[i] ?? throw new InputException(path, "must be an array of 2 numbers [x, z], got null"), path);
         }
 
         return points;
@@ -97,9 +96,9 @@ internal readonly struct FieldReader(string objectPath)
     /// <summary>The error for a required field that is absent or null.</summary>
     /// <param name="field">The JSON field name.</param>
     /// <returns>The exception to throw.</returns>
-    public CliInputException Missing(string field) => new(PathOf(field), MissingMessage);
+    public InputException Missing(string field) => new(PathOf(field), MissingMessage);
 
     private static Vector2 ToPoint(ReadOnlySpan<float> v, string path) => v.Length == 2
         ? new Vector2(v[0], v[1])
-        : throw new CliInputException(path, $"must be an array of 2 numbers [x, z], got {v.Length}");
+        : throw new InputException(path, $"must be an array of 2 numbers [x, z], got {v.Length}");
 }

@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Json;
 
@@ -45,7 +44,7 @@ internal static class FishJson
     /// <param name="dto">The deserialized SHAPE object.</param>
     /// <param name="fields">The reader of that object (its path names the errors).</param>
     /// <returns>The fish model at the given pose.</returns>
-    /// <exception cref="CliInputException">A field is missing or has the wrong length, or the library rejects a value.</exception>
+    /// <exception cref="InputException">A field is missing or has the wrong length, or the library rejects a value.</exception>
     public static FishModel Read(ShapeDto dto, FieldReader fields)
     {
         var position = fields.Point(dto.Position, "position");

@@ -2,13 +2,12 @@ using System;
 using System.Globalization;
 using System.Text.Json;
 using System.Text.Json.Serialization.Metadata;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Json;
 
 /// <summary>
 /// Reads a whole input document with source-generated metadata and turns every
-/// <see cref="JsonException"/> into a one-line <see cref="CliInputException"/> naming the
+/// <see cref="JsonException"/> into a one-line <see cref="InputException"/> naming the
 /// path, line and column of the problem.
 /// </summary>
 internal static class JsonInput
@@ -25,12 +24,12 @@ internal static class JsonInput
     /// <param name="rootName">The user-facing name of the whole document, e.g. <c>pairs</c>.</param>
     /// <param name="expectedKind">The schema, for type-mismatch messages.</param>
     /// <returns>The document; null when the input is the JSON literal <c>null</c>.</returns>
-    /// <exception cref="CliInputException">Empty input, malformed JSON, or a value of the wrong JSON type.</exception>
+    /// <exception cref="InputException">Empty input, malformed JSON, or a value of the wrong JSON type.</exception>
     public static T? Deserialize<T>(string text, JsonTypeInfo<T> typeInfo, string rootName, ExpectedKind expectedKind)
     {
         if (string.IsNullOrWhiteSpace(text))
         {
-            throw new CliInputException(rootName, "input is empty");
+            throw new InputException(rootName, "input is empty");
         }
 
         try
@@ -43,11 +42,11 @@ internal static class JsonInput
         }
         catch (InvalidOperationException)
         {
-            throw new CliInputException(rootName, LoneSurrogate.Describe(text, default));
+            throw new InputException(rootName, LoneSurrogate.Describe(text, default));
         }
     }
 
-    private static CliInputException ToInputError(JsonException ex, string rootName, ExpectedKind expectedKind)
+    private static InputException ToInputError(JsonException ex, string rootName, ExpectedKind expectedKind)
     {
         string path = InputPath.FromSerializerPath(ex.Path, rootName);
         long line = (ex.LineNumber ?? 0) + 1;
@@ -58,13 +57,13 @@ internal static class JsonInput
         // kind, reported just after its token: the 1-based column of the token's last byte.
         if (ex.InnerException is JsonException syntax)
         {
-            return new CliInputException(path, $"malformed JSON at {Where(line, position + 1)}: {ReaderMessage(syntax.Message)}");
+            return new InputException(path, $"malformed JSON at {Where(line, position + 1)}: {ReaderMessage(syntax.Message)}");
         }
 
         var segments = InputPath.Parse(ex.Path);
         string? expected = segments is null ? null : expectedKind(segments);
         string where = Where(line, Math.Max(position, 1));
-        return new CliInputException(path, expected is null ? $"wrong JSON type at {where}" : $"expected {expected} at {where}");
+        return new InputException(path, expected is null ? $"wrong JSON type at {where}" : $"expected {expected} at {where}");
     }
 
     // Lines and columns count from 1; columns count UTF-8 bytes.

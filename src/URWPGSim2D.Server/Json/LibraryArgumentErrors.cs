@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Json;
 
@@ -17,7 +16,7 @@ internal static class LibraryArgumentErrors
     /// <param name="shapePath">The path of the shape object, e.g. <c>pairs[3].a</c>.</param>
     /// <param name="fieldByParameter">Library parameter name → JSON field name, for this shape type.</param>
     /// <returns>The input error; it names the shape itself if the parameter is not in the table.</returns>
-    public static CliInputException ToInputError(ArgumentException error, string shapePath, IReadOnlyDictionary<string, string> fieldByParameter)
+    public static InputException ToInputError(ArgumentException error, string shapePath, IReadOnlyDictionary<string, string> fieldByParameter)
     {
         string? parameter = error.ParamName;
         string path = shapePath;
@@ -32,7 +31,7 @@ internal static class LibraryArgumentErrors
             }
         }
 
-        return new CliInputException(path, MessageWithoutParameter(error));
+        return new InputException(path, MessageWithoutParameter(error));
     }
 
     /// <summary>The exception's message without the " (Parameter 'x')" that <see cref="ArgumentException"/> appends.</summary>

@@ -1,14 +1,13 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Json;
 
 /// <summary>
 /// The SHAPE objects of the input, turned into library shapes — the one place that knows the
 /// shape formats (docs/cli.md). Each type reads its fields with <see cref="FieldReader"/> and
-/// lets the library validate the values; every failure is a <see cref="CliInputException"/>
+/// lets the library validate the values; every failure is a <see cref="InputException"/>
 /// whose path names the field (<c>pairs[12].b.vertices</c>). To add a type: a constant, a case
 /// in <see cref="Read"/>, a reader method, and its fields in <see cref="ShapeDto"/> and
 /// <see cref="ShapeSchema"/>. The fish, which is not a library <see cref="Shape"/>, is read by
@@ -45,12 +44,12 @@ internal static class ShapeJson
     /// <param name="dto">The deserialized SHAPE object; null when it was absent or null.</param>
     /// <param name="path">The path of the SHAPE object, e.g. <c>pairs[3].a</c>.</param>
     /// <returns>The validated shape.</returns>
-    /// <exception cref="CliInputException">A field is missing, has the wrong length, or holds a value the library rejects.</exception>
+    /// <exception cref="InputException">A field is missing, has the wrong length, or holds a value the library rejects.</exception>
     public static InputShape Read(ShapeDto? dto, string path)
     {
         if (dto is null)
         {
-            throw new CliInputException(path, FieldReader.MissingMessage);
+            throw new InputException(path, FieldReader.MissingMessage);
         }
 
         var fields = new FieldReader(path);
@@ -63,7 +62,7 @@ internal static class ShapeJson
             PolygonType => InputShape.Of(ReadPolygon(dto, fields)),
             SegmentType => InputShape.Of(ReadSegment(dto, fields)),
             FishType => InputShape.Of(FishJson.Read(dto, fields)),
-            _ => throw new CliInputException(fields.PathOf("type"), $"unknown shape type {CliText.Quote(type)}"),
+            _ => throw new InputException(fields.PathOf("type"), $"unknown shape type {MessageText.Quote(type)}"),
         };
     }
 

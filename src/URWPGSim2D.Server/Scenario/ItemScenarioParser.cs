@@ -2,8 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Scenario.JsonReader;
 
@@ -25,7 +25,7 @@ internal static class ItemScenarioParser
         OnlyKnown(root, string.Empty, "item", "cycles", "seed", "noise", "fish", "balls");
         string name = Text(itemName, "item");
         CompetitionItem item = ItemRegistry.Find(name)
-            ?? throw new ScenarioException("item", $"must be one of {string.Join(", ", Slugs())} (or the original's name), got {CliText.Quote(name)}");
+            ?? throw new ScenarioException("item", $"must be one of {string.Join(", ", Slugs())} (or the original's name), got {MessageText.Quote(name)}");
         ulong seed = root.TryGetProperty("seed", out var se) ? (ulong)Integer(se, "seed", 0, long.MaxValue) : 1;
         var s = item.CreateScenario(seed) with { Seed = seed };
         if (root.TryGetProperty("cycles", out var cycles))
@@ -94,7 +94,7 @@ internal static class ItemScenarioParser
         string strategy = e.TryGetProperty("strategy", out var st) ? Text(st, path + ".strategy") : hasDecision ? "fixed" : d.Strategy;
         if (strategy is not ("idle" or "chase-ball" or "fixed" or "demo"))
         {
-            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\", \"fixed\" or \"demo\", got {CliText.Quote(strategy)}");
+            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\", \"fixed\" or \"demo\", got {MessageText.Quote(strategy)}");
         }
 
         Decision decision = Decision.Stop;
@@ -113,7 +113,7 @@ internal static class ItemScenarioParser
         }
         else if (hasDecision)
         {
-            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {CliText.Quote(strategy)}");
+            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {MessageText.Quote(strategy)}");
         }
 
         return d with { Position = position, Heading = heading, Strategy = strategy, Decision = decision };

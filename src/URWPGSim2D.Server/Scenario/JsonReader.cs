@@ -2,6 +2,7 @@ using System;
 using System.Globalization;
 using System.Numerics;
 using System.Text.Json;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Scenario;
 
@@ -16,7 +17,7 @@ internal static class JsonReader
             string name = Name(p, path);
             if (Array.IndexOf(allowed, name) < 0)
             {
-                throw new ScenarioException(Join(path, Cli.CliText.Escape(name)), $"unknown property (expected one of: {string.Join(", ", allowed)})");
+                throw new ScenarioException(Join(path, MessageText.Escape(name)), $"unknown property (expected one of: {string.Join(", ", allowed)})");
             }
         }
     }

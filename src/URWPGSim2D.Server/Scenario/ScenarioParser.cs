@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
-using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
 using static URWPGSim2D.Server.Scenario.JsonReader;
@@ -145,7 +145,7 @@ internal static class ScenarioParser
         string strategy = e.TryGetProperty("strategy", out var st) ? Text(st, path + ".strategy") : hasDecision ? "fixed" : "idle";
         if (strategy is not ("idle" or "chase-ball" or "fixed"))
         {
-            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\" or \"fixed\", got {CliText.Quote(strategy)}");
+            throw new ScenarioException(path + ".strategy", $"must be \"idle\", \"chase-ball\" or \"fixed\", got {MessageText.Quote(strategy)}");
         }
 
         Decision decision = Decision.Stop;
@@ -160,7 +160,7 @@ internal static class ScenarioParser
         }
         else if (hasDecision)
         {
-            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {CliText.Quote(strategy)}");
+            throw new ScenarioException(path + ".decision", $"is only for strategy \"fixed\", not {MessageText.Quote(strategy)}");
         }
 
         return new FishDefinition(team, position, heading, strategy, decision, tailPhase);
@@ -222,7 +222,7 @@ internal static class ScenarioParser
             return new ObstacleDefinition(ObstacleKind.Round, center, 2f * radius, 2f * radius, 0f, radius);
         }
 
-        throw new ScenarioException(path + ".type", $"must be \"rectangle\" or \"round\", got {CliText.Quote(type)}");
+        throw new ScenarioException(path + ".type", $"must be \"rectangle\" or \"round\", got {MessageText.Quote(type)}");
     }
 
     private static void Inside(ScenarioDefinition s, string path, Vector2 center, float radius)

@@ -1,8 +1,8 @@
 using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -86,6 +86,21 @@ internal sealed class Match
 
         Locomotion.Finish(World);
         Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+    }
+
+    /// <summary>The labels of the strategies playing for <paramref name="team"/>, joined with "+" ("no fish" for a team without fish).</summary>
+    public string TeamLabel(int team)
+    {
+        var labels = new List<string>();
+        foreach (var slot in Strategies.Slots)
+        {
+            if (slot.Team == team && !labels.Contains(slot.Label))
+            {
+                labels.Add(slot.Label);
+            }
+        }
+
+        return labels.Count == 0 ? "no fish" : string.Join("+", labels);
     }
 
     private void FillSnapshot()

@@ -2,7 +2,6 @@ using System;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Trace;
@@ -88,7 +87,7 @@ internal static class TraceLayout
         {
             w.WriteStartObject();
             w.WriteNumber("id", team);
-            w.WriteString("name", MatchSummary.TeamLabel(match, team));
+            w.WriteString("name", match.TeamLabel(team));
             w.WriteEndObject();
         }
 

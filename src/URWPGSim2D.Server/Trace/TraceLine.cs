@@ -3,7 +3,6 @@ using System.Buffers;
 using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Trace;

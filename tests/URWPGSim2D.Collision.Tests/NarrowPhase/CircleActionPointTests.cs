@@ -1,3 +1,5 @@
+extern alias baseline;
+
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -5,7 +7,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
-using Frozen = URWPGSim2D.Collision.Benchmarks.Baseline.NarrowPhase;
+using Frozen = baseline::URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Tests.Support;
 using URWPGSim2D.Testing;
 using Xunit;
@@ -167,7 +169,7 @@ public sealed class CircleActionPointTests
             {
                 var circle = a.Shape.AsCircle();
                 var (v, n) = Outline(b.Shape);
-                var frozen = Frozen.CircleConvex.Detect(circle, new ConvexView(v, n));
+                var frozen = Frozen.NarrowPhase.CircleConvex.Detect(new Frozen.Shapes.Circle(circle.Center, circle.Radius), new Frozen.Geometry.ConvexView(v, n));
                 var result = CollisionDetector.Detect(a.Shape, b.Shape);
                 Assert.Equal(frozen.Intersect, result.Intersect);
                 Assert.Equal(Bits(frozen.MinimumTranslationVector), Bits(result.MinimumTranslationVector));

@@ -7,8 +7,8 @@ namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>
 /// The pair kernels' answers are pinned bit for bit to those of the kernels as they were before
-/// issue 10's speed work (main at ad2603e, kept frozen in
-/// benchmarks/URWPGSim2D.Collision.Benchmarks/Baseline/NarrowPhase): a fixed corpus of pairs is
+/// issue 10's speed work (the code of the git tag benchmark-baseline, which the benchmarks and
+/// CircleActionPointTests compile from that tag): a fixed corpus of pairs is
 /// run through the public <see cref="CollisionDetector"/> and every float of every result
 /// (zero signs included) goes into one FNV-1a digest — except the action points of circle
 /// pairs, which issue 10 let move by rounding (the circle's chord is now taken from its contact

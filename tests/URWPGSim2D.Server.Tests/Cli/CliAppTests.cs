@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Json;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
@@ -139,7 +140,7 @@ public sealed class CliAppTests
     [Fact]
     public void InputAndUsageErrorsFromACommandAreOneLineWithExitCodeTwo()
     {
-        var input = new CliApp([new ProbeCommand { Failure = new CliInputException("things[4].size", "must be > 0, got -1") }]);
+        var input = new CliApp([new ProbeCommand { Failure = new InputException("things[4].size", "must be > 0, got -1") }]);
         var usage = new CliApp([new ProbeCommand { Failure = new CliUsageException("probe: too many arguments", "URWPGSim2D.Server probe") }]);
 
         int inputCode = input.Run(["probe"], Streams(out var inputOut, out var inputErr));

@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Json;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
@@ -122,17 +123,17 @@ public sealed class FuzzFindingsTests : IDisposable
     [InlineData("plain \\ text é", "plain \\ text é")]
     public void EscapeKeepsEveryMessageOnOneLine(string text, string expected)
     {
-        Assert.Equal(expected, CliText.Escape(text));
+        Assert.Equal(expected, MessageText.Escape(text));
     }
 
     [Fact]
     public void EscapeWritesLoneSurrogatesAsEscapes()
     {
         // Not in InlineData: an attribute's string cannot hold a lone surrogate.
-        Assert.Equal("lone \\ud800 high", CliText.Escape("lone \ud800 high"));
-        Assert.Equal("lone \\udc00 low", CliText.Escape("lone \udc00 low"));
-        Assert.Equal("end \\ud83d", CliText.Escape("end \ud83d"));
-        Assert.Equal("\\udc1f\\ud83d", CliText.Escape("\udc1f\ud83d"));
+        Assert.Equal("lone \\ud800 high", MessageText.Escape("lone \ud800 high"));
+        Assert.Equal("lone \\udc00 low", MessageText.Escape("lone \udc00 low"));
+        Assert.Equal("end \\ud83d", MessageText.Escape("end \ud83d"));
+        Assert.Equal("\\udc1f\\ud83d", MessageText.Escape("\udc1f\ud83d"));
     }
 
     [Fact]

@@ -3,6 +3,7 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Json;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

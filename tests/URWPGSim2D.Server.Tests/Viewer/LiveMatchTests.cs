@@ -34,7 +34,7 @@ public sealed class LiveMatchTests
         {
             var changed = feed.Changed;
             int before = messages.Count;
-            generation = feed.Read(generation, ref next, messages, int.MaxValue);
+            generation = feed.Read(generation, ref next, messages, 4096); // as a viewer's connection reads
             last = messages.Skip(before).Select(Status).LastOrDefault(x => x is not null) ?? last;
             if (messages.Count == before)
             {

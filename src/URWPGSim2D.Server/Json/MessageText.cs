@@ -2,10 +2,10 @@ using System.Text;
 using System.Text.Encodings.Web;
 using System.Text.Json;
 
-namespace URWPGSim2D.Server.Cli;
+namespace URWPGSim2D.Server.Json;
 
 /// <summary>Text helpers for one-line messages.</summary>
-internal static class CliText
+internal static class MessageText
 {
     /// <summary>A user-supplied string as a JSON string literal (quoted, control characters escaped), so a message stays on one line.</summary>
     /// <param name="value">Any string.</param>

@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Text;
 using System.Text.Json;
 
-namespace URWPGSim2D.Server.Cli;
+namespace URWPGSim2D.Server.Json;
 
 /// <summary>
 /// The largest inputs each command accepts (docs/cli.md, "Limits"). Beyond them a command stops
@@ -40,7 +40,7 @@ internal static class InputLimits
     /// <param name="rootName">The document's name in messages, e.g. <c>pairs</c>.</param>
     /// <param name="limit">The most elements allowed.</param>
     /// <param name="command">The command, for the message.</param>
-    /// <exception cref="CliInputException">More elements than the limit.</exception>
+    /// <exception cref="InputException">More elements than the limit.</exception>
     public static void CheckCount(string text, string rootName, int limit, string command)
     {
         if (text.Length <= 2L * limit)
@@ -61,7 +61,7 @@ internal static class InputLimits
             {
                 if (++count > limit)
                 {
-                    throw new CliInputException(rootName, string.Create(CultureInfo.InvariantCulture, $"more than {limit} elements, the limit of {command} (docs/cli.md, Limits)"));
+                    throw new InputException(rootName, string.Create(CultureInfo.InvariantCulture, $"more than {limit} elements, the limit of {command} (docs/cli.md, Limits)"));
                 }
 
                 reader.Skip();

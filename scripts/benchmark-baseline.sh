@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The sources the benchmarks' frozen baseline is compiled from: a git worktree of the commit
+# tagged `benchmark-baseline`, checked out (detached) under
+# benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/tagged (git-ignored). Idempotent and safe
+# to run twice at once (a lock): a worktree already at the tagged commit is kept. The baseline
+# projects run this before they compile; run it by hand to look at the frozen code. Fails with one
+# line when the tag is missing (a clone without tags).
+set -euo pipefail
+tag=benchmark-baseline
+root=$(git -C "$(dirname "$0")/.." rev-parse --show-toplevel)
+dir="$root/benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/tagged"
+if ! commit=$(git -C "$root" rev-parse -q --verify "refs/tags/$tag^{commit}"); then
+  echo "benchmark baseline: the git tag '$tag' is missing from this clone (git fetch --tags); the benchmarks compile their frozen baseline from it" >&2
+  exit 1
+fi
+exec 9>"$root/benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/.tagged.lock"
+flock 9
+if [ -e "$dir/.git" ] && [ "$(git -C "$dir" rev-parse HEAD 2>/dev/null)" = "$commit" ]; then
+  exit 0
+fi
+rm -rf "$dir"
+git -C "$root" worktree prune
+git -C "$root" worktree add --detach --quiet "$dir" "$commit"
