@@ -64,7 +64,7 @@ internal static class StrategyResolver
         Assembly assembly;
         try
         {
-            assembly = new StrategyLoadContext(path, full).LoadFromAssemblyPath(full);
+            assembly = Compat.Retargeting.OriginalAssemblyLoader.Load(new StrategyLoadContext(path, full), full);
         }
         catch (Exception e) when (e is BadImageFormatException or FileLoadException or IOException)
         {
