@@ -79,18 +79,8 @@ internal static class BatchRunner
 
     private static MatchResult Play(Match match, int index, ulong seed, int cycles)
     {
-        try
-        {
-            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
-            {
-                match.Step();
-            }
-        }
-        finally
-        {
-            match.Strategies.Stop();
-        }
-
+        using var loop = new MatchLoop(match, cycles);
+        loop.Play();
         return MatchResult.Of(index, seed, match);
     }
 }

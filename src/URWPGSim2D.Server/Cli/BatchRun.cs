@@ -48,7 +48,7 @@ internal static class BatchRun
             results = BatchRunner.Run(
                 header,
                 threads,
-                seed => MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles),
+                seed => (RunCommand.Settings(options, scenario, RunCommand.LoadTeams(options)) with { Seed = seed, Threads = 1 }).Build(),
                 r => console.Out.Write(BatchSummary.Line(r)));
             clock.Stop();
             if (options.Results is { } file)

@@ -91,32 +91,17 @@ internal sealed class RunCommand : ICliCommand
             return LiveRun.Run(options, scenario, teams, console);
         }
 
-        int cycles = options.CyclesFor(scenario);
-        var match = MatchBuilder.Build(scenario, teams, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles);
-        match.Stepper.Threads = options.Threads ?? 1;
+        var settings = Settings(options, scenario, teams);
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
-        var progress = interactive ? new ProgressBar(console.Out, cycles) : null;
+        var progress = interactive ? new ProgressBar(console.Out, settings.Cycles) : null;
         var clock = Stopwatch.StartNew();
         var replay = options.Html is null ? null : new ReplayRecorder();
+        Match match;
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            var lines = trace is null && replay is null ? null : new TraceLine(match);
-            if (lines is not null)
-            {
-                Record(lines.Write(ReadOnlySpan<ContactRecord>.Empty), trace, replay);
-            }
-
-            for (int k = 0; k < (match.Referee?.MaxCycles ?? cycles) && !match.IsOver; k++)
-            {
-                match.Step();
-                if (lines is not null)
-                {
-                    Record(lines.Write(match.Contacts.Cycle), trace, replay);
-                }
-
-                progress?.Update(k + 1);
-            }
-
+            using var loop = new MatchLoop(settings.Build(), settings.Cycles, trace, replay);
+            match = loop.Match;
+            loop.Play(played: progress is null ? null : progress.Update);
             trace?.Complete();
         }
 
@@ -141,12 +126,9 @@ internal sealed class RunCommand : ICliCommand
         return ExitCodes.Success;
     }
 
-    // One trace line to the trace file and the replay page.
-    private static void Record(ReadOnlySpan<byte> line, TraceWriter? trace, ReplayRecorder? replay)
-    {
-        trace?.WriteLine(line);
-        replay?.Add(line);
-    }
+    /// <summary>The settings of the match the options ask for (the scene's cycles unless --cycles or --minutes).</summary>
+    public static MatchSettings Settings(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams) =>
+        new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1);
 
     /// <summary>The strategy assemblies of the command line, loaded (a fresh instance each call).</summary>
     /// <exception cref="StrategyLoadException">An assembly cannot be used; the message starts with the option.</exception>

@@ -11,14 +11,13 @@ namespace URWPGSim2D.Server.Trace;
 /// written under a temporary name beside the target and renamed by <see cref="Complete"/>; if the
 /// run fails, <see cref="Dispose"/> deletes it, so no half trace is left.
 /// </summary>
-internal sealed class TraceWriter : IDisposable
+internal sealed class TraceWriter : ITraceSink, IDisposable
 {
     private static readonly byte[] NewLine = [(byte)'\n'];
 
     private readonly string _path;
     private readonly string _temporary;
     private readonly FileStream _stream;
-    private TraceLine? _line;
     private bool _completed;
 
     public TraceWriter(string path)
@@ -26,13 +25,6 @@ internal sealed class TraceWriter : IDisposable
         _path = Path.GetFullPath(path);
         _temporary = _path + ".partial";
         _stream = new FileStream(_temporary, FileMode.Create, FileAccess.Write, FileShare.None, 1 << 16);
-    }
-
-    /// <summary>Writes one line for the match's current state and the last cycle's contacts (a plain match: <see cref="DefaultTraceItem"/>).</summary>
-    public void WriteCycle(Match match, ReadOnlySpan<ContactRecord> contacts)
-    {
-        _line ??= new TraceLine(match);
-        WriteLine(_line.Write(contacts));
     }
 
     /// <summary>Writes one line made by <see cref="TraceLine.Write"/> and its newline.</summary>

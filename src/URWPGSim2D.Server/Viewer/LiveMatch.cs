@@ -13,10 +13,12 @@ namespace URWPGSim2D.Server.Viewer;
 /// based, so it does not drift), publishing each cycle's trace line and the play status to a
 /// <see cref="LiveFeed"/>. Pause, resume, step and restart come from any thread (the viewers'
 /// buttons); a step plays exactly one cycle and leaves the match paused. Only the playing thread
-/// publishes, so a status message always follows every cycle line it counts. At the last cycle the
-/// match is over and waits (a restart plays it again) until <see cref="Run"/> is cancelled.
+/// publishes, so a status message always follows every cycle line it counts. The cycles are played by
+/// the one match loop (<see cref="MatchLoop"/>), so the match ends where <c>run</c> ends it (a tied
+/// polo match plays its extra time and penalties live too); then it waits (a restart plays it again)
+/// until <see cref="Run"/> is cancelled.
 /// </summary>
-internal sealed class LiveMatch
+internal sealed class LiveMatch : ITraceSink
 {
     private static readonly byte[] DataPrefix = "data: "u8.ToArray();
     private static readonly byte[] MessageEnd = "\n\n"u8.ToArray();
@@ -25,8 +27,7 @@ internal sealed class LiveMatch
     private readonly LiveFeed _feed;
     private readonly object _gate = new();
     private readonly Stopwatch _busy = new();
-    private Match _match;
-    private TraceLine _lines;
+    private MatchLoop _loop;
     private bool _paused;
     private int _steps;
     private bool _restart;
@@ -45,11 +46,10 @@ internal sealed class LiveMatch
         Speed = speed;
         _paused = paused;
         _feed = feed;
-        _match = create();
-        _lines = new TraceLine(_match);
+        _loop = new MatchLoop(create(), cycles, this);
     }
 
-    /// <summary>Cycles of a match.</summary>
+    /// <summary>Cycles of a match's regular time.</summary>
     public int Cycles { get; }
 
     /// <summary>Multiple of real time.</summary>
@@ -62,7 +62,7 @@ internal sealed class LiveMatch
         {
             lock (_gate)
             {
-                return _match;
+                return _loop.Match;
             }
         }
     }
@@ -153,16 +153,15 @@ internal sealed class LiveMatch
 
             if (restart)
             {
-                var fresh = _create();
-                Match old;
+                var fresh = new MatchLoop(_create(), Cycles, this);
+                MatchLoop old;
                 lock (_gate)
                 {
-                    old = _match;
-                    _match = fresh;
-                    _lines = new TraceLine(fresh);
+                    old = _loop;
+                    _loop = fresh;
                 }
 
-                old.Strategies.Stop();
+                old.Dispose();
 
                 Begin();
                 deadline = clock.Elapsed;
@@ -170,9 +169,8 @@ internal sealed class LiveMatch
             }
 
             _busy.Start();
-            _match.Step();
+            _loop.Step(); // publishes the cycle's line
             _busy.Stop();
-            Publish(_lines.Write(_match.Contacts.Cycle));
             if (stepping || Over)
             {
                 PublishStatus();
@@ -183,12 +181,12 @@ internal sealed class LiveMatch
         }
     }
 
-    private bool Over => _match.World.Cycle >= Cycles || _match.IsOver; // an item may end early
+    private bool Over => _loop.IsOver;
 
     private void Begin()
     {
         _feed.Reset();
-        Publish(_lines.Write(ReadOnlySpan<ContactRecord>.Empty));
+        _loop.Start(); // publishes the cycle-0 line
         PublishStatus();
     }
 
@@ -202,7 +200,8 @@ internal sealed class LiveMatch
         }
     }
 
-    private void Publish(ReadOnlySpan<byte> line)
+    /// <summary>Publishes a cycle line of the match to the viewers (called by the loop on the playing thread).</summary>
+    void ITraceSink.WriteLine(ReadOnlySpan<byte> line)
     {
         var message = new byte[DataPrefix.Length + line.Length + MessageEnd.Length];
         DataPrefix.CopyTo(message, 0);
@@ -217,7 +216,7 @@ internal sealed class LiveMatch
         lock (_gate)
         {
             status = string.Create(CultureInfo.InvariantCulture,
-                $"event: status\ndata: {{\"paused\":{(_paused ? "true" : "false")},\"speed\":{Speed:R},\"cycle\":{_match.World.Cycle},\"cycles\":{Cycles},\"over\":{(Over ? "true" : "false")}}}\n\n");
+                $"event: status\ndata: {{\"paused\":{(_paused ? "true" : "false")},\"speed\":{Speed:R},\"cycle\":{_loop.Match.World.Cycle},\"cycles\":{Cycles},\"over\":{(Over ? "true" : "false")}}}\n\n");
         }
 
         _feed.Publish(Encoding.UTF8.GetBytes(status));

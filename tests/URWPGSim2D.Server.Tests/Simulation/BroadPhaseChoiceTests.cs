@@ -3,7 +3,7 @@ using System.IO;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Server.Tests.Trace;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
@@ -57,29 +57,6 @@ public sealed class BroadPhaseChoiceTests
         Assert.Equal(Trace(scenario, BroadPhaseKind.BruteForce, cycles: 150), Trace(scenario, BroadPhaseKind.UniformGrid, cycles: 150));
     }
 
-    private static byte[] Trace(ScenarioDefinition scenario, BroadPhaseKind broadPhase, int cycles = 60)
-    {
-        string path = Path.Combine(Path.GetTempPath(), $"urwpg-bp-{Guid.NewGuid():N}.jsonl");
-        try
-        {
-            var match = MatchBuilder.Build(scenario, broadPhase: broadPhase);
-            using (var trace = new TraceWriter(path))
-            {
-                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
-                for (int k = 0; k < cycles; k++)
-                {
-                    match.Step();
-                    trace.WriteCycle(match, match.Contacts.Cycle);
-                }
-
-                trace.Complete();
-            }
-
-            return File.ReadAllBytes(path);
-        }
-        finally
-        {
-            File.Delete(path);
-        }
-    }
+    private static byte[] Trace(ScenarioDefinition scenario, BroadPhaseKind broadPhase, int cycles = 60) =>
+        TraceBytes.Of(MatchBuilder.Build(scenario, broadPhase: broadPhase), cycles);
 }

@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Server.Tests.Trace;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
@@ -125,31 +125,7 @@ public sealed class InvariantTests
         Assert.Equal(Trace(scenario, seed: 1), Trace(scenario, seed: 1));
     }
 
-    private static byte[] Trace(ScenarioDefinition scenario, ulong seed)
-    {
-        string path = Path.Combine(Path.GetTempPath(), $"urwpg-trace-{Guid.NewGuid():N}.jsonl");
-        try
-        {
-            var match = MatchBuilder.Build(scenario, seed: seed);
-            using (var trace = new TraceWriter(path))
-            {
-                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
-                for (int k = 0; k < 80; k++)
-                {
-                    match.Step();
-                    trace.WriteCycle(match, match.Contacts.Cycle);
-                }
-
-                trace.Complete();
-            }
-
-            return File.ReadAllBytes(path);
-        }
-        finally
-        {
-            File.Delete(path);
-        }
-    }
+    private static byte[] Trace(ScenarioDefinition scenario, ulong seed) => TraceBytes.Of(MatchBuilder.Build(scenario, seed: seed), 80);
 
     private static int CountLines(byte[] bytes) => Array.FindAll(bytes, b => b == (byte)'\n').Length;
 }

@@ -3,7 +3,7 @@ using System.IO;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Cli;
-using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Server.Tests.Trace;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
@@ -56,31 +56,12 @@ public sealed class StepperThreadsTests
 
     private static byte[] Trace(ScenarioDefinition scenario, int threads, int cycles, out int chunks)
     {
-        string path = Path.Combine(Path.GetTempPath(), $"urwpg-threads-{Guid.NewGuid():N}.jsonl");
-        try
-        {
-            var match = MatchBuilder.Build(scenario);
-            match.Stepper.Threads = threads;
-            match.Stepper.MinimumMoversForThreads = 64; // below the default, so that these crowds use the threads
-            chunks = 0;
-            using (var trace = new TraceWriter(path))
-            {
-                trace.WriteCycle(match, ReadOnlySpan<ContactRecord>.Empty);
-                for (int k = 0; k < cycles; k++)
-                {
-                    match.Step();
-                    trace.WriteCycle(match, match.Contacts.Cycle);
-                    chunks = Math.Max(chunks, match.Stepper.Chunks);
-                }
-
-                trace.Complete();
-            }
-
-            return File.ReadAllBytes(path);
-        }
-        finally
-        {
-            File.Delete(path);
-        }
+        var match = MatchBuilder.Build(scenario);
+        match.Stepper.Threads = threads;
+        match.Stepper.MinimumMoversForThreads = 64; // below the default, so that these crowds use the threads
+        int most = 0;
+        byte[] trace = TraceBytes.Of(match, cycles, _ => most = Math.Max(most, match.Stepper.Chunks));
+        chunks = most;
+        return trace;
     }
 }

@@ -1,0 +1,156 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Linq;
+using System.Security.Cryptography;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Trace;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Trace;
+
+/// <summary>
+/// The safety net of every change that must not change a match: the SHA-256 of the whole trace
+/// (the bytes <c>run --trace</c> writes: every cycle line and its newline) of every competition
+/// item on its own layout with its demo strategies and noise on, for several seeds, of the default
+/// scene and of crowds, pinned. A short match (a few hundred cycles) keeps the test cheap; an item's
+/// halves, extra time and penalties scale with the cycles asked for, so a tied polo match plays them
+/// here too. A refactoring that changes one byte of one trace fails here, naming the case and the
+/// new digest; a deliberate change of the physics or of the trace format updates the table.
+/// </summary>
+public sealed class TraceDigestTests
+{
+    // Cycles a match is built for (an item's phases depend on it).
+    private const int ItemCycles = 300;
+
+    // (scene, seed) → digest of the trace. Scenes: "item SLUG", "default", "crowd N".
+    private static readonly Dictionary<(string Scene, ulong Seed), string> Pinned = new()
+    {
+        [("crowd 200", 3)] = "f6291e3664e38c76f57402835f5087951ccaab7836bc652410c7b6a46ab236b1",
+        [("crowd 60", 1)] = "8b0d02fb4fc274512c57830730386054e2a9409b981e266c956a2c8a7f5864ba",
+        [("default", 1)] = "0e5f1652275defbeb692a2be6dc7ae9980cf17fef5f36b70e3b9f0fa111a6f2f",
+        [("default", 2)] = "d294556a3d184f15b8ed12a1f53bdd1426150ac5c1dfc52e943f966263d3f9a9",
+        [("item ball-grab", 1)] = "9e48e130f80e050e3a08a3d6620e9d7f0947b399c65eef4725222156346c701c",
+        [("item ball-grab", 2)] = "ac6817164cf5fcfbab9bf6d34dd5d93260fe980e9c9228f6347f9337438b2003",
+        [("item ball-grab", 7)] = "bd0f71c191e09fcc0293fbd420f2ce039225217c4ba4deb018cb1cfde4adf348",
+        [("item cross-country", 1)] = "d19c9b74efc0a79864005d355f86d93556e0690c76329f7467d3bf7a1baecb33",
+        [("item cross-country", 2)] = "3207b7543b027c7d27342f7e1fc0d607c39926ff7606cde9f81a905ab031755e",
+        [("item cross-country", 7)] = "15c3a0dcc0ec5ca266fd1c4d379838b87506ef91920784b1b7ab975babfa8b90",
+        [("item polo-1v1", 1)] = "264e89d23a09cda5ce49cdeae7b11b3275d9470457cf523d081f877f13bd9268",
+        [("item polo-1v1", 2)] = "d16dae27adc72341204d7ad96b48315d8f68f7384954da4a68f3b83d26b40fc4",
+        [("item polo-1v1", 7)] = "df941268b3fee7ad7db7daa12a50c5063957092f92bdfcbd3e85e0f445652f7b",
+        [("item polo-3v3", 1)] = "bd2b29260e279225545ac759c45e73616e5012b0b388f86347ca36b54db1db45",
+        [("item polo-3v3", 2)] = "6f34103a73b6d6a853ce918f53122e1053f27cf8ffd2ab4a04063582c37a5898",
+        [("item polo-3v3", 7)] = "33beef61f160bb75a7498151707e719b3e243d2d375917645e52f5a4162a0382",
+        [("item polo-5v5", 1)] = "c2bce5af6f3367e020c9778884fda4e310d057a9ffa15e1788fd67ac162e7e57",
+        [("item polo-5v5", 2)] = "afab2112d97a357cbee969e194c71736d4a2cde48dfa167bb96a2cbb94420217",
+        [("item polo-5v5", 7)] = "52a033789055996c3ad0a4bfddee2622f25363feb2126a4d18a73b59756ff50d",
+        [("item rescue", 1)] = "b6fd767dd83f69cde1ea1fbb797e91c6ca812f259a936429f6eb4f9ac6e205f8",
+        [("item rescue", 2)] = "629247f791bda562db1cd74d16eddccb16e347610104fd0d83fb7752381d99be",
+        [("item rescue", 7)] = "9ec61656aa344e159743b35e093a4fc7d874df1e889980faea13f67404b395b8",
+        [("item snooker", 1)] = "a53d0c522c2000e24118c9b9b1af3ad11a470de20c1dcf6e98813ecb7748de0d",
+        [("item snooker", 2)] = "c849c2fae8938ce63f54fe296980dbf1496b6d37d9708dd93e4c375c00b1cd6e",
+        [("item snooker", 7)] = "43d7ad8d4dd0cdf2074aca70697fba3141c2aa1afc2d7ebe0d129db42c8a7561",
+        [("item survival", 1)] = "3f1caf86ea0356216a05fc8546fa4e538628ce39df0e02e1535832a18978c995",
+        [("item survival", 2)] = "52d612c123c653f8a15d51a34528c41f9dc047edc907fba666a205db39dc1012",
+        [("item survival", 7)] = "d48630166e5f5e9b2161fbcdfdd3244ff9ec2f7794a799ffd4c2b0bbc324fda6",
+        [("item synchronised-swimming", 1)] = "91b2f28b063b97fe8c21ccd6bf56733472d380e0aff7014cd16df4af6800a956",
+        [("item synchronised-swimming", 2)] = "a1b4db8c83d24a98e7a56dfd9a8b12e8b4e569899134c7256d828ff9d4ad763d",
+        [("item synchronised-swimming", 7)] = "768f0e400ea37ca8f1e58ab213d23881057ee197736623703762efaa6f6b5004",
+        [("item transport", 1)] = "093714c5373cef4efc7751ab33fa906a53c693a8937abc99ce8f765c88ff8d91",
+        [("item transport", 2)] = "c32a39091e5eb8f3873b7a00026ad5e11ed52723260c8ad8e0ccec5e2fdb7a78",
+        [("item transport", 7)] = "d12982f2a098f60535567b58e00a95e1884e0cad20bce933d89dff86e48d50d0",
+    };
+
+    private static readonly ulong[] Seeds = [1, 2, 7];
+
+    /// <summary>The cases: every registered item × <see cref="Seeds"/>, the default scene and two crowds.</summary>
+    public static TheoryData<string, ulong> Cases()
+    {
+        var cases = new TheoryData<string, ulong>();
+        foreach (var item in ItemRegistry.All)
+        {
+            foreach (ulong seed in Seeds)
+            {
+                cases.Add("item " + item.Slug, seed);
+            }
+        }
+
+        cases.Add("default", 1);
+        cases.Add("default", 2);
+        cases.Add("crowd 60", 1);
+        cases.Add("crowd 200", 3);
+        return cases;
+    }
+
+    [Theory]
+    [MemberData(nameof(Cases))]
+    public void TheTraceIsByteIdenticalToThePinnedOne(string scene, ulong seed)
+    {
+        string actual = Digest(scene, seed);
+        Assert.True(Pinned.TryGetValue((scene, seed), out string? expected),
+            $"no pinned digest for {scene} seed {seed}: add [(\"{scene}\", {seed})] = \"{actual}\", to the table (measured on the commit before your change)");
+        Assert.True(expected == actual, $"{scene} seed {seed}: the trace changed: digest {actual}, pinned {expected}");
+    }
+
+    [Fact]
+    public void EveryPinnedCaseIsStillPlayed()
+    {
+        var played = Cases().Select(c => ((string)c[0], (ulong)c[1])).ToHashSet();
+        foreach (var key in Pinned.Keys)
+        {
+            Assert.Contains(key, played);
+        }
+    }
+
+    [Fact]
+    public void ADifferentSeedGivesADifferentTrace()
+    {
+        // The digest sees the match: the seed changes the noise, so the trace.
+        Assert.NotEqual(Digest("item ball-grab", 1), Digest("item ball-grab", 2));
+    }
+
+    // The digest of the trace of a scene played as `run` plays it (the one match loop).
+    private static string Digest(string scene, ulong seed)
+    {
+        var (scenario, cycles) = Scene(scene, seed);
+        using var hash = new TraceHash();
+        using var loop = new MatchLoop(new MatchSettings(scenario, cycles, seed).Build(), cycles, hash);
+        loop.Play();
+        return hash.Digest();
+    }
+
+    // SHA-256 of the lines and their newlines.
+    private sealed class TraceHash : ITraceSink, IDisposable
+    {
+        private readonly IncrementalHash _hash = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+
+        public void WriteLine(ReadOnlySpan<byte> line)
+        {
+            _hash.AppendData(line);
+            _hash.AppendData("\n"u8);
+        }
+
+        public string Digest() => Convert.ToHexStringLower(_hash.GetHashAndReset());
+
+        public void Dispose() => _hash.Dispose();
+    }
+
+    private static (ScenarioDefinition Scenario, int Cycles) Scene(string scene, ulong seed)
+    {
+        if (scene.StartsWith("item ", StringComparison.Ordinal))
+        {
+            return (ItemRegistry.Find(scene[5..])!.CreateScenario(seed), ItemCycles);
+        }
+
+        if (scene == "default")
+        {
+            return (DefaultScenario.Load(), 200);
+        }
+
+        int movers = int.Parse(scene.AsSpan(6), CultureInfo.InvariantCulture);
+        return (CrowdScenario.Create(movers, seed), 100);
+    }
+}
