@@ -77,7 +77,7 @@ internal sealed class LiveFeed
                 next = 0;
             }
 
-            int end = System.Math.Min(_messages.Count, next + max);
+            int end = (int)System.Math.Min(_messages.Count, (long)next + max);
             for (int i = next; i < end; i++)
             {
                 into.Add(_messages[i]);
