@@ -52,8 +52,8 @@ M28~$S/Simulation/Rules.cs~side > 0 ? 0 : 1~side > 0 ? 1 : 0~which team a goal c
 M29~$S/Simulation/Rules.cs~b.Velocity = Vector2.Zero;~b.Velocity = b.Velocity;~a scored ball stops
 M30~$S/Simulation/Kinematics/BallMotion.cs~speed >= 100f ? 250f~speed >= 100f ? 200f~ball deceleration
 M31~$S/Simulation/Locomotion.cs~(v * v / 500000f)~(v * v / 50000f)~heading noise amplitude
-M32~$S/Strategies/ChaseBallStrategy.cs~int tcode = 7 + (int)MathF.Round~int tcode = 7 - (int)MathF.Round~chase-ball turns toward its aim
-M33~$S/Strategies/ChaseBallStrategy.cs~if (++_still[k] < StuckCycles)~if (++_still[k] <= StuckCycles)~chase-ball stuck detection off by one
+M32~$S/Hosting/ChaseBallStrategy.cs~int tcode = 7 + (int)MathF.Round~int tcode = 7 - (int)MathF.Round~chase-ball turns toward its aim
+M33~$S/Hosting/ChaseBallStrategy.cs~if (++_still[k] < StuckCycles)~if (++_still[k] <= StuckCycles)~chase-ball stuck detection off by one
 M34~$S/Items/BallGrab/BallGrabReferee.cs~if (Scores[team] == 0)~if (Scores[team] != 0)~ball-grab first-score cycle
 M35~$S/Items/BallGrab/BallGrabReferee.cs~new MatchOutcome(a < b ? 0 : 1~new MatchOutcome(a > b ? 0 : 1~ball-grab tie-break by earlier first score
 M36~$S/Items/BallGrab/BallGrabReferee.cs~Placement.Place(b, -b.Position);~Placement.Place(b, b.Position);~ball-grab balls mirrored at half time
@@ -65,7 +65,7 @@ EOF
 # and viewer tests (they play the same engine through the command line), the brute-force motion
 # audits (MotionGuaranteeTests: a minute of their own) and the allocation tests. Release build: a
 # match plays about five times faster than in Debug.
-filter='(FullyQualifiedName~URWPGSim2D.Server.Tests.Simulation|FullyQualifiedName~URWPGSim2D.Server.Tests.Items|FullyQualifiedName~URWPGSim2D.Server.Tests.Strategies|FullyQualifiedName~URWPGSim2D.Server.Tests.Docs|FullyQualifiedName~URWPGSim2D.Server.Tests.Scenario|FullyQualifiedName~RunCommandTests|FullyQualifiedName~BatchSummaryTests)&FullyQualifiedName!~MotionGuaranteeTests&FullyQualifiedName!~AllocationTests'
+filter='(FullyQualifiedName~URWPGSim2D.Server.Tests.Simulation|FullyQualifiedName~URWPGSim2D.Server.Tests.Items|FullyQualifiedName~URWPGSim2D.Server.Tests.Hosting|FullyQualifiedName~URWPGSim2D.Server.Tests.Docs|FullyQualifiedName~URWPGSim2D.Server.Tests.Scenario|FullyQualifiedName~RunCommandTests|FullyQualifiedName~BatchSummaryTests)&FullyQualifiedName!~MotionGuaranteeTests&FullyQualifiedName!~AllocationTests'
 
 dotnet build tests/URWPGSim2D.Server.Tests -c Release -v q -nologo >/dev/null 2>&1 || { echo "mutation-spot-check: the unmutated build fails" >&2; exit 1; }
 bin=tests/URWPGSim2D.Server.Tests/bin/Release/net10.0

@@ -91,7 +91,7 @@ internal static class LiveRun
         {
             return RunCommand.LoadTeams(options);
         }
-        catch (Strategies.StrategyLoadException)
+        catch (Hosting.StrategyLoadException)
         {
             return teams; // the assembly vanished since the start: keep the loaded strategies
         }

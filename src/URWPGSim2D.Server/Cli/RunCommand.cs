@@ -8,7 +8,7 @@ using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Trace;
 using URWPGSim2D.Server.Viewer;
 

@@ -4,7 +4,7 @@ using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Scenario;
 
@@ -62,7 +62,7 @@ internal static class MatchBuilder
 
         var world = new World(field, fish, balls, views, statics);
         var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
-        var host = new StrategyHost(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee), strategyTimeoutMs);
+        var host = new StrategyCaller(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee), strategyTimeoutMs);
         return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase, referee);
     }
 

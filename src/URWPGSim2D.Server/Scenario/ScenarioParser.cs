@@ -4,7 +4,7 @@ using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using static URWPGSim2D.Server.Scenario.JsonReader;
 
 namespace URWPGSim2D.Server.Scenario;

@@ -1,4 +1,4 @@
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Scenario;
 

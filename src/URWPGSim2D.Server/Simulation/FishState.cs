@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Simulation.Kinematics;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;

@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
@@ -25,7 +25,7 @@ internal sealed class Match
     /// <param name="seed">Seed of the noise generators.</param>
     /// <param name="broadPhase">The stepper's broad phase; every kind gives the same match.</param>
     /// <param name="referee">The rules of a competition item, or null for the plain goal rules (<see cref="Rules"/>).</param>
-    public Match(World world, StrategyHost strategies, bool noise, ulong seed, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, Items.ItemReferee? referee = null)
+    public Match(World world, StrategyCaller strategies, bool noise, ulong seed, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, Items.ItemReferee? referee = null)
     {
         World = world;
         Strategies = strategies;
@@ -45,7 +45,7 @@ internal sealed class Match
     public World World { get; }
 
     /// <summary>The strategies.</summary>
-    public StrategyHost Strategies { get; }
+    public StrategyCaller Strategies { get; }
 
     /// <summary>What strategies see.</summary>
     public MatchSnapshot Snapshot { get; }

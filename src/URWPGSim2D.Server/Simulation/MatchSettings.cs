@@ -1,5 +1,5 @@
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Simulation;
 

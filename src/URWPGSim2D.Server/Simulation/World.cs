@@ -1,6 +1,6 @@
 using System;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Simulation;
 

@@ -77,7 +77,7 @@ internal sealed class LiveFeed
                 next = 0;
             }
 
-            int end = (int)System.Math.Min(_messages.Count, (long)next + max);
+            int end = next + System.Math.Min(max, _messages.Count - next); // next + max may overflow
             for (int i = next; i < end; i++)
             {
                 into.Add(_messages[i]);

@@ -91,7 +91,7 @@ public sealed class BatchRunTests : IDisposable
     {
         // The test strategy throws on its calls 5-9 and answers no decisions on calls 10-14; in
         // 15 cycles it never hangs, so the counts do not depend on timing.
-        string faulty = "0=" + Strategies.OriginalStrategyTests.Folder("Faulty");
+        string faulty = "0=" + Hosting.OriginalStrategyTests.Folder("Faulty");
         var whole = Batch("faulty", 7, 15, "--strategy", faulty);
         const string entry = "\"strategyFaults\":10,\"faults\":[{\"team\":0,\"strategy\":\"Faulty\",\"exceptions\":5,\"timeouts\":0,\"badAnswers\":5,\"first\":\"cycle 5: InvalidOperationException: faulty on purpose\"}]";
         string[] lines = File.ReadAllLines(whole.File);

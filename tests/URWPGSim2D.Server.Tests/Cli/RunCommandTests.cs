@@ -121,7 +121,7 @@ public sealed class RunCommandTests : IDisposable
     [Fact]
     public void ALoadedStrategyTakesOverItsTeam()
     {
-        string dll = Strategies.StrategyAssemblyBuilder.Build("Sprinters", Strategies.StrategyLoaderTests.SprinterSource);
+        string dll = Hosting.StrategyAssemblyBuilder.Build("Sprinters", Hosting.StrategyLoaderTests.SprinterSource);
         var run = CliRun.Of(string.Empty, "run", "--cycles", "20", "--strategy", "1=" + dll);
         Assert.Equal(0, run.ExitCode);
         Assert.Contains("team 1 (Sprinters.dll)", run.Stdout, StringComparison.Ordinal);

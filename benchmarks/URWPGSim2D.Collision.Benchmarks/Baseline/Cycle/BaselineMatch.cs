@@ -3,7 +3,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Benchmarks.Baseline.Motion;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Collision.Benchmarks.Baseline.Cycle;
 
@@ -45,7 +45,7 @@ internal sealed class BaselineMatch
     public World World { get; }
 
     /// <summary>The strategies.</summary>
-    public StrategyHost Strategies { get; }
+    public StrategyCaller Strategies { get; }
 
     /// <summary>What strategies see.</summary>
     public MatchSnapshot Snapshot { get; }

@@ -4,7 +4,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Items.Polo;
 

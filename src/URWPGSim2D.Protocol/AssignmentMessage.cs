@@ -1,0 +1,24 @@
+using URWPGSim2D.Strategies;
+
+namespace URWPGSim2D.Protocol;
+
+/// <summary>The server's answer to a hello: what the client plays. Everything in it holds for the whole match.</summary>
+/// <param name="Version">The protocol version of the rest of the connection.</param>
+/// <param name="Team">The team the client controls (0 or 1).</param>
+/// <param name="Item">The item's command-line name (<c>ball-grab</c>), or empty for a plain scene.</param>
+/// <param name="ItemName">The item's name as the snapshot gives it (<see cref="MatchSnapshot.ItemName"/>).</param>
+/// <param name="Fish">Indices of the fish the client decides for, in the order of its decisions.</param>
+/// <param name="FishCount">Fish in every snapshot.</param>
+/// <param name="BallCount">Balls in every snapshot.</param>
+/// <param name="TotalCycles">Cycles of the match (<see cref="MatchSnapshot.TotalCycles"/>; 0 without an item).</param>
+/// <param name="DeadlineMs">The deadline of one cycle's answer, ms.</param>
+/// <param name="FieldLength">Field length, mm.</param>
+/// <param name="FieldWidth">Field width, mm.</param>
+/// <param name="Obstacles">The obstacles (they do not move).</param>
+internal sealed record AssignmentMessage(
+    int Version, int Team, string Item, string ItemName, int[] Fish, int FishCount, int BallCount, int TotalCycles,
+    int DeadlineMs, float FieldLength, float FieldWidth, ObstacleView[] Obstacles)
+{
+    /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
+    public MatchSnapshot CreateSnapshot() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
+}

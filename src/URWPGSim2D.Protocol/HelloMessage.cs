@@ -1,0 +1,7 @@
+namespace URWPGSim2D.Protocol;
+
+/// <summary>A client's first message.</summary>
+/// <param name="Version">The protocol version the client speaks.</param>
+/// <param name="Token">The token the server asked for, or null.</param>
+/// <param name="Name">The strategy's team name, or null.</param>
+internal sealed record HelloMessage(int Version, string? Token, string? Name);

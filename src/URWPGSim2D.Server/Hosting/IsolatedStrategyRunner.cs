@@ -1,0 +1,142 @@
+using System;
+using System.Threading;
+
+namespace URWPGSim2D.Server.Hosting;
+
+/// <summary>
+/// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread with a per-call
+/// deadline measured by a <see cref="StrategyClock"/> (the CPU time of that thread in a real match). A
+/// call past its deadline is abandoned: its answer is discarded even if it arrives before the host
+/// looks, and the strategy is skipped while it is still busy, so a strategy that hangs cannot stop the match.
+/// The first call, which also compiles the strategy's code, has the longer hang limit as its deadline.
+/// </summary>
+internal sealed class IsolatedStrategyRunner
+{
+    private readonly IStrategy _strategy;
+    private readonly StrategyClock _clock;
+    private readonly Decision[] _work;
+    private readonly SemaphoreSlim _start = new(0);
+    private readonly SemaphoreSlim _done = new(0);
+    private MatchSnapshot? _snapshot;
+    private int[] _fish = [];
+    private Exception? _error;
+    private TimeSpan _used;
+    private bool _pending;
+    private bool _warm;
+    private volatile bool _stopped;
+
+    public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
+    {
+        _strategy = strategy;
+        _clock = clock;
+        _work = new Decision[fishCount];
+        var thread = new Thread(Loop) { IsBackground = true, Name = $"strategy team {team}" };
+        thread.Start();
+    }
+
+    /// <summary>Outcome of one call.</summary>
+    public enum Outcome
+    {
+        /// <summary>Finished within its deadline; decisions updated.</summary>
+        Decided,
+
+        /// <summary>Threw; decisions unchanged.</summary>
+        Threw,
+
+        /// <summary>Past its deadline or still busy with an earlier call; decisions unchanged.</summary>
+        TimedOut,
+    }
+
+    /// <summary>Asks for decisions with a deadline of <paramref name="timeoutMs"/> ms.</summary>
+    public Outcome Decide(MatchSnapshot snapshot, int[] fish, Span<Decision> decisions, int timeoutMs, out Exception? error)
+    {
+        error = null;
+        if (_pending)
+        {
+            if (!_clock.AbandonedCallReturned(_done))
+            {
+                return Outcome.TimedOut;
+            }
+
+            _pending = false; // the abandoned call's answer is dropped here
+        }
+
+        // The first call also pays for .NET compiling the strategy's (and the adapter's) code on its
+        // thread: it gets the hang limit instead of the deadline.
+        var budget = TimeSpan.FromMilliseconds(timeoutMs);
+        if (!_warm)
+        {
+            budget = ThreadTimeClock.HangLimitFor(budget);
+            _warm = true;
+        }
+
+        // The strategy reads its own copy: a call given up on may go on reading while the next
+        // cycles rewrite the match's snapshot and the referee's variables.
+        decisions.CopyTo(_work);
+        if (_snapshot is null)
+        {
+            _snapshot = snapshot.CreateCopy();
+        }
+        else
+        {
+            _snapshot.CopyFrom(snapshot);
+        }
+
+        _fish = fish;
+        _error = null;
+        _pending = true;
+        _clock.Arm(budget);
+        _start.Release();
+        if (!_clock.WaitForCall(_done, budget))
+        {
+            return Outcome.TimedOut;
+        }
+
+        _pending = false;
+        if (_used > budget)
+        {
+            return Outcome.TimedOut; // finished, but late: discarded
+        }
+
+        if (_error is not null)
+        {
+            error = _error;
+            return Outcome.Threw;
+        }
+
+        _work.CopyTo(decisions);
+        return Outcome.Decided;
+    }
+
+    /// <summary>Lets the strategy's thread end once its current call (if any) returns; the runner is not used afterwards.</summary>
+    public void Stop()
+    {
+        _stopped = true;
+        _start.Release();
+    }
+
+    private void Loop()
+    {
+        while (true)
+        {
+            _start.Wait();
+            if (_stopped)
+            {
+                return;
+            }
+
+            _clock.CallStarting();
+            try
+            {
+                _strategy.Decide(_snapshot!, _fish, _work);
+            }
+            catch (Exception e)
+            {
+                _error = e;
+            }
+
+            _used = _clock.CallEnded();
+            _done.Release();
+        }
+    }
+}

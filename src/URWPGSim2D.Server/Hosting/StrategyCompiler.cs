@@ -1,0 +1,169 @@
+using System;
+using System.Collections.Generic;
+using System.Collections.Immutable;
+using System.Diagnostics.CodeAnalysis;
+using System.Globalization;
+using System.IO;
+using System.Text;
+using Microsoft.CodeAnalysis;
+using Microsoft.CodeAnalysis.CSharp;
+
+namespace URWPGSim2D.Server.Hosting;
+
+/// <summary>
+/// Compiles a team's strategy sources in process (Roslyn) against the framework, the strategy SDK and
+/// the compatibility assembly (the original's API). Errors come back as <c>file(line,col): error CSnnnn:
+/// message</c> lines; warnings are ignored, and the ones old sources always raise on .NET 10 are
+/// suppressed outright: the obsolete <c>InitializeLifetimeService</c> override (CS0672, SYSLIB0010,
+/// CS0618), the lower-case <c>xna</c> alias (CS8981) and a team's own <c>StrategyHelper.cs</c> taking
+/// precedence over the compatibility assembly's copy (CS0436).
+/// </summary>
+internal static class StrategyCompiler
+{
+    private static readonly string[] Suppressed = ["CS0672", "SYSLIB0010", "CS0618", "CS8981", "CS0436", "CS1701", "CS1702"];
+
+    private static readonly Lazy<ImmutableArray<MetadataReference>> References = new(CreateReferences);
+
+    /// <summary>The source files of a spec: the file itself, or every .cs file under a folder (bin/ and obj/ skipped), in ordinal order.</summary>
+    /// <param name="spec">A .cs file or a folder, as the user wrote it.</param>
+    /// <returns>The files, as paths starting with <paramref name="spec"/>.</returns>
+    public static List<string> SourceFiles(string spec)
+    {
+        var files = new List<string>();
+        if (File.Exists(spec))
+        {
+            files.Add(spec);
+            return files;
+        }
+
+        foreach (string file in Directory.EnumerateFiles(spec, "*.cs", SearchOption.AllDirectories))
+        {
+            string relative = Path.GetRelativePath(spec, file);
+            string first = relative.Split(Path.DirectorySeparatorChar)[0];
+            if (first is "bin" or "obj")
+            {
+                continue;
+            }
+
+            files.Add(Path.Combine(spec, relative));
+        }
+
+        files.Sort(StringComparer.Ordinal);
+        return files;
+    }
+
+    /// <summary>Compiles the files into an assembly image.</summary>
+    /// <param name="name">Assembly name.</param>
+    /// <param name="files">The source files.</param>
+    /// <returns>The assembly image.</returns>
+    /// <exception cref="StrategyLoadException">A file cannot be read, or the sources do not compile (one line per error).</exception>
+    public static byte[] Compile(string name, IReadOnlyList<string> files)
+    {
+        var trees = new List<SyntaxTree>(files.Count);
+        var parse = new CSharpParseOptions(LanguageVersion.Latest);
+        foreach (string file in files)
+        {
+            string text;
+            try
+            {
+                text = File.ReadAllText(file);
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                throw new StrategyLoadException($"cannot read {file}: {e.Message}");
+            }
+
+            trees.Add(CSharpSyntaxTree.ParseText(text, parse, file, Encoding.UTF8));
+        }
+
+        var options = new CSharpCompilationOptions(
+            OutputKind.DynamicallyLinkedLibrary,
+            optimizationLevel: OptimizationLevel.Release,
+            allowUnsafe: true,
+            nullableContextOptions: NullableContextOptions.Disable,
+            specificDiagnosticOptions: Suppress());
+        var compilation = CSharpCompilation.Create(name, trees, References.Value, options);
+        using var image = new MemoryStream();
+        var result = compilation.Emit(image);
+        if (!result.Success)
+        {
+            var errors = Errors(result.Diagnostics);
+            throw new StrategyLoadException(
+                string.Create(CultureInfo.InvariantCulture, $"{errors.Count} compile error{(errors.Count == 1 ? string.Empty : "s")} in {files.Count} file{(files.Count == 1 ? string.Empty : "s")}:"),
+                errors);
+        }
+
+        return image.ToArray();
+    }
+
+    /// <summary>The error lines of a failed compilation, by file, line and column.</summary>
+    private static List<string> Errors(ImmutableArray<Diagnostic> diagnostics)
+    {
+        var errors = new List<Diagnostic>();
+        foreach (var d in diagnostics)
+        {
+            if (d.Severity == DiagnosticSeverity.Error)
+            {
+                errors.Add(d);
+            }
+        }
+
+        errors.Sort((a, b) =>
+        {
+            var pa = a.Location.GetLineSpan();
+            var pb = b.Location.GetLineSpan();
+            int c = string.CompareOrdinal(pa.Path, pb.Path);
+            c = c != 0 ? c : pa.StartLinePosition.Line.CompareTo(pb.StartLinePosition.Line);
+            return c != 0 ? c : pa.StartLinePosition.Character.CompareTo(pb.StartLinePosition.Character);
+        });
+        var lines = new List<string>(errors.Count);
+        foreach (var d in errors)
+        {
+            lines.Add(Format(d));
+        }
+
+        return lines;
+    }
+
+    /// <summary>One diagnostic as <c>file(line,col): error ID: message</c> (1-based line and column).</summary>
+    public static string Format(Diagnostic d)
+    {
+        var span = d.Location.GetLineSpan();
+        string where = span.IsValid
+            ? string.Create(CultureInfo.InvariantCulture, $"{span.Path}({span.StartLinePosition.Line + 1},{span.StartLinePosition.Character + 1})")
+            : "(no file)";
+        string message = d.GetMessage(CultureInfo.InvariantCulture).Replace('\n', ' ').Replace('\r', ' ');
+        return string.Create(CultureInfo.InvariantCulture, $"{where}: error {d.Id}: {message}");
+    }
+
+    private static ImmutableDictionary<string, ReportDiagnostic> Suppress()
+    {
+        var b = ImmutableDictionary.CreateBuilder<string, ReportDiagnostic>();
+        foreach (string id in Suppressed)
+        {
+            b[id] = ReportDiagnostic.Suppress;
+        }
+
+        return b.ToImmutable();
+    }
+
+    // The framework's own assemblies (from the trusted platform list, in the runtime's folder) plus the SDK and the compatibility assembly.
+    [UnconditionalSuppressMessage("SingleFile", "IL3000", Justification = "The server runs from its own folder (never a single-file bundle): assemblies have paths.")]
+    private static ImmutableArray<MetadataReference> CreateReferences()
+    {
+        var list = ImmutableArray.CreateBuilder<MetadataReference>();
+        string runtime = Path.GetDirectoryName(typeof(object).Assembly.Location)!;
+        string trusted = AppContext.GetData("TRUSTED_PLATFORM_ASSEMBLIES") as string ?? string.Empty;
+        foreach (string path in trusted.Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries))
+        {
+            if (string.Equals(Path.GetDirectoryName(path), runtime, StringComparison.Ordinal))
+            {
+                list.Add(MetadataReference.CreateFromFile(path));
+            }
+        }
+
+        list.Add(MetadataReference.CreateFromFile(typeof(IStrategy).Assembly.Location));
+        list.Add(MetadataReference.CreateFromFile(typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly.Location));
+        return list.ToImmutable();
+    }
+}

@@ -1,0 +1,28 @@
+using System;
+using System.Threading;
+using URWPGSim2D.Server.Hosting;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Hosting;
+
+/// <summary>The real deadline clock counts the strategy thread's CPU time, not wall time.</summary>
+public sealed class ThreadTimeClockTests
+{
+    [Fact]
+    public void ASleepingCallUsesAlmostNoTime()
+    {
+        Assert.True(OperatingSystem.IsLinux(), "the thread CPU clock is Linux's; CI runs on Linux");
+        var clock = new ThreadTimeClock();
+        clock.CallStarting();
+        Thread.Sleep(300);
+        TimeSpan used = clock.CallEnded();
+        Assert.True(used < TimeSpan.FromMilliseconds(150), $"a 300 ms sleep used {used.TotalMilliseconds} ms of CPU");
+    }
+
+    [Fact]
+    public void TheHangLimitIsTenDeadlinesAndAtLeastASecond()
+    {
+        Assert.Equal(TimeSpan.FromSeconds(1), ThreadTimeClock.HangLimitFor(TimeSpan.FromMilliseconds(20)));
+        Assert.Equal(TimeSpan.FromSeconds(5), ThreadTimeClock.HangLimitFor(TimeSpan.FromMilliseconds(500)));
+    }
+}
