@@ -2,7 +2,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Strategies;
+using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Items.PushBallAvoidObstacles;
 
