@@ -72,7 +72,8 @@ internal static class ResultFile
         return (header, results);
     }
 
-    private static void WriteLine(Stream stream, Action<Utf8JsonWriter> write)
+    /// <summary>Writes one compact JSON line (the object <paramref name="write"/> writes, then a line feed).</summary>
+    internal static void WriteLine(Stream stream, Action<Utf8JsonWriter> write)
     {
         using (var writer = new Utf8JsonWriter(stream, Compact))
         {
@@ -99,7 +100,8 @@ internal static class ResultFile
         w.WriteEndObject();
     }
 
-    private static void WriteResult(Utf8JsonWriter w, MatchResult r)
+    /// <summary>Writes a match line's object; <paramref name="extra"/> adds fields at its end (a tournament's entrants).</summary>
+    internal static void WriteResult(Utf8JsonWriter w, MatchResult r, Action<Utf8JsonWriter>? extra = null)
     {
         w.WriteStartObject();
         w.WriteString("kind", "match");
@@ -157,10 +159,12 @@ internal static class ResultFile
             w.WriteString("rule", r.Rule);
         }
 
+        extra?.Invoke(w);
         w.WriteEndObject();
     }
 
-    private static T Parse<T>(string path, int line, string text, Func<JsonElement, T> read)
+    /// <summary>Parses one line with <paramref name="read"/>; any failure is a <see cref="ResultFileException"/> naming the file and line.</summary>
+    internal static T Parse<T>(string path, int line, string text, Func<JsonElement, T> read)
     {
         try
         {
@@ -189,7 +193,8 @@ internal static class ResultFile
         return header;
     }
 
-    private static MatchResult ReadResult(JsonElement e)
+    /// <summary>Reads a match line's object; a bad one throws (<see cref="ResultFileException"/>, <see cref="JsonException"/>, …, as <see cref="Parse{T}"/> catches).</summary>
+    internal static MatchResult ReadResult(JsonElement e)
     {
         Kind(e, "match");
         int index = Field(e, "index").GetInt32();

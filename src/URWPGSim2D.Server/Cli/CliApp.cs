@@ -38,6 +38,7 @@ internal sealed class CliApp
         new RenderCommand(),
         new MergeCommand(),
         new ViewCommand(),
+        new TournamentCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>

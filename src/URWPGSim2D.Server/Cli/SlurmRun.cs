@@ -65,29 +65,45 @@ internal static class SlurmRun
         var job = new SlurmJob(
             ServerCommand.OfThisProcess(), options.PassedOn, Environment.CurrentDirectory, folder, results, shards, toPlay,
             options.Threads ?? 1, options.Threads is not null, options.Partition, options.TimeLimit);
-        string submit = Path.Combine(folder, SlurmJob.SubmitScriptName);
+        return WriteJobs(job, header.Matches, options.Submit, console, "run");
+    }
+
+    /// <summary>
+    /// Writes a job's three scripts into its folder, says what they play, and with
+    /// <paramref name="submit"/> submits them; returns the exit code (shared by <c>run --batch</c> and <c>tournament</c>).
+    /// </summary>
+    /// <param name="job">The job.</param>
+    /// <param name="matches">The matches of the whole batch or tournament.</param>
+    /// <param name="submit">Whether to submit (sbatch was checked to be on PATH).</param>
+    /// <param name="console">The streams.</param>
+    /// <param name="command">The command's name for error lines.</param>
+    internal static int WriteJobs(SlurmJob job, int matches, bool submit, CliConsole console, string command)
+    {
+        string folder = job.Folder;
+        string submitScript = Path.Combine(folder, SlurmJob.SubmitScriptName);
         try
         {
             Directory.CreateDirectory(Path.Combine(folder, SlurmJob.LogFolder));
             WriteScript(Path.Combine(folder, SlurmJob.ShardScriptName), job.ShardScript());
             WriteScript(Path.Combine(folder, SlurmJob.MergeScriptName), job.MergeScript());
-            WriteScript(submit, job.SubmitScript());
+            WriteScript(submitScript, job.SubmitScript());
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            return Refuse(console, $"--slurm: cannot write the scripts into {folder} ({e.Message})");
+            console.ErrorLine($"{command}: --slurm: cannot write the scripts into {folder} ({e.Message})");
+            return ExitCodes.BadInput;
         }
 
-        string play = toPlay.Count == 0 ? "none (all have results)" : ArraySpec.Format(toPlay);
-        console.Out.Write($"slurm: {header.Matches} matches in {shards} shards, in {folder}; shards to play: {play}\n");
+        string play = job.ToPlay.Count == 0 ? "none (all have results)" : ArraySpec.Format(job.ToPlay);
+        console.Out.Write($"slurm: {matches} matches in {job.Shards} shards, in {folder}; shards to play: {play}\n");
         console.Out.Write($"wrote {SlurmJob.ShardScriptName}, {SlurmJob.MergeScriptName} and {SlurmJob.SubmitScriptName} there\n");
-        if (!options.Submit)
+        if (!submit)
         {
-            console.Out.Write($"submit with: bash {ShellWord.Quote(submit)}\n");
+            console.Out.Write($"submit with: bash {ShellWord.Quote(submitScript)}\n");
             return ExitCodes.Success;
         }
 
-        return Submit(submit, console);
+        return Submit(submitScript, console);
     }
 
     // bash DIR/submit.sh: its lines (the job ids) go to stdout; when sbatch refuses, its message to stderr and exit 1.
@@ -123,7 +139,8 @@ internal static class SlurmRun
         File.Move(temporary, path, overwrite: true);
     }
 
-    private static string? OnPath(string program) =>
+    /// <summary>The full path of <paramref name="program"/> on PATH, or null.</summary>
+    internal static string? OnPath(string program) =>
         (Environment.GetEnvironmentVariable("PATH") ?? string.Empty)
             .Split(Path.PathSeparator, StringSplitOptions.RemoveEmptyEntries)
             .Select(d => Path.Combine(d, program))

@@ -28,6 +28,8 @@ namespace URWPGSim2D.Server.Batch.Slurm;
 /// <param name="ThreadsPassedOn">Whether <paramref name="RunArguments"/> holds <c>--threads</c>.</param>
 /// <param name="Partition">sbatch's <c>--partition</c>, or null.</param>
 /// <param name="TimeLimit">sbatch's <c>--time</c>, or null.</param>
+/// <param name="Command">The server's command the tasks run with <paramref name="RunArguments"/>: <c>run</c> (a batch) or <c>tournament</c>.</param>
+/// <param name="MergeArguments">The merge job's command words before the shard files, or null for <c>merge --out RESULTS</c> (a batch's).</param>
 internal sealed partial record SlurmJob(
     IReadOnlyList<string> Server,
     IReadOnlyList<string> RunArguments,
@@ -39,7 +41,9 @@ internal sealed partial record SlurmJob(
     int Cpus,
     bool ThreadsPassedOn,
     string? Partition,
-    string? TimeLimit)
+    string? TimeLimit,
+    string Command = "run",
+    IReadOnlyList<string>? MergeArguments = null)
 {
     /// <summary>Most shards of one batch: task indices 0 … 999 fit Slurm's default <c>MaxArraySize</c> (1001).</summary>
     public const int MaximumShards = 1000;
@@ -78,7 +82,7 @@ internal sealed partial record SlurmJob(
             .Append("\" (where the batch was asked from) is not on this node: running in $folder, where relative paths of the options are not found\" >&2; cd -- \"$folder\"; }\n");
         s.Append("exec");
         Words(s, Server);
-        s.Append(" run");
+        s.Append(' ').Append(ShellWord.Quote(Command));
         Words(s, RunArguments);
         if (!ThreadsPassedOn)
         {
@@ -100,7 +104,8 @@ internal sealed partial record SlurmJob(
         s.Append("for ((i = 0; i < ").Append(Shards.ToString(CultureInfo.InvariantCulture)).Append("; i++)); do files+=(\"$folder/shard-$i.jsonl\"); done\n");
         s.Append("exec");
         Words(s, Server);
-        s.Append(" merge --out ").Append(ShellWord.Quote(Results)).Append(" \"${files[@]}\"\n");
+        Words(s, MergeArguments ?? ["merge", "--out", Results]);
+        s.Append(" \"${files[@]}\"\n");
         return s.ToString();
     }
 

@@ -1,0 +1,306 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Server.Tournament;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>tournament</c>: plays every entrant against every other (or alone, for a one-team item) on a
+/// deterministic schedule over N seeds, on every core or as a Slurm job array, resuming what its
+/// folder already holds, and writes the results, the standings with their intervals and a report
+/// page. See docs/tournament.md.
+/// </summary>
+internal sealed class TournamentCommand : ICliCommand
+{
+    /// <inheritdoc/>
+    public string Name => "tournament";
+
+    /// <inheritdoc/>
+    public string Synopsis => TournamentOptions.Synopsis;
+
+    /// <inheritdoc/>
+    public string Summary => "Rank strategies: every entrant against every other over N seeds, ratings with 95 % intervals, report page.";
+
+    /// <inheritdoc/>
+    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    {
+        var o = TournamentOptions.Parse(arguments);
+        if (o.Help)
+        {
+            console.Out.Write(HelpText());
+            return ExitCodes.Success;
+        }
+
+        TournamentSchedule schedule;
+        try
+        {
+            schedule = new TournamentSchedule(o.Item.TeamCount, o.Entrants.Count, o.Seeds, o.FirstSeed);
+        }
+        catch (ArgumentException e)
+        {
+            return Refuse(console, $"--seeds {o.Seeds} --seed {o.FirstSeed}: {e.Message.Split(" (Parameter", 2)[0]}");
+        }
+
+        var whole = new TournamentHeader(o.Item.Slug, o.Entrants, o.Seeds, o.FirstSeed, o.Cycles, o.StrategyTimeoutMs, schedule.Matches.Count);
+        string folder;
+        try
+        {
+            folder = Path.TrimEndingDirectorySeparator(Path.GetFullPath(o.Out));
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            return Refuse(console, $"--out: not a usable path ({e.Message})");
+        }
+
+        if (File.Exists(folder))
+        {
+            return Refuse(console, $"--out: {o.Out} is a file, not a folder");
+        }
+
+        if (o.Slurm is not null)
+        {
+            return Slurm(o, whole, schedule, console);
+        }
+
+        string results = o.Results ?? Path.Combine(folder, TournamentOutputs.Results);
+        if (o.Results is null && Directory.Exists(folder) && !File.Exists(results) && Directory.EnumerateFileSystemEntries(folder).Any())
+        {
+            return Refuse(console, $"--out: {o.Out} is not empty and holds no {TournamentOutputs.Results}; give an empty or new folder (or one of the same tournament, to resume it)");
+        }
+
+        var header = whole with { ShardIndex = o.ShardIndex, ShardCount = o.ShardCount };
+        try
+        {
+            // Another tournament's results are never touched: checked before anything is played.
+            foreach (string file in o.Merge.Prepend(results))
+            {
+                if (File.Exists(file) && TournamentFile.Read(file).Header is var found && !found.SameTournament(whole))
+                {
+                    return Refuse(console, $"{file}: holds another tournament ({found.Difference(whole)}); use another --out or delete it");
+                }
+            }
+
+            foreach (string file in o.Merge.Where(f => !File.Exists(f)))
+            {
+                return Refuse(console, $"--merge: {file} does not exist");
+            }
+        }
+        catch (ResultFileException e)
+        {
+            return Refuse(console, e.Message);
+        }
+
+        try
+        {
+            Directory.CreateDirectory(o.Results is null ? folder : Path.GetDirectoryName(Path.GetFullPath(results))!);
+            if (o.Replays && o.Results is null)
+            {
+                Directory.CreateDirectory(Path.Combine(folder, TournamentOutputs.Replays));
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return Refuse(console, $"--out: cannot create {o.Out} ({e.Message})");
+        }
+
+        return Play(o, header, schedule, folder, results, console);
+    }
+
+    private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, CliConsole console)
+    {
+        var errors = o.Entrants.Select(EntrantLoader.Check).ToArray();
+        for (int i = 0; i < errors.Length; i++)
+        {
+            if (errors[i] is { } error)
+            {
+                console.ErrorLine($"tournament: entrant {o.Entrants[i].Name} cannot be loaded and forfeits its matches: {error}");
+            }
+        }
+
+        var (kept, dropped) = TournamentResume.Gather(header, schedule, o.Merge.Prepend(results), errors);
+        string? replays = o.Replays ? folder : null;
+        var toPlay = schedule.Matches
+            .Where(m => m.Index % header.ShardCount == header.ShardIndex)
+            .Where(m => !kept.TryGetValue(m.Index, out var r) || (replays is not null && !r.IsForfeit && !File.Exists(TournamentOutputs.ReplayPage(replays, m.Index))))
+            .ToList();
+        foreach (var m in toPlay)
+        {
+            kept.Remove(m.Index);
+        }
+
+        int inShard = schedule.Matches.Count(m => m.Index % header.ShardCount == header.ShardIndex);
+        string share = header.ShardCount > 1 ? string.Create(CultureInfo.InvariantCulture, $" (shard {header.ShardIndex}/{header.ShardCount}: {inShard})") : string.Empty;
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture,
+            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, {Plural(header.Matches, "match")}{share}; {toPlay.Count} to play, {inShard - toPlay.Count} already there{(dropped > 0 ? $", {dropped} broken lines dropped" : string.Empty)}\n"));
+
+        // What is already there is rewritten whole (dropping broken lines), then each finished match is appended.
+        TournamentFile.Write(results, header, kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex));
+        var runner = new TournamentRunner(o.Item, header, errors, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
+        int threads = o.Threads ?? Environment.ProcessorCount;
+        bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
+        var clock = Stopwatch.StartNew();
+        var progress = interactive ? new ProgressBar(console.Out, toPlay.Count, "match", clock) : null;
+        var failures = new List<string>();
+        int done = 0, quarter = 0;
+        using (var append = new FileStream(results, FileMode.Append, FileAccess.Write, FileShare.Read))
+        {
+            runner.Run(toPlay, threads, (m, record, failure) =>
+            {
+                done++;
+                if (record is not null)
+                {
+                    kept[m.Index] = record;
+                    TournamentFile.WriteRecord(append, record);
+                    append.Flush();
+                }
+                else
+                {
+                    failures.Add(string.Create(CultureInfo.InvariantCulture, $"match {m.Index}: {failure}"));
+                }
+
+                progress?.Update(done);
+                if (progress is null && header.ShardCount == 1 && done * 4 / toPlay.Count > quarter)
+                {
+                    quarter = done * 4 / toPlay.Count;
+                    console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"played {done}/{toPlay.Count} matches\n"));
+                }
+            });
+        }
+
+        clock.Stop();
+        progress?.Clear();
+        var mine = kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex).ToList();
+        if (header.ShardCount > 1)
+        {
+            TournamentFile.Write(results, header, mine);
+            console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"shard {header.ShardIndex}/{header.ShardCount} finished: {mine.Count} of {inShard} matches in {results}\n"));
+        }
+        else
+        {
+            var standings = Standings.Compute(header, o.Item.TeamCount, mine, errors);
+            TournamentOutputs.Write(folder, standings, mine);
+            console.Out.Write(StandingsLines(standings));
+            console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
+        }
+
+        double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
+        double simulated = toPlay.Count * header.Cycles * 0.1;
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {toPlay.Count / seconds:0.00} matches/s, {simulated / seconds:0}x real time\n"));
+        foreach (string f in failures.Take(5))
+        {
+            console.ErrorLine("tournament: " + f);
+        }
+
+        if (failures.Count > 0)
+        {
+            console.ErrorLine($"tournament: {failures.Count} matches failed inside the server and have no result; run the same command again to play them");
+            return ExitCodes.InternalError;
+        }
+
+        return ExitCodes.Success;
+    }
+
+    // The standings in a few lines for the terminal.
+    private static string StandingsLines(Standings s)
+    {
+        var t = new System.Text.StringBuilder();
+        int width = Math.Max(7, s.Rows.Max(r => r.Name.Length));
+        bool one = s.Teams == 1;
+        t.Append(string.Create(CultureInfo.InvariantCulture, $"{"rank",4}  {"entrant".PadRight(width)}  {(one ? "score" : "rating"),8}  {"95 % interval",-21}  {(one ? "played" : "W-D-L"),-11}  overlaps\n"));
+        foreach (var r in s.Rows)
+        {
+            string record = one ? r.Played.ToString(CultureInfo.InvariantCulture) : string.Create(CultureInfo.InvariantCulture, $"{r.Wins}-{r.Draws}-{r.Losses}");
+            t.Append(string.Create(CultureInfo.InvariantCulture, $"{r.Rank,4}  {r.Name.PadRight(width)}  {StandingsText.Value(s, r.Rating),8}  {StandingsText.Interval(s, r.Interval),-21}  {record,-11}  {StandingsText.Overlaps(r)}{(r.Error is null ? string.Empty : "  (not loaded)")}\n"));
+        }
+
+        if (StandingsText.Ties(s) is { } ties)
+        {
+            t.Append(ties).Append('\n');
+        }
+
+        return t.ToString();
+    }
+
+    // --slurm SDIR: the shards still to play (their files in SDIR missing or incomplete), as a job array and a merge job.
+    private static int Slurm(TournamentOptions o, TournamentHeader whole, TournamentSchedule schedule, CliConsole console)
+    {
+        string jobs;
+        try
+        {
+            jobs = Path.TrimEndingDirectorySeparator(Path.GetFullPath(o.Slurm!));
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+            return Refuse(console, $"--slurm: not a usable path ({e.Message})");
+        }
+
+        if (File.Exists(jobs))
+        {
+            return Refuse(console, $"--slurm: {o.Slurm} is a file, not a folder");
+        }
+
+        if (o.Submit && (SlurmRun.OnPath("sbatch") is null || SlurmRun.OnPath("bash") is null))
+        {
+            return Refuse(console, "--submit: sbatch (or bash) is not on PATH; submit from a Slurm login node, or leave out --submit and run submit.sh there");
+        }
+
+        int shards = Math.Min(o.SlurmShards ?? SlurmJob.DefaultShards(schedule.Matches.Count), schedule.Matches.Count);
+        var toPlay = new List<int>();
+        try
+        {
+            for (int i = 0; i < shards; i++)
+            {
+                if (!TournamentShards.Complete(Path.Combine(jobs, ShardResults.FileName(i)), whole, schedule, i, shards))
+                {
+                    toPlay.Add(i);
+                }
+            }
+
+            string results = Path.Combine(Path.GetFullPath(o.Out), TournamentOutputs.Results);
+            if (File.Exists(results) && TournamentFile.Read(results).Header is var found && !found.SameTournament(whole))
+            {
+                return Refuse(console, $"{results}: holds another tournament ({found.Difference(whole)}); use another --out or delete it");
+            }
+        }
+        catch (ResultFileException e)
+        {
+            return Refuse(console, e.Message);
+        }
+
+        var server = ServerCommand.OfThisProcess();
+        var job = new SlurmJob(
+            server, o.PassedOn, Environment.CurrentDirectory, jobs, Path.Combine(Path.GetFullPath(o.Out), TournamentOutputs.Results), shards, toPlay,
+            o.Threads ?? 1, o.Threads is not null, o.Partition, o.TimeLimit, "tournament", ["tournament", .. o.PassedOn, "--merge"]);
+        return SlurmRun.WriteJobs(job, schedule.Matches.Count, o.Submit, console, "tournament");
+    }
+
+    private static string Plural(int count, string noun) =>
+        string.Create(CultureInfo.InvariantCulture, $"{count} {noun}{(count == 1 ? string.Empty : noun.EndsWith('h') ? "es" : "s")}");
+
+    private static int Refuse(CliConsole console, string message)
+    {
+        console.ErrorLine("tournament: " + message);
+        return ExitCodes.BadInput;
+    }
+
+    private static string HelpText() =>
+        $"Usage: {CliApp.ProgramName} {TournamentOptions.Usage}\n\n" +
+        "Plays a tournament of a competition item between the entrants (NAME=SPEC: SPEC is demo, the item's demo\n" +
+        "strategy, a built-in (idle, chase-ball), a .dll, a .cs file or a folder of .cs files). Two-team items: every\n" +
+        "ordered pair of entrants (both sides of the field) on each of --seeds N seeds (default 4) from --seed S\n" +
+        "(default 1); one-team items: every entrant on each seed. --minutes 10|5|3|1 (default 10) or --cycles N sets\n" +
+        "the length; --threads P plays P matches at once (default: every core). Writes into --out DIR: results.jsonl\n" +
+        "(the batch format plus the entrants), standings.json, standings.md and report.html (--replays: and every\n" +
+        "match's replay page in replays/). Run again into the same DIR, it plays only missing or broken matches.\n" +
+        "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
+        "intervals; one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
+        "--slurm SDIR writes the tournament as a Slurm job array of --shards K tasks (--shard I/K --results FILE each)\n" +
+        "and a merge job (--merge FILE...) into SDIR (--partition, --time); --submit submits them.\n" +
+        "Formats: docs/tournament.md.\n";
+}

@@ -1,0 +1,310 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Tournament;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>The parsed arguments of <c>tournament</c>; every check that needs no file but the entrants' is made here.</summary>
+internal sealed class TournamentOptions
+{
+    /// <summary>The command's synopsis in the program's help.</summary>
+    public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
+
+    /// <summary>The command's full usage.</summary>
+    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+
+    /// <summary>Most entrants.</summary>
+    public const int MaximumEntrants = 1000;
+
+    /// <summary>Longest entrant name.</summary>
+    public const int MaximumName = 64;
+
+    /// <summary>The item.</summary>
+    public CompetitionItem Item { get; private set; } = null!;
+
+    /// <summary>The entrants, in command-line order.</summary>
+    public List<Entrant> Entrants { get; } = [];
+
+    /// <summary>Seeds per pairing (default 4).</summary>
+    public int Seeds { get; private set; } = 4;
+
+    /// <summary>The first seed (default 1).</summary>
+    public ulong FirstSeed { get; private set; } = 1;
+
+    /// <summary>Cycles per match (<c>--minutes</c> × 600 or <c>--cycles</c>; default 10 minutes).</summary>
+    public int Cycles { get; private set; } = 6000;
+
+    /// <summary>Strategies' time limit per call, ms.</summary>
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+
+    /// <summary>Matches at once, or null for every core.</summary>
+    public int? Threads { get; private set; }
+
+    /// <summary>Whether to write every match's replay page.</summary>
+    public bool Replays { get; private set; }
+
+    /// <summary>The output folder.</summary>
+    public string Out { get; private set; } = null!;
+
+    /// <summary>The Slurm jobs' folder, or null.</summary>
+    public string? Slurm { get; private set; }
+
+    /// <summary>Shards of the Slurm job array, or null for the default.</summary>
+    public int? SlurmShards { get; private set; }
+
+    /// <summary>Slurm partition, or null.</summary>
+    public string? Partition { get; private set; }
+
+    /// <summary>Slurm time limit, or null.</summary>
+    public string? TimeLimit { get; private set; }
+
+    /// <summary>Whether to submit the Slurm jobs.</summary>
+    public bool Submit { get; private set; }
+
+    /// <summary>This process's shard index (with <c>--shard I/K</c>).</summary>
+    public int ShardIndex { get; private set; }
+
+    /// <summary>Shards (1: the whole tournament).</summary>
+    public int ShardCount { get; private set; } = 1;
+
+    /// <summary>The shard's result file (with <c>--shard</c>).</summary>
+    public string? Results { get; private set; }
+
+    /// <summary>Shard result files to gather (<c>--merge FILE...</c>).</summary>
+    public List<string> Merge { get; } = [];
+
+    /// <summary>The arguments but the Slurm options' own and <c>--merge</c>'s: what the Slurm tasks pass on.</summary>
+    public IReadOnlyList<string> PassedOn { get; private set; } = [];
+
+    /// <summary>Whether --help was given.</summary>
+    public bool Help { get; private set; }
+
+    /// <summary>Parses the arguments after <c>tournament</c>.</summary>
+    public static TournamentOptions Parse(ReadOnlySpan<string> args)
+    {
+        var o = new TournamentOptions();
+        var seen = new HashSet<string>(StringComparer.Ordinal);
+        var passedOn = new List<string>();
+        for (int i = 0; i < args.Length; i++)
+        {
+            string name = args[i];
+            if (CliApp.IsHelp(name))
+            {
+                o.Help = true;
+                return o;
+            }
+
+            if (name == "--merge")
+            {
+                if (!seen.Add(name))
+                {
+                    throw UsageError("--merge given twice");
+                }
+
+                for (i++; i < args.Length; i++)
+                {
+                    o.Merge.Add(args[i].Length > 0 ? args[i] : throw UsageError("--merge needs result files, got \"\""));
+                }
+
+                if (o.Merge.Count == 0)
+                {
+                    throw UsageError("--merge needs at least one result file");
+                }
+
+                break;
+            }
+
+            if (name is "--replays" or "--submit")
+            {
+                if (!seen.Add(name))
+                {
+                    throw UsageError($"{name} given twice");
+                }
+
+                o.Replays |= name == "--replays";
+                o.Submit |= name == "--submit";
+                if (name == "--replays")
+                {
+                    passedOn.Add(name);
+                }
+
+                continue;
+            }
+
+            if (!name.StartsWith("--", StringComparison.Ordinal))
+            {
+                throw UsageError($"unexpected argument {CliText.Quote(name)}");
+            }
+
+            if (i + 1 >= args.Length)
+            {
+                throw UsageError($"{name} needs a value");
+            }
+
+            string value = args[++i];
+            if (name != "--entrant" && !seen.Add(name))
+            {
+                throw UsageError($"{name} given twice");
+            }
+
+            if (name is not ("--slurm" or "--shards" or "--partition" or "--time" or "--shard" or "--results"))
+            {
+                passedOn.Add(name);
+                passedOn.Add(value);
+            }
+
+            switch (name)
+            {
+                case "--item":
+                    o.Item = ItemRegistry.Find(value) ?? throw UsageError($"--item must be one of {string.Join(", ", ItemSlugs())} (or the original's name), got {CliText.Quote(value)}");
+                    break;
+                case "--entrant": o.Entrants.Add(ParseEntrant(value)); break;
+                case "--seeds": o.Seeds = (int)Number(name, value, 1, 100_000); break;
+                case "--seed": o.FirstSeed = (ulong)Number(name, value, 0, long.MaxValue); break;
+                case "--minutes":
+                    o.Cycles = value switch { "10" => 6000, "5" => 3000, "3" => 1800, "1" => 600, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {CliText.Quote(value)}") };
+                    break;
+                case "--cycles": o.Cycles = (int)Number(name, value, 1, 1_000_000); break;
+                case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
+                case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
+                case "--out": o.Out = value.Length > 0 ? value : throw UsageError("--out needs a folder, got \"\""); break;
+                case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;
+                case "--shards": o.SlurmShards = (int)Number(name, value, 1, SlurmJob.MaximumShards); break;
+                case "--partition": o.Partition = SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {CliText.Quote(value)}"); break;
+                case "--time": o.TimeLimit = SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {CliText.Quote(value)}"); break;
+                case "--shard": o.ParseShard(value); break;
+                case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
+                default: throw UsageError($"unknown option {CliText.Quote(name)}");
+            }
+        }
+
+        o.PassedOn = passedOn;
+        o.Check(seen);
+        return o;
+    }
+
+    private void Check(HashSet<string> seen)
+    {
+        if (Item is null)
+        {
+            throw UsageError("--item ITEM is required (the item the entrants play)");
+        }
+
+        if (Out is null)
+        {
+            throw UsageError("--out DIR is required (the folder of the results, standings and report)");
+        }
+
+        if (seen.Contains("--minutes") && seen.Contains("--cycles"))
+        {
+            throw UsageError("--minutes and --cycles both set the length; give one");
+        }
+
+        int least = Item.TeamCount >= 2 ? 2 : 1;
+        if (Entrants.Count < least)
+        {
+            throw UsageError($"--entrant: {Item.Slug} is a {Item.TeamCount}-team item and needs at least {least} entrants, got {Entrants.Count}");
+        }
+
+        if (Entrants.Count > MaximumEntrants)
+        {
+            throw UsageError($"--entrant: at most {MaximumEntrants} entrants, got {Entrants.Count}");
+        }
+
+        var names = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var e in Entrants)
+        {
+            if (!names.Add(e.Name))
+            {
+                throw UsageError($"--entrant: the name {CliText.Quote(e.Name)} is given twice (names must differ)");
+            }
+        }
+
+        if ((ShardCount > 1 || seen.Contains("--shard")) != (Results is not null))
+        {
+            throw UsageError("--shard I/K and --results FILE go together (a Slurm task's share of the tournament)");
+        }
+
+        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit))
+        {
+            throw UsageError("--shards, --partition, --time and --submit belong to --slurm SDIR");
+        }
+
+        if (Slurm is not null && (Results is not null || Merge.Count > 0))
+        {
+            throw UsageError("--slurm writes the jobs; --shard, --results and --merge are what its jobs run, not options of it");
+        }
+
+        if (Results is not null && Merge.Count > 0)
+        {
+            throw UsageError("--merge gathers shards into --out DIR; it does not go with --shard");
+        }
+    }
+
+    // NAME=SPEC: a name of printable characters without '=', and a SPEC that names something.
+    private static Entrant ParseEntrant(string value)
+    {
+        int eq = value.IndexOf('=', StringComparison.Ordinal);
+        if (eq <= 0 || eq == value.Length - 1)
+        {
+            throw UsageError($"--entrant must be NAME=SPEC (e.g. mine=strategies/Mine.cs, or rival=demo), got {CliText.Quote(value)}");
+        }
+
+        string name = value[..eq], spec = value[(eq + 1)..];
+        if (name.Length > MaximumName || name.AsSpan().IndexOfAnyInRange('\0', '\u001f') >= 0 || name.Contains('\u007f', StringComparison.Ordinal) || name.Trim() != name)
+        {
+            throw UsageError($"--entrant: a name must be 1-{MaximumName} printable characters without spaces at its ends, got {CliText.Quote(name)}");
+        }
+
+        if (spec == Entrant.Demo || StrategyResolver.BuiltInNames.Contains(spec))
+        {
+            return new Entrant(name, spec);
+        }
+
+        int hash = spec.LastIndexOf('#');
+        string path = hash > 0 ? spec[..hash] : spec;
+        bool exists = File.Exists(path) || Directory.Exists(path) || File.Exists(spec) || Directory.Exists(spec);
+        if (!exists)
+        {
+            throw UsageError($"--entrant {name}: {CliText.Quote(spec)} is not demo, a built-in strategy ({string.Join(", ", StrategyResolver.BuiltInNames)}), or an existing .dll, .cs file or folder");
+        }
+
+        return new Entrant(name, spec);
+    }
+
+    private void ParseShard(string value)
+    {
+        int slash = value.IndexOf('/', StringComparison.Ordinal);
+        if (slash <= 0
+            || !int.TryParse(value.AsSpan(0, slash), NumberStyles.None, CultureInfo.InvariantCulture, out int index)
+            || !int.TryParse(value.AsSpan(slash + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int count)
+            || count < 1 || index >= count || count > SlurmJob.MaximumShards)
+        {
+            throw UsageError($"--shard must be I/K with 0 <= I < K <= {SlurmJob.MaximumShards} (e.g. 0/4), got {CliText.Quote(value)}");
+        }
+
+        ShardIndex = index;
+        ShardCount = count;
+    }
+
+    private static IEnumerable<string> ItemSlugs()
+    {
+        foreach (var item in ItemRegistry.All)
+        {
+            yield return item.Slug;
+        }
+    }
+
+    private static long Number(string name, string value, long min, long max) =>
+        long.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out long n) && n >= min && n <= max
+            ? n
+            : throw UsageError($"{name} must be an integer {min}..{max}, got {CliText.Quote(value)}");
+
+    private static CliUsageException UsageError(string message) => new("tournament: " + message, CliApp.ProgramName + " " + Usage);
+}

@@ -1,0 +1,171 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Linq;
+using System.Net;
+using System.Text;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>
+/// DIR/report.html: one self-contained page (no script, no outside file but the replay pages it
+/// links to): the standings, their intervals as an inline SVG plot, the win/draw/loss matrix
+/// (two-team items), and every match with its entrants, score, winner and deciding rule, linked to
+/// its replay page (<c>replays/match-J.html</c>) when that page exists.
+/// </summary>
+internal static class ReportPage
+{
+    /// <summary>The page's text.</summary>
+    /// <param name="s">The standings.</param>
+    /// <param name="hasReplay">Whether match J's replay page exists.</param>
+    public static string Format(Standings s, Func<int, bool> hasReplay)
+    {
+        var h = new StringBuilder();
+        string title = "Tournament: " + s.Header.Item;
+        h.Append("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>").Append(E(title)).Append("</title>\n");
+        h.Append("<style>body{font-family:system-ui,sans-serif;margin:2em;color:#222}table{border-collapse:collapse;margin:1em 0}")
+            .Append("th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}th{background:#f3f3f3}td.l,th.l{text-align:left}")
+            .Append(".err{color:#a00}.note{color:#555}</style>\n</head>\n<body>\n");
+        h.Append("<h1>").Append(E(title)).Append("</h1>\n<p>")
+            .Append(Inv($"{s.Records.Count} matches, {s.Header.Entrants.Count} entrants, {s.Header.Seeds} seeds from {s.Header.FirstSeed}, {s.Header.Cycles} cycles each. "))
+            .Append(E(StandingsText.Method(s))).Append("</p>\n");
+        Table(h, s);
+        if (StandingsText.Ties(s) is { } ties)
+        {
+            h.Append("<p class=\"note\">").Append(E(ties)).Append("</p>\n");
+        }
+
+        h.Append("<h2>Intervals</h2>\n");
+        Plot(h, s);
+        if (s.Teams == 2)
+        {
+            h.Append("<h2>Wins, draws and losses</h2>\n<p class=\"note\">Row against column, both sides of the field together.</p>\n");
+            Matrix(h, s);
+        }
+
+        h.Append("<h2>Matches</h2>\n");
+        Matches(h, s, hasReplay);
+        h.Append("</body>\n</html>\n");
+        return h.ToString();
+    }
+
+    private static void Table(StringBuilder h, Standings s)
+    {
+        bool one = s.Teams == 1;
+        h.Append("<table>\n<tr><th>Rank</th><th class=\"l\">Entrant</th><th>").Append(one ? "Mean score" : "Rating").Append("</th><th>95 % interval</th><th>Played</th>")
+            .Append(one ? "<th>Mean length (s)</th>" : "<th>Wins</th><th>Draws</th><th>Losses</th>").Append("<th>Overlaps ranks</th></tr>\n");
+        foreach (var r in s.Rows)
+        {
+            h.Append(Inv($"<tr><td>{r.Rank}</td><td class=\"l\">")).Append(E(r.Name));
+            if (r.Error is not null)
+            {
+                h.Append("<br><span class=\"err\">not loaded: ").Append(E(StandingsText.Line(r.Error))).Append("</span>");
+            }
+
+            h.Append("</td><td>").Append(StandingsText.Value(s, r.Rating)).Append("</td><td>").Append(StandingsText.Interval(s, r.Interval))
+                .Append(Inv($"</td><td>{r.Played}</td>"));
+            h.Append(one ? Inv($"<td>{StandingsJson.Round(r.Seconds, 1):0.0}</td>") : Inv($"<td>{r.Wins}</td><td>{r.Draws}</td><td>{r.Losses}</td>"));
+            h.Append("<td>").Append(StandingsText.Overlaps(r)).Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // One row per entrant by rank: its interval as a bar, its rating as a dot, on a common axis.
+    private static void Plot(StringBuilder h, Standings s)
+    {
+        const int left = 160, width = 480, row = 24, top = 10;
+        double lo = s.Rows.Min(r => Math.Min(r.Interval.Low, r.Rating));
+        double hi = s.Rows.Max(r => Math.Max(r.Interval.High, r.Rating));
+        if (hi - lo < 1e-9)
+        {
+            lo -= 1;
+            hi += 1;
+        }
+
+        double pad = (hi - lo) * 0.05;
+        lo -= pad;
+        hi += pad;
+        double X(double v) => left + ((v - lo) / (hi - lo) * width);
+        int height = top + (row * s.Rows.Count) + 30;
+        h.Append(Inv($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{left + width + 20}\" height=\"{height}\" role=\"img\" aria-label=\"95 % intervals\" font-size=\"12\">\n"));
+        for (int k = 0; k < s.Rows.Count; k++)
+        {
+            var r = s.Rows[k];
+            double y = top + (row * k) + (row / 2.0);
+            h.Append(Inv($"<text x=\"{left - 8}\" y=\"{y + 4:0.#}\" text-anchor=\"end\">{r.Rank}. ")).Append(E(r.Name)).Append("</text>\n");
+            h.Append(Inv($"<line x1=\"{X(r.Interval.Low):0.#}\" y1=\"{y:0.#}\" x2=\"{X(r.Interval.High):0.#}\" y2=\"{y:0.#}\" stroke=\"#369\" stroke-width=\"3\"/>"));
+            h.Append(Inv($"<circle cx=\"{X(r.Rating):0.#}\" cy=\"{y:0.#}\" r=\"4\" fill=\"#c33\"><title>")).Append(E(r.Name)).Append(": ")
+                .Append(StandingsText.Value(s, r.Rating)).Append(" (").Append(StandingsText.Interval(s, r.Interval)).Append(")</title></circle>\n");
+        }
+
+        double axis = top + (row * s.Rows.Count) + 4;
+        h.Append(Inv($"<line x1=\"{left}\" y1=\"{axis:0.#}\" x2=\"{left + width}\" y2=\"{axis:0.#}\" stroke=\"#888\"/>\n"));
+        for (int t = 0; t <= 4; t++)
+        {
+            double v = lo + ((hi - lo) * t / 4);
+            h.Append(Inv($"<text x=\"{X(v):0.#}\" y=\"{axis + 16:0.#}\" text-anchor=\"middle\">{StandingsText.Value(s, v)}</text>\n"));
+        }
+
+        h.Append("</svg>\n");
+    }
+
+    private static void Matrix(StringBuilder h, Standings s)
+    {
+        h.Append("<table>\n<tr><th></th>");
+        foreach (var c in s.Rows)
+        {
+            h.Append("<th>").Append(E(c.Name)).Append("</th>");
+        }
+
+        h.Append("</tr>\n");
+        foreach (var r in s.Rows)
+        {
+            h.Append("<tr><th class=\"l\">").Append(E(r.Name)).Append("</th>");
+            foreach (var c in s.Rows)
+            {
+                var x = s.Wdl[r.Entrant, c.Entrant];
+                h.Append(r.Entrant == c.Entrant ? "<td>-</td>" : Inv($"<td>{x.W}-{x.D}-{x.L}</td>"));
+            }
+
+            h.Append("</tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    private static void Matches(StringBuilder h, Standings s, Func<int, bool> hasReplay)
+    {
+        var teams = Enumerable.Range(0, s.Teams).Select(t => Inv($"<th class=\"l\">Team {t}</th>"));
+        h.Append("<table>\n<tr><th>Match</th><th>Seed</th>").Append(string.Concat(teams)).Append("<th>Score</th><th class=\"l\">Result</th><th>Replay</th></tr>\n");
+        foreach (var m in s.Records)
+        {
+            h.Append(Inv($"<tr><td>{m.Index}</td><td>{m.Seed}</td>"));
+            foreach (string name in m.Entrants)
+            {
+                h.Append("<td class=\"l\">").Append(E(name)).Append("</td>");
+            }
+
+            if (m.Result is { } r)
+            {
+                string score = string.Join(" : ", (r.Scores ?? [r.Goals0, r.Goals1]).Select(x => x.ToString(CultureInfo.InvariantCulture)));
+                string result = r.Winner >= 0 && r.Winner < m.Entrants.Count ? m.Entrants[r.Winner] + " wins: " + r.Rule : r.Rule ?? "no winner";
+                h.Append("<td>").Append(score).Append("</td><td class=\"l\">").Append(E(result)).Append("</td><td>");
+                h.Append(hasReplay(m.Index) ? Inv($"<a href=\"replays/match-{m.Index}.html\">replay</a>") : "-");
+            }
+            else
+            {
+                var who = m.Forfeits.Select(t => m.Entrants[t]);
+                h.Append("<td>-</td><td class=\"l err\">forfeit: ").Append(E(string.Join(", ", who))).Append(" not loaded</td><td>-");
+            }
+
+            h.Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    private static string E(string text) => WebUtility.HtmlEncode(text);
+
+    private static string Inv(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}

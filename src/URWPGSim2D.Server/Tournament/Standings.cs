@@ -1,0 +1,163 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>
+/// The standings of a tournament, computed from its records alone (so a tournament and the merge
+/// of its shards give the same standings): for a two-team item the <see cref="PairRatings"/>, for
+/// a one-team item the <see cref="ScoreRatings"/>; ranks follow the rating (two-team) or the mean
+/// score, then the shorter mean match (one-team), then the name; each line names the other ranks
+/// whose interval overlaps its own (their order is not settled by the results).
+/// </summary>
+/// <param name="Header">The tournament.</param>
+/// <param name="Teams">Teams per match of its item.</param>
+/// <param name="Records">Its records (one per scheduled match at most, any order).</param>
+/// <param name="Rows">The lines, by rank.</param>
+/// <param name="Wdl">Two-team items: [i, j] = (wins, draws, losses) of entrant i against j, both sides together.</param>
+internal sealed record Standings(
+    TournamentHeader Header, int Teams, IReadOnlyList<TournamentRecord> Records, IReadOnlyList<StandingsRow> Rows, (int W, int D, int L)[,] Wdl)
+{
+    /// <summary>Computes the standings.</summary>
+    /// <param name="header">The tournament.</param>
+    /// <param name="teams">Teams per match (1 or 2).</param>
+    /// <param name="records">Its records.</param>
+    /// <param name="errors">Per entrant, why it could not be loaded in this run, or null (then the reason its forfeit records give).</param>
+    /// <param name="replicates">Bootstrap replicates.</param>
+    public static Standings Compute(TournamentHeader header, int teams, IEnumerable<TournamentRecord> records, IReadOnlyList<string?>? errors = null, int replicates = PairRatings.Replicates)
+    {
+        var sorted = records.OrderBy(r => r.Index).ToList();
+        int n = header.Entrants.Count;
+        var index = new Dictionary<string, int>(StringComparer.Ordinal);
+        for (int i = 0; i < n; i++)
+        {
+            index[header.Entrants[i].Name] = i;
+        }
+
+        var error = new string?[n];
+        for (int i = 0; i < n && errors is not null; i++)
+        {
+            error[i] = errors[i]; // this run's reason first: the freshest
+        }
+
+        foreach (var r in sorted)
+        {
+            for (int k = 0; k < r.Forfeits.Count; k++)
+            {
+                int e = index[r.Entrants[r.Forfeits[k]]];
+                error[e] ??= r.Reasons[k];
+            }
+        }
+
+        var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : TwoTeam(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);
+        return new Standings(header, teams, sorted, Ranked(rows, teams), wdl);
+    }
+
+    // Sorted by rank; each row told which others overlap it.
+    private static List<StandingsRow> Ranked(List<StandingsRow> rows, int teams)
+    {
+        var order = rows
+            .OrderByDescending(r => r.Rating)
+            .ThenBy(r => teams == 1 ? r.Seconds : 0)
+            .ThenBy(r => r.Name, StringComparer.Ordinal)
+            .ToList();
+        var ranked = new List<StandingsRow>(order.Count);
+        for (int k = 0; k < order.Count; k++)
+        {
+            var overlapping = new List<int>();
+            for (int m = 0; m < order.Count; m++)
+            {
+                if (m != k && order[m].Interval.Overlaps(order[k].Interval))
+                {
+                    overlapping.Add(m + 1);
+                }
+            }
+
+            ranked.Add(order[k] with { Rank = k + 1, Overlapping = overlapping });
+        }
+
+        return ranked;
+    }
+
+    private static List<StandingsRow> TwoTeam(List<TournamentRecord> records, string[] names, Dictionary<string, int> index, string?[] error, int replicates, out (int W, int D, int L)[,] wdl)
+    {
+        int n = names.Length;
+        var games = new List<Game>(records.Count);
+        var table = new (int W, int D, int L)[n, n];
+        foreach (var r in records)
+        {
+            int a = index[r.Entrants[0]], b = index[r.Entrants[1]];
+            double score;
+            if (r.Result is { } result)
+            {
+                score = result.Winner == 0 ? 1 : result.Winner == 1 ? 0 : 0.5;
+            }
+            else if (r.Forfeits.Count == 1)
+            {
+                score = r.Forfeits[0] == 0 ? 0 : 1; // the team that could not play loses
+            }
+            else
+            {
+                continue; // both forfeit: not a game
+            }
+
+            games.Add(new Game(a, b, score));
+            Count(table, a, b, score);
+            Count(table, b, a, 1 - score);
+        }
+
+        wdl = table;
+        var (ratings, intervals) = PairRatings.Compute(n, games, replicates);
+        var rows = new List<StandingsRow>(n);
+        for (int i = 0; i < n; i++)
+        {
+            int w = 0, d = 0, l = 0;
+            for (int j = 0; j < n; j++)
+            {
+                w += table[i, j].W;
+                d += table[i, j].D;
+                l += table[i, j].L;
+            }
+
+            rows.Add(new StandingsRow(i, names[i], 0, ratings[i], intervals[i], w + d + l, w, d, l, 0, error[i], []));
+        }
+
+        return rows;
+    }
+
+    private static void Count((int W, int D, int L)[,] table, int i, int j, double score)
+    {
+        var c = table[i, j];
+        table[i, j] = score == 1 ? (c.W + 1, c.D, c.L) : score == 0 ? (c.W, c.D, c.L + 1) : (c.W, c.D + 1, c.L);
+    }
+
+    private static List<StandingsRow> OneTeam(TournamentHeader header, List<TournamentRecord> records, Dictionary<string, int> index, string?[] error, int replicates, out (int W, int D, int L)[,] wdl)
+    {
+        int n = header.Entrants.Count;
+        var matches = new List<(double, int)>[n];
+        for (int i = 0; i < n; i++)
+        {
+            matches[i] = [];
+        }
+
+        foreach (var r in records)
+        {
+            int e = index[r.Entrants[0]];
+            matches[e].Add(r.Result is { } result ? (result.Scores is { Length: > 0 } s ? s[0] : result.Goals0, result.Cycles) : (0, header.Cycles));
+        }
+
+        wdl = new (int, int, int)[0, 0];
+        var random = new SplitMix64(PairRatings.Seed);
+        var rows = new List<StandingsRow>(n);
+        for (int i = 0; i < n; i++)
+        {
+            var (score, interval, cycles) = matches[i].Count == 0
+                ? (0, new Interval(0, 0), 0)
+                : ScoreRatings.Compute(matches[i], ref random, replicates);
+            rows.Add(new StandingsRow(i, header.Entrants[i].Name, 0, score, interval, matches[i].Count, 0, 0, 0, cycles / 10, error[i], []));
+        }
+
+        return rows;
+    }
+}

@@ -1,0 +1,57 @@
+using System;
+using System.Globalization;
+using System.Text;
+using System.Text.Encodings.Web;
+using System.Text.Json;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>
+/// DIR/standings.json: <c>{"item": …, "matches": N, "entrants": [{"name", "rank", "rating", "ci": [lo, hi],
+/// "played", "wins", "draws", "losses"}, …]}</c> sorted by rank, one entrant a line; for a one-team
+/// item each entrant has <c>"score"</c> (the mean score), <c>"ci"</c> (its interval), <c>"played"</c>
+/// and <c>"seconds"</c> (the mean match length, the time tie-break) instead of the rating and wins,
+/// draws and losses. An entrant that could not be loaded has <c>"error"</c>, its one-line reason, at
+/// the end. Ratings and their intervals are rounded to 0.1, scores to 0.001, seconds to 0.1.
+/// </summary>
+internal static class StandingsJson
+{
+    /// <summary>The file's text.</summary>
+    public static string Format(Standings standings)
+    {
+        var t = new StringBuilder();
+        t.Append("{\n  \"item\": ").Append(Text(standings.Header.Item))
+            .Append(",\n  \"matches\": ").Append(standings.Records.Count.ToString(CultureInfo.InvariantCulture))
+            .Append(",\n  \"entrants\": [\n");
+        bool one = standings.Teams == 1;
+        int digits = one ? 3 : 1;
+        for (int k = 0; k < standings.Rows.Count; k++)
+        {
+            var r = standings.Rows[k];
+            t.Append("    {\"name\": ").Append(Text(r.Name)).Append(Inv($", \"rank\": {r.Rank}, "))
+                .Append(one ? "\"score\": " : "\"rating\": ").Append(Number(r.Rating, digits))
+                .Append(", \"ci\": [").Append(Number(r.Interval.Low, digits)).Append(", ").Append(Number(r.Interval.High, digits)).Append(']')
+                .Append(Inv($", \"played\": {r.Played}"));
+            t.Append(one ? ", \"seconds\": " + Number(r.Seconds, 1) : Inv($", \"wins\": {r.Wins}, \"draws\": {r.Draws}, \"losses\": {r.Losses}"));
+            if (r.Error is not null)
+            {
+                t.Append(", \"error\": ").Append(Text(r.Error));
+            }
+
+            t.Append(k + 1 < standings.Rows.Count ? "},\n" : "}\n");
+        }
+
+        t.Append("  ]\n}\n");
+        return t.ToString();
+    }
+
+    /// <summary>Rounded half away from zero, −0 as 0.</summary>
+    public static double Round(double value, int digits) => Math.Round(value, digits, MidpointRounding.AwayFromZero) + 0.0;
+
+    // The shortest text that reads back as the rounded value (1500, 1523.4, 0.125).
+    private static string Number(double value, int digits) => Round(value, digits).ToString("R", CultureInfo.InvariantCulture);
+
+    private static string Text(string value) => JsonSerializer.Serialize(value, TournamentJsonContext.Default.String);
+
+    private static string Inv(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}

@@ -1,0 +1,52 @@
+using System;
+using System.Globalization;
+using System.Linq;
+using System.Text;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>How the standings' numbers and notes are written in DIR/standings.md and the report.</summary>
+internal static class StandingsText
+{
+    /// <summary>The model in one sentence.</summary>
+    public static string Method(Standings s) => s.Teams == 1
+        ? "Mean score per match (ties: the shorter mean match); 95 % intervals by a bootstrap over each entrant's matches (1,000 replicates, fixed seed)."
+        : "Bradley-Terry ratings by maximum likelihood (a draw counts half a win; one virtual draw against a 1500 opponent each) on the Elo scale, 400 points = odds of 10 to 1, mean 1500; 95 % intervals by a bootstrap over each pairing's matches (1,000 replicates, fixed seed).";
+
+    /// <summary>The rating (or mean score) as written.</summary>
+    public static string Value(Standings s, double value) =>
+        StandingsJson.Round(value, s.Teams == 1 ? 3 : 1).ToString(s.Teams == 1 ? "0.000" : "0.0", CultureInfo.InvariantCulture);
+
+    /// <summary>The interval as written, e.g. <c>1450.2 to 1530.9</c>.</summary>
+    public static string Interval(Standings s, Interval i) => Value(s, i.Low) + " to " + Value(s, i.High);
+
+    /// <summary>The ranks overlapping a row, e.g. <c>2, 3</c>, or a dash.</summary>
+    public static string Overlaps(StandingsRow row) => row.Overlapping.Count == 0 ? "-" : string.Join(", ", row.Overlapping.Select(r => r.ToString(CultureInfo.InvariantCulture)));
+
+    /// <summary>Groups of consecutive ranks whose intervals chain together by overlaps, e.g. "ranks 1-3", as a sentence, or null when every rank is separated.</summary>
+    public static string? Ties(Standings s)
+    {
+        var groups = new StringBuilder();
+        int start = 0;
+        var rows = s.Rows;
+        for (int k = 1; k <= rows.Count; k++)
+        {
+            if (k < rows.Count && rows[k].Overlapping.Contains(rows[k - 1].Rank))
+            {
+                continue;
+            }
+
+            if (k - start > 1)
+            {
+                groups.Append(groups.Length > 0 ? ", " : string.Empty).Append(string.Create(CultureInfo.InvariantCulture, $"{start + 1}-{k}"));
+            }
+
+            start = k;
+        }
+
+        return groups.Length == 0 ? null : $"Not separated by the results (neighbouring intervals overlap): ranks {groups}.";
+    }
+
+    /// <summary>One line of a reason: line breaks as spaces.</summary>
+    public static string Line(string text) => text.ReplaceLineEndings(" ").Trim();
+}

@@ -1,0 +1,36 @@
+using System.Collections.Generic;
+using System.IO;
+using URWPGSim2D.Server.Rendering;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>The files of a finished tournament in its folder: results.jsonl, standings.json, standings.md and report.html, each written whole and renamed.</summary>
+internal static class TournamentOutputs
+{
+    /// <summary>The results file's name.</summary>
+    public const string Results = "results.jsonl";
+
+    /// <summary>The JSON standings' name.</summary>
+    public const string StandingsJsonName = "standings.json";
+
+    /// <summary>The Markdown standings' name.</summary>
+    public const string StandingsMarkdownName = "standings.md";
+
+    /// <summary>The report's name.</summary>
+    public const string Report = "report.html";
+
+    /// <summary>The replay pages' sub-folder.</summary>
+    public const string Replays = "replays";
+
+    /// <summary>Match J's replay page in the folder.</summary>
+    public static string ReplayPage(string folder, int index) => Path.Combine(folder, Replays, $"match-{index}.html");
+
+    /// <summary>Writes the standings, the report and (in index order) the results.</summary>
+    public static void Write(string folder, Standings standings, IEnumerable<TournamentRecord> records)
+    {
+        TournamentFile.Write(Path.Combine(folder, Results), standings.Header, records);
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsJsonName), StandingsJson.Format(standings));
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings));
+        AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, j => File.Exists(ReplayPage(folder, j))));
+    }
+}

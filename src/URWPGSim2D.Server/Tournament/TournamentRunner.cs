@@ -1,0 +1,108 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Hosting;
+
+namespace URWPGSim2D.Server.Tournament;
+
+/// <summary>
+/// Plays a list of scheduled matches on several threads, each match alone on one thread, so a
+/// match's result depends only on its seed and entrants. A match with an entrant that could not
+/// be loaded is not played: it becomes a forfeit record. A match that fails inside the server is
+/// reported and left without a record (a re-run plays it again); the others go on.
+/// </summary>
+/// <param name="Item">The item.</param>
+/// <param name="Header">The tournament.</param>
+/// <param name="Errors">Per entrant, why it could not be loaded, or null.</param>
+/// <param name="ReplayPage">Where match J's replay page goes, or null for no replays.</param>
+internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Header, IReadOnlyList<string?> Errors, Func<int, string>? ReplayPage)
+{
+    /// <summary>Plays the matches; <paramref name="finished"/> is called (under a lock) as each ends, with its record or, when it failed, null and the failure.</summary>
+    /// <param name="matches">The matches to play.</param>
+    /// <param name="threads">Matches at once, ≥ 1.</param>
+    /// <param name="finished">Called once per match in the order they finish.</param>
+    public void Run(IReadOnlyList<ScheduledMatch> matches, int threads, Action<ScheduledMatch, TournamentRecord?, string?> finished)
+    {
+        int next = -1;
+        var gate = new object();
+
+        void Work()
+        {
+            int position;
+            while ((position = Interlocked.Increment(ref next)) < matches.Count)
+            {
+                var match = matches[position];
+                TournamentRecord? record = null;
+                string? failure = null;
+                try
+                {
+                    record = PlayOne(match);
+                }
+                catch (Exception e) when (e is not OutOfMemoryException)
+                {
+                    failure = StandingsText.Line($"{e.GetType().Name}: {e.Message}");
+                }
+
+                lock (gate)
+                {
+                    finished(match, record, failure);
+                }
+            }
+        }
+
+        var pool = new Thread[Math.Clamp(threads, 1, Math.Max(1, matches.Count)) - 1];
+        for (int w = 0; w < pool.Length; w++)
+        {
+            pool[w] = new Thread(Work) { IsBackground = true, Name = $"tournament worker {w + 1}" };
+            pool[w].Start();
+        }
+
+        Work();
+        foreach (var thread in pool)
+        {
+            thread.Join();
+        }
+    }
+
+    /// <summary>The record of one match: played, or forfeited by the entrants that cannot be loaded.</summary>
+    public TournamentRecord PlayOne(ScheduledMatch match)
+    {
+        var names = new string[match.Sides.Count];
+        var teams = new TeamStrategy?[Math.Max(2, match.Sides.Count)];
+        var forfeits = new List<int>();
+        var reasons = new List<string>();
+        for (int t = 0; t < match.Sides.Count; t++)
+        {
+            var entrant = Header.Entrants[match.Sides[t]];
+            names[t] = entrant.Name;
+            string? error = Errors[match.Sides[t]];
+            if (error is null)
+            {
+                try
+                {
+                    teams[t] = EntrantLoader.Create(entrant);
+                }
+                catch (StrategyLoadException e)
+                {
+                    error = EntrantLoader.Reason(e); // loaded before, not now: forfeit this match
+                }
+            }
+
+            if (error is not null)
+            {
+                forfeits.Add(t);
+                reasons.Add(error);
+            }
+        }
+
+        if (forfeits.Count > 0)
+        {
+            return new TournamentRecord(match.Index, match.Seed, names, null, forfeits, reasons);
+        }
+
+        var result = TournamentMatchPlayer.Play(Item, match, teams, Header.Cycles, Header.StrategyTimeoutMs, ReplayPage?.Invoke(match.Index));
+        return new TournamentRecord(match.Index, match.Seed, names, result, [], []);
+    }
+}
