@@ -9,6 +9,7 @@ internal static class Program
     private static readonly IReadOnlyList<(string Name, Action Run)> All =
     [
         ("Readme/UsingTheLibrary", Readme.UsingTheLibrary.Run),
+        ("Queries/SensingTheWay", Queries.SensingTheWay.Run),
     ];
 
     private static int Main()

@@ -34,6 +34,7 @@ internal sealed class CliApp
     [
         new RunCommand(),
         new CollideCommand(),
+        new QueryCommand(),
         new ShapesCommand(),
         new RenderCommand(),
         new MergeCommand(),

@@ -12,4 +12,5 @@ namespace URWPGSim2D.Server.Json;
 [JsonSourceGenerationOptions(NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals)]
 [JsonSerializable(typeof(PairDto[]))]
 [JsonSerializable(typeof(ShapeDto[]))]
+[JsonSerializable(typeof(QueryInputDto))]
 internal sealed partial class InputJsonContext : JsonSerializerContext;

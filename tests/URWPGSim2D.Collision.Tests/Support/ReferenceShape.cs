@@ -21,6 +21,9 @@ public sealed class ReferenceShape
         Radius = radius;
     }
 
+    /// <summary>The same shape moved by <paramref name="offset"/>, exactly in double (the core's points shifted, the radius kept).</summary>
+    public ReferenceShape Translated(Point2 offset) => new(_core.Select(p => p + offset).ToArray(), Radius);
+
     /// <summary>The vertices of the convex core, counter-clockwise, with no repeated or collinear points.</summary>
     public IReadOnlyList<Point2> Core => _core;
 

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, shapes, render, merge, view, tournament; --help for details)";
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament; --help for details)";
     private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
 
     [Theory]
