@@ -229,10 +229,10 @@ internal sealed class RunOptions
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
                 case "--isolation":
-                    o.Isolation = value switch { "process" => IsolationMode.Process, "none" => IsolationMode.None, _ => throw UsageError($"--isolation must be process or none, got {CliText.Quote(value)}") };
+                    o.Isolation = value switch { "process" => IsolationMode.Process, "none" => IsolationMode.None, _ => throw UsageError($"--isolation must be process or none, got {MessageText.Quote(value)}") };
                     break;
                 case "--sandbox":
-                    o.Sandbox = value switch { "auto" => SandboxMode.Auto, "required" => SandboxMode.Required, "off" => SandboxMode.Off, _ => throw UsageError($"--sandbox must be auto, required or off, got {CliText.Quote(value)}") };
+                    o.Sandbox = value switch { "auto" => SandboxMode.Auto, "required" => SandboxMode.Required, "off" => SandboxMode.Off, _ => throw UsageError($"--sandbox must be auto, required or off, got {MessageText.Quote(value)}") };
                     break;
                 case "--strategy-memory": o.StrategyMemoryMb = (int)Number(name, value, 64, 1_048_576); break;
                 case "--noise":

@@ -133,7 +133,7 @@ internal static class StrategyResolver
     {
         try
         {
-            return context.LoadFromAssemblyPath(full);
+            return Compat.Retargeting.OriginalAssemblyLoader.Load(context, full);
         }
         catch (Exception e) when (e is BadImageFormatException or FileLoadException or IOException)
         {

@@ -21,6 +21,7 @@ internal static class ItemRegistry
         new Polo.PoloItem(3),
         new Polo.PoloItem(5),
         new Snooker.SnookerItem(),
+        new PushBallAvoidObstacles.PushBallAvoidObstaclesItem(),
     ];
 
     /// <summary>The items, in listing order.</summary>

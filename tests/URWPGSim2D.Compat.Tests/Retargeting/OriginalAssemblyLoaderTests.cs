@@ -1,0 +1,216 @@
+using System;
+using System.Collections.Immutable;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using System.Reflection.Metadata;
+using System.Reflection.PortableExecutable;
+using System.Runtime.CompilerServices;
+using System.Runtime.Loader;
+using System.Security.Cryptography;
+using Microsoft.CodeAnalysis;
+using URWPGSim2D.Compat.Retargeting;
+using URWPGSim2D.Tests.OldStrategies;
+using Xunit;
+
+namespace URWPGSim2D.Compat.Tests.Retargeting;
+
+/// <summary>
+/// DLLs in the shape of those built for the original (compiled here: <see cref="OldStrategyCompiler"/>)
+/// load through <see cref="OriginalAssemblyLoader"/>, bind every member of the original's API the
+/// compatibility assembly provides, and leave their file alone; native code and missing API are refused.
+/// </summary>
+public sealed class OriginalAssemblyLoaderTests
+{
+    private static readonly Lazy<byte[]> ToucherImage = new(() =>
+        OldStrategyCompiler.Compile("OldToucher", Platform.X86, OldStrategySources.Toucher, ApiToucher.Source()));
+
+    private static AssemblyLoadContext Context() => new("old-dll-test", isCollectible: true);
+
+    [Fact]
+    public void TheTestDllsHaveTheShapeOfTheOriginalsDlls()
+    {
+        using var pe = new PEReader(ImmutableArray.Create(ToucherImage.Value));
+        Assert.Equal(Machine.I386, pe.PEHeaders.CoffHeader.Machine);
+        Assert.Equal(PEMagic.PE32, pe.PEHeaders.PEHeader!.Magic);
+        Assert.Equal(CorFlags.ILOnly | CorFlags.Requires32Bit, pe.PEHeaders.CorHeader!.Flags);
+        var metadata = pe.GetMetadataReader();
+        Assert.Equal("v2.0.50727", metadata.MetadataVersion);
+        var references = metadata.AssemblyReferences.Select(h => metadata.GetAssemblyReference(h))
+            .ToDictionary(r => metadata.GetString(r.Name), r => (r.Version, Token: Convert.ToHexString(metadata.GetBlobBytes(r.PublicKeyOrToken)).ToLowerInvariant()));
+        Assert.Equal((new Version(2, 0, 0, 0), "b77a5c561934e089"), references["mscorlib"]);
+        Assert.Equal((new Version(3, 1, 0, 0), "6d5c3888ef60e27d"), references["Microsoft.Xna.Framework"]);
+        foreach (string name in new[] { "URWPGSim2D.Common", "URWPGSim2D.StrategyLoader", "URWPGSim2D.StrategyHelper", "URWPGSim2D.Core" })
+        {
+            Assert.Equal((new Version(1, 2, 123, 20110), "04f000b8db128100"), references[name]);
+        }
+
+        Assert.Contains(metadata.TypeDefinitions.Select(h => metadata.GetTypeDefinition(h)),
+            t => metadata.GetString(t.Namespace) == "URWPGSim2D.Strategy" && metadata.GetString(t.Name) == "Strategy");
+    }
+
+    [Fact]
+    public void AnOldDllThatTouchesEveryMemberOfTheOriginalsApiLoadsAndBindsThemAll()
+    {
+        string path = OldStrategyCompiler.WriteTemporary("OldToucher.dll", ToucherImage.Value);
+        var context = Context();
+        try
+        {
+            var assembly = OriginalAssemblyLoader.Load(context, path);
+            Assert.Equal(string.Empty, assembly.Location);
+            Assert.DoesNotContain(assembly.GetReferencedAssemblies(), r => OriginalReferences.IsOriginal(r.Name));
+            var touch = assembly.GetType("OldApi.Toucher")!.GetMethod("Touch")!;
+            RuntimeHelpers.PrepareMethod(touch.MethodHandle);
+            Assert.Equal(0, touch.Invoke(null, [false]));
+            var strategy = (StrategyLoader.IStrategy)Activator.CreateInstance(assembly.GetType("URWPGSim2D.Strategy.Strategy")!)!;
+            Assert.Equal("Old toucher 0", strategy.GetTeamName());
+            // A floor against the stand-ins silently leaving members out (378 when written).
+            Assert.True(ApiToucher.Members >= 350, $"{ApiToucher.Members} members touched");
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void TheFileIsNeverChangedAndNothingIsWrittenBesideIt()
+    {
+        byte[] image = OldStrategyCompiler.Compile("OldDribbler", Platform.X86, OldStrategySources.Dribbler);
+        string path = OldStrategyCompiler.WriteTemporary("OldDribbler.dll", image);
+        string folder = Path.GetDirectoryName(path)!;
+        byte[] before = SHA256.HashData(File.ReadAllBytes(path));
+        var written = File.GetLastWriteTimeUtc(path);
+        var context = Context();
+        try
+        {
+            var assembly = OriginalAssemblyLoader.Load(context, path);
+            Assert.NotNull(assembly.GetType("URWPGSim2D.Strategy.Strategy"));
+            Assert.Equal(before, SHA256.HashData(File.ReadAllBytes(path)));
+            Assert.Equal(written, File.GetLastWriteTimeUtc(path));
+            Assert.Equal(["OldDribbler.dll"], Directory.GetFiles(folder).Select(Path.GetFileName));
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void AnAnyCpuOldDllLoadsToo()
+    {
+        byte[] image = OldStrategyCompiler.Compile("OldAnyCpu", Platform.AnyCpu, OldStrategySources.Dribbler);
+        using (var pe = new PEReader(ImmutableArray.Create(image)))
+        {
+            Assert.Equal(CorFlags.ILOnly, pe.PEHeaders.CorHeader!.Flags);
+        }
+
+        string path = OldStrategyCompiler.WriteTemporary("OldAnyCpu.dll", image);
+        var context = Context();
+        try
+        {
+            var type = OriginalAssemblyLoader.Load(context, path).GetType("URWPGSim2D.Strategy.Strategy")!;
+            Assert.Equal("Old dribbler", ((StrategyLoader.IStrategy)Activator.CreateInstance(type)!).GetTeamName());
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void WithoutRetargetingTheRuntimeRefusesTheSameDll()
+    {
+        // The two failures users met: the x86 image, and (AnyCPU) the original's assembly names.
+        string x86 = OldStrategyCompiler.WriteTemporary("OldX86.dll", OldStrategyCompiler.Compile("OldX86", Platform.X86, OldStrategySources.Dribbler));
+        string any = OldStrategyCompiler.WriteTemporary("OldAny.dll", OldStrategyCompiler.Compile("OldAny", Platform.AnyCpu, OldStrategySources.Dribbler));
+        var context = Context();
+        try
+        {
+            var e = Assert.Throws<FileLoadException>(() => context.LoadFromAssemblyPath(x86));
+            Assert.Contains("architecture", e.Message, StringComparison.Ordinal);
+            var assembly = context.LoadFromAssemblyPath(any);
+            var missing = Assert.Throws<FileNotFoundException>(() => assembly.GetType("URWPGSim2D.Strategy.Strategy", throwOnError: true));
+            Assert.Contains("URWPGSim2D.StrategyLoader, Version=1.2.123.20110", missing.Message, StringComparison.Ordinal);
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(x86)!, recursive: true);
+            Directory.Delete(Path.GetDirectoryName(any)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void ADllHoldingNativeCodeIsRefusedInOneLine()
+    {
+        byte[] image = OldStrategyCompiler.Compile("OldMixed", Platform.X86, OldStrategySources.Dribbler);
+        ClearILOnly(image);
+        string path = OldStrategyCompiler.WriteTemporary("OldMixed.dll", image);
+        try
+        {
+            var e = Assert.Throws<BadImageFormatException>(() => OriginalAssemblyLoader.Load(Context(), path));
+            Assert.Contains("native code", e.Message, StringComparison.Ordinal);
+            Assert.DoesNotContain('\n', e.Message);
+        }
+        finally
+        {
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void ADllUsingApiTheCompatibilityAssemblyLacksIsRefusedNamingIt()
+    {
+        const string UsesMatrix = """
+            namespace Uses
+            {
+                public class Matrices
+                {
+                    public object Make() { return Microsoft.Xna.Framework.Matrix.Identity; }
+                }
+            }
+            """;
+        string path = OldStrategyCompiler.WriteTemporary("OldMatrix.dll", OldStrategyCompiler.CompileWithXnaMatrix("OldMatrix", OldStrategySources.Dribbler, UsesMatrix));
+        var context = Context();
+        try
+        {
+            var e = Assert.Throws<FileLoadException>(() => OriginalAssemblyLoader.Load(context, path));
+            Assert.Contains("Microsoft.Xna.Framework.Matrix", e.Message, StringComparison.Ordinal);
+            Assert.DoesNotContain('\n', e.Message);
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void AnAssemblyBuiltForThisRuntimeLoadsFromItsFileUnchanged()
+    {
+        string path = typeof(OriginalAssemblyLoaderTests).Assembly.Location;
+        var context = Context();
+        try
+        {
+            Assert.Equal(path, OriginalAssemblyLoader.Load(context, path).Location);
+        }
+        finally
+        {
+            context.Unload();
+        }
+    }
+
+    /// <summary>Clears the CLR header's ILONLY flag, as in an image holding native code.</summary>
+    private static void ClearILOnly(byte[] image)
+    {
+        using var pe = new PEReader(ImmutableArray.Create(image));
+        var directory = pe.PEHeaders.PEHeader!.CorHeaderTableDirectory;
+        Assert.True(pe.PEHeaders.TryGetDirectoryOffset(directory, out int header));
+        int flags = header + 16;
+        image[flags] &= unchecked((byte)~(int)CorFlags.ILOnly);
+    }
+}

@@ -1,0 +1,160 @@
+using System;
+using System.IO;
+using Microsoft.CodeAnalysis;
+using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Tests.Cli;
+using URWPGSim2D.Server.Tests.Simulation;
+using URWPGSim2D.Tests.OldStrategies;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Hosting;
+
+/// <summary>
+/// <c>run --strategy TEAM=old.dll</c> with DLLs in the shape of those built for the original (x86,
+/// mscorlib 2.0, the original's assembly names; compiled here by <see cref="OldStrategyCompiler"/>):
+/// they play every item, exactly as the same source compiled for this server does, and fault like any
+/// other strategy; a DLL holding native code is refused in one line.
+/// </summary>
+public sealed class OldDllTests : IDisposable
+{
+    private const string OneFishOneBall =
+        """{"noise":false,"fish":[{"team":0,"position":[-600,0]},{"team":1,"position":[1300,900],"heading":3.14159,"strategy":"idle"}],"balls":[{"position":[-200,100]}]}""";
+
+    private static readonly Lazy<byte[]> Dribbler = new(() => OldStrategyCompiler.Compile("OldDribbler", Platform.X86, OldStrategySources.Dribbler));
+
+    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-old-dll-" + Guid.NewGuid().ToString("N"));
+
+    public OldDllTests() => Directory.CreateDirectory(_folder);
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    [Fact]
+    public void AnOldDllPlaysTheSameMatchAsItsSourceCompiledForThisServer()
+    {
+        string dll = Write("OldDribbler.dll", Dribbler.Value);
+        string source = Path.Combine(_folder, "Dribbler.cs");
+        File.WriteAllText(source, OldStrategySources.Dribbler);
+        IStrategy old = StrategyResolver.Load(dll);
+        Assert.Equal("Old dribbler", old.TeamName);
+        var fromDll = Play(old);
+        var fromSource = Play(StrategyResolver.Load(source));
+        Assert.Equal(0, fromDll.Strategies.TotalFaults);
+        Assert.Equal(300, OriginalStrategyTests.Field<int>(OriginalStrategyTests.Inner(old), "Calls"));
+        Assert.True(fromDll.World.Balls[0].Position.X > 200f, $"ball pushed toward +X, at {fromDll.World.Balls[0].Position}");
+        Assert.Equal(fromSource.World.Balls[0].Position, fromDll.World.Balls[0].Position);
+        Assert.Equal(fromSource.World.Fish[0].Position, fromDll.World.Fish[0].Position);
+    }
+
+    public static TheoryData<string> ItemSlugs()
+    {
+        var data = new TheoryData<string>();
+        foreach (var item in ItemRegistry.All)
+        {
+            data.Add(item.Slug);
+        }
+
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(ItemSlugs))]
+    public void AnOldDllPlaysEveryItemForEveryTeamWithoutAFault(string item)
+    {
+        string dll = Write("OldDribbler.dll", Dribbler.Value);
+        var competition = ItemRegistry.Find(item)!;
+        var teams = new TeamStrategy?[Math.Max(2, competition.TeamCount)];
+        for (int t = 0; t < competition.TeamCount; t++)
+        {
+            teams[t] = new TeamStrategy("old.dll", StrategyResolver.Load(dll), Isolated: true, new ManualStrategyClock());
+        }
+
+        var match = MatchBuilder.Build(competition.CreateScenario(1), teams, seed: 1, cycles: 60);
+        for (int k = 0; k < 60 && !match.IsOver; k++)
+        {
+            match.Step();
+        }
+
+        match.Strategies.Stop();
+        Assert.Equal(0, match.Strategies.TotalFaults);
+        Assert.True(match.World.Cycle > 0);
+    }
+
+    [Fact]
+    public void RunPlaysAnOldDllForEachTeam()
+    {
+        string dll = Write("OldDribbler.dll", Dribbler.Value);
+        var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "40", "--strategy", "0=" + dll, "--strategy", "1=" + dll);
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        Assert.True(run.Stdout.Contains("score: team 0 (OldDribbler.dll) 0, team 1 (OldDribbler.dll) 0\n", StringComparison.Ordinal), run.Stdout);
+        Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
+    }
+
+    [Fact]
+    public void AnOldDllsFaultsAreCountedLikeAnyStrategys()
+    {
+        string dll = Write("OldFaulty.dll", OldStrategyCompiler.Compile("OldFaulty", Platform.X86, OldStrategySources.Faulty));
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "25", "--strategy", "0=" + dll);
+        Assert.Equal(0, run.ExitCode);
+        const string Line = "  team 0 (OldFaulty.dll): 15 exceptions, 0 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 11: InvalidOperationException: broken after ten cycles\n";
+        Assert.True(run.Stdout.Contains(Line, StringComparison.Ordinal), run.Stdout);
+    }
+
+    [Fact]
+    public void AnOldDllHoldingNativeCodeIsRefusedInOneLineWithExitTwo()
+    {
+        byte[] image = (byte[])Dribbler.Value.Clone();
+        using (var pe = new System.Reflection.PortableExecutable.PEReader(System.Collections.Immutable.ImmutableArray.Create(image)))
+        {
+            Assert.True(pe.PEHeaders.TryGetDirectoryOffset(pe.PEHeaders.PEHeader!.CorHeaderTableDirectory, out int header));
+            image[header + 16] &= 0xFE; // the CLR header's ILONLY flag
+        }
+
+        AssertRefusedAsDocumented(image);
+    }
+
+    [Fact]
+    public void AnOldDllUsingApiTheCompatibilityAssemblyLacksIsRefusedNamingIt()
+    {
+        const string UsesMatrix = "namespace Uses { public class Matrices { public object Make() { return Microsoft.Xna.Framework.Matrix.Identity; } } }";
+        AssertRefusedAsDocumented(OldStrategyCompiler.CompileWithXnaMatrix("OldMatrix", OldStrategySources.Dribbler, UsesMatrix));
+    }
+
+    // Runs the image as teams/red/Strategy.dll: exit 2, nothing written, one line of stderr that
+    // docs/strategies.md shows in a code block of its own.
+    private void AssertRefusedAsDocumented(byte[] image)
+    {
+        string red = Path.Combine(_folder, "teams", "red");
+        Directory.CreateDirectory(red);
+        string dll = Path.Combine(red, "Strategy.dll");
+        File.WriteAllBytes(dll, image);
+        string trace = Path.Combine(_folder, "t.jsonl");
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + dll, "--trace", trace);
+        Assert.Equal(2, run.ExitCode);
+        Assert.Equal(string.Empty, run.Stdout);
+        Assert.False(File.Exists(trace));
+        string line = run.Stderr.Replace(_folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal);
+        Assert.EndsWith("\n", line, StringComparison.Ordinal);
+        Assert.DoesNotContain('\n', line.TrimEnd('\n'));
+        string docs = File.ReadAllText(Docs.Repository.PathOf("docs/strategies.md")).Replace("\r\n", "\n", StringComparison.Ordinal);
+        Assert.Contains("```\n" + line + "```\n", docs, StringComparison.Ordinal);
+    }
+
+    private static Match Play(IStrategy strategy)
+    {
+        var teams = new TeamStrategy?[] { new("test", strategy, Isolated: true, new ManualStrategyClock()), null };
+        var match = URWPGSim2D.Server.Tests.Simulation.TestMatches.FromJson(OneFishOneBall, teams);
+        match.Play(300);
+        match.Strategies.Stop();
+        return match;
+    }
+
+    private string Write(string name, byte[] image)
+    {
+        string path = Path.Combine(_folder, name);
+        File.WriteAllBytes(path, image);
+        return path;
+    }
+}
