@@ -4,13 +4,21 @@
 # benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/tagged (git-ignored). Idempotent and safe
 # to run twice at once (a lock): a worktree already at the tagged commit is kept. The baseline
 # projects run this before they compile; run it by hand to look at the frozen code. Fails with one
-# line when the tag is missing (a clone without tags).
+# line when the commit is missing (a shallow clone).
 set -euo pipefail
 tag=benchmark-baseline
+# The tagged commit, pinned: it is an ancestor of main, so every full clone has it, with or
+# without its tags.
+pinned=ad2603e1e96cb122f6aeefa0391182ab562aa260
 root=$(git -C "$(dirname "$0")/.." rev-parse --show-toplevel)
 dir="$root/benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/tagged"
-if ! commit=$(git -C "$root" rev-parse -q --verify "refs/tags/$tag^{commit}"); then
-  echo "benchmark baseline: the git tag '$tag' is missing from this clone (git fetch --tags); the benchmarks compile their frozen baseline from it" >&2
+if tagged=$(git -C "$root" rev-parse -q --verify "refs/tags/$tag^{commit}") && [ "$tagged" != "$pinned" ]; then
+  echo "benchmark baseline: the git tag '$tag' points at $tagged, not at the pinned commit $pinned" >&2
+  exit 1
+fi
+commit=$pinned
+if ! git -C "$root" cat-file -e "$commit^{commit}" 2>/dev/null; then
+  echo "benchmark baseline: commit $commit (tag '$tag') is missing from this clone (a shallow clone? git fetch --unshallow); the benchmarks compile their frozen baseline from it" >&2
   exit 1
 fi
 exec 9>"$root/benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/.tagged.lock"
