@@ -88,8 +88,8 @@ internal sealed class RunOptions
     /// <summary>Default port of the live view.</summary>
     public const int DefaultPort = 8080;
 
-    /// <summary>Per team (0, 1), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
-    public string?[] Strategies { get; } = new string?[2];
+    /// <summary>Per team (0 to 3: teams 2 and 3 play only in four-team scenes), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
+    public string?[] Strategies { get; } = new string?[4];
 
     /// <summary>Where user strategies run (<c>--isolation process|none</c>; default process).</summary>
     public IsolationMode Isolation { get; private set; } = IsolationMode.Process;
@@ -240,9 +240,9 @@ internal sealed class RunOptions
                     break;
                 case "--strategy":
                     int eq = value.IndexOf('=', StringComparison.Ordinal);
-                    if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
+                    if (eq != 1 || value[0] is < '0' or > '3' || eq + 1 >= value.Length)
                     {
-                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 or 1, got {MessageText.Quote(value)}");
+                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 to 3, got {MessageText.Quote(value)}");
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];

@@ -26,6 +26,7 @@ internal static class ItemRegistry
         new PushBallViaChannel.PushBallViaChannelItem(),
         new RelayWithBall.RelayWithBallItem(),
         new DoubleFishRace.DoubleFishRaceItem(),
+        new FourTeams.FourTeamsItem(),
     ];
 
     /// <summary>The items, in listing order.</summary>

@@ -88,6 +88,21 @@ internal sealed class Match
         Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
     }
 
+    /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
+    public int TeamCount
+    {
+        get
+        {
+            int teams = 2;
+            foreach (var f in World.Fish)
+            {
+                teams = System.Math.Max(teams, f.Team + 1);
+            }
+
+            return teams;
+        }
+    }
+
     /// <summary>The labels of the strategies playing for <paramref name="team"/>, joined with "+" ("no fish" for a team without fish).</summary>
     public string TeamLabel(int team)
     {

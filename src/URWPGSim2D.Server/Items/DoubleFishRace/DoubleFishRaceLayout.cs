@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
@@ -64,12 +63,6 @@ internal static class DoubleFishRaceLayout
     /// <summary>The item's scenario: two teams of one fish, walls 0–2 in the original's order.</summary>
     public static ScenarioDefinition Scenario()
     {
-        var obstacles = new List<ObstacleDefinition>(Walls.Length);
-        foreach (var (centre, length, width) in Walls)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, centre, length, width, 0f, 0f));
-        }
-
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,
@@ -81,7 +74,7 @@ internal static class DoubleFishRaceLayout
                 new FishDefinition(1, Starts[1].Position, Starts[1].Heading, "demo", Decision.Stop),
             ],
             Balls = [],
-            Obstacles = obstacles,
+            Obstacles = AxisRectangles.Obstacles(Walls),
         };
     }
 }

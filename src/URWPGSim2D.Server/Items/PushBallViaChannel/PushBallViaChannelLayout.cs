@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
@@ -91,12 +90,6 @@ internal static class PushBallViaChannelLayout
     /// <summary>The item's scenario for a seed: one team of two fish, walls 0–2 in the original's order.</summary>
     public static ScenarioDefinition Scenario(ulong seed)
     {
-        var obstacles = new List<ObstacleDefinition>(Walls.Length);
-        foreach (var (centre, length, width) in Walls)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, centre, length, width, 0f, 0f));
-        }
-
         float[] headings = Headings(seed);
         return new ScenarioDefinition
         {
@@ -109,7 +102,7 @@ internal static class PushBallViaChannelLayout
                 new FishDefinition(0, FishStarts[1], headings[1], "demo", Decision.Stop),
             ],
             Balls = [new BallDefinition(BallStart, Vector2.Zero, BallRadius)],
-            Obstacles = obstacles,
+            Obstacles = AxisRectangles.Obstacles(Walls),
         };
     }
 }

@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
@@ -84,12 +83,6 @@ internal static class RelayWithBallLayout
     /// <summary>The item's scenario: one team of two fish, obstacles 0–2 in the original's order.</summary>
     public static ScenarioDefinition Scenario()
     {
-        var obstacles = new List<ObstacleDefinition>(Obstacles.Length);
-        foreach (var (centre, length, width) in Obstacles)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, centre, length, width, 0f, 0f));
-        }
-
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,
@@ -101,7 +94,7 @@ internal static class RelayWithBallLayout
                 new FishDefinition(0, FishStarts[1], System.MathF.PI, "demo", Decision.Stop),
             ],
             Balls = [new BallDefinition(BallStart, Vector2.Zero, BallRadius)],
-            Obstacles = obstacles,
+            Obstacles = AxisRectangles.Obstacles(Obstacles),
         };
     }
 
