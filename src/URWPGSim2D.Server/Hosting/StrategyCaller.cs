@@ -121,6 +121,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 break;
             case HostedStrategy.Outcome.BadAnswer:
                 slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");
+                if (hosted.HasEnded)
+                {
+                    slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {hosted.EndedBy}");
+                }
+
                 break;
             case HostedStrategy.Outcome.TimedOut:
                 slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
