@@ -53,7 +53,7 @@ public sealed class HostProtocolFaultTests : IDisposable
     }
 
     private CliRun Run(string spec) =>
-        CliRun.Of(string.Empty, "run", "--cycles", "8", "--strategy", "0=" + spec, "--strategy-timeout", "200", "--sandbox", "required");
+        CliRun.Of(string.Empty, "run", "--cycles", "8", "--strategy", "0=" + spec, "--strategy-timeout", "1000", "--sandbox", "required");
 
     [Theory]
     [InlineData("Garbage", "\"this is not JSON\\n\"", "first: cycle 3: ")]

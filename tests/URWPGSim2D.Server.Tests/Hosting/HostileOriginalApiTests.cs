@@ -19,7 +19,7 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// </summary>
 public sealed class HostileOriginalApiTests : IDisposable
 {
-    private const string Deadline = "200"; // ms of CPU time; the strategies' honest cycles need well under 1 ms
+    private const string Deadline = "1000"; // ms of CPU time (and 10 s of wall time); the strategies' honest cycles need well under 1 ms
     private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-hostile-orig-").FullName;
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
@@ -99,7 +99,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         // It sleeps forever from cycle 3: no CPU is used, no answer ever comes, whatever the machine's speed.
         var run = Run(Source("Sleeper", "if (cycle == 2) System.Threading.Thread.Sleep(System.Threading.Timeout.Infinite);"), 8);
         Assert.StartsWith("match: 8 cycles,", run.Stdout, StringComparison.Ordinal);
-        Assert.Equal("0 exceptions, 6 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 3: no decision within 200 ms", Faults(run));
+        Assert.Equal("0 exceptions, 6 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 3: no decision within 1000 ms", Faults(run));
     }
 
     [Fact]

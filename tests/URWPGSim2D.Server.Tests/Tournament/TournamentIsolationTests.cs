@@ -29,7 +29,7 @@ public sealed class TournamentIsolationTests : IDisposable
     {
         string sample = Repository.PathOf("samples/URWPGSim2D.Strategy.Samples/SdkStrategy.cs");
         string pusher = Repository.PathOf("samples/URWPGSim2D.Strategy.Samples/OriginalApiStrategy.cs");
-        string[] tour = ["tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "sdk=" + sample, "--entrant", "original=" + pusher, "--seeds", "1", "--cycles", "40"];
+        string[] tour = ["tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "sdk=" + sample, "--entrant", "original=" + pusher, "--seeds", "1", "--cycles", "40", "--strategy-timeout", "5000"];
         var hosted = CliRun.Of(string.Empty, [.. tour, "--threads", "2", "--sandbox", "required", "--out", Dir("hosted")]);
         Assert.True(hosted.ExitCode == 0, hosted.Stderr);
         var inProcess = CliRun.Of(string.Empty, [.. tour, "--threads", "1", "--isolation", "none", "--out", Dir("none")]);
@@ -49,7 +49,7 @@ public sealed class TournamentIsolationTests : IDisposable
         string overflow = OriginalSource.Write(_folder, "Overflow", "if (cycle == 2) Recurse(0);", "static int Recurse(int n) { return Recurse(n + 1) + 1; }");
         string badCtor = OriginalSource.Write(_folder, "BadCtor", "", "public Strategy() { throw new InvalidOperationException(\"no team today\"); }");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "overflow=" + overflow, "--entrant", "ctor=" + badCtor,
-            "--seeds", "1", "--cycles", "20", "--threads", "2", "--sandbox", "required", "--out", Dir("t"));
+            "--seeds", "1", "--cycles", "20", "--strategy-timeout", "5000", "--threads", "2", "--sandbox", "required", "--out", Dir("t"));
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.DoesNotContain("cannot be loaded", run.Stderr, StringComparison.Ordinal);
         string[] matches = Lines(Dir("t")).Skip(1).ToArray();
@@ -76,7 +76,7 @@ public sealed class TournamentIsolationTests : IDisposable
     {
         string badCtor = OriginalSource.Write(_folder, "BadStatic", "", "static readonly int Never = int.Parse(\"not a number\"); public Strategy() { _ = Never; }");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "ctor=" + badCtor,
-            "--seeds", "1", "--cycles", "10", "--isolation", "none", "--out", Dir("n"));
+            "--seeds", "1", "--cycles", "10", "--strategy-timeout", "5000", "--isolation", "none", "--out", Dir("n"));
         Assert.True(run.ExitCode == 0, run.Stderr);
         string[] matches = Lines(Dir("n")).Skip(1).ToArray();
         Assert.Equal(2, matches.Length);
