@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
@@ -20,9 +21,8 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
         bodies.Pull(contact.BodyA);
         bodies.Pull(contact.BodyB);
         CandidatePair pair = bodies.PairOf(contact);
-        Hit hit = MotionBodies.ToHit(contact);
-        ContactKind kind = _response.Apply(pair, hit);
-        log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point, contact.Time), kind);
+        ContactKind kind = _response.Apply(pair, contact);
+        log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
         bodies.Push(contact.BodyA);
         bodies.Push(contact.BodyB);
     }
@@ -49,4 +49,7 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
             b.NoiseVelocity = default;
         }
     }
+
+    // A leaf index for the contact record, −1 for "not a fish".
+    private static sbyte Part(FishPart? part) => part.HasValue ? (sbyte)part.Value : (sbyte)-1;
 }

@@ -146,12 +146,12 @@ internal sealed class MotionBodies
     public bool IsFish(int id) => id < _fish;
 
     /// <summary>The contact of a pair at the world's poses now (MTV moves A).</summary>
-    public Hit Detect(in CandidatePair pair)
+    public Contact Detect(in CandidatePair pair)
     {
         int a = IdOfA(pair), b = IdOfB(pair);
         PushPose(a);
         PushPose(b);
-        return ToHit(Stepper.Detect(a, b));
+        return Stepper.Detect(a, b);
     }
 
     /// <summary>The world's pair for a contact of the stepper.</summary>
@@ -171,10 +171,6 @@ internal sealed class MotionBodies
             : b == WallsId ? new CandidatePair(PairKind.BallWall, ball, 0, 0f)
             : new CandidatePair(PairKind.BallStatic, ball, b - _fish - _balls, 0f);
     }
-
-    /// <summary>The contact as the server's <see cref="Hit"/>.</summary>
-    public static Hit ToHit(in Contact contact) =>
-        Hit.From(contact.Result, contact.PartA.HasValue ? (sbyte)contact.PartA.Value : (sbyte)-1, contact.PartB.HasValue ? (sbyte)contact.PartB.Value : (sbyte)-1);
 
     private int IdOfA(in CandidatePair p) => p.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic or PairKind.FishWall ? p.A : _fish + p.A;
 

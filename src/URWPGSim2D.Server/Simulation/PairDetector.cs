@@ -5,5 +5,5 @@ namespace URWPGSim2D.Server.Simulation;
 internal static class PairDetector
 {
     /// <summary>The contact of <paramref name="pair"/> now (MTV moves A).</summary>
-    public static Hit Detect(World world, in CandidatePair pair) => world.Bodies.Detect(pair);
+    public static Contact Detect(World world, in CandidatePair pair) => world.Bodies.Detect(pair);
 }

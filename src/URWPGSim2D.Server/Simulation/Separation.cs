@@ -19,14 +19,14 @@ internal sealed class Separation(World world)
     private readonly FishContact[] _contacts = new FishContact[8 * 8]; // every leaf pair of two fish
 
     /// <summary>Moves A and B of <paramref name="pair"/> apart; the first move is the contact's own MTV.</summary>
-    public void Apply(in CandidatePair pair, in Hit hit, float shareA, float shareB)
+    public void Apply(in CandidatePair pair, in Contact hit, float shareA, float shareB)
     {
         Vector2 mtv = hit.Mtv * ((hit.Depth + PhysicsConstants.SeparationMargin) / MathF.Max(hit.Depth, 1e-12f));
         Offset(pair, mtv * shareA, -mtv * shareB);
         bool wall = pair.Kind is PairKind.FishWall or PairKind.BallWall;
         for (int attempt = 0; attempt < 4; attempt++)
         {
-            Hit now = PairDetector.Detect(world, pair);
+            Contact now = PairDetector.Detect(world, pair);
             if (now.Depth <= MotionTolerances.ContactSlop)
             {
                 return;

@@ -34,7 +34,7 @@ public sealed class ContactResponseTests
                 float tangentA = Vector2.Dot(a.Velocity, tangent);
                 float tangentB = Vector2.Dot(b.Velocity, tangent);
                 var pair = new CandidatePair(PairKind.BallBall, 0, 1, 58f);
-                Hit hit = PairDetector.Detect(match.World, pair);
+                Contact hit = PairDetector.Detect(match.World, pair);
                 Assert.True(hit.Intersect);
                 new ContactResponse(match.World).Apply(pair, hit);
 
