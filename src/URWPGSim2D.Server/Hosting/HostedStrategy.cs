@@ -9,7 +9,8 @@ namespace URWPGSim2D.Server.Hosting;
 /// the assignment, then each cycle sends the snapshot and reads that cycle's decisions (the
 /// protocol of docs/protocol.md). The host measures the strategy's deadline itself and answers a
 /// missed one as a time-out; a watchdog kills a host that does not answer at all within
-/// <see cref="AnswerLimit"/>. A host that ends, is killed, or breaks the framing ends the team's
+/// <see cref="AnswerLimit"/>. An answer to an earlier cycle (left behind a bad line that took its
+/// place) is skipped, so one bad line costs one cycle. A host that ends, is killed, or breaks the framing ends the team's
 /// strategy for the match; it is not restarted (the next match starts a new one).
 /// </summary>
 internal sealed class HostedStrategy : IDisposable
@@ -69,6 +70,9 @@ internal sealed class HostedStrategy : IDisposable
     /// <summary>Whether the host has ended; every later call answers <see cref="Outcome.Ended"/>.</summary>
     public bool HasEnded { get; private set; }
 
+    /// <summary>How the host ended when a <see cref="Outcome.BadAnswer"/> also ended it (an overlong line), else null.</summary>
+    public string? EndedBy { get; private set; }
+
     /// <summary>Whether the host runs in the bubblewrap sandbox.</summary>
     public bool Sandboxed => _process.Sandboxed;
 
@@ -95,6 +99,11 @@ internal sealed class HostedStrategy : IDisposable
             _channel.WriteLine(_writer.Cycle(snapshot));
             _process.Arm(AnswerLimit);
             bool read = _channel.TryReadLine(out var line);
+            while (read && StaleAnswer.Is(line, snapshot.Cycle))
+            {
+                read = _channel.TryReadLine(out line); // an earlier cycle's answer, behind a bad line that took its place: that cycle is charged already
+            }
+
             _process.Disarm();
             if (!read)
             {
@@ -122,10 +131,14 @@ internal sealed class HostedStrategy : IDisposable
         }
         catch (ProtocolException e) when (e.Message.StartsWith("a line is longer", StringComparison.Ordinal))
         {
+            // A bad answer, and the connection is closed (docs/protocol.md, "Limits"): the host ends too.
             _process.Disarm();
-            message = e.Message;
             _process.Kill();
-            return End(ref message);
+            string? how = "the server closed the connection after the overlong line";
+            End(ref how);
+            EndedBy = how;
+            message = e.Message;
+            return Outcome.BadAnswer;
         }
         catch (ProtocolException e)
         {
