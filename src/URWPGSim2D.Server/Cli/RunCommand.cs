@@ -116,11 +116,6 @@ internal sealed class RunCommand : ICliCommand
         progress?.Clear();
         if (options.Svg is not null)
         {
-            foreach (var fish in match.World.Fish)
-            {
-                fish.SyncModel(); // the picture shows every leaf exactly where the fish is
-            }
-
             SvgFrame.Write(match.World, options.Svg, [match.TeamLabel(0), match.TeamLabel(1)]);
         }
 

@@ -239,7 +239,6 @@ internal sealed class ContactResponse
         if (turn != 0f)
         {
             fish.Heading = Angle.Wrap(fish.Heading + turn);
-            fish.Invalidate();
         }
     }
 
