@@ -18,6 +18,7 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     public void OnContact(Stepper stepper, in Contact contact)
     {
         CandidatePair pair = world.PairOf(contact);
+        TakeInOrder(stepper, pair, contact.BodyA, contact.BodyB);
         ContactKind kind = _response.Apply(pair, contact);
         log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
     }
@@ -32,6 +33,36 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
             world.Fish[body].Frozen = true;
         }
     }
+
+    // The stepper re-plans the bodies a response changes in the order it first changes them, and
+    // simultaneous contacts come in that order: the body the separation moves first is taken
+    // first (A, unless A is a frozen fish that its partner alone is pushed away from), then the other.
+    private void TakeInOrder(Stepper stepper, in CandidatePair pair, int a, int b)
+    {
+        bool aStays = pair.Kind switch
+        {
+            PairKind.FishBall => world.Fish[pair.A].Frozen,
+            PairKind.FishFish => world.Fish[pair.A].Frozen && !world.Fish[pair.B].Frozen,
+            _ => false,
+        };
+        bool bMoves = b < world.Fish.Length + world.Balls.Length;
+        if (aStays && bMoves)
+        {
+            Take(stepper, b);
+            Take(stepper, a);
+        }
+        else
+        {
+            Take(stepper, a);
+            if (bMoves)
+            {
+                Take(stepper, b);
+            }
+        }
+    }
+
+    // Marks a body as changed by this contact (its motion unchanged).
+    private static void Take(Stepper stepper, int body) => stepper.SetVelocity(body, stepper.VelocityOf(body), stepper.AngularVelocityOf(body));
 
     // A leaf index for the contact record, −1 for "not a fish".
     private static sbyte Part(FishPart? part) => part.HasValue ? (sbyte)part.Value : (sbyte)-1;

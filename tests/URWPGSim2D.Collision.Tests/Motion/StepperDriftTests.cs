@@ -1,9 +1,6 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
 using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
@@ -47,12 +44,7 @@ public sealed class StepperDriftTests
     {
         // A bar 200 × 40 mm turning between two boxes 150 mm apart jams; settling cannot free it, so
         // a step's move is rejected (see StepperWedgeTests). Its turn is half velocity, half drift.
-        var stepper = new Stepper();
-        stepper.AddWalls(new Field());
-        stepper.AddStatic(new Aabb(new Vector2(-400f, -300f), new Vector2(-75f, 300f)));
-        stepper.AddStatic(new Aabb(new Vector2(75f, -300f), new Vector2(400f, 300f)));
-        var bar = new ConvexPolygon([new Vector2(-100f, -20f), new Vector2(100f, -20f), new Vector2(100f, 20f), new Vector2(-100f, 20f)]);
-        int body = stepper.AddPolygon(bar, Vector2.Zero, MathF.PI / 2f);
+        var stepper = StepperWedgeTests.BarInSlot(out int body);
         var handler = new RecordingHandler { Record = false };
         int rejected = 0;
         for (int step = 0; step < 30 && rejected == 0; step++)
