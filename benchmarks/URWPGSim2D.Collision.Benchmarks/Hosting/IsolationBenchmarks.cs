@@ -17,6 +17,7 @@ namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 /// strategy, takes its first decision and stops it.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class IsolationBenchmarks
 {
     private const string Source = """

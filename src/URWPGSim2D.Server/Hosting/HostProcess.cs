@@ -19,7 +19,7 @@ internal sealed class HostProcess : IDisposable
     private const int TailLines = 4;
     private readonly Process _process;
     private readonly Queue<string> _tail = new();
-    private readonly Timer _watchdog;
+    private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
 
     private HostProcess(Process process, string scratch, bool sandboxed)
@@ -27,7 +27,7 @@ internal sealed class HostProcess : IDisposable
         _process = process;
         Scratch = scratch;
         Sandboxed = sandboxed;
-        _watchdog = new Timer(_ => Kill(byWatchdog: true));
+        HostWatchdog.Watch(this);
         _process.ErrorDataReceived += (_, e) =>
         {
             if (e.Data is { } line)
@@ -83,6 +83,8 @@ internal sealed class HostProcess : IDisposable
             ["DOTNET_gcServer"] = "0",
             ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
             ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
+            ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
+            ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
         };
 
         var command = new List<string>();
@@ -122,11 +124,14 @@ internal sealed class HostProcess : IDisposable
         return new HostProcess(process, scratch, sandbox);
     }
 
-    /// <summary>Kills the host if no <see cref="Disarm"/> comes within <paramref name="limit"/>.</summary>
-    public void Arm(TimeSpan limit) => _watchdog.Change(limit, Timeout.InfiniteTimeSpan);
+    /// <summary>Kills the host if no <see cref="Disarm"/> comes within <paramref name="limit"/> (<see cref="HostWatchdog"/>).</summary>
+    public void Arm(TimeSpan limit) => Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
 
     /// <summary>Stops the watchdog.</summary>
-    public void Disarm() => _watchdog.Change(Timeout.Infinite, Timeout.Infinite);
+    public void Disarm() => Volatile.Write(ref _deadline, long.MaxValue);
+
+    /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
+    public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
 
     /// <summary>Waits up to <paramref name="ms"/> for the host to exit; true when it has.</summary>
     public bool WaitForExit(int ms) => _process.WaitForExit(ms);
@@ -177,7 +182,7 @@ internal sealed class HostProcess : IDisposable
     /// <inheritdoc/>
     public void Dispose()
     {
-        _watchdog.Dispose();
+        HostWatchdog.Forget(this);
         if (!_process.WaitForExit(0))
         {
             Kill();
