@@ -53,7 +53,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     /// <summary>Runs every strategy on <paramref name="snapshot"/> and writes the fish's decisions.</summary>
     public void Decide(MatchSnapshot snapshot, FishState[] fish)
     {
-        _last = (snapshot.Cycle, snapshot.GoalsOf(0), snapshot.GoalsOf(1));
+        _last = (snapshot.Cycle + 1, snapshot.GoalsOf(0), snapshot.GoalsOf(1));
         foreach (var slot in Slots)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
@@ -98,9 +98,10 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
-    // One cycle of a strategy in its own process: the same faults as in the server's process, and
-    // an ended host stops the team's fish for the rest of the match.
-    private void Hosted(StrategySlot slot, HostedStrategy hosted, MatchSnapshot snapshot)
+    // One cycle of a strategy in another process: the same faults as in the server's process; an
+    // ended host stops the team's fish for the rest of the match, a disconnected remote client
+    // until it connects again.
+    private void Hosted(StrategySlot slot, IConnectedStrategy hosted, MatchSnapshot snapshot)
     {
         if (slot.EndedInCycle > 0)
         {
@@ -110,21 +111,28 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         int cycle = snapshot.Cycle + 1;
         switch (hosted.Decide(snapshot, slot.Scratch, out string? message))
         {
-            case HostedStrategy.Outcome.Decided:
+            case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
                 break;
-            case HostedStrategy.Outcome.Exception:
+            case ConnectionOutcome.Exception:
                 slot.Exceptions++;
                 slot.FirstFault ??= $"cycle {cycle}: {message}";
                 break;
-            case HostedStrategy.Outcome.BadAnswer:
+            case ConnectionOutcome.BadAnswer:
                 slot.BadAnswers++;
                 slot.FirstFault ??= $"cycle {cycle}: {message}";
                 break;
-            case HostedStrategy.Outcome.TimedOut:
+            case ConnectionOutcome.TimedOut:
                 slot.Timeouts++;
                 slot.FirstFault ??= $"cycle {cycle}: no decision within {TimeoutMs} ms";
                 break;
+            case ConnectionOutcome.Disconnected:
+                slot.Disconnects++;
+                slot.FirstFault ??= $"cycle {cycle}: remote client disconnected: {message}";
+                Array.Fill(slot.Decisions, Decision.Stop);
+                break;
+            case ConnectionOutcome.Absent:
+                break; // no client since a disconnect: its fish stay stopped
             default:
                 slot.EndedInCycle = cycle;
                 slot.FirstFault ??= $"cycle {cycle}: strategy host ended: {message}";

@@ -17,8 +17,8 @@ internal sealed class StrategySlot
         Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team, clock ?? new ThreadTimeClock()) : null;
     }
 
-    /// <summary>A slot whose strategy runs in a strategy host process.</summary>
-    public StrategySlot(string label, HostedStrategy hosted, int team, int[] fish)
+    /// <summary>A slot whose strategy plays over the strategy protocol: in a strategy host process or on a remote client.</summary>
+    public StrategySlot(string label, IConnectedStrategy hosted, int team, int[] fish)
         : this(label, team, fish)
     {
         Hosted = hosted;
@@ -40,8 +40,8 @@ internal sealed class StrategySlot
     /// <summary>The strategy (in the server's process), or null for a hosted one.</summary>
     public IStrategy? Strategy { get; }
 
-    /// <summary>The strategy host of a strategy that runs in its own process, or null.</summary>
-    public HostedStrategy? Hosted { get; }
+    /// <summary>The connection of a strategy that runs in another process (a strategy host or a remote client), or null.</summary>
+    public IConnectedStrategy? Hosted { get; }
 
     /// <summary>The cycle (1-based) in which the strategy host ended, or 0 while it runs.</summary>
     public int EndedInCycle { get; set; }
@@ -70,10 +70,13 @@ internal sealed class StrategySlot
     /// <summary>Cycles in which it answered with something unusable (for example too few decisions).</summary>
     public int BadAnswers { get; set; }
 
-    /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created), else 0.</summary>
-    public int Crashes => EndedInCycle > 0 ? 1 : 0;
+    /// <summary>Times its remote client disconnected (or was cut off) during the match.</summary>
+    public int Disconnects { get; set; }
 
-    /// <summary>All faults: exceptions, time-outs, bad answers and an ended host.</summary>
+    /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created), else 0; plus every disconnect of a remote client.</summary>
+    public int Crashes => (EndedInCycle > 0 ? 1 : 0) + Disconnects;
+
+    /// <summary>All faults: exceptions, time-outs, bad answers and an ended host or remote client.</summary>
     public int Faults => Exceptions + Timeouts + BadAnswers + Crashes;
 
     /// <summary>The first fault's message.</summary>

@@ -98,9 +98,12 @@ internal static class MatchBuilder
             {
                 teamDone[d.Team] = true;
                 int[] members = Members(scenario, d.Team, null);
-                slots.Add(team.Host is { } prepared
-                    ? new StrategySlot(team.Label, new HostedStrategy(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members)
-                    : new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock));
+                slots.Add(team switch
+                {
+                    { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(d.Team, members)), d.Team, members),
+                    { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
+                    _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
+                });
             }
         }
 

@@ -9,8 +9,12 @@ namespace URWPGSim2D.Server.Scenario;
 /// <param name="Clock">The deadline clock of an isolated strategy (null: its thread's CPU time; tests pass a <see cref="ManualStrategyClock"/>).</param>
 /// <param name="Host">A strategy for strategy host processes: every match built with it starts a fresh host.</param>
 /// <param name="Settings">The hosts' sandbox and memory settings (null: the defaults).</param>
-internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null)
+/// <param name="Remote">The seat of a team played by a remote client, or null.</param>
+internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, RemoteSeat? Remote = null)
 {
+    /// <summary>A team played by a remote client on <paramref name="seat"/>.</summary>
+    public static TeamStrategy RemoteClient(string label, RemoteSeat seat) => new(label, null, true, Remote: seat);
+
     /// <summary>A team played by a strategy host process per match.</summary>
     public static TeamStrategy Hosted(string label, PreparedStrategy host, HostSettings settings) => new(label, null, true, null, host, settings);
 }
