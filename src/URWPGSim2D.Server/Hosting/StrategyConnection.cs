@@ -264,13 +264,13 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private ConnectionOutcome Bad(int cycle, string why, out string? message)
     {
         message = why;
-        _log?.Invoke($"cycle {cycle + 1}: bad answer: {why}");
+        _log?.Invoke($"cycle {cycle + 1}: bad answer: {Json.MessageText.Escape(why)}");
         return ConnectionOutcome.BadAnswer;
     }
 
     private bool Refuse(string why, out string? message)
     {
-        _log?.Invoke("refused a client: " + why);
+        _log?.Invoke("refused a client: " + Json.MessageText.Escape(why));
         try
         {
             _channel.WriteLine(_writer.Error(why));
