@@ -1,17 +1,24 @@
+extern alias baseline;
+
 using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
+using FrozenFish = baseline::URWPGSim2D.Collision.Fish;
+using FrozenResult = baseline::URWPGSim2D.Collision.CollisionDetectionResult;
+using FrozenSat = baseline::URWPGSim2D.Collision.NarrowPhase.ConvexSat;
+using FrozenShapes = baseline::URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Benchmarks.Fish;
 
 /// <summary>
 /// Costs of the fish tree against the narrow-phase primitives, in one class so that the ratios
 /// come from the same run: a circle–circle test that misses (the baseline; like the fish queries
-/// it returns the full result struct), one leaf-vs-leaf SAT, and the fish queries and pose updates. Run: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter *FishCollision* --job short</c>.
+/// it returns the full result struct), one leaf-vs-leaf SAT, and the fish queries and pose updates;
+/// the <c>…Baseline</c> rows are the same work in the frozen baseline (the library of the commit
+/// tagged <c>benchmark-baseline</c>, under the extern alias <c>baseline</c>) on the same poses. Run: <c>dotnet run -c Release --project benchmarks/URWPGSim2D.Collision.Benchmarks -- --filter *FishCollision* --job short</c>.
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]
@@ -24,7 +31,12 @@ public class FishCollisionBenchmarks
     private FishModel _nearMiss = null!;
     private FishModel _crossing = null!;
     private FishModel _updated = null!;
-    private FishPoseBaseline _baselinePose = null!;
+    private FrozenFish.FishModel _frozenFish = null!;
+    private FrozenFish.FishModel _frozenCrossing = null!;
+    private FrozenFish.FishModel _frozenUpdated = null!;
+    private readonly FrozenFish.FishPose[] _frozenPoses = new FrozenFish.FishPose[16];
+    private readonly FrozenFish.FishPose[] _frozenSwim = new FrozenFish.FishPose[64];
+    private readonly FrozenFish.FishPose[] _frozenBracket = new FrozenFish.FishPose[64];
     private Circle _ballA;
     private Circle _ballApart;
     private Circle _ballOverlapping;
@@ -44,7 +56,6 @@ public class FishCollisionBenchmarks
         // A fish crossing the first one's body at right angles: several leaf pairs overlap.
         _crossing = new FishModel(FishSize.Default, new FishPose(new Vector2(10f, -40f), MathF.PI / 2f, 0.3f, 0.2f, -0.1f));
         _updated = new FishModel(FishSize.Default, default);
-        _baselinePose = new FishPoseBaseline(FishSize.Default);
 
         _ballA = new Circle(new Vector2(0f, 0f), 58f);
         _ballApart = new Circle(new Vector2(300f, 40f), 58f);
@@ -74,9 +85,25 @@ public class FishCollisionBenchmarks
             _bracket[i] = new FishPose(new Vector2(300f + 20f * s, -200f + 5f * s), 0.7f + 0.05f * s, 0.21f, -0.13f, 0.33f);
         }
 
+        // The same fish and poses in the frozen baseline.
+        _frozenFish = new FrozenFish.FishModel(FrozenFish.FishSize.Default, Frozen(_fish.Pose));
+        _frozenCrossing = new FrozenFish.FishModel(FrozenFish.FishSize.Default, Frozen(_crossing.Pose));
+        _frozenUpdated = new FrozenFish.FishModel(FrozenFish.FishSize.Default, default);
+        for (int i = 0; i < _poses.Length; i++)
+        {
+            _frozenPoses[i] = Frozen(_poses[i]);
+        }
+
+        for (int i = 0; i < _swim.Length; i++)
+        {
+            (_frozenSwim[i], _frozenBracket[i]) = (Frozen(_swim[i]), Frozen(_bracket[i]));
+        }
+
         Console.WriteLine($"// near miss contacts: {FishCollision.DetectAll(_fish, _nearMiss, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _nearMiss)}");
         Console.WriteLine($"// crossing contacts: {FishCollision.DetectAll(_fish, _crossing, new FishContact[64])}, candidate leaf pairs: {CandidatePairs(_fish, _crossing)}");
-        Console.WriteLine($"// deep overlap, optimised = baseline: {FishCollision.Detect(_fish, _crossing) == DeepestBaseline(_fish, _crossing)}");
+        var deep = FishCollision.Detect(_fish, _crossing);
+        var frozenDeep = FrozenFish.FishCollision.Detect(_frozenFish, _frozenCrossing);
+        Console.WriteLine($"// deep overlap, today = baseline: {deep.Result.MinimumTranslationVector == frozenDeep.Result.MinimumTranslationVector && (int?)deep.PartA == (int?)frozenDeep.PartA && (int?)deep.PartB == (int?)frozenDeep.PartB}");
         Console.WriteLine($"// ball at tail hits: {FishCollision.Detect(_fish, _ballAtTail)}, far ball root overlap: {_fish.Root.Overlaps(_ballFar)}");
     }
 
@@ -90,7 +117,7 @@ public class FishCollisionBenchmarks
     public CollisionDetectionResult LeafVsLeafSat() => ConvexSat.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
 
     [Benchmark]
-    public CollisionDetectionResult LeafVsLeafSatBaseline() => ConvexSatBaseline.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
+    public FrozenResult LeafVsLeafSatBaseline() => FrozenSat.Detect(_frozenFish.LeafView((int)FrozenFish.FishPart.Body), _frozenCrossing.LeafView((int)FrozenFish.FishPart.Body));
 
     [Benchmark]
     public FishContact FishVsBallRootMiss() => FishCollision.Detect(_fish, _ballFar);
@@ -126,64 +153,31 @@ public class FishCollisionBenchmarks
     }
 
     [Benchmark]
-    public Circle PoseUpdateSameJointsBaseline()
+    public FrozenShapes.Circle PoseUpdateSameJointsBaseline()
     {
-        _baselinePose.SetPose(_bracket[_next++ & 63]);
-        return _baselinePose.Root;
+        _frozenUpdated.SetPose(_frozenBracket[_next++ & 63]);
+        return _frozenUpdated.Root;
     }
 
     [Benchmark]
-    public Circle PoseUpdateRandomBaseline()
+    public FrozenShapes.Circle PoseUpdateRandomBaseline()
     {
-        _baselinePose.SetPose(_poses[_next++ & 15]);
-        return _baselinePose.Root;
+        _frozenUpdated.SetPose(_frozenPoses[_next++ & 15]);
+        return _frozenUpdated.Root;
     }
 
     [Benchmark]
-    public Circle PoseUpdateSwimmingBaseline()
+    public FrozenShapes.Circle PoseUpdateSwimmingBaseline()
     {
-        _baselinePose.SetPose(_swim[_next++ & 63]);
-        return _baselinePose.Root;
+        _frozenUpdated.SetPose(_frozenSwim[_next++ & 63]);
+        return _frozenUpdated.Root;
     }
 
-    /// <summary>The deepest fish–fish contact as it was computed before: every candidate leaf pair's full SAT (frozen baseline), deepest kept.</summary>
+    /// <summary>The deepest fish–fish contact in the frozen baseline.</summary>
     [Benchmark]
-    public FishContact FishVsFishDeepOverlapBaseline() => DeepestBaseline(_fish, _crossing);
+    public FrozenFish.FishContact FishVsFishDeepOverlapBaseline() => FrozenFish.FishCollision.Detect(_frozenFish, _frozenCrossing);
 
-    // The pre-optimisation fish–fish query: same bounding-volume descent, full frozen-baseline SAT
-    // (MTV and action point) for every candidate leaf pair, deepest kept (ties to the lower pair).
-    private static FishContact DeepestBaseline(FishModel a, FishModel b)
-    {
-        if (!Slabs.MayOverlap(a.Root, b.Root))
-        {
-            return FishContact.None;
-        }
-
-        var best = FishContact.None;
-        float bestDepth2 = -1f;
-        for (int la = 0; la < 8; la++)
-        {
-            Circle ga = la < 3 ? a.BodyGroup : a.TailGroup;
-            for (int lb = 0; lb < 8; lb++)
-            {
-                Circle gb = lb < 3 ? b.BodyGroup : b.TailGroup;
-                if (!Slabs.MayOverlap(ga, gb) || !Slabs.MayOverlap(a.LeafMin(la), a.LeafMax(la), b.LeafMin(lb), b.LeafMax(lb)))
-                {
-                    continue;
-                }
-
-                var r = ConvexSatBaseline.Detect(a.LeafView(la), b.LeafView(lb));
-                float d2 = r.MinimumTranslationVector.LengthSquared();
-                if (r.Intersect && d2 > bestDepth2)
-                {
-                    bestDepth2 = d2;
-                    best = new FishContact(r, (FishPart)la, (FishPart)lb);
-                }
-            }
-        }
-
-        return best;
-    }
+    private static FrozenFish.FishPose Frozen(in FishPose p) => new(p.Position, p.Heading, p.Joint1, p.Joint2, p.Joint3);
 
     // Leaf pairs that reach the exact test: group circles and both leaf 8-DOPs overlap.
     private static int CandidatePairs(FishModel a, FishModel b)
