@@ -272,7 +272,10 @@ internal sealed class RunCommand : ICliCommand
         "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball), a .dll built against\n" +
         "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
         "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
-        "100). --trace writes JSON Lines, --svg the final frame,\n" +
+        "100). --strategy TEAM=remote:PORT waits for a remote client to play the team over TCP (connect, or any client\n" +
+        "of docs/protocol.md; PORT 0: any free one) for --remote-wait SECONDS (default 60), on 127.0.0.1 unless\n" +
+        "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
+        "--trace writes JSON Lines, --svg the final frame,\n" +
         "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
