@@ -196,6 +196,7 @@ internal sealed class RunCommand : ICliCommand
                 }
                 catch (StrategyLoadException e)
                 {
+                    teams[0]?.Remote?.Dispose(); // a seat already bound is let go
                     throw new StrategyLoadException($"--strategy {t}: {e.Message}", e.Details);
                 }
             }

@@ -34,28 +34,7 @@ public sealed class RemoteMatchTests : IDisposable
     [MemberData(nameof(Items))]
     public void A_remote_team_plays_the_same_match_as_in_process(string item)
     {
-        string sdk = Path.Combine(_folder, "Steady.cs");
-        File.WriteAllText(sdk, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Steady : IStrategy
-            {
-                private int _calls;
-                public string TeamName => "steady";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    _calls++;
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        var me = s.Fish[fish[i]];
-                        var target = s.Balls.Length > 0 ? s.Balls[i % s.Balls.Length].Position : System.Numerics.Vector2.Zero;
-                        float want = MathF.Atan2(target.Y - me.Position.Y, target.X - me.Position.X) - me.Heading;
-                        int turn = 7 + (int)Math.Clamp(MathF.Round(MathF.IEEERemainder(want, MathF.Tau) * 4), -7, 7);
-                        d[i] = new Decision((_calls + s.Variables.Count + (s.SidesSwapped ? 3 : 0) + s.GoalsOf(0)) % 6 + 9, turn);
-                    }
-                }
-            }
-            """);
+        string sdk = SteadyStrategy.Write(_folder);
         foreach (string spec in new[] { sdk, OriginalStrategyTests.Folder("Dribbler") })
         {
             string local = Path.Combine(_folder, "local.jsonl"), remote = Path.Combine(_folder, "remote.jsonl");
@@ -103,6 +82,25 @@ public sealed class RemoteMatchTests : IDisposable
         Assert.Equal("", result.Stdout);
         Assert.Matches(@"^team 0 \(remote\): waiting for a client on 127\.0\.0\.1:(\d+)\n--strategy 0=remote: no client connected to 127\.0\.0\.1:\1 within 1 s \(--remote-wait\)\n$", stderr.ToString());
         Assert.False(File.Exists(trace));
+    }
+
+    [Fact]
+    public void A_port_in_use_is_one_line_and_exit_2_before_the_match()
+    {
+        var taken = new System.Net.Sockets.TcpListener(System.Net.IPAddress.Loopback, 0);
+        taken.Start();
+        try
+        {
+            int port = ((System.Net.IPEndPoint)taken.LocalEndpoint).Port;
+            var result = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", $"1=remote:{port}");
+            Assert.Equal(2, result.ExitCode);
+            Assert.StartsWith($"--strategy 1: cannot listen on 127.0.0.1:{port}: ", result.Stderr, StringComparison.Ordinal);
+            Assert.Single(result.Stderr.TrimEnd('\n').Split('\n'));
+        }
+        finally
+        {
+            taken.Stop();
+        }
     }
 
     [Theory]
