@@ -165,31 +165,6 @@ internal static class MessageReader
         }
     }
 
-    /// <summary>The <c>cycle</c> a client's answer names, or null when the line has none (or is not a JSON object).</summary>
-    public static int? AnsweredCycle(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (r.ValueTextEquals("cycle"u8))
-                {
-                    return JsonFields.Int(ref r, "cycle");
-                }
-
-                JsonFields.Skip(ref r);
-            }
-
-            return null;
-        }
-        catch (Exception e) when (e is JsonException or ProtocolException)
-        {
-            return null;
-        }
-    }
-
     /// <summary>
     /// Reads a client's <c>decisions</c> for <paramref name="cycle"/> into <paramref name="decisions"/>
     /// (one per fish). A reported fault, a wrong count or a gear outside 0..15 is returned as that

@@ -70,7 +70,7 @@ internal static class LiveRun
         catch (LiveServerException e)
         {
             console.ErrorLine($"--port {options.Port}: {e.Message}");
-            player.Match.Strategies.Stop();
+            MatchLoop.StopStrategies(player.Match);
             return ExitCodes.BadInput;
         }
 
@@ -79,7 +79,7 @@ internal static class LiveRun
         player.Run(stop);
         server.Stop();
         var match = player.Match;
-        match.Strategies.Stop();
+        MatchLoop.StopStrategies(match);
         console.Out.Write(MatchSummary.Format(match, player.Busy));
         return ExitCodes.Success;
     }

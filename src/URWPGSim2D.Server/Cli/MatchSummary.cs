@@ -50,9 +50,12 @@ internal static class MatchSummary
 
             any = true;
             s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts, {slot.BadAnswers} bad answers");
-            s.Append(slot.Crashes == 0
-                ? "; its fish kept their last decisions"
-                : string.Create(c, $", strategy host ended in cycle {slot.EndedInCycle}; its fish kept their last decisions until then and stopped after"));
+            s.Append(slot switch
+            {
+                { Crashes: 0 } => "; its fish kept their last decisions",
+                { CreationFault: not null } => ", strategy not created; its fish stopped for the whole match",
+                _ => string.Create(c, $", strategy host ended in cycle {slot.EndedInCycle}; its fish kept their last decisions until then and stopped after"),
+            });
             s.Append(c, $"; first: {slot.FirstFault}");
         }
 

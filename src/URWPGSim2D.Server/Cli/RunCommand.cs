@@ -164,7 +164,8 @@ internal sealed class RunCommand : ICliCommand
     /// <summary>
     /// The strategies of the command line: with <c>--isolation process</c> (the default) readied for
     /// strategy hosts (sources compiled once per run; every match built from them starts fresh hosts),
-    /// with <c>--isolation none</c> loaded in process (a fresh instance each call). Built-in names run in process.
+    /// with <c>--isolation none</c> loaded in process (a fresh instance each call; a constructor that throws is
+    /// the team's fault in cycle 1, not a load error). Built-in names run in process.
     /// </summary>
     /// <exception cref="StrategyLoadException">A strategy cannot be used, or <c>--sandbox required</c> cannot be met; the message starts with the option.</exception>
     /// <param name="options">The options.</param>
@@ -191,7 +192,7 @@ internal sealed class RunCommand : ICliCommand
                     }
 
                     teams[t] = prepared is null
-                        ? new TeamStrategy(Path.GetFileName(spec), StrategyResolver.Load(spec), Isolated: true)
+                        ? TeamStrategy.InProcess(Path.GetFileName(spec), spec)
                         : TeamStrategy.Hosted(Path.GetFileName(spec), prepared, options.HostSettings);
                 }
                 catch (StrategyLoadException e)

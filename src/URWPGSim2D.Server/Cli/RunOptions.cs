@@ -15,7 +15,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] [--isolation process|none] [--sandbox auto|required|off] [--strategy-memory MB] [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -105,16 +105,16 @@ internal sealed class RunOptions
     public System.Net.IPAddress RemoteHost { get; private set; } = System.Net.IPAddress.Loopback;
 
     /// <summary>Where user strategies run (<c>--isolation process|none</c>; default process).</summary>
-    public IsolationMode Isolation { get; private set; } = IsolationMode.Process;
+    public IsolationMode Isolation => HostSettings.Isolation;
 
     /// <summary>Whether strategy hosts run in the sandbox (<c>--sandbox auto|required|off</c>; default auto).</summary>
-    public SandboxMode Sandbox { get; private set; } = SandboxMode.Auto;
+    public SandboxMode Sandbox => HostSettings.Sandbox;
 
     /// <summary>GC heap limit of a strategy host, MiB (<c>--strategy-memory MB</c>; default 1024).</summary>
-    public int StrategyMemoryMb { get; private set; } = HostSettings.DefaultMemoryMb;
+    public int StrategyMemoryMb => HostSettings.MemoryMb;
 
-    /// <summary>The strategy hosts' settings.</summary>
-    public HostSettings HostSettings => new(Isolation, Sandbox, StrategyMemoryMb);
+    /// <summary>The strategy hosts' settings (<see cref="HostOptions"/>).</summary>
+    public HostSettings HostSettings { get; private set; } = HostSettings.Default;
 
     /// <summary>Deadline of a loaded strategy per call, ms of its thread's CPU time.</summary>
     public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
@@ -241,13 +241,7 @@ internal sealed class RunOptions
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
-                case "--isolation":
-                    o.Isolation = value switch { "process" => IsolationMode.Process, "none" => IsolationMode.None, _ => throw UsageError($"--isolation must be process or none, got {MessageText.Quote(value)}") };
-                    break;
-                case "--sandbox":
-                    o.Sandbox = value switch { "auto" => SandboxMode.Auto, "required" => SandboxMode.Required, "off" => SandboxMode.Off, _ => throw UsageError($"--sandbox must be auto, required or off, got {MessageText.Quote(value)}") };
-                    break;
-                case "--strategy-memory": o.StrategyMemoryMb = (int)Number(name, value, 64, 1_048_576); break;
+                case "--isolation" or "--sandbox" or "--strategy-memory": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--noise":
                     o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {MessageText.Quote(value)}") };
                     break;

@@ -6,6 +6,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tournament;
 
 namespace URWPGSim2D.Server.Cli;
@@ -114,8 +115,22 @@ internal sealed class TournamentCommand : ICliCommand
 
     private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, CliConsole console)
     {
-        var errors = o.Entrants.Select(EntrantLoader.Check).ToArray();
-        for (int i = 0; i < errors.Length; i++)
+        HostSandbox.Warn = console.ErrorLine;
+        var entrants = new EntrantLoader(o.Entrants, o.HostSettings);
+        var errors = entrants.Errors;
+        if (entrants.AnyHosted)
+        {
+            try
+            {
+                HostSandbox.Use(o.Sandbox); // the warning or the refusal, before anything is played
+            }
+            catch (StrategyLoadException e)
+            {
+                return Refuse(console, e.Message);
+            }
+        }
+
+        for (int i = 0; i < errors.Count; i++)
         {
             if (errors[i] is { } error)
             {
@@ -141,7 +156,7 @@ internal sealed class TournamentCommand : ICliCommand
 
         // What is already there is rewritten whole (dropping broken lines), then each finished match is appended.
         TournamentFile.Write(results, header, kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex));
-        var runner = new TournamentRunner(o.Item, header, errors, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
+        var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
         int threads = o.Threads ?? Environment.ProcessorCount;
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var clock = Stopwatch.StartNew();
@@ -300,6 +315,9 @@ internal sealed class TournamentCommand : ICliCommand
         "match's replay page in replays/). Run again into the same DIR, it plays only missing or broken matches.\n" +
         "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
         "intervals; one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
+        "Entrants' code runs as with 'run': each in its own strategy host per match (--isolation process, the default;\n" +
+        "--sandbox auto|required|off, --strategy-memory MB), or in the server's process with --isolation none; faults\n" +
+        "are charged to the team that made them and the match is played.\n" +
         "--slurm SDIR writes the tournament as a Slurm job array of --shards K tasks (--shard I/K --results FILE each)\n" +
         "and a merge job (--merge FILE...) into SDIR (--partition, --time); --submit submits them.\n" +
         "Formats: docs/tournament.md.\n";

@@ -18,7 +18,7 @@ internal sealed class TournamentOptions
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -43,6 +43,12 @@ internal sealed class TournamentOptions
 
     /// <summary>Strategies' time limit per call, ms.</summary>
     public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+
+    /// <summary>Where user entrants run (<see cref="HostOptions"/>): strategy hosts by default, as <c>run</c>.</summary>
+    public HostSettings HostSettings { get; private set; } = HostSettings.Default;
+
+    /// <summary>Whether strategy hosts run in the sandbox.</summary>
+    public SandboxMode Sandbox => HostSettings.Sandbox;
 
     /// <summary>Matches at once, or null for every core.</summary>
     public int? Threads { get; private set; }
@@ -173,6 +179,7 @@ internal sealed class TournamentOptions
                     break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 1, 1_000_000); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
+                case "--isolation" or "--sandbox" or "--strategy-memory": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--out": o.Out = value.Length > 0 ? value : throw UsageError("--out needs a folder, got \"\""); break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;

@@ -9,6 +9,12 @@ internal interface IConnectedStrategy : IDisposable
     /// <summary>The team name the client said hello with, or null.</summary>
     string? TeamName { get; }
 
+    /// <summary>How the connection ended when the last call's <see cref="ConnectionOutcome.BadAnswer"/> also ended it (an overlong line), else null.</summary>
+    string? EndedBy { get; }
+
+    /// <summary>Whether another client may take over after the connection ends (a remote team), rather than the team's strategy ending for the match (a host).</summary>
+    bool Reconnects { get; }
+
     /// <summary>
     /// Sends <paramref name="snapshot"/> and reads the cycle's decisions into <paramref name="decisions"/>
     /// (written only on <see cref="ConnectionOutcome.Decided"/>). <paramref name="message"/> says what went wrong otherwise.

@@ -34,6 +34,12 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     /// <inheritdoc/>
     public string? TeamName => _current?.TeamName;
 
+    /// <inheritdoc/>
+    public string? EndedBy { get; private set; }
+
+    /// <summary>True: after a disconnect another client may take the team over.</summary>
+    public bool Reconnects => true;
+
     /// <summary>Whether a client is connected.</summary>
     public bool Connected => _current is not null;
 
@@ -59,6 +65,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;
+        EndedBy = null;
         for (int i = 0; i < AcceptsPerCycle && _current is null; i++)
         {
             if (!TryAccept(TimeSpan.Zero))
@@ -73,15 +80,16 @@ internal sealed class RemoteStrategy : IConnectedStrategy
         }
 
         var outcome = connection.Decide(snapshot, decisions, out message);
-        if (outcome != ConnectionOutcome.Ended)
+        if (!connection.HasEnded)
         {
             return outcome;
         }
 
-        _seat.Log($"cycle {snapshot.Cycle + 1}: {message}; waiting for the client to connect again on {_seat.Address}");
+        EndedBy = connection.EndedBy;
+        _seat.Log($"cycle {snapshot.Cycle + 1}: {EndedBy ?? message}; waiting for the client to connect again on {_seat.Address}");
         connection.Dispose();
         _current = null;
-        return ConnectionOutcome.Disconnected;
+        return outcome == ConnectionOutcome.Ended ? ConnectionOutcome.Disconnected : outcome;
     }
 
     /// <inheritdoc/>

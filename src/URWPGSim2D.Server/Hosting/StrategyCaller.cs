@@ -14,7 +14,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     /// <summary>The slots, in decision order.</summary>
     public StrategySlot[] Slots { get; } = slots;
 
-    private (int Cycle, int Goals0, int Goals1) _last;
+    private string? _timeoutText;
 
     /// <summary>Time limit of an isolated strategy per cycle, ms.</summary>
     public int TimeoutMs { get; } = timeoutMs;
@@ -47,19 +47,27 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
-    /// <summary>Ends the threads of the isolated strategies and the strategy hosts, with the score of the last cycle's snapshot.</summary>
-    public void Stop() => Stop(_last.Cycle, _last.Goals0, _last.Goals1);
+    /// <summary>Ends the threads of the isolated strategies and the strategy hosts of a match never played (cycle 0, no goals).</summary>
+    public void Stop() => Stop(0, 0, 0);
 
     /// <summary>Runs every strategy on <paramref name="snapshot"/> and writes the fish's decisions.</summary>
     public void Decide(MatchSnapshot snapshot, FishState[] fish)
     {
-        _last = (snapshot.Cycle + 1, snapshot.GoalsOf(0), snapshot.GoalsOf(1));
+        int cycle = snapshot.Cycle + 1; // the cycle these decisions drive
         foreach (var slot in Slots)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
-            if (slot.Hosted is { } hosted)
+            if (slot.EndedInCycle > 0)
             {
-                Hosted(slot, hosted, snapshot);
+                // its host has ended (or it was never created): its fish stay stopped
+            }
+            else if (slot.CreationFault is { } why)
+            {
+                slot.Charge(cycle, FaultKind.Ended, why);
+            }
+            else if (slot.Hosted is { } hosted)
+            {
+                Hosted(slot, hosted, snapshot, cycle);
             }
             else if (slot.Runner is null)
             {
@@ -70,7 +78,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 }
                 catch (Exception e)
                 {
-                    Fault(slot, snapshot.Cycle, e);
+                    Fault(slot, cycle, e);
                 }
             }
             else
@@ -81,11 +89,10 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                         slot.Scratch.CopyTo(slot.Decisions, 0);
                         break;
                     case IsolatedStrategyRunner.Outcome.Threw:
-                        Fault(slot, snapshot.Cycle, error!);
+                        Fault(slot, cycle, error!);
                         break;
                     default:
-                        slot.Timeouts++;
-                        slot.FirstFault ??= $"cycle {snapshot.Cycle + 1}: no decision within {TimeoutMs} ms";
+                        slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
                         break;
                 }
             }
@@ -98,46 +105,50 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
+    private string TimeoutText => _timeoutText ??= $"no decision within {TimeoutMs} ms";
+
     // One cycle of a strategy in another process: the same faults as in the server's process; an
     // ended host stops the team's fish for the rest of the match, a disconnected remote client
-    // until it connects again.
-    private void Hosted(StrategySlot slot, IConnectedStrategy hosted, MatchSnapshot snapshot)
+    // until a client connects again.
+    private void Hosted(StrategySlot slot, IConnectedStrategy hosted, MatchSnapshot snapshot, int cycle)
     {
-        if (slot.EndedInCycle > 0)
-        {
-            return;
-        }
-
-        int cycle = snapshot.Cycle + 1;
         switch (hosted.Decide(snapshot, slot.Scratch, out string? message))
         {
             case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
                 break;
             case ConnectionOutcome.Exception:
-                slot.Exceptions++;
-                slot.FirstFault ??= $"cycle {cycle}: {message}";
+                slot.Charge(cycle, FaultKind.Exception, message ?? "exception");
                 break;
             case ConnectionOutcome.BadAnswer:
-                slot.BadAnswers++;
-                slot.FirstFault ??= $"cycle {cycle}: {message}";
+                slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");
+                if (hosted.EndedBy is { } how)
+                {
+                    Lost(slot, hosted, cycle, how);
+                }
+
                 break;
             case ConnectionOutcome.TimedOut:
-                slot.Timeouts++;
-                slot.FirstFault ??= $"cycle {cycle}: no decision within {TimeoutMs} ms";
-                break;
-            case ConnectionOutcome.Disconnected:
-                slot.Disconnects++;
-                slot.FirstFault ??= $"cycle {cycle}: remote client disconnected: {message}";
-                Array.Fill(slot.Decisions, Decision.Stop);
+                slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
                 break;
             case ConnectionOutcome.Absent:
-                break; // no client since a disconnect: its fish stay stopped
+                break; // no remote client since a disconnect: nothing asked, nothing charged
             default:
-                slot.EndedInCycle = cycle;
-                slot.FirstFault ??= $"cycle {cycle}: strategy host ended: {message}";
-                Array.Fill(slot.Decisions, Decision.Stop);
+                Lost(slot, hosted, cycle, message ?? "");
                 break;
+        }
+    }
+
+    // The connection has gone: a host for the rest of the match, a remote client until it connects again.
+    private static void Lost(StrategySlot slot, IConnectedStrategy hosted, int cycle, string how)
+    {
+        if (hosted.Reconnects)
+        {
+            slot.Charge(cycle, FaultKind.Disconnected, $"remote client disconnected: {how}");
+        }
+        else
+        {
+            slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {how}");
         }
     }
 
@@ -145,12 +156,10 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     {
         if (e is StrategyContractException)
         {
-            slot.BadAnswers++;
-            slot.FirstFault ??= $"cycle {cycle + 1}: {e.Message}";
+            slot.Charge(cycle, FaultKind.BadAnswer, e.Message);
             return;
         }
 
-        slot.Exceptions++;
-        slot.FirstFault ??= $"cycle {cycle + 1}: {e.GetType().Name}: {e.Message}";
+        slot.Charge(cycle, FaultKind.Exception, $"{e.GetType().Name}: {e.Message}");
     }
 }

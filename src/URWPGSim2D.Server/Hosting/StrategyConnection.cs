@@ -12,9 +12,11 @@ namespace URWPGSim2D.Server.Hosting;
 /// version and token), sends the assignment, then each cycle sends the snapshot and reads that
 /// cycle's decisions. An answer later than <see cref="AnswerLimit"/> ends a host's link (the host
 /// measures its strategy's deadline itself, so only a hung host is that late) and is a time-out on
-/// TCP, where the late answer is dropped when it comes. A client that ends or breaks the framing
-/// ends the connection; what it got wrong in one answer (JSON, type, cycle, count, gears) is a bad
-/// answer for that cycle, and <c>log</c> is told each one.
+/// TCP. An answer to an earlier cycle (a late one, or one left behind a bad line that took its
+/// place) is skipped: that cycle is charged already, so the client is back in step. A client that
+/// ends ends the connection; what it got wrong in one answer (JSON, type, cycle, count, gears) is a
+/// bad answer for that cycle, and <c>log</c> is told each one; a line over the limit is a bad
+/// answer that also ends the connection.
 /// </summary>
 internal sealed class StrategyConnection : IConnectedStrategy
 {
@@ -26,7 +28,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly TimeSpan _helloLimit;
     private readonly Action<string>? _log;
     private readonly Decision[] _answer;
-    private int _late = -1;
+    private readonly string _peer;
     private bool _answered;
     private bool _started;
     private bool _stopped;
@@ -38,8 +40,10 @@ internal sealed class StrategyConnection : IConnectedStrategy
     /// <param name="helloLimit">Wall time the client has for its hello.</param>
     /// <param name="token">The token the hello must carry, or null for none.</param>
     /// <param name="log">Told every refused hello and every bad answer, one line each; or null.</param>
-    public StrategyConnection(IStrategyLink link, AssignmentMessage assignment, TimeSpan answerLimit, TimeSpan helloLimit, string? token, Action<string>? log)
+    /// <param name="peer">What the messages call the other side: <c>the host</c>, <c>the client</c>.</param>
+    public StrategyConnection(IStrategyLink link, AssignmentMessage assignment, TimeSpan answerLimit, TimeSpan helloLimit, string? token, Action<string>? log, string peer = "the client")
     {
+        _peer = peer;
         ArgumentNullException.ThrowIfNull(link);
         ArgumentNullException.ThrowIfNull(assignment);
         _link = link;
@@ -66,6 +70,12 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
     /// <summary>Whether the connection has ended; every later call answers <see cref="ConnectionOutcome.Ended"/>.</summary>
     public bool HasEnded { get; private set; }
+
+    /// <inheritdoc/>
+    public string? EndedBy { get; private set; }
+
+    /// <summary>False: a connection's end is final (<see cref="RemoteStrategy"/> takes a new one).</summary>
+    public bool Reconnects => false;
 
     /// <summary>
     /// Reads the client's hello and answers it: the assignment, or an <c>error</c> (another version,
@@ -107,7 +117,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
             if (MessageReader.TypeOf(line) != MessageType.Hello)
             {
-                return Refuse("the client did not say hello", out message);
+                return Refuse($"{_peer} did not say hello", out message);
             }
 
             var hello = MessageReader.ReadHello(line);
@@ -145,6 +155,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;
+        EndedBy = null;
         if (HasEnded)
         {
             message = "the connection has ended";
@@ -167,7 +178,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
             if (MessageReader.TypeOf(line) != MessageType.Decisions)
             {
-                return Bad(cycle, "the client answered something other than decisions", out message);
+                return Bad(cycle, $"{_peer} answered something other than decisions", out message);
             }
 
             switch (MessageReader.ReadDecisions(line, cycle, _answer, out message))
@@ -185,15 +196,18 @@ internal sealed class StrategyConnection : IConnectedStrategy
         }
         catch (TimeoutException)
         {
-            _late = cycle; // its answer may still come: dropped then
-            return ConnectionOutcome.TimedOut;
+            return ConnectionOutcome.TimedOut; // its answer may still come: skipped then
         }
         catch (ProtocolException e) when (e.Message.StartsWith("a line is longer", StringComparison.Ordinal))
         {
-            _log?.Invoke($"cycle {cycle + 1}: {e.Message}: connection closed");
-            message = e.Message;
+            // A bad answer, and the connection is closed (docs/protocol.md, "Limits").
+            _log?.Invoke($"cycle {cycle + 1}: bad answer: {e.Message}: connection closed");
             _link.Abort();
-            return End(ref message);
+            string? how = "the server closed the connection after the overlong line";
+            End(ref how);
+            EndedBy = how;
+            message = e.Message;
+            return ConnectionOutcome.BadAnswer;
         }
         catch (ProtocolException e)
         {
@@ -234,7 +248,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     /// <inheritdoc/>
     public void Dispose() => _link.Dispose();
 
-    // The cycle's answer, past the late answers of earlier cycles (already charged as time-outs).
+    // The cycle's answer, past answers to earlier cycles (already charged).
     private bool ReadAnswer(int cycle, out ReadOnlySpan<byte> line)
     {
         _link.BeginWait(_answered ? AnswerLimit : FirstAnswerLimit ?? AnswerLimit);
@@ -248,8 +262,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
                     return false;
                 }
 
-                if (_late < 0 || MessageReader.TypeOf(line) != MessageType.Decisions
-                    || MessageReader.AnsweredCycle(line) is not int answered || answered > _late)
+                if (!StaleAnswer.Is(line, cycle))
                 {
                     return true;
                 }

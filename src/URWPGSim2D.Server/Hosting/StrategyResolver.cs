@@ -188,7 +188,10 @@ internal static class StrategyResolver
         }
         catch (Exception e)
         {
-            string why = e is TargetInvocationException { InnerException: { } inner } ? inner.Message : e.Message;
+            Exception cause = e is TargetInvocationException { InnerException: { } inner } ? inner : e;
+            string why = cause is TypeInitializationException { InnerException: { } root }
+                ? $"{cause.Message} ({root.GetType().Name}: {root.Message})"
+                : cause.Message;
             throw new StrategyCreationException($"cannot create strategy {type.FullName} from {path}: {why}");
         }
 

@@ -24,6 +24,9 @@ internal sealed class StrategySlot
         Hosted = hosted;
     }
 
+    /// <summary>A slot whose strategy (in the server's process) could not be created: charged in cycle 1, its fish stop.</summary>
+    public static StrategySlot NotCreated(string label, string why, int team, int[] fish) => new(label, team, fish) { CreationFault = why };
+
     private StrategySlot(string label, int team, int[] fish)
     {
         Label = label;
@@ -43,8 +46,17 @@ internal sealed class StrategySlot
     /// <summary>The connection of a strategy that runs in another process (a strategy host or a remote client), or null.</summary>
     public IConnectedStrategy? Hosted { get; }
 
-    /// <summary>The cycle (1-based) in which the strategy host ended, or 0 while it runs.</summary>
-    public int EndedInCycle { get; set; }
+    /// <summary>Why the strategy could not be created in the server's process, or null.</summary>
+    public string? CreationFault { get; private init; }
+
+    /// <summary>The cycle (1-based) in which the strategy host ended (or the strategy was found not created), or 0 while it runs.</summary>
+    public int EndedInCycle { get; private set; }
+
+    /// <summary>The cycle (1-based) of the latest fault, or 0 for none.</summary>
+    public int LastFaultCycle { get; private set; }
+
+    /// <summary>What the latest fault was (<c>exception: …</c>, <c>timeout: …</c>, <c>bad answer: …</c>, <c>ended: …</c>).</summary>
+    public string? LastFault { get; private set; }
 
     /// <summary>Team of its fish.</summary>
     public int Team { get; }
@@ -62,23 +74,50 @@ internal sealed class StrategySlot
     public IsolatedStrategyRunner? Runner { get; }
 
     /// <summary>Cycles in which the strategy threw.</summary>
-    public int Exceptions { get; set; }
+    public int Exceptions { get; private set; }
 
     /// <summary>Cycles in which it ran past its time limit (or was still busy from an earlier one).</summary>
-    public int Timeouts { get; set; }
+    public int Timeouts { get; private set; }
 
     /// <summary>Cycles in which it answered with something unusable (for example too few decisions).</summary>
-    public int BadAnswers { get; set; }
+    public int BadAnswers { get; private set; }
 
-    /// <summary>Times its remote client disconnected (or was cut off) during the match.</summary>
-    public int Disconnects { get; set; }
-
-    /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created), else 0; plus every disconnect of a remote client.</summary>
+    /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created, in a host or in process), else 0.</summary>
     public int Crashes => (EndedInCycle > 0 ? 1 : 0) + Disconnects;
 
-    /// <summary>All faults: exceptions, time-outs, bad answers and an ended host or remote client.</summary>
+    /// <summary>Times its remote client disconnected (or was cut off) during the match; counted in <see cref="Crashes"/>.</summary>
+    public int Disconnects { get; private set; }
+
+    /// <summary>All faults: exceptions, time-outs, bad answers and an ended host.</summary>
     public int Faults => Exceptions + Timeouts + BadAnswers + Crashes;
 
-    /// <summary>The first fault's message.</summary>
-    public string? FirstFault { get; set; }
+    /// <summary>The first fault's message (<c>cycle N: …</c>).</summary>
+    public string? FirstFault { get; private set; }
+
+    /// <summary>Counts a fault of <paramref name="kind"/> in <paramref name="cycle"/> (1-based) and remembers it for the summary and the trace.</summary>
+    public void Charge(int cycle, FaultKind kind, string message)
+    {
+        switch (kind)
+        {
+            case FaultKind.Exception: Exceptions++; break;
+            case FaultKind.Timeout: Timeouts++; break;
+            case FaultKind.BadAnswer: BadAnswers++; break;
+            case FaultKind.Disconnected:
+                Disconnects++;
+                Array.Fill(Decisions, Decision.Stop);
+                break;
+            default:
+                EndedInCycle = cycle;
+                Array.Fill(Decisions, Decision.Stop);
+                break;
+        }
+
+        FirstFault ??= $"cycle {cycle}: {message}";
+        LastFaultCycle = cycle;
+        LastFault = message;
+        LastFaultKind = kind;
+    }
+
+    /// <summary>The kind of the latest fault.</summary>
+    public FaultKind LastFaultKind { get; private set; }
 }

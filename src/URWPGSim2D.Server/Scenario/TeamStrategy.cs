@@ -4,17 +4,35 @@ namespace URWPGSim2D.Server.Scenario;
 
 /// <summary>A strategy that takes over a whole team (from <c>--strategy TEAM=path</c> or a test).</summary>
 /// <param name="Label">What to call it in the summary.</param>
-/// <param name="Strategy">The strategy instance (in the server's process), or null when <paramref name="Host"/> is given.</param>
+/// <param name="Strategy">The strategy instance (in the server's process), or null when <paramref name="Host"/> or <paramref name="NotCreated"/> is given.</param>
 /// <param name="Isolated">Run it on its own thread with a time limit (loaded strategies always are).</param>
 /// <param name="Clock">The deadline clock of an isolated strategy (null: its thread's CPU time; tests pass a <see cref="ManualStrategyClock"/>).</param>
 /// <param name="Host">A strategy for strategy host processes: every match built with it starts a fresh host.</param>
 /// <param name="Settings">The hosts' sandbox and memory settings (null: the defaults).</param>
+/// <param name="NotCreated">Why the strategy (in the server's process) could not be created: its constructor or static constructor threw. The team's fault, charged in cycle 1; its fish stop.</param>
 /// <param name="Remote">The seat of a team played by a remote client, or null.</param>
-internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, RemoteSeat? Remote = null)
+internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, string? NotCreated = null, RemoteSeat? Remote = null)
 {
     /// <summary>A team played by a remote client on <paramref name="seat"/>.</summary>
     public static TeamStrategy RemoteClient(string label, RemoteSeat seat) => new(label, null, true, Remote: seat);
 
     /// <summary>A team played by a strategy host process per match.</summary>
     public static TeamStrategy Hosted(string label, PreparedStrategy host, HostSettings settings) => new(label, null, true, null, host, settings);
+
+    /// <summary>
+    /// A team played in the server's process by a fresh instance of <paramref name="spec"/>
+    /// (<c>--isolation none</c>): isolated on its own thread; a constructor that throws is the team's fault, not a load error.
+    /// </summary>
+    /// <exception cref="StrategyLoadException">The strategy cannot be loaded (not found, does not compile, no strategy class).</exception>
+    public static TeamStrategy InProcess(string label, string spec)
+    {
+        try
+        {
+            return new TeamStrategy(label, StrategyResolver.Load(spec), Isolated: true);
+        }
+        catch (StrategyCreationException e)
+        {
+            return new TeamStrategy(label, null, Isolated: true, NotCreated: e.Message);
+        }
+    }
 }

@@ -95,8 +95,17 @@ internal sealed class MatchLoop : IDisposable
         }
     }
 
-    /// <summary>Stops the match's strategy hosts (idempotent).</summary>
-    public void Dispose() => Match.Strategies.Stop();
+    /// <summary>Stops the match's strategy hosts (idempotent), telling them the cycles played and the final score.</summary>
+    public void Dispose() => StopStrategies(Match);
+
+    /// <summary>Stops <paramref name="match"/>'s strategies, telling hosts the cycles played and the final score (the item's, else the goals).</summary>
+    public static void StopStrategies(Match match)
+    {
+        var referee = match.Referee;
+        int score0 = referee is null ? match.World.Goals[0] : referee.Scores[0];
+        int score1 = referee is null ? match.World.Goals[1] : referee.Scores.Length > 1 ? referee.Scores[1] : 0;
+        match.Strategies.Stop(match.World.Cycle, score0, score1);
+    }
 
     private void Write(ReadOnlySpan<ContactRecord> contacts)
     {

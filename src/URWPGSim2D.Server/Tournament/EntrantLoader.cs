@@ -1,42 +1,99 @@
 using System;
-using URWPGSim2D.Server.Scenario;
+using System.Collections.Generic;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Scenario;
 
 namespace URWPGSim2D.Server.Tournament;
 
 /// <summary>
-/// Makes an entrant's team strategy for a match through the resolver the <c>run</c> command uses
-/// (<see cref="StrategyResolver"/>): a fresh instance per match, so no state carries over; the
-/// item's demo strategy is no team strategy (null: the item's layout puts its demo on the team).
-/// <see cref="Check"/> loads each entrant once before the tournament plays, to list the ones that
-/// cannot be loaded with their reason.
+/// Readies a tournament's entrants once and makes their team strategies for each match, as the
+/// <c>run</c> command does (<see cref="StrategyResolver"/>). Readying compiles sources once per
+/// tournament and looks up each entrant's strategy class without running any of its code; an entrant
+/// that cannot be readied is listed with its one-line reason and forfeits. With
+/// <c>--isolation process</c> every user entrant plays each match in a fresh strategy host (a new
+/// process: fresh instance and statics); with <c>--isolation none</c> a fresh instance is created in
+/// the server's process for each match. Either way a constructor that throws is a fault of that match
+/// (charged, the match is played), not a load error. The item's demo strategy is no team strategy
+/// (null: the item's layout puts its demo on the team); built-in strategies run in process.
 /// </summary>
-internal static class EntrantLoader
+internal sealed class EntrantLoader
 {
-    /// <summary>The entrant's team strategy for one match (isolated: its faults are charged to its team), or null for the demo.</summary>
-    /// <exception cref="StrategyLoadException">The entrant cannot be loaded.</exception>
-    public static TeamStrategy? Create(Entrant entrant) =>
-        entrant.Spec == Entrant.Demo ? null : new TeamStrategy(entrant.Name, StrategyResolver.Load(entrant.Spec), Isolated: true);
+    private readonly IReadOnlyList<Entrant> _entrants;
+    private readonly PreparedStrategy?[] _prepared;
+
+    /// <summary>Readies every entrant under <paramref name="settings"/>.</summary>
+    /// <param name="entrants">The entrants, in command-line order.</param>
+    /// <param name="settings">How user strategies run (<c>--isolation</c>, <c>--sandbox</c>, <c>--strategy-memory</c>).</param>
+    public EntrantLoader(IReadOnlyList<Entrant> entrants, HostSettings settings)
+    {
+        ArgumentNullException.ThrowIfNull(entrants);
+        ArgumentNullException.ThrowIfNull(settings);
+        _entrants = entrants;
+        Settings = settings;
+        _prepared = new PreparedStrategy?[entrants.Count];
+        var errors = new string?[entrants.Count];
+        for (int i = 0; i < entrants.Count; i++)
+        {
+            (_prepared[i], errors[i]) = Ready(entrants[i], settings);
+        }
+
+        Errors = errors;
+    }
+
+    /// <summary>How user strategies run.</summary>
+    public HostSettings Settings { get; }
+
+    /// <summary>Per entrant, why it cannot be used (it forfeits), or null.</summary>
+    public IReadOnlyList<string?> Errors { get; }
+
+    /// <summary>Whether some entrant runs in strategy hosts (so the sandbox question applies).</summary>
+    public bool AnyHosted => Array.Exists(_prepared, p => p is not null);
+
+    /// <summary>
+    /// Entrant <paramref name="index"/>'s team strategy for one match (fresh state), or null for the demo.
+    /// A constructor that throws (in-process) gives a team whose fault is charged in cycle 1.
+    /// </summary>
+    /// <exception cref="StrategyLoadException">The entrant can no longer be loaded (its files changed).</exception>
+    public TeamStrategy? Create(int index)
+    {
+        var entrant = _entrants[index];
+        if (entrant.Spec == Entrant.Demo)
+        {
+            return null;
+        }
+
+        if (_prepared[index] is { } prepared)
+        {
+            return TeamStrategy.Hosted(entrant.Name, prepared, Settings);
+        }
+
+        return TeamStrategy.InProcess(entrant.Name, entrant.Spec);
+    }
 
     /// <summary>The one-line reason of a load failure: the message, and the first compile error when there are some.</summary>
     public static string Reason(StrategyLoadException e) =>
         StandingsText.Line(e.Details.Count == 0 ? e.Message : $"{e.Message.TrimEnd(':', ' ')}; first: {e.Details[0]}");
 
-    /// <summary>Null when the entrant loads, else its one-line reason.</summary>
-    public static string? Check(Entrant entrant)
+    // The prepared strategy (hosted entrants) and null, or null and the reason it cannot be used.
+    private static (PreparedStrategy? Prepared, string? Error) Ready(Entrant entrant, HostSettings settings)
     {
+        if (entrant.Spec == Entrant.Demo)
+        {
+            return (null, null);
+        }
+
         try
         {
-            Create(entrant);
-            return null;
+            var prepared = StrategyResolver.Prepare(entrant.Spec); // compiles and checks; runs none of the entrant's code
+            return (settings.Isolation == IsolationMode.Process ? prepared : null, null);
         }
         catch (StrategyLoadException e)
         {
-            return Reason(e);
+            return (null, Reason(e));
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            return StandingsText.Line($"{e.GetType().Name}: {e.Message}"); // hostile code: whatever it throws, the tournament goes on
+            return (null, StandingsText.Line($"{e.GetType().Name}: {e.Message}")); // whatever loading throws, the tournament goes on
         }
     }
 }

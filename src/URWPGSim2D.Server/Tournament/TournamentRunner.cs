@@ -9,15 +9,17 @@ namespace URWPGSim2D.Server.Tournament;
 
 /// <summary>
 /// Plays a list of scheduled matches on several threads, each match alone on one thread, so a
-/// match's result depends only on its seed and entrants. A match with an entrant that could not
-/// be loaded is not played: it becomes a forfeit record. A match that fails inside the server is
+/// match's result depends only on its seed and entrants. Each match gets fresh team strategies from
+/// <paramref name="Entrants"/> (user strategies in fresh strategy hosts under <c>--isolation process</c>),
+/// so their faults are charged to their teams and the match is played. A match with an entrant that
+/// could not be loaded is not played: it becomes a forfeit record. A match that fails inside the server is
 /// reported and left without a record (a re-run plays it again); the others go on.
 /// </summary>
 /// <param name="Item">The item.</param>
 /// <param name="Header">The tournament.</param>
-/// <param name="Errors">Per entrant, why it could not be loaded, or null.</param>
+/// <param name="Entrants">The readied entrants (their load errors and team strategies).</param>
 /// <param name="ReplayPage">Where match J's replay page goes, or null for no replays.</param>
-internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Header, IReadOnlyList<string?> Errors, Func<int, string>? ReplayPage)
+internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Header, EntrantLoader Entrants, Func<int, string>? ReplayPage)
 {
     /// <summary>Plays the matches; <paramref name="finished"/> is called (under a lock) as each ends, with its record or, when it failed, null and the failure.</summary>
     /// <param name="matches">The matches to play.</param>
@@ -77,12 +79,12 @@ internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader H
         {
             var entrant = Header.Entrants[match.Sides[t]];
             names[t] = entrant.Name;
-            string? error = Errors[match.Sides[t]];
+            string? error = Entrants.Errors[match.Sides[t]];
             if (error is null)
             {
                 try
                 {
-                    teams[t] = EntrantLoader.Create(entrant);
+                    teams[t] = Entrants.Create(match.Sides[t]);
                 }
                 catch (StrategyLoadException e)
                 {

@@ -3,7 +3,7 @@ namespace URWPGSim2D.Server.Trace;
 /// <summary>
 /// One event of a cycle in the trace's <c>"events"</c> array: a kind (<c>goal</c>, <c>catch</c>,
 /// <c>ball-in-hole</c>, <c>rescue</c>, <c>foul</c>, <c>sent-off</c>, <c>half-time</c>, <c>end</c>,
-/// <c>touch</c>, <c>target</c> or an item's own), a short human-readable text (always written, so
+/// <c>touch</c>, <c>target</c>, <c>fault</c> (a team's strategy fault) or an item's own), a short human-readable text (always written, so
 /// a viewer can show any kind) and the optional team, fish, ball and value it concerns.
 /// </summary>
 /// <param name="Kind">Event kind, lower-case with dashes.</param>

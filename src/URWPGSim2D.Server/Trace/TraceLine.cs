@@ -97,6 +97,7 @@ internal sealed class TraceLine
         if (world.Cycle > 0)
         {
             _item.AddEvents(world.Cycle, _events);
+            AddFaults(world.Cycle);
         }
 
         w.WriteStartArray("score");
@@ -118,6 +119,27 @@ internal sealed class TraceLine
         w.Flush();
         return _buffer.WrittenSpan;
     }
+
+    // A `fault` event per strategy that faulted in this cycle (none for well-behaved strategies, so their lines are unchanged).
+    private void AddFaults(int cycle)
+    {
+        foreach (var slot in _match.Strategies.Slots)
+        {
+            if (slot.LastFaultCycle == cycle)
+            {
+                _events.Add(new TraceEvent("fault", $"team {slot.Team} ({slot.Label}) {FaultText(slot.LastFaultKind)}: {slot.LastFault}", Team: slot.Team));
+            }
+        }
+    }
+
+    private static string FaultText(Hosting.FaultKind kind) => kind switch
+    {
+        Hosting.FaultKind.Exception => "exception",
+        Hosting.FaultKind.Timeout => "timeout",
+        Hosting.FaultKind.BadAnswer => "bad answer",
+        Hosting.FaultKind.Disconnected => "remote client disconnected, its fish stop",
+        _ => "strategy ended, its fish stop",
+    };
 
     /// <summary>Writes a point as <c>[x, z]</c>.</summary>
     internal static void Pair(Utf8JsonWriter w, string name, Vector2 v)

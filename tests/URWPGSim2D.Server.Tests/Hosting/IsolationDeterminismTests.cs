@@ -14,6 +14,12 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// </summary>
 public sealed class IsolationDeterminismTests : IDisposable
 {
+    // Long enough for every item's half-time swap (at cycle 20) and a few hundred decisions; the point is the identity, not the length.
+    private const string Cycles = "40";
+
+    // A deadline no honest call comes near even on a loaded machine (a missed one would change the match, not the code under test).
+    private const string Deadline = "5000";
+
     private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-same-").FullName;
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
@@ -36,9 +42,10 @@ public sealed class IsolationDeterminismTests : IDisposable
             foreach (string seed in new[] { "1", "2" })
             {
                 string inProcess = Path.Combine(_folder, "none.jsonl"), hosted = Path.Combine(_folder, "process.jsonl");
-                var a = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", "120", "--strategy", "0=" + spec, "--trace", inProcess, "--isolation", "none");
-                var b = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", "120", "--strategy", "0=" + spec, "--trace", hosted, "--sandbox", "required");
+                var a = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--trace", inProcess, "--isolation", "none", "--strategy-timeout", Deadline);
+                var b = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--trace", hosted, "--sandbox", "required", "--strategy-timeout", Deadline);
                 Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
+                Assert.Contains("strategy faults: none", a.Stdout, StringComparison.Ordinal);
                 Assert.Contains("strategy faults: none", b.Stdout, StringComparison.Ordinal);
                 Assert.True(File.ReadAllBytes(inProcess).AsSpan().SequenceEqual(File.ReadAllBytes(hosted)), $"{item} seed {seed} {Path.GetFileName(spec)}: the traces differ");
             }

@@ -50,7 +50,7 @@ public sealed class ReconnectTests
         match.Step();
         Assert.All(slot.Fish, f => Assert.Equal(new Decision(11, 12), match.World.Fish[f].Decision));
         match.Step();
-        match.Strategies.Stop();
+        URWPGSim2D.Server.Simulation.MatchLoop.StopStrategies(match);
         second.Join();
         Assert.Equal(1, slot.Faults);
         Assert.Equal("{\"type\":\"end\",\"cycle\":7,\"goals\":[0,0],\"faults\":1}", ended.Last);

@@ -88,12 +88,14 @@ public sealed class StrategyConnectionTests
     }
 
     [Fact]
-    public void A_line_over_the_limit_closes_the_connection()
+    public void A_line_over_the_limit_is_a_bad_answer_and_closes_the_connection()
     {
         var link = new ScriptedLink().Send(Hello).Send("{\"type\":\"decisions\",\"pad\":\"" + new string('x', ProtocolLimits.ClientLineBytes) + "\"}\n").Send(Answer(0, 1, 1, 1, 1));
         var connection = Connect(link, null);
-        Assert.Equal(ConnectionOutcome.Ended, connection.Decide(Next(), new Decision[2], out string? message));
-        Assert.Contains("longer than 65536 bytes", message, StringComparison.Ordinal);
+        Assert.Equal(ConnectionOutcome.BadAnswer, connection.Decide(Next(), new Decision[2], out string? message));
+        Assert.Equal("a line is longer than 65536 bytes", message);
+        Assert.True(connection.HasEnded);
+        Assert.StartsWith("the server closed the connection after the overlong line", connection.EndedBy, StringComparison.Ordinal);
         Assert.True(link.Aborted);
         Assert.Contains(_log, l => l.Contains("connection closed", StringComparison.Ordinal));
         Assert.Equal(ConnectionOutcome.Ended, connection.Decide(Next(), new Decision[2], out _));
