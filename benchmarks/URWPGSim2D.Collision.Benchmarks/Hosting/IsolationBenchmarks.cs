@@ -19,6 +19,7 @@ namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 /// connection (<c>--strategy 0=remote:PORT</c>).
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class IsolationBenchmarks
 {
     private const string Source = """

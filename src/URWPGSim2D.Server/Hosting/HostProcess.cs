@@ -19,7 +19,7 @@ internal sealed class HostProcess : IStrategyLink
     private const int TailLines = 4;
     private readonly Process _process;
     private readonly Queue<string> _tail = new();
-    private readonly Timer _watchdog;
+    private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
 
@@ -28,7 +28,7 @@ internal sealed class HostProcess : IStrategyLink
         _process = process;
         Scratch = scratch;
         Sandboxed = sandboxed;
-        _watchdog = new Timer(_ => Kill(byWatchdog: true));
+        HostWatchdog.Watch(this);
         _process.ErrorDataReceived += (_, e) =>
         {
             if (e.Data is { } line)
@@ -84,6 +84,8 @@ internal sealed class HostProcess : IStrategyLink
             ["DOTNET_gcServer"] = "0",
             ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
             ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
+            ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
+            ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
         };
 
         var command = new List<string>();
@@ -123,15 +125,18 @@ internal sealed class HostProcess : IStrategyLink
         return new HostProcess(process, scratch, sandbox);
     }
 
-    /// <summary>Kills the host (the watchdog) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
+    /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
     public void BeginWait(TimeSpan limit)
     {
         _armed = limit;
-        _watchdog.Change(limit, Timeout.InfiniteTimeSpan);
+        Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
     }
 
     /// <summary>Stops the watchdog.</summary>
-    public void EndWait() => _watchdog.Change(Timeout.Infinite, Timeout.Infinite);
+    public void EndWait() => Volatile.Write(ref _deadline, long.MaxValue);
+
+    /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
+    public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
 
     /// <summary>Waits up to <paramref name="ms"/> for the host to exit.</summary>
     public void Finish(int ms) => _process.WaitForExit(ms);
@@ -190,7 +195,7 @@ internal sealed class HostProcess : IStrategyLink
     /// <inheritdoc/>
     public void Dispose()
     {
-        _watchdog.Dispose();
+        HostWatchdog.Forget(this);
         if (!_process.WaitForExit(0))
         {
             Kill();

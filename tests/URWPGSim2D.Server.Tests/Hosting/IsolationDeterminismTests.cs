@@ -12,6 +12,7 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// process: the traces are byte-identical for every item, two seeds each, with an SDK strategy and
 /// with one in the original's API (which reads the item's mission variables and the half-time swap).
 /// </summary>
+[Collection(InProcessStaticsCollection.Name)]
 public sealed class IsolationDeterminismTests : IDisposable
 {
     // Long enough for every item's half-time swap (at cycle 20) and a few hundred decisions; the point is the identity, not the length.

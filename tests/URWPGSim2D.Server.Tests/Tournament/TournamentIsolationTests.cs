@@ -14,6 +14,7 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// give the same bytes either way and on any number of threads; hostile ones (written in the
 /// original's API) fault, are charged in their matches' results, and every match is played.
 /// </summary>
+[Collection(InProcessStaticsCollection.Name)]
 public sealed class TournamentIsolationTests : IDisposable
 {
     private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-iso-").FullName;
