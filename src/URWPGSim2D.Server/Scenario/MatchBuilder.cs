@@ -102,7 +102,8 @@ internal static class MatchBuilder
                 int[] members = Members(scenario, d.Team, null);
                 slots.Add(team switch
                 {
-                    { Host: { } prepared } => new StrategySlot(team.Label, new HostedStrategy(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
+                    { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(d.Team, members)), d.Team, members),
+                    { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
                     { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, d.Team, members),
                     _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
                 });
