@@ -15,7 +15,10 @@ namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 /// (<c>connect</c>) each on a thread of the test, over loopback TCP. With answers in time the match
 /// is the same, cycle by cycle, as the same strategy played in the server's process with the same
 /// seed; tokens are checked; a server without a client gives up after <c>--remote-wait</c>.
+/// The client plays original-API strategies in this test process, so these tests run alone
+/// (<see cref="InProcessStaticsCollection"/>).
 /// </summary>
+[Collection(InProcessStaticsCollection.Name)]
 public sealed class RemoteMatchTests : IDisposable
 {
     private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-remote-").FullName;
