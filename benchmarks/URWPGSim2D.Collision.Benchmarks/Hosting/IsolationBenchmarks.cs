@@ -14,7 +14,9 @@ namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 /// baseline) on its own thread in the server (<c>--isolation none</c>), <see cref="Hosted"/> in its
 /// host process (snapshot out as a protocol line, decisions back). The difference is the per-cycle
 /// cost of isolation. <see cref="HostStartToFirstDecision"/> starts a host for the already compiled
-/// strategy, takes its first decision and stops it.
+/// strategy, takes its first decision and stops it. <see cref="Remote"/> plays the same strategy on a
+/// remote client (<c>connect</c>'s code, on a thread of this process) over a loopback TCP
+/// connection (<c>--strategy 0=remote:PORT</c>).
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]
@@ -36,6 +38,9 @@ public class IsolationBenchmarks
     private Match _match = null!;
     private StrategyCaller _inProcess = null!;
     private StrategyCaller _hosted = null!;
+    private StrategyCaller _remote = null!;
+    private RemoteSeat _seat = null!;
+    private System.Threading.Thread _client = null!;
     private PreparedStrategy _prepared = null!;
     private string _folder = null!;
     private int[] _fish0 = null!;
@@ -57,8 +62,22 @@ public class IsolationBenchmarks
         _fish0 = [.. TeamFish(0)];
         _inProcess = new StrategyCaller([new StrategySlot("team 0", StrategyResolver.Load(file), 0, _fish0, isolated: true)], MatchBuilder.DefaultStrategyTimeoutMs);
         _hosted = new StrategyCaller([new StrategySlot("team 0", Start(), 0, _fish0)], MatchBuilder.DefaultStrategyTimeoutMs);
+        _seat = new RemoteSeat(0, System.Net.IPAddress.Loopback, 0, "bench", TimeSpan.FromSeconds(30), _ => { });
+        var remote = _seat.Open(Assignment());
+        var strategy = StrategyResolver.Load(file);
+        _client = new System.Threading.Thread(() =>
+        {
+            using var socket = new System.Net.Sockets.Socket(System.Net.Sockets.SocketType.Stream, System.Net.Sockets.ProtocolType.Tcp) { NoDelay = true };
+            socket.Connect(_seat.EndPoint);
+            using var stream = new System.Net.Sockets.NetworkStream(socket);
+            new StrategyClient(stream, stream).Play(strategy, "bench");
+        }) { IsBackground = true };
+        _client.Start();
+        remote.WaitForClient();
+        _remote = new StrategyCaller([new StrategySlot("team 0", remote, 0, _fish0)], MatchBuilder.DefaultStrategyTimeoutMs);
         _inProcess.Decide(_match.Snapshot, _match.World.Fish);
         _hosted.Decide(_match.Snapshot, _match.World.Fish);
+        _remote.Decide(_match.Snapshot, _match.World.Fish);
     }
 
     /// <summary>Stops the host and deletes the strategy's folder.</summary>
@@ -67,6 +86,9 @@ public class IsolationBenchmarks
     {
         _inProcess.Stop();
         _hosted.Stop();
+        _remote.Stop();
+        _client.Join();
+        _seat.Dispose();
         Directory.Delete(_folder, recursive: true);
     }
 
@@ -77,6 +99,10 @@ public class IsolationBenchmarks
     /// <summary>Team 0's decisions for one cycle, strategy in its sandboxed host process.</summary>
     [Benchmark]
     public void Hosted() => _hosted.Decide(_match.Snapshot, _match.World.Fish);
+
+    /// <summary>Team 0's decisions for one cycle, strategy on a remote client over loopback TCP.</summary>
+    [Benchmark]
+    public void Remote() => _remote.Decide(_match.Snapshot, _match.World.Fish);
 
     /// <summary>Starting a host for the compiled strategy up to its first decision, then stopping it.</summary>
     [Benchmark]
@@ -89,9 +115,11 @@ public class IsolationBenchmarks
         return faults == 0 ? 0 : throw new InvalidOperationException("the host faulted: " + caller.Slots[0].FirstFault);
     }
 
-    private HostedStrategy Start() => new(_prepared, HostSettings.Default, new URWPGSim2D.Protocol.AssignmentMessage(
+    private StrategyConnection Start() => HostedStrategy.Start(_prepared, HostSettings.Default, Assignment(), 10_000);
+
+    private URWPGSim2D.Protocol.AssignmentMessage Assignment() => new(
         1, 0, "", "match", _fish0, _match.World.Fish.Length, _match.World.Balls.Length, 0, MatchBuilder.DefaultStrategyTimeoutMs,
-        _match.World.Field.Length, _match.World.Field.Width, _match.World.Obstacles), 10_000);
+        _match.World.Field.Length, _match.World.Field.Width, _match.World.Obstacles);
 
     private System.Collections.Generic.IEnumerable<int> TeamFish(int team)
     {

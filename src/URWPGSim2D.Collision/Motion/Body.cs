@@ -122,11 +122,23 @@ internal sealed class Body
     /// <summary>A fish's joint angles, rad (fixed within a step).</summary>
     public float Joint1, Joint2, Joint3;
 
-    /// <summary>Velocity, mm/s.</summary>
+    /// <summary>The velocity the body moves with, mm/s: its own plus its drift (<see cref="SetMotion"/>).</summary>
     public Vector2 Velocity;
 
-    /// <summary>Angular velocity, rad/s (positive turns from +X toward +Z).</summary>
+    /// <summary>The angular velocity the body turns with, rad/s (positive turns from +X toward +Z): its own plus its drift.</summary>
     public float AngularVelocity;
+
+    /// <summary>The body's own velocity, mm/s (what a contact response changes).</summary>
+    public Vector2 OwnVelocity;
+
+    /// <summary>The body's own angular velocity, rad/s.</summary>
+    public float OwnAngularVelocity;
+
+    /// <summary>A drift added to the motion only (noise, say), mm/s.</summary>
+    public Vector2 Drift;
+
+    /// <summary>A turning drift added to the motion only, rad/s.</summary>
+    public float AngularDrift;
 
     /// <summary>Pose at the last committed time.</summary>
     public Vector2 BasePosition;
@@ -230,6 +242,20 @@ internal sealed class Body
     /// <summary>The walls of a pool.</summary>
     public static Body Walls(int id, Field field) =>
         new(BodyKind.Walls, id) { Field = field, Bounds = field.Bounds, Thickness = float.PositiveInfinity };
+
+    /// <summary>The motion from the body's own velocities and its drifts (a circle does not turn).</summary>
+    public void SetMotion()
+    {
+        Velocity = OwnVelocity + Drift;
+        AngularVelocity = Kind == BodyKind.Circle ? 0f : OwnAngularVelocity + AngularDrift;
+    }
+
+    /// <summary>Stops the body: own velocities and drifts zero.</summary>
+    public void Stop()
+    {
+        (OwnVelocity, Drift, Velocity) = (default, default, default);
+        (OwnAngularVelocity, AngularDrift, AngularVelocity) = (0f, 0f, 0f);
+    }
 
     /// <summary>Places the body at step time <paramref name="time"/> along its motion (a step lasting <paramref name="seconds"/>).</summary>
     public void MoveTo(double time, float seconds)

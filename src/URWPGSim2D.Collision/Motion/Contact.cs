@@ -1,4 +1,6 @@
+using System.Numerics;
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.Motion;
 
@@ -13,6 +15,10 @@ public readonly struct Contact
         PartA = hit.PartA < 0 ? null : (FishPart)hit.PartA;
         PartB = hit.PartB < 0 ? null : (FishPart)hit.PartB;
         Time = time;
+        Mtv = XZPlane.ToPlane(Result.MinimumTranslationVector);
+        Normal = XZPlane.ToPlane(Result.NormalAxis);
+        Point = XZPlane.ToPlane(Result.ActionPoint);
+        Depth = Result.Intersect ? Mtv.Length() : 0f; // the length of this contact's own translation (a contact carried into another frame keeps its depth only to the last bit)
     }
 
     /// <summary>The first body (always a moving one): <see cref="Result"/>'s translation moves it out of <see cref="BodyB"/>.</summary>
@@ -35,4 +41,16 @@ public readonly struct Contact
 
     /// <summary>Whether the bodies overlap (false for "no contact").</summary>
     public bool Intersect => Result.Intersect;
+
+    /// <summary>The minimum translation of A in the plane (X, Y = world X, Z), mm; zero when the bodies do not overlap.</summary>
+    public Vector2 Mtv { get; }
+
+    /// <summary>The unit normal from B toward A in the plane; zero when the bodies do not overlap.</summary>
+    public Vector2 Normal { get; }
+
+    /// <summary>The action point in the plane, mm; zero when the bodies do not overlap.</summary>
+    public Vector2 Point { get; }
+
+    /// <summary>How deep the bodies overlap (the length of <see cref="Mtv"/>), mm; 0 when they do not.</summary>
+    public float Depth { get; }
 }

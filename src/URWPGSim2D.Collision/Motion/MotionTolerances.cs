@@ -1,7 +1,11 @@
 namespace URWPGSim2D.Collision.Motion;
 
-/// <summary>The stepper's tolerances and work limits (mm, counts).</summary>
-internal static class MotionTolerances
+/// <summary>
+/// The stepper's tolerances (mm): how deep an overlap may be and still count as touching, and how
+/// closely the time of first contact is found. A contact response plugged into the stepper uses
+/// them to tell a resolved pair and a refined contact; the work limits stay the stepper's own.
+/// </summary>
+public static class MotionTolerances
 {
     /// <summary>Overlaps up to this depth (mm) count as touching: no event.</summary>
     public const float ContactSlop = 0.01f;
@@ -10,10 +14,10 @@ internal static class MotionTolerances
     public const float TimeOfImpactTolerance = 0.25f;
 
     /// <summary>Overlap (mm) above which a body's move is rejected at the end of a step (the guarantee is 0.5 mm).</summary>
-    public const float RejectOverlap = 0.4f;
+    internal const float RejectOverlap = 0.4f;
 
     /// <summary>Contact events a body may take part in per step with a refined time of first contact; later ones are resolved where found.</summary>
-    public const int MaximumEventsPerBody = 64;
+    internal const int MaximumEventsPerBody = 64;
 
     /// <summary>
     /// Contact events a body may take part in per step before its further contacts that cannot
@@ -21,14 +25,14 @@ internal static class MotionTolerances
     /// end of the step (a body wedged between two obstacles is pushed from one into the other at
     /// every sample); if settling there does not free it, its move is rejected.
     /// </summary>
-    public const int EventsBeforeDeferring = 16;
+    internal const int EventsBeforeDeferring = 16;
 
     /// <summary>Contact events in a row at one time after which a body counts as wedged too (see <see cref="EventsBeforeDeferring"/>).</summary>
-    public const int EventsInPlaceBeforeDeferring = 2;
+    internal const int EventsInPlaceBeforeDeferring = 2;
 
     /// <summary>Passes of immediate re-resolution after a contact when a response pushes a body into a third one.</summary>
-    public const int RelaxationPasses = 8;
+    internal const int RelaxationPasses = 8;
 
     /// <summary>Passes of resolution without motion at the end of a step.</summary>
-    public const int SettlePasses = 16;
+    internal const int SettlePasses = 16;
 }

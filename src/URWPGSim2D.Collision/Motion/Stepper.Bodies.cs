@@ -101,21 +101,41 @@ public sealed partial class Stepper
     /// <returns>The heading, wrapped to [−π, π).</returns>
     public float HeadingOf(int body) => Get(body).Heading;
 
-    /// <summary>A moving body's velocity, mm/s.</summary>
+    /// <summary>A moving body's own velocity, mm/s (it moves with this plus its <see cref="DriftOf"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The velocity.</returns>
-    public Vector2 VelocityOf(int body) => Get(body).Velocity;
+    public Vector2 VelocityOf(int body) => Get(body).OwnVelocity;
 
-    /// <summary>A moving body's angular velocity, rad/s.</summary>
+    /// <summary>A moving body's own angular velocity, rad/s (it turns with this plus its <see cref="AngularDriftOf"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The angular velocity.</returns>
-    public float AngularVelocityOf(int body) => Get(body).AngularVelocity;
+    public float AngularVelocityOf(int body) => Get(body).OwnAngularVelocity;
+
+    /// <summary>A moving body's drift, mm/s: added to its motion, not to its velocity (see <see cref="SetDrift"/>).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The drift.</returns>
+    public Vector2 DriftOf(int body) => Get(body).Drift;
+
+    /// <summary>A moving body's turning drift, rad/s (see <see cref="SetDrift"/>).</summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>The turning drift.</returns>
+    public float AngularDriftOf(int body) => Get(body).AngularDrift;
 
     /// <summary>A fish's collision model at its current pose (read only: the stepper owns it).</summary>
     /// <param name="fish">The fish's id.</param>
     /// <returns>The model.</returns>
     /// <exception cref="ArgumentException">The body is not a fish.</exception>
     public FishModel FishModelOf(int fish) => Moving(fish, BodyKind.Fish, nameof(fish)).PosedModel;
+
+    /// <summary>A fish's pose now: position, heading and joint angles, as the stepper holds them.</summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <returns>The pose a <see cref="FishModel"/> of the fish's size is laid out at to show the fish now.</returns>
+    /// <exception cref="ArgumentException">The body is not a fish.</exception>
+    public FishPose FishPoseOf(int fish)
+    {
+        Body b = Moving(fish, BodyKind.Fish, nameof(fish));
+        return new FishPose(b.Position, b.Heading, b.Joint1, b.Joint2, b.Joint3);
+    }
 
     /// <summary>
     /// Places a moving body. Between steps this is a jump (the new pose is also where a rejected
@@ -164,7 +184,7 @@ public sealed partial class Stepper
         Commit(b);
     }
 
-    /// <summary>Sets a moving body's velocity (for the rest of the step when called from a handler).</summary>
+    /// <summary>Sets a moving body's own velocity; it moves with this plus its drift (<see cref="SetDrift"/>). For the rest of the step when called from a handler.</summary>
     /// <param name="body">The body's id.</param>
     /// <param name="velocity">Velocity, mm/s.</param>
     /// <param name="angularVelocity">Angular velocity, rad/s (ignored for a circle).</param>
@@ -175,8 +195,31 @@ public sealed partial class Stepper
         Guard.Finite(velocity, nameof(velocity));
         Finite(angularVelocity, nameof(angularVelocity));
         Touch(b);
-        b.Velocity = velocity;
-        b.AngularVelocity = b.Kind == BodyKind.Circle ? 0f : angularVelocity;
+        b.OwnVelocity = velocity;
+        b.OwnAngularVelocity = b.Kind == BodyKind.Circle ? 0f : angularVelocity;
+        b.SetMotion();
+        Commit(b);
+    }
+
+    /// <summary>
+    /// Sets a moving body's drift: a velocity added to its motion but not to its own velocity (a
+    /// simulator's noise, say: <see cref="VelocityOf"/> and a contact response see the body's own
+    /// velocity, while the body moves with the sum). Zero for every body until set; a rejected
+    /// move clears it. For the rest of the step when called from a handler.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <param name="drift">Drift, mm/s.</param>
+    /// <param name="angularDrift">Turning drift, rad/s (ignored for a circle).</param>
+    /// <exception cref="ArgumentException">The body does not move, or a value is not finite.</exception>
+    public void SetDrift(int body, Vector2 drift, float angularDrift = 0f)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Guard.Finite(drift, nameof(drift));
+        Finite(angularDrift, nameof(angularDrift));
+        Touch(b);
+        b.Drift = drift;
+        b.AngularDrift = b.Kind == BodyKind.Circle ? 0f : angularDrift;
+        b.SetMotion();
         Commit(b);
     }
 

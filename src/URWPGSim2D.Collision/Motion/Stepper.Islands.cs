@@ -16,10 +16,24 @@ namespace URWPGSim2D.Collision.Motion;
 public sealed partial class Stepper
 {
     /// <summary>
-    /// Fewest movers for which the islands are spread over threads: smaller worlds use the calling
-    /// thread alone, with the same result (at 1,000 bodies two threads measured no faster). Tests lower it.
+    /// Fewest moving bodies for which the islands are spread over <see cref="Threads"/> (2,048 by
+    /// default): smaller worlds use the calling thread alone, with the same result (at 1,000 bodies
+    /// two threads measured no faster). Lower it to spread small worlds too.
     /// </summary>
-    internal int MinimumMoversForThreads { get; set; } = 2048;
+    /// <exception cref="ArgumentException">The value is less than 1.</exception>
+    public int MinimumMoversForThreads
+    {
+        get => _minimumMoversForThreads;
+        set
+        {
+            if (value < 1)
+            {
+                throw new ArgumentException($"minimumMoversForThreads must be at least 1, got {value}", nameof(value));
+            }
+
+            _minimumMoversForThreads = value;
+        }
+    }
 
     private readonly IslandSet _islands = new();
     private readonly HeldHits _heldByIsland = new();
@@ -33,6 +47,7 @@ public sealed partial class Stepper
     private IslandRunner? _runner;
     private Recorder? _recorder;
     private int _threads = 1;
+    private int _minimumMoversForThreads = 2048;
     private int _nextHeld;
     private bool _islandsBuilt;
 
@@ -62,8 +77,8 @@ public sealed partial class Stepper
         }
     }
 
-    /// <summary>Chunks of islands the last step ran at once (tests: 1 means the calling thread alone).</summary>
-    internal int Chunks { get; private set; }
+    /// <summary>Chunks of islands the last step ran at once (1: the calling thread alone).</summary>
+    public int Chunks { get; private set; }
 
     /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
     internal long WorkerAllocatedBytes => _runner?.Allocated ?? 0L;

@@ -196,8 +196,7 @@ public sealed partial class Stepper
         body.Joint2 = body.StartJoint2;
         body.Joint3 = body.StartJoint3;
         body.ShapeStamp++;
-        body.Velocity = default;
-        body.AngularVelocity = 0f;
+        body.Stop();
         body.Invalidate();
         body.Rebase(Time);
         _handler!.OnMoveRejected(this, body.Id);

@@ -42,6 +42,7 @@ internal sealed class CliApp
         new ViewCommand(),
         new TournamentCommand(),
         new HostCommand(),
+        new ConnectCommand(),
     ];
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>

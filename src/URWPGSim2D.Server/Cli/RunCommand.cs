@@ -86,7 +86,7 @@ internal sealed class RunCommand : ICliCommand
         HostSandbox.Warn = console.ErrorLine;
         try
         {
-            teams = LoadTeams(options);
+            teams = LoadTeams(options, console);
         }
         catch (StrategyLoadException e)
         {
@@ -108,16 +108,45 @@ internal sealed class RunCommand : ICliCommand
             return LiveRun.Run(options, scenario, teams, console);
         }
 
+        try
+        {
+            return Play(options, scenario, teams, console);
+        }
+        finally
+        {
+            foreach (var team in teams)
+            {
+                team?.Remote?.Dispose();
+            }
+        }
+    }
+
+    // One match: waits for its remote clients, plays it, writes what was asked for and the summary.
+    private static int Play(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams, CliConsole console)
+    {
         var settings = Settings(options, scenario, teams);
+        Match match = settings.Build();
+        try
+        {
+            foreach (var slot in match.Strategies.Slots)
+            {
+                (slot.Hosted as RemoteStrategy)?.WaitForClient();
+            }
+        }
+        catch (RemoteWaitException e)
+        {
+            match.Strategies.Stop();
+            console.ErrorLine(e.Message);
+            return ExitCodes.BadInput;
+        }
+
         bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
         var progress = interactive ? new ProgressBar(console.Out, settings.Cycles) : null;
         var clock = Stopwatch.StartNew();
         var replay = options.Html is null ? null : new ReplayRecorder();
-        Match match;
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
-            using var loop = new MatchLoop(settings.Build(), settings.Cycles, trace, replay);
-            match = loop.Match;
+            using var loop = new MatchLoop(match, settings.Cycles, trace, replay);
             loop.Play(played: progress is null ? null : progress.Update);
             trace?.Complete();
         }
@@ -131,11 +160,6 @@ internal sealed class RunCommand : ICliCommand
         progress?.Clear();
         if (options.Svg is not null)
         {
-            foreach (var fish in match.World.Fish)
-            {
-                fish.SyncModel(); // the picture shows every leaf exactly where the fish is
-            }
-
             var names = new string[match.TeamCount];
             for (int t = 0; t < names.Length; t++)
             {
@@ -160,7 +184,9 @@ internal sealed class RunCommand : ICliCommand
     /// the team's fault in cycle 1, not a load error). Built-in names run in process.
     /// </summary>
     /// <exception cref="StrategyLoadException">A strategy cannot be used, or <c>--sandbox required</c> cannot be met; the message starts with the option.</exception>
-    public static TeamStrategy?[] LoadTeams(RunOptions options)
+    /// <param name="options">The options.</param>
+    /// <param name="console">Where the remote teams' lines go (null: no remote teams are made; <c>--batch</c> and <c>--live</c> have none).</param>
+    public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null)
     {
         var teams = new TeamStrategy?[options.Strategies.Length];
         for (int t = 0; t < teams.Length; t++)
@@ -169,6 +195,12 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
+                    if (options.RemotePorts[t] is int port && console is not null)
+                    {
+                        teams[t] = Remote(options, t, port, console);
+                        continue;
+                    }
+
                     var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec) : null;
                     if (prepared is not null)
                     {
@@ -181,12 +213,25 @@ internal sealed class RunCommand : ICliCommand
                 }
                 catch (StrategyLoadException e)
                 {
+                    teams[0]?.Remote?.Dispose(); // a seat already bound is let go
                     throw new StrategyLoadException($"--strategy {t}: {e.Message}", e.Details);
                 }
             }
         }
 
         return teams;
+    }
+
+    // A remote team's seat, bound now so that a port in use is an error before the match.
+    private static TeamStrategy Remote(RunOptions options, int team, int port, CliConsole console)
+    {
+        if (!System.Net.IPAddress.IsLoopback(options.RemoteHost))
+        {
+            console.ErrorLine($"run: warning: --remote-host {options.RemoteHost} is not a loopback address: any machine that reaches it may connect{(options.RemoteTokens[team] is null ? " (give --remote-token)" : "")}");
+        }
+
+        var seat = new RemoteSeat(team, options.RemoteHost, port, options.RemoteTokens[team], TimeSpan.FromSeconds(options.RemoteWaitSeconds), console.ErrorLine);
+        return TeamStrategy.RemoteClient(RunOptions.RemotePrefix + seat.EndPoint.Port.ToString(CultureInfo.InvariantCulture), seat);
     }
 
     // The scene and its name in result files: item SLUG (no scene option: ball-grab), default,
@@ -245,7 +290,10 @@ internal sealed class RunCommand : ICliCommand
         "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball), a .dll built against\n" +
         "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
         "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
-        "100). --trace writes JSON Lines, --svg the final frame,\n" +
+        "100). --strategy TEAM=remote:PORT waits for a remote client to play the team over TCP (connect, or any client\n" +
+        "of docs/protocol.md; PORT 0: any free one) for --remote-wait SECONDS (default 60), on 127.0.0.1 unless\n" +
+        "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
+        "--trace writes JSON Lines, --svg the final frame,\n" +
         "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Linq;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
@@ -14,7 +15,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -90,6 +91,18 @@ internal sealed class RunOptions
 
     /// <summary>Per team (0 to 3: teams 2 and 3 play only in four-team scenes), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
     public string?[] Strategies { get; } = new string?[4];
+
+    /// <summary>Per team (0, 1), the port of a remote team (<c>--strategy TEAM=remote:PORT</c>; 0: any free one), or null.</summary>
+    public int?[] RemotePorts { get; } = new int?[2];
+
+    /// <summary>Per team (0, 1), the token its remote client must present (<c>--remote-token</c>), or null.</summary>
+    public string?[] RemoteTokens { get; } = new string?[2];
+
+    /// <summary>How long a match waits for its remote clients (<c>--remote-wait SECONDS</c>; default 60).</summary>
+    public int RemoteWaitSeconds { get; private set; } = RemoteSeat.DefaultWaitSeconds;
+
+    /// <summary>The address remote teams listen on (<c>--remote-host ADDR</c>; loopback by default).</summary>
+    public System.Net.IPAddress RemoteHost { get; private set; } = System.Net.IPAddress.Loopback;
 
     /// <summary>Where user strategies run (<c>--isolation process|none</c>; default process).</summary>
     public IsolationMode Isolation => HostSettings.Isolation;
@@ -191,7 +204,7 @@ internal sealed class RunOptions
             }
 
             string value = args[++i];
-            if (name != "--strategy" && !seen.Add(name))
+            if (name is not ("--strategy" or "--remote-token") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
             }
@@ -240,7 +253,17 @@ internal sealed class RunOptions
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];
+                    o.RemotePorts[value[0] - '0'] = value.AsSpan(eq + 1).StartsWith(RemotePrefix, StringComparison.Ordinal)
+                        ? (int)Number("--strategy TEAM=remote:PORT", value[(eq + 1 + RemotePrefix.Length)..], 0, 65535)
+                        : null;
                     break;
+                case "--remote-wait": o.RemoteWaitSeconds = (int)Number(name, value, 1, 86_400); break;
+                case "--remote-host":
+                    o.RemoteHost = System.Net.IPAddress.TryParse(value, out var address) && value.Length > 0
+                        ? address : throw UsageError($"--remote-host must be an IP address (127.0.0.1, 0.0.0.0, ::1, ...), got {MessageText.Quote(value)}");
+                    seen.Add(name);
+                    break;
+                case "--remote-token": o.ParseToken(value, seen); break;
                 default:
                     throw UsageError($"unknown option {MessageText.Quote(name)}");
             }
@@ -258,6 +281,38 @@ internal sealed class RunOptions
         o.PassedOn = passedOn;
         o.Check(seen);
         return o;
+    }
+
+    /// <summary>What <c>--strategy TEAM=</c> starts with for a remote team.</summary>
+    public const string RemotePrefix = "remote:";
+
+    private readonly bool[] _tokenFor = new bool[2];
+
+    // TOKEN (every remote team) or TEAM=TOKEN; printable, at most the protocol's text length.
+    private void ParseToken(string value, HashSet<string> seen)
+    {
+        bool perTeam = value.Length > 2 && value[0] is ('0' or '1') && value[1] == '=';
+        string token = perTeam ? value[2..] : value;
+        if (token.Length == 0 || token.Length > URWPGSim2D.Protocol.ProtocolLimits.TextChars || token.Any(char.IsControl))
+        {
+            throw UsageError($"--remote-token must be [TEAM=]TOKEN, 1..{URWPGSim2D.Protocol.ProtocolLimits.TextChars} characters without control characters, got {MessageText.Quote(value.Length > 40 ? value[..40] + "..." : value)}");
+        }
+
+        for (int t = 0; t < 2; t++)
+        {
+            if (!perTeam || value[0] - '0' == t)
+            {
+                if (RemoteTokens[t] is not null)
+                {
+                    throw UsageError($"--remote-token given twice for team {t}");
+                }
+
+                RemoteTokens[t] = token;
+                _tokenFor[t] = perTeam;
+            }
+        }
+
+        seen.Add("--remote-token");
     }
 
     // "I/K" with 0 ≤ I < K.
@@ -315,6 +370,35 @@ internal sealed class RunOptions
         }
 
         CheckSlurm();
+        CheckRemote(seen);
+    }
+
+    // The options of remote teams (docs/cli.md, "Remote teams").
+    private void CheckRemote(HashSet<string> seen)
+    {
+        bool remote = RemotePorts[0] is not null || RemotePorts[1] is not null;
+        if (!remote && (seen.Contains("--remote-wait") || seen.Contains("--remote-host") || seen.Contains("--remote-token")))
+        {
+            throw UsageError("--remote-wait, --remote-host and --remote-token belong to --strategy TEAM=remote:PORT");
+        }
+
+        if (remote && (Batch is not null || Live))
+        {
+            throw UsageError("a remote team plays one match: --batch and --live do not go with --strategy TEAM=remote:PORT");
+        }
+
+        if (RemotePorts[0] is int p0 && p0 != 0 && RemotePorts[1] == p0)
+        {
+            throw UsageError($"both remote teams ask for port {p0}; give each its own (or 0 for any free one)");
+        }
+
+        for (int t = 0; t < 2; t++)
+        {
+            if (_tokenFor[t] && RemotePorts[t] is null)
+            {
+                throw UsageError($"--remote-token for team {t}, which is not remote");
+            }
+        }
     }
 
     // The options of a Slurm batch (docs/batch.md, "On a Slurm cluster").

@@ -14,4 +14,7 @@ internal enum FaultKind
 
     /// <summary>Its host ended, or the strategy could not be created: its fish stop for the rest of the match.</summary>
     Ended,
+
+    /// <summary>Its remote client disconnected (or was cut off): its fish stop until a client connects again.</summary>
+    Disconnected,
 }

@@ -14,13 +14,14 @@ namespace URWPGSim2D.Server.Hosting;
 /// directory. A watchdog kills it when an answer takes longer than the server allows. What it
 /// writes to standard error is kept (its last lines) for the fault report.
 /// </summary>
-internal sealed class HostProcess : IDisposable
+internal sealed class HostProcess : IStrategyLink
 {
     private const int TailLines = 4;
     private readonly Process _process;
     private readonly Queue<string> _tail = new();
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
+    private TimeSpan _armed;
 
     private HostProcess(Process process, string scratch, bool sandboxed)
     {
@@ -46,19 +47,19 @@ internal sealed class HostProcess : IDisposable
     }
 
     /// <summary>The stream to the host (its standard input).</summary>
-    public Stream ToHost => _process.StandardInput.BaseStream;
+    public Stream ToClient => _process.StandardInput.BaseStream;
 
     /// <summary>The stream from the host (its standard output).</summary>
-    public Stream FromHost => _process.StandardOutput.BaseStream;
+    public Stream FromClient => _process.StandardOutput.BaseStream;
+
+    /// <summary>False: a host that does not answer in time is killed (it measures its strategy's deadline itself).</summary>
+    public bool SurvivesLateAnswer => false;
 
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }
 
     /// <summary>Whether it runs in the bubblewrap sandbox.</summary>
     public bool Sandboxed { get; }
-
-    /// <summary>Whether the watchdog killed it.</summary>
-    public bool KilledByWatchdog => _killedByWatchdog;
 
     /// <summary>Starts a host for the strategy <paramref name="loadSpec"/>.</summary>
     /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
@@ -124,21 +125,33 @@ internal sealed class HostProcess : IDisposable
         return new HostProcess(process, scratch, sandbox);
     }
 
-    /// <summary>Kills the host if no <see cref="Disarm"/> comes within <paramref name="limit"/> (<see cref="HostWatchdog"/>).</summary>
-    public void Arm(TimeSpan limit) => Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
+    /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
+    public void BeginWait(TimeSpan limit)
+    {
+        _armed = limit;
+        Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
+    }
 
     /// <summary>Stops the watchdog.</summary>
-    public void Disarm() => Volatile.Write(ref _deadline, long.MaxValue);
+    public void EndWait() => Volatile.Write(ref _deadline, long.MaxValue);
 
     /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
     public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
 
-    /// <summary>Waits up to <paramref name="ms"/> for the host to exit; true when it has.</summary>
-    public bool WaitForExit(int ms) => _process.WaitForExit(ms);
+    /// <summary>Waits up to <paramref name="ms"/> for the host to exit.</summary>
+    public void Finish(int ms) => _process.WaitForExit(ms);
 
-    /// <summary>How the host ended, for the fault report: exit code or signal and its last lines of standard error.</summary>
+    /// <summary>Kills the host and everything it started.</summary>
+    public void Abort() => Kill();
+
+    /// <summary>How the host ended, for the fault report: killed by the watchdog, or the exit code or signal and its last lines of standard error.</summary>
     public string Ending()
     {
+        if (_killedByWatchdog)
+        {
+            return $"no answer within {_armed.TotalSeconds:0.#} s, killed";
+        }
+
         _process.WaitForExit(2000);
         string how;
         if (!_process.HasExited)

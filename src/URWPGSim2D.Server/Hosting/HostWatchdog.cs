@@ -7,7 +7,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// One background thread that kills the strategy hosts that do not answer in time: a host is armed
 /// with a deadline before the server waits for it and disarmed when its answer has come
-/// (<see cref="HostProcess.Arm"/>), two writes of a number, so a cycle costs no timer operation and
+/// (<see cref="HostProcess.BeginWait"/>), two writes of a number, so a cycle costs no timer operation and
 /// no wake-up of another thread. The thread looks at the armed hosts every
 /// <see cref="Period"/>; the limits it enforces are seconds long.
 /// </summary>

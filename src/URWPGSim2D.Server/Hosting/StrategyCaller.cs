@@ -107,32 +107,48 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
 
     private string TimeoutText => _timeoutText ??= $"no decision within {TimeoutMs} ms";
 
-    // One cycle of a strategy in its own process: the same faults as in the server's process, and
-    // an ended host stops the team's fish for the rest of the match.
-    private void Hosted(StrategySlot slot, HostedStrategy hosted, MatchSnapshot snapshot, int cycle)
+    // One cycle of a strategy in another process: the same faults as in the server's process; an
+    // ended host stops the team's fish for the rest of the match, a disconnected remote client
+    // until a client connects again.
+    private void Hosted(StrategySlot slot, IConnectedStrategy hosted, MatchSnapshot snapshot, int cycle)
     {
         switch (hosted.Decide(snapshot, slot.Scratch, out string? message))
         {
-            case HostedStrategy.Outcome.Decided:
+            case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
                 break;
-            case HostedStrategy.Outcome.Exception:
+            case ConnectionOutcome.Exception:
                 slot.Charge(cycle, FaultKind.Exception, message ?? "exception");
                 break;
-            case HostedStrategy.Outcome.BadAnswer:
+            case ConnectionOutcome.BadAnswer:
                 slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");
-                if (hosted.HasEnded)
+                if (hosted.EndedBy is { } how)
                 {
-                    slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {hosted.EndedBy}");
+                    Lost(slot, hosted, cycle, how);
                 }
 
                 break;
-            case HostedStrategy.Outcome.TimedOut:
+            case ConnectionOutcome.TimedOut:
                 slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
                 break;
+            case ConnectionOutcome.Absent:
+                break; // no remote client since a disconnect: nothing asked, nothing charged
             default:
-                slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {message}");
+                Lost(slot, hosted, cycle, message ?? "");
                 break;
+        }
+    }
+
+    // The connection has gone: a host for the rest of the match, a remote client until it connects again.
+    private static void Lost(StrategySlot slot, IConnectedStrategy hosted, int cycle, string how)
+    {
+        if (hosted.Reconnects)
+        {
+            slot.Charge(cycle, FaultKind.Disconnected, $"remote client disconnected: {how}");
+        }
+        else
+        {
+            slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {how}");
         }
     }
 

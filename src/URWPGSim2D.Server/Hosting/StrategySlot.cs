@@ -17,8 +17,8 @@ internal sealed class StrategySlot
         Runner = isolated ? new IsolatedStrategyRunner(strategy, fish.Length, team, clock ?? new ThreadTimeClock()) : null;
     }
 
-    /// <summary>A slot whose strategy runs in a strategy host process.</summary>
-    public StrategySlot(string label, HostedStrategy hosted, int team, int[] fish)
+    /// <summary>A slot whose strategy plays over the strategy protocol: in a strategy host process or on a remote client.</summary>
+    public StrategySlot(string label, IConnectedStrategy hosted, int team, int[] fish)
         : this(label, team, fish)
     {
         Hosted = hosted;
@@ -43,8 +43,8 @@ internal sealed class StrategySlot
     /// <summary>The strategy (in the server's process), or null for a hosted one.</summary>
     public IStrategy? Strategy { get; }
 
-    /// <summary>The strategy host of a strategy that runs in its own process, or null.</summary>
-    public HostedStrategy? Hosted { get; }
+    /// <summary>The connection of a strategy that runs in another process (a strategy host or a remote client), or null.</summary>
+    public IConnectedStrategy? Hosted { get; }
 
     /// <summary>Why the strategy could not be created in the server's process, or null.</summary>
     public string? CreationFault { get; private init; }
@@ -83,7 +83,10 @@ internal sealed class StrategySlot
     public int BadAnswers { get; private set; }
 
     /// <summary>1 when its strategy host ended before the match did (crashed, exited, was killed, or its strategy could not be created, in a host or in process), else 0.</summary>
-    public int Crashes => EndedInCycle > 0 ? 1 : 0;
+    public int Crashes => (EndedInCycle > 0 ? 1 : 0) + Disconnects;
+
+    /// <summary>Times its remote client disconnected (or was cut off) during the match; counted in <see cref="Crashes"/>.</summary>
+    public int Disconnects { get; private set; }
 
     /// <summary>All faults: exceptions, time-outs, bad answers and an ended host.</summary>
     public int Faults => Exceptions + Timeouts + BadAnswers + Crashes;
@@ -99,6 +102,10 @@ internal sealed class StrategySlot
             case FaultKind.Exception: Exceptions++; break;
             case FaultKind.Timeout: Timeouts++; break;
             case FaultKind.BadAnswer: BadAnswers++; break;
+            case FaultKind.Disconnected:
+                Disconnects++;
+                Array.Fill(Decisions, Decision.Stop);
+                break;
             default:
                 EndedInCycle = cycle;
                 Array.Fill(Decisions, Decision.Stop);

@@ -53,6 +53,5 @@ internal static class Placement
         f.NoiseVelocity = Vector2.Zero;
         f.NoiseAngularVelocity = 0f;
         f.Decision = URWPGSim2D.Strategies.Decision.Stop;
-        f.Invalidate();
     }
 }

@@ -75,13 +75,14 @@ internal static class SvgFrame
         foreach (var f in world.Fish)
         {
             string colour = TeamColours[f.Team % TeamColours.Length];
+            var model = new FishModel(f.Size, f.Pose);
             for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
             {
-                Polygon(s, f.Model.GetLeaf(part), colour);
+                Polygon(s, model.GetLeaf(part), colour);
             }
 
             // Heading: a line ahead of the head tip.
-            Vector2 tip = f.Model.HeadTip, ahead = tip + (f.Model.Forward * 70f);
+            Vector2 tip = model.HeadTip, ahead = tip + (model.Forward * 70f);
             s.Element("line").Attribute("x1", tip.X).Attribute("y1", tip.Y).Attribute("x2", ahead.X).Attribute("y2", ahead.Y)
                 .Attribute("stroke", "#111").Attribute("stroke-width", "4").End();
         }
@@ -108,9 +109,10 @@ internal static class SvgFrame
         var outside = new FigureExtent();
         foreach (var f in world.Fish)
         {
+            var model = new FishModel(f.Size, f.Pose);
             for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
             {
-                foreach (var p in f.Model.GetLeaf(part))
+                foreach (var p in model.GetLeaf(part))
                 {
                     if (MathF.Abs(p.X) > half.X || MathF.Abs(p.Y) > half.Y)
                     {

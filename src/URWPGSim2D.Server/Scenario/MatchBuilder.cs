@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
@@ -30,18 +31,19 @@ internal static class MatchBuilder
     public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
+        var motion = new Stepper(broadPhase);
         var fish = new FishState[scenario.Fish.Count];
         for (int i = 0; i < fish.Length; i++)
         {
             var d = scenario.Fish[i];
-            fish[i] = new FishState(i, d.Team, FishSize.Default, d.Position, d.Heading) { TailPhase = d.TailPhase };
+            fish[i] = new FishState(motion, i, d.Team, FishSize.Default, d.Position, d.Heading) { TailPhase = d.TailPhase };
         }
 
         var balls = new BallState[scenario.Balls.Count];
         for (int i = 0; i < balls.Length; i++)
         {
             var d = scenario.Balls[i];
-            balls[i] = new BallState(i, d.Radius, d.Position, d.Velocity);
+            balls[i] = new BallState(motion, i, d.Radius, d.Position, d.Velocity);
         }
 
         var views = new ObstacleView[scenario.Obstacles.Count];
@@ -60,11 +62,11 @@ internal static class MatchBuilder
             statics[views.Length + g] = StaticBody.GoalBlock(g, field.GoalBlocks[g]);
         }
 
-        var world = new World(field, fish, balls, views, statics);
+        var world = new World(motion, field, fish, balls, views, statics);
         var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
         var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles);
         var host = new StrategyCaller(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match), strategyTimeoutMs);
-        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, broadPhase, referee);
+        return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, referee);
     }
 
     private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee, MatchFacts match)
@@ -106,7 +108,8 @@ internal static class MatchBuilder
                 int[] members = Members(scenario, d.Team, null);
                 slots.Add(team switch
                 {
-                    { Host: { } prepared } => new StrategySlot(team.Label, new HostedStrategy(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
+                    { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(d.Team, members)), d.Team, members),
+                    { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
                     { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, d.Team, members),
                     _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
                 });

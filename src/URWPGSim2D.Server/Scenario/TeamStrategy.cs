@@ -10,8 +10,12 @@ namespace URWPGSim2D.Server.Scenario;
 /// <param name="Host">A strategy for strategy host processes: every match built with it starts a fresh host.</param>
 /// <param name="Settings">The hosts' sandbox and memory settings (null: the defaults).</param>
 /// <param name="NotCreated">Why the strategy (in the server's process) could not be created: its constructor or static constructor threw. The team's fault, charged in cycle 1; its fish stop.</param>
-internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, string? NotCreated = null)
+/// <param name="Remote">The seat of a team played by a remote client, or null.</param>
+internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, string? NotCreated = null, RemoteSeat? Remote = null)
 {
+    /// <summary>A team played by a remote client on <paramref name="seat"/>.</summary>
+    public static TeamStrategy RemoteClient(string label, RemoteSeat seat) => new(label, null, true, Remote: seat);
+
     /// <summary>A team played by a strategy host process per match.</summary>
     public static TeamStrategy Hosted(string label, PreparedStrategy host, HostSettings settings) => new(label, null, true, null, host, settings);
 

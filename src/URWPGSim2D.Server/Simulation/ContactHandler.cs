@@ -1,13 +1,14 @@
+using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
-/// The server's response hook for the library's stepper: the contact's two bodies are brought into
-/// the world at the time of first contact, <see cref="ContactResponse"/> applies the reference's
-/// position correction and impulses, the contact is logged for the trace and the summary, and the
-/// bodies' new poses and velocities go back to the stepper. A rejected move (the body went back to
-/// where it ended the last cycle) stops the body for the rest of the cycle.
+/// The server's response hook for the motion world: at the time of first contact
+/// <see cref="ContactResponse"/> applies the reference's position correction and impulses to the
+/// two bodies where they are (their poses and velocities are the motion world's, changed in
+/// place), and the contact is logged for the trace and the summary. A rejected move (the body went
+/// back to where it ended the last cycle) stops the body for the rest of the cycle.
 /// </summary>
 internal sealed class ContactHandler(World world, ContactLog log) : IContactHandler
 {
@@ -16,37 +17,53 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     /// <inheritdoc/>
     public void OnContact(Stepper stepper, in Contact contact)
     {
-        MotionBodies bodies = world.Bodies;
-        bodies.Pull(contact.BodyA);
-        bodies.Pull(contact.BodyB);
-        CandidatePair pair = bodies.PairOf(contact);
-        Hit hit = MotionBodies.ToHit(contact);
-        ContactKind kind = _response.Apply(pair, hit);
-        log.Add(new ContactRecord(pair, hit.PartA, hit.PartB, hit.Mtv, hit.Normal, hit.Point, contact.Time), kind);
-        bodies.Push(contact.BodyA);
-        bodies.Push(contact.BodyB);
+        CandidatePair pair = world.PairOf(contact);
+        TakeInOrder(stepper, pair, contact.BodyA, contact.BodyB);
+        ContactKind kind = _response.Apply(pair, contact);
+        log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
     }
 
     /// <inheritdoc/>
     public void OnMoveRejected(Stepper stepper, int body)
     {
-        MotionBodies bodies = world.Bodies;
-        bodies.Pull(body);
-        if (bodies.IsFish(body))
+        // The motion world put the body back and stopped it (velocity and noise drift zero); a
+        // fish holds still, immovable in contacts, for the rest of the cycle.
+        if (body < world.Fish.Length)
         {
-            bodies.PullJoints(body);
-            var f = world.Fish[body];
-            f.Velocity = default;
-            f.AngularVelocity = 0f;
-            f.NoiseVelocity = default;
-            f.NoiseAngularVelocity = 0f;
-            f.Frozen = true;
+            world.Fish[body].Frozen = true;
+        }
+    }
+
+    // The stepper re-plans the bodies a response changes in the order it first changes them, and
+    // simultaneous contacts come in that order: the body the separation moves first is taken
+    // first (A, unless A is a frozen fish that its partner alone is pushed away from), then the other.
+    private void TakeInOrder(Stepper stepper, in CandidatePair pair, int a, int b)
+    {
+        bool aStays = pair.Kind switch
+        {
+            PairKind.FishBall => world.Fish[pair.A].Frozen,
+            PairKind.FishFish => world.Fish[pair.A].Frozen && !world.Fish[pair.B].Frozen,
+            _ => false,
+        };
+        bool bMoves = b < world.Fish.Length + world.Balls.Length;
+        if (aStays && bMoves)
+        {
+            Take(stepper, b);
+            Take(stepper, a);
         }
         else
         {
-            var b = world.Balls[body - world.Fish.Length];
-            b.Velocity = default;
-            b.NoiseVelocity = default;
+            Take(stepper, a);
+            if (bMoves)
+            {
+                Take(stepper, b);
+            }
         }
     }
+
+    // Marks a body as changed by this contact (its motion unchanged).
+    private static void Take(Stepper stepper, int body) => stepper.SetVelocity(body, stepper.VelocityOf(body), stepper.AngularVelocityOf(body));
+
+    // A leaf index for the contact record, −1 for "not a fish".
+    private static sbyte Part(FishPart? part) => part.HasValue ? (sbyte)part.Value : (sbyte)-1;
 }

@@ -57,7 +57,7 @@ internal sealed class ContactResponse
     }
 
     /// <summary>Applies the contact and returns its summary kind.</summary>
-    public ContactKind Apply(in CandidatePair pair, in Hit hit)
+    public ContactKind Apply(in CandidatePair pair, in Contact hit)
     {
         switch (pair.Kind)
         {
@@ -86,11 +86,11 @@ internal sealed class ContactResponse
     public static float FishBallRestitution(FishState fish, Vector2 point) =>
         PhysicsConstants.FishBallRestitution * (1f - (AxisDistanceFromHead(fish, point) / PhysicsConstants.RestitutionReach));
 
-    private void FishBall(in CandidatePair pair, in Hit hit)
+    private void FishBall(in CandidatePair pair, in Contact hit)
     {
         FishState fish = _world.Fish[pair.A];
         BallState ball = _world.Balls[pair.B];
-        bool pectoral = hit.PartA == (sbyte)FishPart.LeftPectoral || hit.PartA == (sbyte)FishPart.RightPectoral;
+        bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
         float ballShare = fish.Frozen ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
         _separation.Apply(pair, hit, 1f - ballShare, ballShare);
         Count(fish, hit);
@@ -121,7 +121,7 @@ internal sealed class ContactResponse
         }
     }
 
-    private void FishFish(in CandidatePair pair, in Hit hit)
+    private void FishFish(in CandidatePair pair, in Contact hit)
     {
         FishState a = _world.Fish[pair.A];
         FishState b = _world.Fish[pair.B];
@@ -165,7 +165,7 @@ internal sealed class ContactResponse
         }
     }
 
-    private ContactKind FishStatic(in CandidatePair pair, in Hit hit)
+    private ContactKind FishStatic(in CandidatePair pair, in Contact hit)
     {
         FishState fish = _world.Fish[pair.A];
         bool border = pair.Kind == PairKind.FishWall || _world.Statics[pair.B].IsGoalBlock;
@@ -187,7 +187,7 @@ internal sealed class ContactResponse
         return border ? ContactKind.FishBorder : ContactKind.FishObstacle;
     }
 
-    private ContactKind BallStatic(in CandidatePair pair, in Hit hit)
+    private ContactKind BallStatic(in CandidatePair pair, in Contact hit)
     {
         BallState ball = _world.Balls[pair.A];
         bool border = pair.Kind == PairKind.BallWall || _world.Statics[pair.B].IsGoalBlock;
@@ -203,7 +203,7 @@ internal sealed class ContactResponse
         return border ? ContactKind.BallBorder : ContactKind.BallObstacle;
     }
 
-    private void BallBall(in CandidatePair pair, in Hit hit)
+    private void BallBall(in CandidatePair pair, in Contact hit)
     {
         BallState a = _world.Balls[pair.A];
         BallState b = _world.Balls[pair.B];
@@ -239,7 +239,6 @@ internal sealed class ContactResponse
         if (turn != 0f)
         {
             fish.Heading = Angle.Wrap(fish.Heading + turn);
-            fish.Invalidate();
         }
     }
 
@@ -276,7 +275,7 @@ internal sealed class ContactResponse
 
     // A fish that keeps needing deep corrections in one cycle is wedged: reject its move for this cycle.
     // Corrections at a refined time of first contact are no deeper than the tolerance and not counted.
-    private static void Count(FishState fish, in Hit hit)
+    private static void Count(FishState fish, in Contact hit)
     {
         if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
         {

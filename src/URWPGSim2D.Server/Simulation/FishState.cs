@@ -1,30 +1,33 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Simulation.Kinematics;
-using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Simulation.Kinematics;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
-/// One fish: team, size, pose (position, heading, three joint angles), the speed and angular-speed
-/// approach state, the decision it executes and its collision model. Within a cycle the stepper
-/// moves it with <see cref="Velocity"/> (+ noise) and <see cref="AngularVelocity"/>; contacts may change
-/// both for the rest of the cycle (the swimming speed and turn rate are not changed by contacts).
+/// One fish's game state: team, size, the decision it executes, its speed and turn gears, its
+/// tail-wave phase, its start-of-cycle pose and corrections. Its body — pose, joints, shape,
+/// velocity, noise drift, whether it collides — is the motion world's (<see cref="Stepper"/>),
+/// reached by <see cref="Handle"/>: the properties of those read and write it there, so there is
+/// one copy. Within a cycle the stepper moves it with
+/// <see cref="Velocity"/> (+ noise) and <see cref="AngularVelocity"/>; contacts may change both
+/// for the rest of the cycle (the swimming speed and turn rate are not changed by contacts).
 /// </summary>
 internal sealed class FishState
 {
-    private bool _modelStale;
+    private readonly Stepper _motion;
 
-    public FishState(int index, int team, FishSize size, Vector2 position, float heading)
+    /// <summary>Adds the fish's body to the motion world (joints straight) and sets up its game state.</summary>
+    public FishState(Stepper motion, int index, int team, FishSize size, Vector2 position, float heading)
     {
+        _motion = motion;
         Index = index;
         Team = team;
         Size = size;
-        Position = position;
-        Heading = Angle.Wrap(heading);
-        Model = new FishModel(size, new FishPose(position, Heading, 0f, 0f, 0f));
+        Handle = motion.AddFish(size, new FishPose(position, Angle.Wrap(heading), 0f, 0f, 0f));
         Decision = Decision.Stop;
         Turn.Reset(0f, TurnTable.Rates);
         Speed.Reset(0f, SpeedTable.Speeds);
@@ -33,23 +36,52 @@ internal sealed class FishState
     /// <summary>Index (fishN).</summary>
     public int Index { get; }
 
+    /// <summary>The fish's body in the motion world.</summary>
+    public int Handle { get; }
+
     /// <summary>Team 0 or 1.</summary>
     public int Team { get; }
 
     /// <summary>Body and tail sizes.</summary>
     public FishSize Size { get; }
 
-    /// <summary>Collision model, kept at the current pose.</summary>
-    public FishModel Model { get; }
+    /// <summary>Centre of the body rectangle, mm (the motion world's; setting it places the body there).</summary>
+    public Vector2 Position
+    {
+        get => _motion.PositionOf(Handle);
+        set
+        {
+            if (value != _motion.PositionOf(Handle))
+            {
+                _motion.SetPose(Handle, value, _motion.HeadingOf(Handle));
+            }
+        }
+    }
 
-    /// <summary>Centre of the body rectangle, mm.</summary>
-    public Vector2 Position;
+    /// <summary>Heading, rad, wrapped to [−π, π) (the motion world's; setting it turns the body).</summary>
+    public float Heading
+    {
+        get => _motion.HeadingOf(Handle);
+        set
+        {
+            if (value != _motion.HeadingOf(Handle))
+            {
+                _motion.SetPose(Handle, _motion.PositionOf(Handle), value);
+            }
+        }
+    }
 
-    /// <summary>Heading, rad, wrapped to [−π, π).</summary>
-    public float Heading;
+    /// <summary>The body's pose and joint angles now, as the motion world holds them.</summary>
+    public FishPose Pose => _motion.FishPoseOf(Handle);
 
-    /// <summary>Joint angles φ1..φ3 from the body axis, rad (fixed for the whole cycle).</summary>
-    public float Joint1, Joint2, Joint3;
+    /// <summary>Joint angle φ1 from the body axis, rad (fixed for the whole cycle).</summary>
+    public float Joint1 => Pose.Joint1;
+
+    /// <summary>Joint angle φ2, rad.</summary>
+    public float Joint2 => Pose.Joint2;
+
+    /// <summary>Joint angle φ3, rad.</summary>
+    public float Joint3 => Pose.Joint3;
 
     /// <summary>Forward speed along the heading, mm/s, and its gear approach state (never changed by a contact).</summary>
     public GearApproach Speed;
@@ -63,17 +95,33 @@ internal sealed class FishState
     /// <summary>The decision being executed.</summary>
     public Decision Decision;
 
-    /// <summary>Physical velocity inside the current cycle, mm/s.</summary>
-    public Vector2 Velocity;
+    /// <summary>Physical velocity inside the current cycle, mm/s (the motion world's own velocity of the body).</summary>
+    public Vector2 Velocity
+    {
+        get => _motion.VelocityOf(Handle);
+        set => _motion.SetVelocity(Handle, value, _motion.AngularVelocityOf(Handle));
+    }
 
     /// <summary>Angular velocity inside the current cycle, rad/s (includes collision spin).</summary>
-    public float AngularVelocity;
+    public float AngularVelocity
+    {
+        get => _motion.AngularVelocityOf(Handle);
+        set => _motion.SetVelocity(Handle, _motion.VelocityOf(Handle), value);
+    }
 
-    /// <summary>This cycle's noise drift of position (mm/s) and heading (rad/s).</summary>
-    public Vector2 NoiseVelocity;
+    /// <summary>This cycle's noise drift of position, mm/s (the body's drift in the motion world: it moves the fish, it is not its velocity).</summary>
+    public Vector2 NoiseVelocity
+    {
+        get => _motion.DriftOf(Handle);
+        set => _motion.SetDrift(Handle, value, _motion.AngularDriftOf(Handle));
+    }
 
-    /// <summary>This cycle's heading noise as a rate, rad/s.</summary>
-    public float NoiseAngularVelocity;
+    /// <summary>This cycle's heading noise as a rate, rad/s (the body's turning drift).</summary>
+    public float NoiseAngularVelocity
+    {
+        get => _motion.AngularDriftOf(Handle);
+        set => _motion.SetDrift(Handle, _motion.DriftOf(Handle), value);
+    }
 
     /// <summary>Pose at the start of the cycle (the last cycle's resolved end), restored by <see cref="Freeze"/>.</summary>
     public Vector2 StartPosition;
@@ -95,24 +143,51 @@ internal sealed class FishState
 
     /// <summary>
     /// True while a competition item keeps this fish out of play (frozen or caught, parked where the
-    /// item says, possibly outside the pool): it does not move and collides with nothing.
+    /// item says, possibly outside the pool): it does not move and collides with nothing (its body
+    /// takes no part in the motion world's contacts).
     /// </summary>
-    public bool OutOfPlay;
+    public bool OutOfPlay
+    {
+        get => !_motion.CollidesOf(Handle);
+        set
+        {
+            if (_motion.CollidesOf(Handle) == value)
+            {
+                _motion.SetCollides(Handle, !value);
+            }
+        }
+    }
 
     /// <summary>Forward unit vector u = (cos θ, sin θ).</summary>
-    public Vector2 Forward => new(MathF.Cos(Heading), MathF.Sin(Heading));
+    public Vector2 Forward
+    {
+        get
+        {
+            float heading = Heading;
+            return new(MathF.Cos(heading), MathF.Sin(heading));
+        }
+    }
 
     /// <summary>Distance along the axis from the centre to the head tip, mm.</summary>
     public float HeadReach => (Size.Length * 0.5f) + Size.Head;
 
+    /// <summary>Sets the joint angles for the cycle (the body's shape changes only when they differ).</summary>
+    public void SetJoints(float joint1, float joint2, float joint3)
+    {
+        FishPose pose = Pose;
+        if (pose.Joint1 != joint1 || pose.Joint2 != joint2 || pose.Joint3 != joint3)
+        {
+            _motion.SetJoints(Handle, joint1, joint2, joint3);
+        }
+    }
+
     /// <summary>Remembers the current pose as the cycle's start pose and clears the per-cycle flags.</summary>
     public void BeginCycle()
     {
-        StartPosition = Position;
-        StartHeading = Heading;
-        StartJoint1 = Joint1;
-        StartJoint2 = Joint2;
-        StartJoint3 = Joint3;
+        FishPose pose = Pose;
+        StartPosition = pose.Position;
+        StartHeading = pose.Heading;
+        (StartJoint1, StartJoint2, StartJoint3) = (pose.Joint1, pose.Joint2, pose.Joint3);
         Corrections = 0;
         Frozen = false;
     }
@@ -126,40 +201,11 @@ internal sealed class FishState
     {
         Position = StartPosition;
         Heading = StartHeading;
-        Joint1 = StartJoint1;
-        Joint2 = StartJoint2;
-        Joint3 = StartJoint3;
+        SetJoints(StartJoint1, StartJoint2, StartJoint3);
         Velocity = Vector2.Zero;
         AngularVelocity = 0f;
         NoiseVelocity = Vector2.Zero;
         NoiseAngularVelocity = 0f;
         Frozen = true;
-        Invalidate();
     }
-
-    /// <summary>The collision model exactly at the current pose and joints (rebuilt first when it lags behind).</summary>
-    public FishModel PosedModel
-    {
-        get
-        {
-            FishPose posed = Model.Pose;
-            if (_modelStale || posed.Position != Position || posed.Heading != Heading
-                || posed.Joint1 != Joint1 || posed.Joint2 != Joint2 || posed.Joint3 != Joint3)
-            {
-                SyncModel();
-            }
-
-            return Model;
-        }
-    }
-
-    /// <summary>Rebuilds the collision model at the current position, heading and joints.</summary>
-    public void SyncModel()
-    {
-        Model.SetPose(new FishPose(Position, Heading, Joint1, Joint2, Joint3));
-        _modelStale = false;
-    }
-
-    /// <summary>Marks the pose fields as changed; the model is rebuilt when next needed.</summary>
-    public void Invalidate() => _modelStale = true;
 }

@@ -37,9 +37,10 @@ internal static class Locomotion
                 f.Turn.Value = 0f;
             }
 
-            f.Joint1 = TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase);
-            f.Joint2 = TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase);
-            f.Joint3 = TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase);
+            f.SetJoints(
+                TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase),
+                TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase),
+                TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase));
             f.Velocity = f.Speed.Value * f.Forward;
             f.AngularVelocity = f.Turn.Value;
             f.NoiseVelocity = Vector2.Zero;
@@ -51,8 +52,6 @@ internal static class Locomotion
                 float reach = 30f * MathF.Abs(f.Turn.Value);
                 f.NoiseVelocity = new Vector2(noise.NextSigned() * reach, noise.NextSigned() * reach) / dt;
             }
-
-            f.Invalidate();
         }
 
         foreach (var b in world.Balls)

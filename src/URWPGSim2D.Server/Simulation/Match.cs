@@ -1,6 +1,5 @@
 using System.Collections.Generic;
 using System.Numerics;
-using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Server.Hosting;
 
@@ -23,16 +22,15 @@ internal sealed class Match
     /// <param name="strategies">Who decides for the fish.</param>
     /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
     /// <param name="seed">Seed of the noise generators.</param>
-    /// <param name="broadPhase">The stepper's broad phase; every kind gives the same match.</param>
     /// <param name="referee">The rules of a competition item, or null for the plain goal rules (<see cref="Rules"/>).</param>
-    public Match(World world, StrategyCaller strategies, bool noise, ulong seed, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, Items.ItemReferee? referee = null)
+    public Match(World world, StrategyCaller strategies, bool noise, ulong seed, Items.ItemReferee? referee = null)
     {
         World = world;
         Strategies = strategies;
         Referee = referee;
         Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
-        Stepper = new CycleMotion(world, Contacts, broadPhase);
+        Stepper = new CycleMotion(world, Contacts);
         referee?.Start(world);
         if (noise)
         {

@@ -18,15 +18,19 @@ internal sealed class Separation(World world)
     private const int MaxSearchSteps = 24;
     private readonly FishContact[] _contacts = new FishContact[8 * 8]; // every leaf pair of two fish
 
+    // Two fish's leaves laid out at their poses now, for the summed direction (the motion world
+    // keeps its own models where its stepping needs them; these are scratch, rebuilt per use).
+    private readonly FishModel?[] _posed = new FishModel?[2];
+
     /// <summary>Moves A and B of <paramref name="pair"/> apart; the first move is the contact's own MTV.</summary>
-    public void Apply(in CandidatePair pair, in Hit hit, float shareA, float shareB)
+    public void Apply(in CandidatePair pair, in Contact hit, float shareA, float shareB)
     {
         Vector2 mtv = hit.Mtv * ((hit.Depth + PhysicsConstants.SeparationMargin) / MathF.Max(hit.Depth, 1e-12f));
         Offset(pair, mtv * shareA, -mtv * shareB);
         bool wall = pair.Kind is PairKind.FishWall or PairKind.BallWall;
         for (int attempt = 0; attempt < 4; attempt++)
         {
-            Hit now = PairDetector.Detect(world, pair);
+            Contact now = world.Detect(pair);
             if (now.Depth <= MotionTolerances.ContactSlop)
             {
                 return;
@@ -48,9 +52,9 @@ internal sealed class Separation(World world)
     {
         int n = pair.Kind switch
         {
-            PairKind.FishFish => FishCollision.DetectAll(world.Fish[pair.A].PosedModel, world.Fish[pair.B].PosedModel, _contacts),
-            PairKind.FishBall => FishCollision.DetectAll(world.Fish[pair.A].PosedModel, world.Balls[pair.B].Shape, _contacts),
-            PairKind.FishStatic => FishStatic(world.Fish[pair.A].PosedModel, world.Statics[pair.B]),
+            PairKind.FishFish => FishCollision.DetectAll(Posed(0, world.Fish[pair.A]), Posed(1, world.Fish[pair.B]), _contacts),
+            PairKind.FishBall => FishCollision.DetectAll(Posed(0, world.Fish[pair.A]), world.Balls[pair.B].Shape, _contacts),
+            PairKind.FishStatic => FishStatic(Posed(0, world.Fish[pair.A]), world.Statics[pair.B]),
             _ => 0,
         };
         Vector2 sum = Vector2.Zero;
@@ -60,6 +64,20 @@ internal sealed class Separation(World world)
         }
 
         return sum.LengthSquared() > 1e-12f ? Vector2.Normalize(sum) : fallback;
+    }
+
+    // Scratch model `slot` at the fish's pose and joints now (a new one only for a fish of another size).
+    private FishModel Posed(int slot, FishState fish)
+    {
+        FishPose pose = fish.Pose;
+        FishModel? model = _posed[slot];
+        if (model is null || model.Size != fish.Size)
+        {
+            return _posed[slot] = new FishModel(fish.Size, pose);
+        }
+
+        model.SetPose(pose);
+        return model;
     }
 
     private int FishStatic(FishModel fish, StaticBody body)
@@ -97,7 +115,7 @@ internal sealed class Separation(World world)
         {
             Offset(pair, stepA * (hi - applied), stepB * (hi - applied));
             applied = hi;
-            if (PairDetector.Detect(world, pair).Depth <= MotionTolerances.ContactSlop)
+            if (world.Detect(pair).Depth <= MotionTolerances.ContactSlop)
             {
                 break;
             }
@@ -111,7 +129,7 @@ internal sealed class Separation(World world)
             float mid = 0.5f * (lo + hi);
             Offset(pair, stepA * (mid - applied), stepB * (mid - applied));
             applied = mid;
-            if (PairDetector.Detect(world, pair).Depth <= MotionTolerances.ContactSlop)
+            if (world.Detect(pair).Depth <= MotionTolerances.ContactSlop)
             {
                 hi = mid;
             }
@@ -161,7 +179,6 @@ internal sealed class Separation(World world)
         fish.Position += offset;
         fish.NoiseVelocity = Vector2.Zero;
         fish.NoiseAngularVelocity = 0f;
-        fish.Invalidate();
     }
 
     private static void MoveBall(BallState ball, Vector2 offset)

@@ -1,25 +1,59 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// The pool and everything in it: the field (walls, goal blocks), fish, balls and obstacles, plus
-/// the match clock and score. Arrays are fixed for the whole match; iteration is always by index.
+/// the match clock and score. The bodies themselves live in the motion world (<see cref="Motion"/>,
+/// the collision library's <see cref="Stepper"/>): fish, then balls (its moving bodies), then
+/// obstacles and goal blocks (static), then the walls; the fish and balls here hold the game state
+/// and their body's handle. Arrays are fixed for the whole match; iteration is always by index.
 /// </summary>
 internal sealed class World
 {
-    private MotionBodies? _bodies;
-
-    public World(Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
+    /// <summary>Creates the world over a motion world that already holds its fish and balls (in index order); adds the static bodies and the walls.</summary>
+    public World(Stepper motion, Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
     {
+        Motion = motion;
         Field = field;
         Fish = fish;
         Balls = balls;
         Obstacles = obstacles;
         Statics = statics;
+        for (int i = 0; i < fish.Length; i++)
+        {
+            Expect(fish[i].Handle, i, "fish");
+        }
+
+        for (int i = 0; i < balls.Length; i++)
+        {
+            Expect(balls[i].Handle, fish.Length + i, "ball");
+        }
+
+        Expect(motion.BodyCount, fish.Length + balls.Length, "moving bodies");
+        foreach (var s in statics)
+        {
+            Shape shape = s.Kind switch
+            {
+                ShapeKind.Circle => s.Circle,
+                ShapeKind.Polygon => s.Polygon,
+                _ => s.Box,
+            };
+            motion.AddStatic(shape);
+        }
+
+        WallsHandle = motion.AddWalls(field);
     }
+
+    /// <summary>The motion world: every body's pose, joints, shape and in-cycle motion.</summary>
+    public Stepper Motion { get; }
+
+    /// <summary>The walls' handle in the motion world.</summary>
+    public int WallsHandle { get; }
 
     /// <summary>The pool: bounds, walls, goal blocks, goal mouths.</summary>
     public Field Field { get; }
@@ -35,13 +69,6 @@ internal sealed class World
 
     /// <summary>Obstacles (first, obstacleN = index) then goal blocks (goalBlockN = index − obstacle count).</summary>
     public StaticBody[] Statics { get; }
-
-    /// <summary>The bodies as the motion stepper holds them (created with the default broad phase when first needed).</summary>
-    public MotionBodies Bodies
-    {
-        get => _bodies ??= new MotionBodies(this, Collision.BroadPhase.BroadPhaseKind.UniformGrid);
-        set => _bodies = value;
-    }
 
     /// <summary>Cycles completed.</summary>
     public int Cycle { get; set; }
@@ -62,5 +89,45 @@ internal sealed class World
         }
 
         return n;
+    }
+
+    /// <summary>The contact of a pair at the bodies' poses now (MTV moves A).</summary>
+    public Contact Detect(in CandidatePair pair) => Motion.Detect(HandleOfA(pair), HandleOfB(pair));
+
+    /// <summary>The world's pair of a contact the motion world reports.</summary>
+    public CandidatePair PairOf(in Contact contact)
+    {
+        int fish = Fish.Length, balls = Balls.Length;
+        int a = contact.BodyA, b = contact.BodyB;
+        if (a < fish)
+        {
+            return b < fish ? new CandidatePair(PairKind.FishFish, a, b, 0f)
+                : b < fish + balls ? new CandidatePair(PairKind.FishBall, a, b - fish, 0f)
+                : b == WallsHandle ? new CandidatePair(PairKind.FishWall, a, 0, 0f)
+                : new CandidatePair(PairKind.FishStatic, a, b - fish - balls, 0f);
+        }
+
+        int ball = a - fish;
+        return b < fish + balls ? new CandidatePair(PairKind.BallBall, ball, b - fish, 0f)
+            : b == WallsHandle ? new CandidatePair(PairKind.BallWall, ball, 0, 0f)
+            : new CandidatePair(PairKind.BallStatic, ball, b - fish - balls, 0f);
+    }
+
+    private int HandleOfA(in CandidatePair p) => p.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic or PairKind.FishWall ? Fish[p.A].Handle : Balls[p.A].Handle;
+
+    private int HandleOfB(in CandidatePair p) => p.Kind switch
+    {
+        PairKind.FishFish => Fish[p.B].Handle,
+        PairKind.FishBall or PairKind.BallBall => Balls[p.B].Handle,
+        PairKind.FishStatic or PairKind.BallStatic => Fish.Length + Balls.Length + p.B,
+        _ => WallsHandle,
+    };
+
+    private static void Expect(int actual, int expected, string what)
+    {
+        if (actual != expected)
+        {
+            throw new ArgumentException($"the motion world's {what} must come first and in index order: expected handle {expected}, got {actual}");
+        }
     }
 }

@@ -139,6 +139,7 @@ internal sealed class TraceLine
         Hosting.FaultKind.Exception => "exception",
         Hosting.FaultKind.Timeout => "timeout",
         Hosting.FaultKind.BadAnswer => "bad answer",
+        Hosting.FaultKind.Disconnected => "remote client disconnected, its fish stop",
         _ => "strategy ended, its fish stop",
     };
 

@@ -22,12 +22,7 @@ public sealed class StepperWedgeTests
     {
         // A bar 200 × 40 mm turning at 3 rad/s between two boxes 150 mm apart: once it jams, pushing
         // one end out of one box pushes the other end into the other one, and it keeps turning.
-        var stepper = new Stepper();
-        stepper.AddWalls(new Field());
-        stepper.AddStatic(new Aabb(new Vector2(-400f, -300f), new Vector2(-75f, 300f)));
-        stepper.AddStatic(new Aabb(new Vector2(75f, -300f), new Vector2(400f, 300f)));
-        var bar = new ConvexPolygon([new Vector2(-100f, -20f), new Vector2(100f, -20f), new Vector2(100f, 20f), new Vector2(-100f, 20f)]);
-        int body = stepper.AddPolygon(bar, Vector2.Zero, MathF.PI / 2f);
+        var stepper = BarInSlot(out int body);
         var handler = new RecordingHandler { Record = false };
         int most = 0, rejected = 0;
         for (int step = 0; step < 30; step++)
@@ -47,5 +42,17 @@ public sealed class StepperWedgeTests
 
         // A jammed step whose overlap settling cannot remove goes back to where the last one ended.
         Assert.True(rejected > 0, "no move was rejected");
+    }
+
+    /// <summary>A bar 200 × 40 mm standing (heading π/2) between two boxes 150 mm apart, in a pool.</summary>
+    internal static Stepper BarInSlot(out int bar)
+    {
+        var stepper = new Stepper();
+        stepper.AddWalls(new Field());
+        stepper.AddStatic(new Aabb(new Vector2(-400f, -300f), new Vector2(-75f, 300f)));
+        stepper.AddStatic(new Aabb(new Vector2(75f, -300f), new Vector2(400f, 300f)));
+        var shape = new ConvexPolygon([new Vector2(-100f, -20f), new Vector2(100f, -20f), new Vector2(100f, 20f), new Vector2(-100f, 20f)]);
+        bar = stepper.AddPolygon(shape, Vector2.Zero, MathF.PI / 2f);
+        return stepper;
     }
 }

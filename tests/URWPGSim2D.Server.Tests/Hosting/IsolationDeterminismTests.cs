@@ -37,28 +37,7 @@ public sealed class IsolationDeterminismTests : IDisposable
     [MemberData(nameof(Items))]
     public void A_hosted_strategy_plays_the_same_match_as_in_process(string item)
     {
-        string sdk = Path.Combine(_folder, "Steady.cs");
-        File.WriteAllText(sdk, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Steady : IStrategy
-            {
-                private int _calls;
-                public string TeamName => "steady";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    _calls++;
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        var me = s.Fish[fish[i]];
-                        var target = s.Balls.Length > 0 ? s.Balls[i % s.Balls.Length].Position : System.Numerics.Vector2.Zero;
-                        float want = MathF.Atan2(target.Y - me.Position.Y, target.X - me.Position.X) - me.Heading;
-                        int turn = 7 + (int)Math.Clamp(MathF.Round(MathF.IEEERemainder(want, MathF.Tau) * 4), -7, 7);
-                        d[i] = new Decision((_calls + s.Variables.Count + (s.SidesSwapped ? 3 : 0)) % 6 + 9, turn);
-                    }
-                }
-            }
-            """);
+        string sdk = SteadyStrategy.Write(_folder);
         foreach (string spec in new[] { sdk, OriginalStrategyTests.Folder("Dribbler") })
         {
             foreach (string seed in new[] { "1", "2" })

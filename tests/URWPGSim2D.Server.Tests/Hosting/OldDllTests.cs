@@ -17,8 +17,10 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// <c>run --strategy TEAM=old.dll</c> with DLLs in the shape of those built for the original (x86,
 /// mscorlib 2.0, the original's assembly names; compiled here by <see cref="OldStrategyCompiler"/>):
 /// they play every item, exactly as the same source compiled for this server does, and fault like any
-/// other strategy; a DLL holding native code is refused in one line.
+/// other strategy; a DLL holding native code is refused in one line. The matches play original-API
+/// strategies in this test process, so these tests run alone (<see cref="InProcessStaticsCollection"/>).
 /// </summary>
+[Collection(InProcessStaticsCollection.Name)]
 public sealed class OldDllTests : IDisposable
 {
     private const string OneFishOneBall =

@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Fish;
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation;
@@ -34,7 +35,7 @@ public sealed class ContactResponseTests
                 float tangentA = Vector2.Dot(a.Velocity, tangent);
                 float tangentB = Vector2.Dot(b.Velocity, tangent);
                 var pair = new CandidatePair(PairKind.BallBall, 0, 1, 58f);
-                Hit hit = PairDetector.Detect(match.World, pair);
+                Contact hit = match.World.Detect(pair);
                 Assert.True(hit.Intersect);
                 new ContactResponse(match.World).Apply(pair, hit);
 
@@ -63,7 +64,8 @@ public sealed class ContactResponseTests
         var fish = match.World.Fish[0];
         Assert.Contains(match.Contacts.Cycle.ToArray(), c => c.Pair.Kind == PairKind.FishStatic);
         Assert.InRange(fish.Velocity.X, -1f, 0.01f);
-        Assert.True(fish.PosedModel.Bounds.Max.X <= 1350f + 0.02f, $"head at {fish.PosedModel.Bounds.Max.X}");
+        var model = new FishModel(fish.Size, fish.Pose);
+        Assert.True(model.Bounds.Max.X <= 1350f + 0.02f, $"head at {model.Bounds.Max.X}");
         Assert.Equal(312.3145f, fish.Speed.Value, 1e-3f); // VCode 15 after 40 cycles of the gear approach (untouched by the wall)
     }
 

@@ -27,7 +27,7 @@ internal static class OverlapAudit
             leaves[i] = new ConvexPolygon[8];
             for (int p = 0; p < 8; p++)
             {
-                leaves[i][p] = new ConvexPolygon(fish[i].PosedModel.GetLeaf((FishPart)p));
+                leaves[i][p] = new ConvexPolygon(new FishModel(fish[i].Size, fish[i].Pose).GetLeaf((FishPart)p));
             }
         }
 

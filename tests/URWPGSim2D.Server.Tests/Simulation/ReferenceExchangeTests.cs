@@ -48,7 +48,7 @@ public sealed class ReferenceExchangeTests
         var fish = match.World.Fish[0];
         var ball = match.World.Balls[0];
         var pair = new CandidatePair(PairKind.FishBall, 0, 0, 60f);
-        Hit hit = PairDetector.Detect(match.World, pair);
+        Contact hit = match.World.Detect(pair);
         Assert.True(hit.Intersect);
         Assert.Equal(n.X, hit.Normal.X, 1e-3f);
         Assert.Equal(n.Y, hit.Normal.Y, 1e-3f);
@@ -70,7 +70,7 @@ public sealed class ReferenceExchangeTests
         // As above with V = 5000: Δθ = −1.74669e−4·5000 = −0.873347 rad (−50.0°); the ball keeps 0.378253·5000 = 1891.27.
         var match = RestingFishAndBall(new Vector2(-344f, -50f - 57.95f), new Vector2(0f, 5000f));
         var pair = new CandidatePair(PairKind.FishBall, 0, 0, 60f);
-        new ContactResponse(match.World).Apply(pair, PairDetector.Detect(match.World, pair));
+        new ContactResponse(match.World).Apply(pair, match.World.Detect(pair));
         Assert.Equal(-0.873347f, match.World.Fish[0].Heading, 0.005f);
         Assert.Equal(1891.27f, match.World.Balls[0].Velocity.Y, 0.5f);
     }
@@ -110,7 +110,7 @@ public sealed class ReferenceExchangeTests
         for (int k = 2; k <= 20; k++)
         {
             match.Step();
-            Assert.True(PairDetector.Detect(match.World, pair).Depth <= 0.5f, $"cycle {k}: ball inside the fish");
+            Assert.True(match.World.Detect(pair).Depth <= 0.5f, $"cycle {k}: ball inside the fish");
         }
     }
 
@@ -130,7 +130,7 @@ public sealed class ReferenceExchangeTests
         a.Velocity = new Vector2(0f, 300f);
         // Either fish may be the pair's first (the normal then points the other way): the result is the same.
         var pair = struckFishSecond ? new CandidatePair(PairKind.FishFish, 1, 0, 10f) : new CandidatePair(PairKind.FishFish, 0, 1, 10f);
-        Hit hit = PairDetector.Detect(match.World, pair);
+        Contact hit = match.World.Detect(pair);
         Assert.True(hit.Intersect);
         new ContactResponse(match.World).Apply(pair, hit);
         Assert.Equal(0.011945f, b.Heading, 1e-4f);
@@ -175,7 +175,7 @@ public sealed class ReferenceExchangeTests
         fish.Velocity = new Vector2(300f, 0f);
         int obstacle = Array.FindIndex(match.World.Statics, s => !s.IsGoalBlock);
         var pair = new CandidatePair(PairKind.FishStatic, 0, obstacle, 0f);
-        Hit hit = PairDetector.Detect(match.World, pair);
+        Contact hit = match.World.Detect(pair);
         Assert.True(hit.Intersect);
         Assert.Equal(n.X, hit.Normal.X, 1e-3f);
         Assert.Equal(n.Y, hit.Normal.Y, 1e-3f);
@@ -197,7 +197,7 @@ public sealed class ReferenceExchangeTests
         Vector2 contact = pectoral ? new Vector2(-46.6667f, -60f) : new Vector2(60f, -22.5f);
         var match = RestingFishAndBall(contact - new Vector2(0f, 56f), Vector2.Zero);
         var pair = new CandidatePair(PairKind.FishBall, 0, 0, 60f);
-        Hit hit = PairDetector.Detect(match.World, pair);
+        Contact hit = match.World.Detect(pair);
         Assert.Equal(2f, hit.Depth, 0.01f);
         new ContactResponse(match.World).Apply(pair, hit);
         float ballShare = pectoral ? 0.75f : 0.5f;

@@ -67,7 +67,7 @@ public sealed class TunnellingTests
         var contacts = match.Contacts.Cycle.ToArray();
         Assert.Contains(contacts, c => c.Pair.Kind == PairKind.FishBall && c.PartA is (sbyte)FishPart.Tail3 or (sbyte)FishPart.Tail2 or (sbyte)FishPart.LeftCaudal);
         var fish = match.World.Fish[0];
-        var tail = fish.PosedModel.GetLeaf(FishPart.Tail3);
+        var tail = new FishModel(fish.Size, fish.Pose).GetLeaf(FishPart.Tail3);
         Vector2 middle = (tail[0] + tail[1] + tail[2] + tail[3]) / 4f;
         Vector2 u = fish.Forward;
         Vector2 ball = match.BallAt(0);

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
@@ -69,7 +70,7 @@ internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball
                 continue;
             }
 
-            FishView mine = me with { Position = new Vector2(me.Position.X * side, me.Position.Y), Heading = side > 0 ? me.Heading : Steering.Wrap(MathF.PI - me.Heading) };
+            FishView mine = me with { Position = new Vector2(me.Position.X * side, me.Position.Y), Heading = side > 0 ? me.Heading : Angle.Wrap(MathF.PI - me.Heading) };
             if (BoxExit(mine, out Vector2 exit))
             {
                 Decision e = Steering.SwimTo(mine, exit, 4);

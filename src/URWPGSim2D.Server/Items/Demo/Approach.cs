@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
@@ -135,7 +136,7 @@ internal struct Approach
         {
             _key = -1;
             Vector2 to = goal - me.Position;
-            float eta = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+            float eta = Angle.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
             return new Decision(MathF.Abs(eta) > 1f ? 1 : 2, TurnCode.For(Math.Clamp(eta, -0.35f, 0.35f), view.AngularSpeed));
         }
 
@@ -171,7 +172,7 @@ internal struct Approach
             turned = path.At(path.Length).Heading - path.Heading;
         }
 
-        float rate = Steering.Wrap(turned) / ahead;
+        float rate = Angle.Wrap(turned) / ahead;
         return new Decision(vcode, TurnCode.For(rate, view.AngularSpeed));
     }
 

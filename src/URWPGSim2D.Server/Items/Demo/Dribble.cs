@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
@@ -42,7 +43,7 @@ internal struct Dribble
         float along = Vector2.Dot(rel, dir);
         float aside = Vector2.Dot(rel, normal);
         float reach = (me.BodyLength * 0.5f) + me.HeadLength + radius;
-        float error = MathF.Abs(Steering.Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
+        float error = MathF.Abs(Angle.Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
         Vector2 head = Steering.Head(me) - ball;
         float headAlong = Vector2.Dot(head, dir);
         float headAside = Vector2.Dot(head, normal);
@@ -55,7 +56,7 @@ internal struct Dribble
             // Follow the push line with the head (a Stanley-type line follower): heading along the
             // line, turned toward it in proportion to the head's offset.
             float desired = MathF.Atan2(dir.Y, dir.X) - MathF.Atan(headAside / 120f);
-            float turn = Steering.Wrap(desired - me.Heading);
+            float turn = Angle.Wrap(desired - me.Heading);
             int tcode = 7 + (int)MathF.Round(Math.Clamp(turn / 0.6f, -1f, 1f) * 7f);
             int v = MathF.Abs(turn) > 0.6f ? 3 : headAlong > -(radius + 150f) ? (distance < 200f ? Math.Min(pushVCode, 5) : pushVCode) : 6;
             return new Decision(v, tcode);
@@ -95,7 +96,7 @@ internal struct Dribble
     public static Decision Swim(in FishView me, Vector2 aim, int maxVCode)
     {
         Vector2 to = aim - me.Position;
-        float error = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+        float error = Angle.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
         int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.8f, -1f, 1f) * 7f);
         float absError = MathF.Abs(error);
         float sine = absError >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(absError), 0.05f);

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 
 namespace URWPGSim2D.Server.Items.Demo;
@@ -196,6 +197,6 @@ internal readonly struct DubinsPath
         float cos = MathF.Cos(swept), sin = MathF.Sin(swept);
         Vector2 r = p - c;
         p = c + new Vector2((r.X * cos) - (r.Y * sin), (r.X * sin) + (r.Y * cos));
-        h = Steering.Wrap(h + swept);
+        h = Angle.Wrap(h + swept);
     }
 }

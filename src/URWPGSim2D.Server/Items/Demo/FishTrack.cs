@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 
 namespace URWPGSim2D.Server.Items.Demo;
@@ -50,7 +51,7 @@ internal struct FishTrack
         float turned = view.AngularSpeed * Dt;
         float middle = Heading + (turned * 0.5f);
         Position += new Vector2(MathF.Cos(middle), MathF.Sin(middle)) * (view.Speed * Dt);
-        Heading = Steering.Wrap(Heading + turned);
+        Heading = Angle.Wrap(Heading + turned);
 
         float headingNoise = view.Speed * view.Speed / 500000f;
         float positionNoise = 30f * MathF.Abs(view.AngularSpeed);
@@ -58,7 +59,7 @@ internal struct FishTrack
         _positionVariance += (positionNoise * positionNoise / 3f) + 4f;
 
         float headingGain = _headingVariance / (_headingVariance + ViewHeadingVariance);
-        Heading = Steering.Wrap(Heading + (headingGain * Steering.Wrap(view.Heading - Heading)));
+        Heading = Angle.Wrap(Heading + (headingGain * Angle.Wrap(view.Heading - Heading)));
         _headingVariance *= 1f - headingGain;
 
         float positionGain = _positionVariance / (_positionVariance + ViewPositionVariance);

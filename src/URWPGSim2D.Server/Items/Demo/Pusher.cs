@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
@@ -69,8 +70,8 @@ internal struct Pusher
 
         Vector2 toBall = ball.Position - tip;
         float gap = toBall.Length() - radius;
-        float alpha = Steering.Wrap(MathF.Atan2(toBall.Y, toBall.X) - me.Heading);
-        float error = Steering.Wrap(MathF.Atan2(direction.Y, direction.X) - me.Heading);
+        float alpha = Angle.Wrap(MathF.Atan2(toBall.Y, toBall.X) - me.Heading);
+        float error = Angle.Wrap(MathF.Atan2(direction.Y, direction.X) - me.Heading);
         _pushing = _pushing
             ? gap < 200f && MathF.Abs(alpha) < 1.1f && MathF.Abs(error) < ExitError
             : gap < 150f && MathF.Abs(alpha) < 0.7f && MathF.Abs(error) < 1.0f;
@@ -82,7 +83,7 @@ internal struct Pusher
             Vector2 side = new(-direction.Y, direction.X);
             Vector2 fromBall = tip - ball.Position;
             float along = Vector2.Dot(fromBall, direction), aside = Vector2.Dot(fromBall, side);
-            error = Steering.Wrap(wanted - me.Heading);
+            error = Angle.Wrap(wanted - me.Heading);
             _runUp = _runUp
                 ? along < -radius * 0.3f && along > -(radius + RunUp + 500f) && MathF.Abs(aside) < 40f - (0.8f * along) && MathF.Abs(error) < 1.0f
                 : along < -(radius + 20f) && along > -(radius + RunUp + 400f) && MathF.Abs(aside) < -0.6f * along && MathF.Abs(error) < 0.8f;
@@ -90,7 +91,7 @@ internal struct Pusher
             {
                 // On the push line behind the ball: follow it with the head tip (Stanley-type) up to the ball.
                 float heading = wanted - MathF.Atan2(aside, 150f);
-                float want = Math.Clamp(1.2f * Steering.Wrap(heading - me.Heading), -0.35f, 0.35f);
+                float want = Math.Clamp(1.2f * Angle.Wrap(heading - me.Heading), -0.35f, 0.35f);
                 return new Decision(gap > 250f ? 4 : Math.Min(pushVCode, 3), TurnCode.For(want, view.AngularSpeed));
             }
 
@@ -106,7 +107,7 @@ internal struct Pusher
 
         float b = 1f + (reach / radius);
         float limit = MaxHold / (radius * b);
-        float curvature = Math.Clamp(Steering.Wrap(error - alpha) / TurnDistance, -limit, limit);
+        float curvature = Math.Clamp(Angle.Wrap(error - alpha) / TurnDistance, -limit, limit);
         float speed = MathF.Max(view.Speed, 10f);
         float a = MathF.Max(ball.Velocity.Length(), 0.75f * speed) / radius;
         float hold = curvature * radius * b;
@@ -148,7 +149,7 @@ internal struct Pusher
 
         Vector2 to = carrot - me.Position;
         float distance = MathF.Max(to.Length(), 1f);
-        float eta = Steering.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+        float eta = Angle.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
         float sine = MathF.Abs(eta) >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(MathF.Abs(eta)), 0.05f);
         float fastest = Approach.PlanTurnRate * distance / (2f * sine);
         if (first != second && toFirst > 1f)
@@ -207,7 +208,7 @@ internal struct Pusher
         Vector2 toBall = ball.Position - tip;
         float seen = MathF.Atan2(toBall.Y, toBall.X);
         float felt = MathF.Atan2(normal.Y, normal.X);
-        if (toBall.Length() < radius + 40f && MathF.Abs(Steering.Wrap(felt - me.Heading)) < 1f && MathF.Abs(Steering.Wrap(felt - seen)) < 0.8f)
+        if (toBall.Length() < radius + 40f && MathF.Abs(Angle.Wrap(felt - me.Heading)) < 1f && MathF.Abs(Angle.Wrap(felt - seen)) < 0.8f)
         {
             ball.Contact(tip + (normal * radius), 0.7f);
         }

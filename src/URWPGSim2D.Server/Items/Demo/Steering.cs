@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Simulation.Kinematics;
 using URWPGSim2D.Strategies;
@@ -21,18 +22,11 @@ internal static class Steering
     /// <summary>The tip of the fish's head.</summary>
     public static Vector2 Head(in FishView me) => me.Position + (Direction(me.Heading) * ((me.BodyLength * 0.5f) + me.HeadLength));
 
-    /// <summary>Angle from a to b, wrapped to [−π, π).</summary>
-    public static float Wrap(float angle)
-    {
-        float a = MathF.IEEERemainder(angle, 2f * MathF.PI);
-        return a >= MathF.PI ? a - (2f * MathF.PI) : a;
-    }
-
     /// <summary>Heads for <paramref name="aim"/>: the turn code follows the heading error, the speed is the fastest whose turning circle still reaches the point (at most <paramref name="maxVCode"/>).</summary>
     public static Decision SwimTo(in FishView me, Vector2 aim, int maxVCode = 14)
     {
         Vector2 to = aim - me.Position;
-        float error = Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
+        float error = Angle.Wrap(MathF.Atan2(to.Y, to.X) - me.Heading);
         int tcode = 7 + (int)MathF.Round(Math.Clamp(error / 0.4f, -1f, 1f) * 7f);
         float absError = MathF.Abs(error);
         float sine = absError >= MathF.PI / 2f ? 1f : MathF.Max(MathF.Sin(absError), 0.05f);
@@ -72,7 +66,7 @@ internal static class Steering
         Vector2 toBall = ball - head;
         float along = Vector2.Dot(toBall, dir);
         float across = MathF.Abs((toBall.X * dir.Y) - (toBall.Y * dir.X));
-        float headingError = MathF.Abs(Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
+        float headingError = MathF.Abs(Angle.Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
         bool linedUp = along > -radius * 0.5f && across < radius * 0.8f && headingError < LineUpAngle
             && Vector2.Distance(head, ball) < radius + standOff + 120f;
         if (linedUp)

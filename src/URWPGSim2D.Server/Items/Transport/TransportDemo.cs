@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
 
@@ -166,7 +167,7 @@ internal sealed class TransportDemo(TransportReferee referee) : IStrategy
         Vector2 dir = Vector2.Normalize(target - b);
         Vector2 head = Steering.Head(me) - b;
         float headAlong = Vector2.Dot(head, dir), headAside = MathF.Abs((head.X * dir.Y) - (head.Y * dir.X));
-        float error = MathF.Abs(Steering.Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
+        float error = MathF.Abs(Angle.Wrap(MathF.Atan2(dir.Y, dir.X) - me.Heading));
         _pushing[k] = _pushing[k]
             ? headAlong < ball.Radius * 0.5f && headAlong > -(ball.Radius + 700f) && headAside < MathF.Max(2f * ball.Radius, -headAlong * 0.8f) && error < 1.6f
             : headAlong < -ball.Radius * 0.2f && headAlong > -(ball.Radius + 600f) && headAside < MathF.Max(ball.Radius, -headAlong * 0.6f) && error < 1.3f;

@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Motion;
 using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
@@ -27,7 +28,7 @@ public sealed class DubinsPathTests
                 {
                     var (end, heading) = path.At(path.Length);
                     Assert.True(Vector2.Distance(end, to) < 0.05f, $"ends at {end}, not {to}");
-                    Assert.True(MathF.Abs(Steering.Wrap(heading - h1)) < 1e-3f, $"heading {heading}, not {h1}");
+                    Assert.True(MathF.Abs(Angle.Wrap(heading - h1)) < 1e-3f, $"heading {heading}, not {h1}");
                     Assert.True(path.Length >= Vector2.Distance(from, to) - 0.05f);
 
                     // Walking the path in small steps: consecutive headings change by at most step / radius.
@@ -36,7 +37,7 @@ public sealed class DubinsPathTests
                     for (float s = step; s <= path.Length; s += step)
                     {
                         var (q, g) = path.At(s);
-                        Assert.True(MathF.Abs(Steering.Wrap(g - h)) <= (step / r) + 1e-3f);
+                        Assert.True(MathF.Abs(Angle.Wrap(g - h)) <= (step / r) + 1e-3f);
                         Assert.True(Vector2.Distance(p, q) <= step + 1e-2f);
                         (p, h) = (q, g);
                     }

@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Motion;
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -222,8 +223,8 @@ public sealed class PushingTests
                     var truth = world.Fish[fish[0]];
                     FishTrackError.Add(Vector2.Distance(_fish.Position, truth.Position));
                     FishViewError.Add(Vector2.Distance(view.Position, truth.Position));
-                    HeadingTrackError.Add(Steering.Wrap(_fish.Heading - truth.Heading));
-                    HeadingViewError.Add(Steering.Wrap(view.Heading - truth.Heading));
+                    HeadingTrackError.Add(Angle.Wrap(_fish.Heading - truth.Heading));
+                    HeadingViewError.Add(Angle.Wrap(view.Heading - truth.Heading));
                 }
 
                 decisions[0] = new Decision(4, snapshot.Cycle < 150 ? 8 : 6);

@@ -1,0 +1,10 @@
+"""A client of the URWPGSim2D server's strategy protocol (standard library only, Python >= 3.9).
+
+Strategy and play() play a remote team (run --strategy TEAM=remote:PORT); FishEnv (urwpgsim2d.env)
+drives one team in lockstep as a Gymnasium environment.
+"""
+
+from .client import Refused, Strategy, main, parse_address, play
+from .protocol import VERSION, Assignment, Ball, End, Fish, Obstacle, ProtocolError, Snapshot
+
+__all__ = ["VERSION", "Assignment", "Ball", "End", "Fish", "Obstacle", "ProtocolError", "Refused", "Snapshot", "Strategy", "main", "parse_address", "play"]

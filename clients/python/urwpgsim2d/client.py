@@ -1,0 +1,118 @@
+"""A strategy base class and the loop that plays it for a server that waits for a remote team."""
+
+import sys
+from typing import List, Optional, Sequence, Tuple
+
+from . import protocol
+from .protocol import Assignment, End, ProtocolError, Snapshot
+
+
+class Refused(Exception):
+    """The server refused the client (wrong token, another protocol version)."""
+
+
+class Strategy:
+    """A team's strategy: override decide(); start() and end() are optional."""
+
+    name: Optional[str] = None
+    """The team's name, sent in the hello."""
+
+    def start(self, assignment: Assignment) -> None:
+        """Called once a connection has its assignment (again after a reconnect)."""
+
+    def decide(self, snapshot: Snapshot) -> Sequence[Tuple[int, int]]:
+        """One (vcode, tcode) pair, each 0..15, per fish of snapshot.my_fish, in that order."""
+        raise NotImplementedError
+
+    def end(self, result: End) -> None:
+        """Called with the server's end of the match."""
+
+
+def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, timeout: float = 10.0) -> End:
+    """Connects, plays every cycle with strategy.decide until the end, and returns the result.
+
+    A decide() that raises is answered as that cycle's 'exception' fault, and one that returns
+    something unusable as a 'badAnswer' fault (the server keeps the fish's last decisions); the
+    match goes on. Raises Refused when the server refuses the hello, ProtocolError when it breaks
+    the protocol or closes the connection before the end.
+    """
+    connection = protocol.Connection(host, port, timeout)
+    try:
+        connection.send(protocol.hello(token, strategy.name))
+        first = connection.receive()
+        if first is None:
+            raise ProtocolError("the server closed the connection before the assignment")
+        if first["type"] == "error":
+            raise Refused(str(first.get("message", "")))
+        if first["type"] != "assignment":
+            raise ProtocolError("expected an assignment, got %r" % first["type"])
+        assignment = Assignment.from_json(first)
+        strategy.start(assignment)
+        while True:
+            message = connection.receive()
+            if message is None:
+                raise ProtocolError("the server closed the connection before the end of the match")
+            kind = message["type"]
+            if kind == "cycle":
+                snapshot = Snapshot.from_json(message, assignment)
+                connection.send(_answer(strategy, snapshot, len(assignment.fish)))
+            elif kind == "end":
+                result = End(int(message["cycle"]), (int(message["goals"][0]), int(message["goals"][1])), int(message["faults"]))
+                strategy.end(result)
+                return result
+            elif kind == "error":
+                raise ProtocolError("the server ended the connection: %s" % message.get("message", ""))
+            # another message of a later version: not needed here
+    finally:
+        connection.close()
+
+
+def _answer(strategy: Strategy, snapshot: Snapshot, count: int) -> dict:
+    try:
+        pairs = strategy.decide(snapshot)
+    except Exception as e:  # the strategy's fault, reported to the server; the match goes on
+        return protocol.fault(snapshot.cycle, "exception", "%s: %s" % (type(e).__name__, e))
+    checked: List[Tuple[int, int]] = []
+    try:
+        for v, t in pairs:
+            if isinstance(v, bool) or isinstance(t, bool) or int(v) != v or int(t) != t or not (0 <= v <= 15 and 0 <= t <= 15):
+                raise ValueError("gears must be integers 0..15, got (%r, %r)" % (v, t))
+            checked.append((int(v), int(t)))
+    except (TypeError, ValueError) as e:
+        return protocol.fault(snapshot.cycle, "badAnswer", str(e))
+    if len(checked) != count:
+        return protocol.fault(snapshot.cycle, "badAnswer", "%d decisions for %d fish" % (len(checked), count))
+    return protocol.decisions(snapshot.cycle, checked)
+
+
+def parse_address(text: str) -> Tuple[str, int]:
+    """HOST:PORT (IPv6 in brackets) as (host, port)."""
+    host, sep, port = text.rpartition(":")
+    host = host.strip("[]")
+    if not sep or not host or not port.isdigit() or not 1 <= int(port) <= 65535:
+        raise ValueError("HOST:PORT must be a host and a port 1..65535, got %r" % text)
+    return host, int(port)
+
+
+def main(strategy: Strategy, argv: Optional[List[str]] = None) -> int:
+    """Command line of a strategy module: HOST:PORT [--token T]. Exit codes as the server's connect."""
+    import argparse
+
+    parser = argparse.ArgumentParser(description="Play %s for a server that waits for a remote team." % (strategy.name or "a strategy"))
+    parser.add_argument("address", metavar="HOST:PORT")
+    parser.add_argument("--token", default=None, help="the token the server was given (--remote-token)")
+    args = parser.parse_args(argv)
+    try:
+        host, port = parse_address(args.address)
+    except ValueError as e:
+        parser.error(str(e))
+    try:
+        result = play(strategy, host, port, args.token)
+    except Refused as e:
+        print("the server refused the client: %s" % e, file=sys.stderr)
+        return 6
+    except (ProtocolError, OSError) as e:
+        print("connection: %s" % e, file=sys.stderr)
+        return 5
+    print("match ended after %d cycles: %d:%d, %d fault(s) charged to this team" % (result.cycle, result.goals[0], result.goals[1], result.faults))
+    return 0

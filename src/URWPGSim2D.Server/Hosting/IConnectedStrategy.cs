@@ -1,0 +1,26 @@
+using System;
+using URWPGSim2D.Protocol;
+
+namespace URWPGSim2D.Server.Hosting;
+
+/// <summary>A team's strategy that plays over the strategy protocol: in a strategy host process or on a remote client.</summary>
+internal interface IConnectedStrategy : IDisposable
+{
+    /// <summary>The team name the client said hello with, or null.</summary>
+    string? TeamName { get; }
+
+    /// <summary>How the connection ended when the last call's <see cref="ConnectionOutcome.BadAnswer"/> also ended it (an overlong line), else null.</summary>
+    string? EndedBy { get; }
+
+    /// <summary>Whether another client may take over after the connection ends (a remote team), rather than the team's strategy ending for the match (a host).</summary>
+    bool Reconnects { get; }
+
+    /// <summary>
+    /// Sends <paramref name="snapshot"/> and reads the cycle's decisions into <paramref name="decisions"/>
+    /// (written only on <see cref="ConnectionOutcome.Decided"/>). <paramref name="message"/> says what went wrong otherwise.
+    /// </summary>
+    ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message);
+
+    /// <summary>Sends the end of the match to a client still there, lets it go, and disposes the connection.</summary>
+    void Stop(EndMessage end);
+}
