@@ -18,7 +18,7 @@ import subprocess
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import protocol
-from .protocol import Assignment, ProtocolError, Snapshot
+from .protocol import Assignment, ProtocolError, Snapshot, goals_of
 
 try:  # optional
     import gymnasium as _gym
@@ -137,7 +137,7 @@ class FishEnv(_Base):
         if message is None:
             raise ProtocolError("the server closed the connection: %s" % self._server_error())
         if message["type"] == "end":
-            goals = (int(message["goals"][0]), int(message["goals"][1]))
+            goals = goals_of(message)
             reward = float(self._score(goals) - self._difference)
             self._difference = self._score(goals)
             info = self._info()
@@ -228,7 +228,7 @@ class FishEnv(_Base):
 
     # -- observations ------------------------------------------------------------------------
 
-    def _score(self, goals: Tuple[int, int]) -> int:
+    def _score(self, goals: Tuple[int, ...]) -> int:
         return goals[self.team] - goals[1 - self.team]
 
     def _pairs(self, action) -> List[Tuple[int, int]]:

@@ -120,14 +120,13 @@ internal sealed class Match
     {
         if (Referee is { } item)
         {
-            var scores = item.Scores;
-            Snapshot.SetHeader(World.Cycle, scores[0], scores.Length > 1 ? scores[1] : 0);
+            Snapshot.SetHeader(World.Cycle, item.Scores);
             Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
             Snapshot.SetSidesSwapped(item.SidesSwapped);
         }
         else
         {
-            Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+            Snapshot.SetHeader(World.Cycle, World.Goals);
         }
 
         var fish = Snapshot.FishBuffer;

@@ -78,6 +78,30 @@ public sealed class FourTeamsTests : IDisposable
     }
 
     [Fact]
+    public void TeamsTwoAndThreePlayInAStrategyHostAndRemotelyTheSameMatchAsInProcess()
+    {
+        string steady = URWPGSim2D.Server.Tests.Hosting.SteadyStrategy.Write(_folder);
+        string local = Path.Combine(_folder, "local.jsonl"), hosted = Path.Combine(_folder, "hosted.jsonl"), remote = Path.Combine(_folder, "remote.jsonl");
+        string[] match = ["run", "--item", "four-teams", "--cycles", "40", "--seed", "5", "--strategy-timeout", "20000", "--strategy", "2=" + steady];
+        var a = CliRun.Of(string.Empty, [.. match, "--strategy", "3=chase-ball", "--isolation", "none", "--trace", local]);
+        var b = CliRun.Of(string.Empty, [.. match, "--strategy", "3=chase-ball", "--trace", hosted]);
+        var (c, client) = URWPGSim2D.Server.Tests.Hosting.Remote.RemoteMatchTests.Remote(
+            [.. match, "--strategy", "3=remote:0", "--trace", remote], port => ["connect", $"127.0.0.1:{port}", "chase-ball"]);
+        Assert.True(a.ExitCode == 0 && b.ExitCode == 0 && c.ExitCode == 0 && client.ExitCode == 0, a.Stderr + b.Stderr + c.Stderr + client.Stderr);
+        Assert.Contains("strategy faults: none", b.Stdout, StringComparison.Ordinal);
+        Assert.Contains("strategy faults: none", c.Stdout, StringComparison.Ordinal);
+        Assert.Equal("match ended after 40 cycles: 0:0:0:0, 0 fault(s) charged to this team\n", client.Stdout);
+
+        // Cycle by cycle the same (the header's team names differ: remote:PORT); team 3 chased the ball.
+        string[] x = File.ReadAllLines(local), y = File.ReadAllLines(hosted), z = File.ReadAllLines(remote);
+        Assert.Equal(x, y);
+        Assert.Equal(x[1..], z[1..]);
+        using var first = JsonDocument.Parse(x[0]);
+        using var last = JsonDocument.Parse(x[^1]);
+        Assert.NotEqual(first.RootElement.GetProperty("fish")[9].GetProperty("position").GetRawText(), last.RootElement.GetProperty("fish")[9].GetProperty("position").GetRawText());
+    }
+
+    [Fact]
     public void BatchResultsAndMergeKeepFourTeams()
     {
         string all = Path.Combine(_folder, "all.jsonl"), s0 = Path.Combine(_folder, "s0.jsonl"), s1 = Path.Combine(_folder, "s1.jsonl"), merged = Path.Combine(_folder, "m.jsonl");
