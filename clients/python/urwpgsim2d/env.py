@@ -66,15 +66,15 @@ class MultiDiscrete:
 
 
 def default_server() -> List[str]:
-    """The server command: $URWPGSIM2D_SERVER (a command line), else the built server of this repository (Release, then Debug)."""
+    """The server command: $URWPGSIM2D_SERVER (a command line), else the built server of this repository (the newer of Release and Debug)."""
     command = os.environ.get("URWPGSIM2D_SERVER")
     if command:
         return shlex.split(command)
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-    for configuration in ("Release", "Debug"):
-        dll = os.path.join(root, "src", "URWPGSim2D.Server", "bin", configuration, "net10.0", "URWPGSim2D.Server.dll")
-        if os.path.exists(dll):
-            return ["dotnet", dll]
+    built = [os.path.join(root, "src", "URWPGSim2D.Server", "bin", configuration, "net10.0", "URWPGSim2D.Server.dll") for configuration in ("Release", "Debug")]
+    built = [dll for dll in built if os.path.exists(dll)]
+    if built:
+        return ["dotnet", max(built, key=os.path.getmtime)]
     raise FileNotFoundError("the server is not built (dotnet build src/URWPGSim2D.Server) and URWPGSIM2D_SERVER is not set")
 
 
