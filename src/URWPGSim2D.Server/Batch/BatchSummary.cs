@@ -16,7 +16,23 @@ internal static class BatchSummary
 
     /// <summary>The line of one match.</summary>
     public static string Line(MatchResult r) =>
-        string.Create(C, $"match {r.Index} (seed {r.Seed}): goals {r.Goals0}-{r.Goals1}, contacts {r.TotalContacts}, events {r.Events}, sub-steps {r.SubSteps}, overlap {r.LeftoverOverlap:0.000} mm, faults {r.StrategyFaults}\n");
+        string.Create(C, $"match {r.Index} (seed {r.Seed}): {Result(r)}, contacts {r.TotalContacts}, contact events {r.Events}, sub-steps {r.SubSteps}, overlap {r.LeftoverOverlap:0.000} mm, faults {r.StrategyFaults}\n");
+
+    // The score and who won by which rule: "score 1-1, team 0 won by earlier first score";
+    // "score 0-0, none: tie"; without an item, the goals.
+    private static string Result(MatchResult r)
+    {
+        if (r.Scores is not { } scores)
+        {
+            return string.Create(C, $"goals {r.Goals0}-{r.Goals1}");
+        }
+
+        string score = string.Join("-", System.Array.ConvertAll(scores, v => v < 0 ? "n/a" : v.ToString(C)));
+        string rule = r.Rule ?? "no rule";
+        return r.Winner >= 0
+            ? string.Create(C, $"score {score}, team {r.Winner} won by {rule}")
+            : string.Create(C, $"score {score}, no winner: {rule}");
+    }
 
     /// <summary>The aggregate of <paramref name="results"/> (in match order), several lines ending in a newline.</summary>
     public static string Aggregate(BatchHeader header, IReadOnlyList<MatchResult> results)

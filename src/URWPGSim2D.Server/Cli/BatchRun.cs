@@ -69,6 +69,7 @@ internal static class BatchRun
         double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
         double simulated = results.Length * cycles * 0.1;
         console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {results.Length / seconds:0.00} matches/s, {simulated / seconds:0}x real time\n"));
+        RunCommand.Wrote(console, options.Results, string.Create(CultureInfo.InvariantCulture, $"the results of {results.Length} matches"));
         return ExitCodes.Success;
     }
 

@@ -16,7 +16,16 @@ internal static class ItemSummary
     {
         var c = CultureInfo.InvariantCulture;
         var item = referee.Item;
-        s.Append(c, $"item: {item.Slug} ({item.ChineseName}), {item.TeamCount} x {item.FishPerTeam} fish, {referee.Cycles} cycles in {(referee.Halves == 1 ? "1 half" : "2 halves")}\n");
+        int halves = 1;
+        foreach (var e in referee.Events)
+        {
+            halves += e.Kind == "half-time" && e.Cycle < referee.Cycles ? 1 : 0; // the half-times of normal time
+        }
+
+        string length = string.Create(c, $"{referee.Cycles} cycles in {(halves == 1 ? "1 half" : $"{halves} halves")}");
+        int played = match.Statistics.Cycles;
+        s.Append(c, $"item: {item.Slug} ({item.ChineseName}), {item.TeamCount} x {item.FishPerTeam} fish, ")
+            .Append(played == referee.Cycles ? length : string.Create(c, $"normal time {length}, {played} cycles played")).Append('\n');
         s.Append("score:");
         for (int t = 0; t < referee.Scores.Length; t++)
         {

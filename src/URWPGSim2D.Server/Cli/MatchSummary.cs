@@ -19,7 +19,7 @@ internal static class MatchSummary
         double simulated = stats.Cycles * 0.1;
         double seconds = Math.Max(wall.TotalSeconds, 1e-9);
         var s = new StringBuilder();
-        s.Append(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle)\n");
+        s.Append(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle), seed {match.Seed}\n");
         if (match.Referee is { } referee)
         {
             ItemSummary.Append(s, match, referee);

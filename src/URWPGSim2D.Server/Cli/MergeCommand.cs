@@ -15,7 +15,7 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class MergeCommand : ICliCommand
 {
-    private const string Usage = "merge [--out FILE] FILE...";
+    private const string Usage = "merge [--out FILE [--force]] FILE...";
 
     /// <inheritdoc/>
     public string Name => "merge";
@@ -30,6 +30,7 @@ internal sealed class MergeCommand : ICliCommand
     public int Run(ReadOnlySpan<string> arguments, CliConsole console)
     {
         string? output = null;
+        bool force = false;
         var files = new List<string>();
         for (int i = 0; i < arguments.Length; i++)
         {
@@ -49,6 +50,10 @@ internal sealed class MergeCommand : ICliCommand
 
                 output = arguments[++i];
             }
+            else if (a == "--force")
+            {
+                force = !force ? true : throw UsageError("--force given twice");
+            }
             else if (a.StartsWith("--", StringComparison.Ordinal))
             {
                 throw UsageError($"unknown option {MessageText.Quote(a)}");
@@ -63,6 +68,8 @@ internal sealed class MergeCommand : ICliCommand
         {
             throw UsageError("expected at least one result FILE");
         }
+
+        OutputFile.CheckNew("--out", output, force);
 
         BatchHeader header;
         List<MatchResult> results;
@@ -90,6 +97,7 @@ internal sealed class MergeCommand : ICliCommand
         }
 
         console.Out.Write(BatchSummary.Aggregate(header, results));
+        RunCommand.Wrote(console, output, string.Create(System.Globalization.CultureInfo.InvariantCulture, $"the results of {results.Count} matches"));
         return ExitCodes.Success;
     }
 

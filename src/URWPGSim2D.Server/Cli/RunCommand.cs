@@ -51,10 +51,10 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        OutputFile.Check("--trace", options.Trace);
-        OutputFile.Check("--html", options.Html);
+        OutputFile.CheckNew("--trace", options.Trace, options.Force);
+        OutputFile.CheckNew("--html", options.Html, options.Force);
         OutputFile.Check("--svg", options.Svg);
-        OutputFile.Check("--results", options.Slurm is null ? options.Results : null); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
+        OutputFile.CheckNew("--results", options.Slurm is null ? options.Results : null, options.Force); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
         ScenarioDefinition scenario;
         string scene;
         try
@@ -78,6 +78,15 @@ internal sealed class RunCommand : ICliCommand
             if (options.Strategies[t] is not null)
             {
                 console.ErrorLine($"run: --strategy {t}: the scene has no team {t} (teams 0 to {sceneTeams - 1})");
+                return ExitCodes.BadInput;
+            }
+        }
+
+        for (int t = 0; t < options.Strategies.Length; t++)
+        {
+            if (options.Strategies[t] == TeamStrategy.DemoSpec && scenario.Item is null)
+            {
+                console.ErrorLine($"run: --strategy {t}: demo is the demo strategy of a competition item, and this scene is not one (give --item NAME)");
                 return ExitCodes.BadInput;
             }
         }
@@ -170,7 +179,19 @@ internal sealed class RunCommand : ICliCommand
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));
+        Wrote(console, options.Trace, "the trace");
+        Wrote(console, options.Svg, "the final frame");
+        Wrote(console, options.Html, "the replay page");
         return ExitCodes.Success;
+    }
+
+    /// <summary>The line that says a file was written: <c>wrote FILE (what)</c>; nothing when <paramref name="path"/> is null.</summary>
+    internal static void Wrote(CliConsole console, string? path, string what)
+    {
+        if (path is not null)
+        {
+            console.Out.Write($"wrote {path} ({what})\n");
+        }
     }
 
     /// <summary>The settings of the match the options ask for (the scene's cycles unless --cycles or --minutes).</summary>
@@ -201,6 +222,12 @@ internal sealed class RunCommand : ICliCommand
                         continue;
                     }
 
+                    if (spec == TeamStrategy.DemoSpec)
+                    {
+                        teams[t] = TeamStrategy.ItemDemo;
+                        continue;
+                    }
+
                     var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec) : null;
                     if (prepared is not null)
                     {
@@ -208,8 +235,8 @@ internal sealed class RunCommand : ICliCommand
                     }
 
                     teams[t] = prepared is null
-                        ? TeamStrategy.InProcess(Path.GetFileName(spec), spec)
-                        : TeamStrategy.Hosted(Path.GetFileName(spec), prepared, options.HostSettings);
+                        ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec)
+                        : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
                 }
                 catch (StrategyLoadException e)
                 {
@@ -283,18 +310,20 @@ internal sealed class RunCommand : ICliCommand
 
     private static string HelpText() =>
         $"Usage: {CliApp.ProgramName} {RunOptions.Usage}\n\n" +
-        "Plays a match of 100 ms cycles and prints cycles, simulated and wall time, goals per team, contacts by pair\n" +
-        "kind, sub-steps, the largest leftover overlap and strategy faults. --item NAME plays a competition item of the\n" +
-        "original with its rules (--list-items lists them; --minutes 10|5|3|1, default 10); without a scene option it\n" +
-        "plays ball-grab; --item default is the old default scene; --crowd N generates a crowded scene of N fish and balls.\n" +
-        "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball), a .dll built against\n" +
+        "Plays a match of 100 ms cycles and prints the cycles played, simulated and wall time, the seed, the score and\n" +
+        "the winner, contacts by pair kind, sub-steps, the largest leftover overlap and strategy faults.\n" +
+        "--item NAME plays a competition item of the original with its rules (--list-items lists them; --minutes\n" +
+        "10|5|3|1, default 10); without a scene option it plays ball-grab; --item default is the old default scene;\n" +
+        "--crowd N generates a crowded scene of N fish and balls.\n" +
+        "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball, demo: the item's own\n" +
+        "demo), a .dll built against\n" +
         "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
         "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
         "100). --strategy TEAM=remote:PORT waits for a remote client to play the team over TCP (connect, or any client\n" +
         "of docs/protocol.md; PORT 0: any free one) for --remote-wait SECONDS (default 60), on 127.0.0.1 unless\n" +
         "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
-        "--trace writes JSON Lines, --svg the final frame,\n" +
-        "--html a self-contained replay page (docs/viewer.md). --live serves the match in the browser at\n" +
+        "--trace writes JSON Lines, --svg the final frame, --html a self-contained replay page (docs/viewer.md); an\n" +
+        "existing trace, page or results file is replaced only with --force. --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
         "the same match whatever P); with --batch, P is the number of matches played at once (default: every core).\n" +

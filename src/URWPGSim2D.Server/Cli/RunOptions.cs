@@ -15,10 +15,13 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
+
+    /// <summary>Whether an existing --trace, --html or --results file may be replaced (<c>--force</c>).</summary>
+    public bool Force { get; private set; }
 
     /// <summary>Competition item slug or Chinese name (<c>--item NAME</c>; "default" is the old default scene), or null.</summary>
     public string? Item { get; private set; }
@@ -186,7 +189,7 @@ internal sealed class RunOptions
                 throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
-            if (name is "--live" or "--paused")
+            if (name is "--live" or "--paused" or "--force")
             {
                 if (!seen.Add(name))
                 {
@@ -195,6 +198,7 @@ internal sealed class RunOptions
 
                 o.Live |= name == "--live";
                 o.Paused |= name == "--paused";
+                o.Force |= name == "--force";
                 continue;
             }
 

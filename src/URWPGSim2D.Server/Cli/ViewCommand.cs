@@ -15,7 +15,7 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class ViewCommand : ICliCommand
 {
-    private const string Usage = "view TRACE.jsonl --html FILE";
+    private const string Usage = "view TRACE.jsonl --html FILE [--force]";
 
     /// <inheritdoc/>
     public string Name => "view";
@@ -30,6 +30,7 @@ internal sealed class ViewCommand : ICliCommand
     public int Run(ReadOnlySpan<string> arguments, CliConsole console)
     {
         string? trace = null, html = null;
+        bool force = false;
         for (int i = 0; i < arguments.Length; i++)
         {
             string a = arguments[i];
@@ -47,6 +48,10 @@ internal sealed class ViewCommand : ICliCommand
                 }
 
                 html = arguments[++i];
+            }
+            else if (a == "--force")
+            {
+                force = !force ? true : throw UsageError("--force given twice");
             }
             else if (a.StartsWith("--", StringComparison.Ordinal) && a != "-")
             {
@@ -67,7 +72,7 @@ internal sealed class ViewCommand : ICliCommand
             throw UsageError(trace is null ? "expected a TRACE file" : "expected --html FILE");
         }
 
-        OutputFile.Check("--html", html);
+        OutputFile.CheckNew("--html", html, force);
         var replay = new ReplayRecorder();
         int lineNumber = 0;
         try

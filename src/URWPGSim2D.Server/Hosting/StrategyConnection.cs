@@ -26,6 +26,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly AssignmentMessage _assignment;
     private readonly byte[]? _token;
     private readonly TimeSpan _helloLimit;
+    private string? _introductionFailure;
     private readonly Action<string>? _log;
     private readonly Decision[] _answer;
     private readonly string _peer;
@@ -151,6 +152,18 @@ internal sealed class StrategyConnection : IConnectedStrategy
         }
     }
 
+    /// <summary>
+    /// Takes the client's hello now, before the match (its name is then known to every output);
+    /// a refused or missing hello is what the first <see cref="Decide"/> reports, as without this call.
+    /// </summary>
+    public void Introduce()
+    {
+        if (!_started && !HasEnded && !Handshake(out string? message))
+        {
+            _introductionFailure = message;
+        }
+    }
+
     /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
@@ -158,7 +171,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
         EndedBy = null;
         if (HasEnded)
         {
-            message = "the connection has ended";
+            message = _introductionFailure ?? "the connection has ended";
+            _introductionFailure = null;
             return ConnectionOutcome.Ended;
         }
 

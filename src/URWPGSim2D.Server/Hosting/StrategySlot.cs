@@ -29,7 +29,7 @@ internal sealed class StrategySlot
 
     private StrategySlot(string label, int team, int[] fish)
     {
-        Label = label;
+        Spec = label;
         Team = team;
         Fish = fish;
         Decisions = new Decision[fish.Length];
@@ -37,8 +37,18 @@ internal sealed class StrategySlot
         Array.Fill(Decisions, Decision.Stop);
     }
 
-    /// <summary>What the user asked for ("chase-ball", a path...).</summary>
-    public string Label { get; }
+    /// <summary>What the user asked for, short: "chase-ball", a path's last part, "remote:PORT".</summary>
+    public string Spec { get; }
+
+    /// <summary>
+    /// The strategy's own name, once it is known: a user strategy's hello (in a strategy host or a
+    /// remote client), or its <c>TeamName</c> read on its own thread at its first call (in process); null before
+    /// and for built-in strategies (named by their spec).
+    /// </summary>
+    public string? Name => TeamName.Clean(Hosted?.TeamName ?? Runner?.TeamName);
+
+    /// <summary>How the team is shown: the strategy's own name with the spec beside it (<see cref="TeamName.Label"/>).</summary>
+    public string Label => TeamName.Label(Name, Spec);
 
     /// <summary>The strategy (in the server's process), or null for a hosted one.</summary>
     public IStrategy? Strategy { get; }

@@ -84,7 +84,7 @@ internal static class MatchBuilder
         {
             var d = scenario.Fish[i];
             TeamStrategy? team = d.Team < teams.Length ? teams[d.Team] : null;
-            if (team is null && d.Strategy == "demo")
+            if ((team is null && d.Strategy == "demo") || team is { Demo: true })
             {
                 // The item's demo strategy takes every demo fish of the team.
                 if (referee is null)
@@ -95,7 +95,7 @@ internal static class MatchBuilder
                 if (!demoDone[d.Team])
                 {
                     demoDone[d.Team] = true;
-                    slots.Add(new StrategySlot(referee.Item.Slug + " demo", referee.Item.CreateDemoStrategy(d.Team, referee), d.Team, Members(scenario, d.Team, "demo"), isolated: false));
+                    slots.Add(new StrategySlot(referee.Item.Slug + " demo", referee.Item.CreateDemoStrategy(d.Team, referee), d.Team, Members(scenario, d.Team, team is null ? "demo" : null), isolated: false));
                 }
             }
             else if (team is null)
@@ -114,6 +114,13 @@ internal static class MatchBuilder
                     _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
                 });
             }
+        }
+
+        // Every strategy host says hello before the match (they start side by side): their names are
+        // then known to the trace, the summary and the result files from the first line on.
+        foreach (var slot in slots)
+        {
+            (slot.Hosted as StrategyConnection)?.Introduce();
         }
 
         return slots.ToArray();

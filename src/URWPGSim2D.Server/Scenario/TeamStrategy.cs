@@ -11,8 +11,15 @@ namespace URWPGSim2D.Server.Scenario;
 /// <param name="Settings">The hosts' sandbox and memory settings (null: the defaults).</param>
 /// <param name="NotCreated">Why the strategy (in the server's process) could not be created: its constructor or static constructor threw. The team's fault, charged in cycle 1; its fish stop.</param>
 /// <param name="Remote">The seat of a team played by a remote client, or null.</param>
-internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, string? NotCreated = null, RemoteSeat? Remote = null)
+/// <param name="Demo">The item's demo strategy plays the whole team (<c>--strategy TEAM=demo</c>).</param>
+internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isolated, StrategyClock? Clock = null, PreparedStrategy? Host = null, HostSettings? Settings = null, string? NotCreated = null, RemoteSeat? Remote = null, bool Demo = false)
 {
+    /// <summary>The spec of the item's demo strategy: <c>--strategy TEAM=demo</c>.</summary>
+    public const string DemoSpec = "demo";
+
+    /// <summary>The item's demo strategy for the whole team (the scene must be a competition item).</summary>
+    public static TeamStrategy ItemDemo { get; } = new(DemoSpec, null, false, Demo: true);
+
     /// <summary>A team played by a remote client on <paramref name="seat"/>.</summary>
     public static TeamStrategy RemoteClient(string label, RemoteSeat seat) => new(label, null, true, Remote: seat);
 

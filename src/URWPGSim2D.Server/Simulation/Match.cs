@@ -28,6 +28,7 @@ internal sealed class Match
         World = world;
         Strategies = strategies;
         Referee = referee;
+        Seed = seed;
         Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
         Stepper = new CycleMotion(world, Contacts);
@@ -41,6 +42,9 @@ internal sealed class Match
 
     /// <summary>The pool and its bodies.</summary>
     public World World { get; }
+
+    /// <summary>The match's seed (its noise and its item's random placements): the same seed plays the same match.</summary>
+    public ulong Seed { get; }
 
     /// <summary>The strategies.</summary>
     public StrategyCaller Strategies { get; }

@@ -26,10 +26,11 @@ public sealed class BatchRunTests : IDisposable
         Assert.Equal(File.ReadAllBytes(one.File), File.ReadAllBytes(three.File));
         Assert.Equal(WithoutWallTime(one.Run.Stdout), WithoutWallTime(three.Run.Stdout));
         string[] lines = one.Run.Stdout.Split('\n', StringSplitOptions.RemoveEmptyEntries);
-        Assert.Equal(5 + 7, lines.Length);
+        Assert.Equal(5 + 8, lines.Length);
+        Assert.Equal($"wrote {one.File} (the results of 5 matches)", lines[12]);
         for (int j = 0; j < 5; j++)
         {
-            Assert.StartsWith($"match {j} (seed {7 + j}): goals ", lines[j], StringComparison.Ordinal);
+            Assert.Matches($@"^match {j} \(seed {7 + j}\): score [0-9]+-[0-9]+, (team [01] won by|no winner:) ", lines[j]);
         }
 
         Assert.Equal("batch: 5 matches, seeds 7 to 11, 40 cycles each, scene item ball-grab", lines[5]);
@@ -153,7 +154,7 @@ public sealed class BatchRunTests : IDisposable
     }
 
     private static string WithoutWallTime(string stdout) =>
-        string.Join('\n', stdout.Split('\n').Where(l => !l.StartsWith("wall time:", StringComparison.Ordinal)));
+        string.Join('\n', stdout.Split('\n').Where(l => !l.StartsWith("wall time:", StringComparison.Ordinal) && !l.StartsWith("wrote ", StringComparison.Ordinal)));
 
     private static void AssertError(CliRun run, string message)
     {

@@ -34,7 +34,17 @@ public sealed class BatchSummaryTests
                 "strategy faults: 2",
             ],
             lines);
-        Assert.Equal("match 2 (seed 12): goals 1-3, contacts 28, events 5, sub-steps 9, overlap 0.002 mm, faults 1\n", BatchSummary.Line(results[2]));
+        Assert.Equal("match 2 (seed 12): goals 1-3, contacts 28, contact events 5, sub-steps 9, overlap 0.002 mm, faults 1\n", BatchSummary.Line(results[2]));
+    }
+
+    [Fact]
+    public void AnItemsLineGivesTheWinnerAndTheRuleThatDecided()
+    {
+        // 1-1 on goals, decided by the item's tie rule: the winner is on the line, not only in the results file.
+        var won = Result(0, 1, 1, 0f) with { Item = "ball-grab", Scores = [1, 1], Winner = 1, Rule = "earlier first score" };
+        Assert.Equal("match 0 (seed 10): score 1-1, team 1 won by earlier first score, contacts 28, contact events 5, sub-steps 9, overlap 0.000 mm, faults 0\n", BatchSummary.Line(won));
+        var tie = won with { Scores = [0, 0, 2, -1], Winner = -1, Rule = "tie (no score)" };
+        Assert.Equal("match 0 (seed 10): score 0-0-2-n/a, no winner: tie (no score), contacts 28, contact events 5, sub-steps 9, overlap 0.000 mm, faults 0\n", BatchSummary.Line(tie));
     }
 
     [Fact]
