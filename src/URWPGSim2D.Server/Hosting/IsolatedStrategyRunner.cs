@@ -24,8 +24,6 @@ internal sealed class IsolatedStrategyRunner
     private bool _pending;
     private bool _warm;
     private volatile bool _stopped;
-    private volatile string? _teamName;
-    private bool _named;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
     {
@@ -35,9 +33,6 @@ internal sealed class IsolatedStrategyRunner
         var thread = new Thread(Loop) { IsBackground = true, Name = $"strategy team {team}" };
         thread.Start();
     }
-
-    /// <summary>The strategy's <see cref="IStrategy.TeamName"/>, read on its own thread before its first call (in that call's time); null before, or when it threw.</summary>
-    public string? TeamName => _teamName;
 
     /// <summary>Outcome of one call.</summary>
     public enum Outcome
@@ -133,12 +128,6 @@ internal sealed class IsolatedStrategyRunner
             _clock.CallStarting();
             try
             {
-                if (!_named)
-                {
-                    _named = true;
-                    _teamName = _strategy.TeamName;
-                }
-
                 _strategy.Decide(_snapshot!, _fish, _work);
             }
             catch (Exception e)

@@ -41,11 +41,11 @@ internal sealed class StrategySlot
     public string Spec { get; }
 
     /// <summary>
-    /// The strategy's own name, once it is known: a user strategy's hello (in a strategy host or a
-    /// remote client), or its <c>TeamName</c> read on its own thread at its first call (in process); null before
-    /// and for built-in strategies (named by their spec).
+    /// The strategy's own name, once it is known: the hello of a strategy host (before the match)
+    /// or of a remote client (when it connects); null before, and in the server's process, where
+    /// the label given holds the name already (<see cref="Scenario.TeamStrategy.InProcess"/>).
     /// </summary>
-    public string? Name => TeamName.Clean(Hosted?.TeamName ?? Runner?.TeamName);
+    public string? Name => TeamName.Clean(Hosted?.TeamName);
 
     /// <summary>How the team is shown: the strategy's own name with the spec beside it (<see cref="TeamName.Label"/>).</summary>
     public string Label => TeamName.Label(Name, Spec);

@@ -1,3 +1,4 @@
+using System;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Scenario;
@@ -35,11 +36,26 @@ internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isol
     {
         try
         {
-            return new TeamStrategy(label, StrategyResolver.Load(spec), Isolated: true);
+            IStrategy strategy = StrategyResolver.Load(spec);
+            return new TeamStrategy(Hosting.TeamName.Label(NameOf(strategy), label), strategy, Isolated: true);
         }
         catch (StrategyCreationException e)
         {
             return new TeamStrategy(label, null, Isolated: true, NotCreated: e.Message);
+        }
+    }
+
+    // In the server's process the strategy's constructor has run on this thread already; its name
+    // is read here too, once (a name that throws is no name).
+    private static string? NameOf(IStrategy strategy)
+    {
+        try
+        {
+            return Hosting.TeamName.Clean(strategy.TeamName);
+        }
+        catch (Exception)
+        {
+            return null;
         }
     }
 }

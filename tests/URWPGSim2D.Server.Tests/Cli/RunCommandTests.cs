@@ -22,7 +22,7 @@ public sealed class RunCommandTests : IDisposable
         Assert.Equal(string.Empty, run.Stderr);
         string[] lines = run.Stdout.TrimEnd('\n').Split('\n');
         Assert.Equal(6, lines.Length);
-        Assert.Matches(@"^match: 50 cycles, 5\.0 s simulated in [0-9.]+ ms wall time \([0-9]+x real time, [0-9.]+ us per cycle\)$", lines[0]);
+        Assert.Matches(@"^match: 50 cycles, 5\.0 s simulated in [0-9.]+ ms wall time \([0-9]+x real time, [0-9.]+ us per cycle\), seed [0-9]+$", lines[0]);
         Assert.Matches(@"^goals: team 0 \(chase-ball\) [0-9]+, team 1 \(chase-ball\) [0-9]+$", lines[1]);
         Assert.Matches(@"^contacts: fish-fish [0-9]+, fish-ball [0-9]+, fish-obstacle [0-9]+, fish-border [0-9]+, ball-ball [0-9]+, ball-obstacle [0-9]+, ball-border [0-9]+$", lines[2]);
         Assert.Matches(@"^sub-steps: [0-9]+ \(at most [0-9]+ in one cycle\), contact events: [0-9]+$", lines[3]);
@@ -124,7 +124,7 @@ public sealed class RunCommandTests : IDisposable
         string dll = Hosting.StrategyAssemblyBuilder.Build("Sprinters", Hosting.StrategyLoaderTests.SprinterSource);
         var run = CliRun.Of(string.Empty, "run", "--cycles", "20", "--strategy", "1=" + dll);
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("team 1 (Sprinters.dll)", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("team 1 (sprinters [Sprinters.dll])", run.Stdout, StringComparison.Ordinal);
         Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
     }
 

@@ -19,7 +19,7 @@ public sealed class ViewCommandTests : IDisposable
     private string[] Trace(int cycles)
     {
         string trace = File("t.jsonl");
-        var run = CliRun.Of(string.Empty, "run", "--cycles", cycles.ToString(System.Globalization.CultureInfo.InvariantCulture), "--trace", trace);
+        var run = CliRun.Of(string.Empty, "run", "--cycles", cycles.ToString(System.Globalization.CultureInfo.InvariantCulture), "--trace", trace, "--force");
         Assert.Equal(0, run.ExitCode);
         return System.IO.File.ReadAllLines(trace);
     }

@@ -56,7 +56,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.Equal(13, lines.Length);
         for (int c = 0; c <= 12; c++)
         {
-            Assert.Equal(c == cycle, lines[c].Contains("{\"kind\":\"fault\",\"team\":0,\"text\":\"team 0 (" + name + ".cs) strategy ended, its fish stop: strategy host ended: " + how, StringComparison.Ordinal));
+            Assert.Equal(c == cycle, lines[c].Contains("{\"kind\":\"fault\",\"team\":0,\"text\":\"team 0 (" + name + " [" + name + ".cs]) strategy ended, its fish stop: strategy host ended: " + how, StringComparison.Ordinal));
         }
     }
 

@@ -70,7 +70,7 @@ public sealed class StrategyCliTests : IDisposable
         File.WriteAllText(file, StrategyLoaderTests.SprinterSource);
         var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + file);
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("team 0 (Sprinter.cs)", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("team 0 (sprinters [Sprinter.cs])", run.Stdout, StringComparison.Ordinal);
         Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
     }
 

@@ -68,7 +68,7 @@ public sealed class TeamNameTests : IDisposable
         string source = File.ReadAllText(Path.Combine(Docs.Repository.PathOf("templates/Strategy"), "Strategy.cs"));
         File.WriteAllText(Path.Combine(red, "Strategy.cs"), source.Replace("\"My Team\"", "\"Team First\"", StringComparison.Ordinal));
         string trace = Path.Combine(_folder, "t.jsonl");
-        var run = CliRun.Of(string.Empty, "run", "--item", "polo-1v1", "--cycles", "20", "--strategy", "0=" + red + "/", "--strategy", "1=chase-ball", "--trace", trace);
+        var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "20", "--strategy", "0=" + red + "/", "--strategy", "1=chase-ball", "--trace", trace);
         Assert.Equal(0, run.ExitCode);
         Assert.Contains("score: team 0 (Team First [red]) 0, team 1 (chase-ball) 0\n", run.Stdout, StringComparison.Ordinal);
         using var first = JsonDocument.Parse(File.ReadLines(trace).First());
@@ -77,19 +77,19 @@ public sealed class TeamNameTests : IDisposable
         Assert.Equal("chase-ball", teams[1].GetProperty("name").GetString());
 
         string results = Path.Combine(_folder, "r.jsonl");
-        var batch = CliRun.Of(string.Empty, "run", "--item", "polo-1v1", "--cycles", "10", "--batch", "1", "--threads", "1", "--strategy", "0=" + red + "/", "--results", results);
+        var batch = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "10", "--batch", "1", "--threads", "1", "--strategy", "0=" + red + "/", "--results", results);
         Assert.Equal(0, batch.ExitCode);
         using var header = JsonDocument.Parse(File.ReadLines(results).First());
-        Assert.Equal("Team First [red];polo-1v1 demo", header.RootElement.GetProperty("teams").GetString());
+        Assert.Equal("Team First [red];ball-grab demo", header.RootElement.GetProperty("teams").GetString());
         Assert.Contains("goals team 0 (Team First [red])", batch.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]
     public void DemoIsTheItemsDemoStrategyAndNeedsAnItem()
     {
-        var run = CliRun.Of(string.Empty, "run", "--item", "polo-1v1", "--cycles", "10", "--strategy", "0=demo", "--strategy", "1=chase-ball");
+        var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "10", "--strategy", "0=demo", "--strategy", "1=chase-ball");
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("score: team 0 (polo-1v1 demo) 0, team 1 (chase-ball) 0\n", run.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"\nscore: team 0 \(ball-grab demo\) [0-9]+, team 1 \(chase-ball\) [0-9]+\n", run.Stdout);
         var none = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "10", "--strategy", "0=demo");
         Assert.Equal(2, none.ExitCode);
         Assert.Equal("run: --strategy 0: demo is the demo strategy of a competition item, and this scene is not one (give --item NAME)\n", none.Stderr);

@@ -41,7 +41,7 @@ public sealed class RemoteMatchTests : IDisposable
         foreach (string spec in new[] { sdk, OriginalStrategyTests.Folder("Dribbler") })
         {
             string local = Path.Combine(_folder, "local.jsonl"), remote = Path.Combine(_folder, "remote.jsonl");
-            string[] match = ["run", "--item", item, "--seed", "3", "--cycles", "150", "--strategy-timeout", "20000", "--trace"];
+            string[] match = ["run", "--item", item, "--seed", "3", "--cycles", "150", "--strategy-timeout", "20000", "--force", "--trace"];
             var a = CliRun.Of(string.Empty, [.. match, local, "--strategy", "0=" + spec, "--isolation", "none"]);
             var (b, client) = Remote([.. match, remote, "--strategy", "0=remote:0"], port => ["connect", $"127.0.0.1:{port}", spec]);
             Assert.True(a.ExitCode == 0 && b.ExitCode == 0 && client.ExitCode == 0, a.Stderr + b.Stderr + client.Stderr);
