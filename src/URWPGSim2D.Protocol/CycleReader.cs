@@ -40,7 +40,8 @@ internal sealed class CycleReader
             JsonFields.StartObject(ref r);
             int? cycle = null;
             int fish = -1, balls = -1;
-            Span<int> goals = stackalloc int[2];
+            Span<int> goals = stackalloc int[MessageReader.MaxTeams];
+            int teams = 2;
             bool swapped = false;
             while (JsonFields.NextProperty(ref r))
             {
@@ -50,7 +51,7 @@ internal sealed class CycleReader
                 }
                 else if (r.ValueTextEquals("goals"u8))
                 {
-                    MessageReader.Goals(ref r, goals);
+                    teams = MessageReader.Goals(ref r, goals);
                 }
                 else if (r.ValueTextEquals("sidesSwapped"u8))
                 {
@@ -85,7 +86,7 @@ internal sealed class CycleReader
             }
 
             int c = cycle ?? throw MessageReader.Missing("cycle");
-            Snapshot.SetHeader(c, goals[0], goals[1]);
+            Snapshot.SetHeader(c, goals[..teams]);
             Snapshot.SetSidesSwapped(swapped);
             return c;
         }

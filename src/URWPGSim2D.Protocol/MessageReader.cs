@@ -251,7 +251,8 @@ internal static class MessageReader
             var r = new Utf8JsonReader(line);
             JsonFields.StartObject(ref r);
             int cycle = 0, faults = 0;
-            Span<int> goals = stackalloc int[2];
+            Span<int> goals = stackalloc int[MaxTeams];
+            int teams = 2;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("cycle"u8))
@@ -264,7 +265,7 @@ internal static class MessageReader
                 }
                 else if (r.ValueTextEquals("goals"u8))
                 {
-                    Goals(ref r, goals);
+                    teams = Goals(ref r, goals);
                 }
                 else
                 {
@@ -272,7 +273,7 @@ internal static class MessageReader
                 }
             }
 
-            return new EndMessage(cycle, goals[0], goals[1], faults);
+            return new EndMessage(cycle, goals[..teams].ToArray(), faults);
         }
         catch (JsonException e)
         {
@@ -308,24 +309,25 @@ internal static class MessageReader
         }
     }
 
-    /// <summary>A <c>[a, b]</c> pair of integers.</summary>
-    internal static void Goals(ref Utf8JsonReader r, scoped Span<int> goals)
+    /// <summary>The most teams a match has (a four-team item).</summary>
+    internal const int MaxTeams = 4;
+
+    /// <summary>Each team's score: 2 integers, or 4 (a four-team item), into <paramref name="goals"/> (at least <see cref="MaxTeams"/> long); returns how many.</summary>
+    internal static int Goals(ref Utf8JsonReader r, scoped Span<int> goals)
     {
         JsonFields.StartArray(ref r, "goals");
-        for (int i = 0; i < 2; i++)
+        int n = 0;
+        while (JsonFields.NextElement(ref r, "goals"))
         {
-            if (!JsonFields.NextElement(ref r, "goals"))
+            if (n == MaxTeams)
             {
-                throw new ProtocolException("goals: expected 2 integers");
+                throw new ProtocolException($"goals: expected 2 or {MaxTeams} integers, got more");
             }
 
-            goals[i] = JsonFields.IntValue(ref r, "goals");
+            goals[n++] = JsonFields.IntValue(ref r, "goals");
         }
 
-        if (JsonFields.NextElement(ref r, "goals"))
-        {
-            throw new ProtocolException("goals: expected 2 integers, got more");
-        }
+        return n is 2 or MaxTeams ? n : throw new ProtocolException($"goals: expected 2 or {MaxTeams} integers, got {n}");
     }
 
     internal static ProtocolException NotJson(JsonException e) =>
@@ -488,9 +490,9 @@ internal static class MessageReader
 
     private static void Check(AssignmentMessage a)
     {
-        if (a.Team is not (0 or 1))
+        if (a.Team is < 0 or >= MaxTeams)
         {
-            throw new ProtocolException($"team: {a.Team} is not 0 or 1");
+            throw new ProtocolException($"team: {a.Team} is not 0 to {MaxTeams - 1}");
         }
 
         if (a.FishCount < 0 || a.BallCount < 0)

@@ -86,8 +86,11 @@ internal sealed class MessageWriter
         Begin("cycle");
         _json.WriteNumber("cycle", s.Cycle);
         _json.WriteStartArray("goals");
-        _json.WriteNumberValue(s.GoalsOf(0));
-        _json.WriteNumberValue(s.GoalsOf(1));
+        for (int t = 0; t < s.TeamCount; t++)
+        {
+            _json.WriteNumberValue(s.GoalsOf(t));
+        }
+
         _json.WriteEndArray();
         _json.WriteBoolean("sidesSwapped", s.SidesSwapped);
         _json.WriteStartObject("variables");
@@ -179,8 +182,11 @@ internal sealed class MessageWriter
         Begin("end");
         _json.WriteNumber("cycle", end.Cycle);
         _json.WriteStartArray("goals");
-        _json.WriteNumberValue(end.Goals0);
-        _json.WriteNumberValue(end.Goals1);
+        foreach (int goals in end.Goals)
+        {
+            _json.WriteNumberValue(goals);
+        }
+
         _json.WriteEndArray();
         _json.WriteNumber("faults", end.Faults);
         return End();

@@ -13,7 +13,7 @@ public sealed class MatchSnapshot
     private readonly FishView[] _fish;
     private readonly BallView[] _balls;
     private readonly ObstacleView[] _obstacles;
-    private readonly int[] _goals = new int[2];
+    private readonly int[] _goals = new int[4];
 
     internal MatchSnapshot(int fishCount, int ballCount, ObstacleView[] obstacles, float fieldLength, float fieldWidth)
     {
@@ -71,9 +71,12 @@ public sealed class MatchSnapshot
     /// </summary>
     public bool SidesSwapped { get; private set; }
 
-    /// <summary>Goals scored so far by a team.</summary>
-    /// <param name="team">0 or 1.</param>
-    public int GoalsOf(int team) => _goals[Math.Clamp(team, 0, 1)];
+    /// <summary>Teams in the match: 2, or 4 in a four-team item (teams 2 and 3 then play too).</summary>
+    public int TeamCount { get; private set; } = 2;
+
+    /// <summary>Goals scored so far by a team (the item's points in items that count points).</summary>
+    /// <param name="team">0 to <see cref="TeamCount"/> − 1.</param>
+    public int GoalsOf(int team) => _goals[Math.Clamp(team, 0, TeamCount - 1)];
 
     private static IReadOnlyDictionary<string, string> EmptyVariables { get; } = new Dictionary<string, string>();
 
@@ -81,11 +84,13 @@ public sealed class MatchSnapshot
 
     internal Span<BallView> BallBuffer => _balls;
 
-    internal void SetHeader(int cycle, int goalsTeam0, int goalsTeam1)
+    /// <summary>Sets the cycle and each team's score (one entry per team; fewer than two: the rest 0, more than four: ignored).</summary>
+    internal void SetHeader(int cycle, ReadOnlySpan<int> goals)
     {
         Cycle = cycle;
-        _goals[0] = goalsTeam0;
-        _goals[1] = goalsTeam1;
+        TeamCount = Math.Clamp(goals.Length, 2, _goals.Length);
+        Array.Clear(_goals);
+        goals[..Math.Min(goals.Length, _goals.Length)].CopyTo(_goals);
     }
 
     /// <summary>Sets what the item tells strategies (kept until set again).</summary>
@@ -116,8 +121,8 @@ public sealed class MatchSnapshot
         source._fish.CopyTo(_fish, 0);
         source._balls.CopyTo(_balls, 0);
         Cycle = source.Cycle;
-        _goals[0] = source._goals[0];
-        _goals[1] = source._goals[1];
+        source._goals.CopyTo(_goals, 0);
+        TeamCount = source.TeamCount;
         ItemName = source.ItemName;
         TotalCycles = source.TotalCycles;
         SidesSwapped = source.SidesSwapped;

@@ -73,7 +73,8 @@ public class BadMessageTests
     }
 
     [Theory]
-    [InlineData("\"team\":2", "team: 2 is not 0 or 1")]
+    [InlineData("\"team\":4", "team: 4 is not 0 to 3")]
+    [InlineData("\"team\":-1", "team: -1 is not 0 to 3")]
     [InlineData("\"fish\":[4]", "fish: 4 is not a fish index below fishCount 4")]
     [InlineData("\"fish\":[0],\"field\":{\"width\":2}", "field.length: missing")]
     [InlineData("\"obstacles\":[{\"index\":0,\"kind\":\"hexagon\",\"center\":[0,0]}]", "obstacles.kind: expected round or rectangle, got hexagon")]
@@ -88,7 +89,9 @@ public class BadMessageTests
     [Theory]
     [InlineData("{\"cycle\":1,\"goals\":[0,0],\"fish\":[],\"balls\":[]}", "fish: 0 fish, the assignment said 1")]
     [InlineData("{\"cycle\":1,\"goals\":[0,0],\"fish\":[{\"index\":0}],\"balls\":[]}", "fish[0]: a field is missing")]
-    [InlineData("{\"cycle\":1,\"goals\":[0],\"fish\":[],\"balls\":[]}", "goals: expected 2 integers")]
+    [InlineData("{\"cycle\":1,\"goals\":[0],\"fish\":[],\"balls\":[]}", "goals: expected 2 or 4 integers, got 1")]
+    [InlineData("{\"cycle\":1,\"goals\":[0,0,0],\"fish\":[],\"balls\":[]}", "goals: expected 2 or 4 integers, got 3")]
+    [InlineData("{\"cycle\":1,\"goals\":[0,0,0,0,0],\"fish\":[],\"balls\":[]}", "goals: expected 2 or 4 integers, got more")]
     [InlineData("{\"cycle\":1,\"variables\":{\"a\":1}}", "variables.a: expected a string, got the number 1")]
     public void A_bad_cycle_names_the_field(string line, string error)
     {

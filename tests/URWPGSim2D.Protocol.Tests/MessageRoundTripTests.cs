@@ -71,7 +71,13 @@ public class MessageRoundTripTests
         var hello = MessageReader.ReadHello(writer.Hello(1, "tok\"en", "红队")[..^1]);
         Assert.Equal(new HelloMessage(1, "tok\"en", "红队"), hello);
         Assert.Equal(new HelloMessage(1, null, null), MessageReader.ReadHello(writer.Hello(1, null, null)[..^1]));
-        Assert.Equal(new EndMessage(6000, 2, 1, 5), MessageReader.ReadEnd(writer.End(new EndMessage(6000, 2, 1, 5))[..^1]));
+        foreach (int[] goals in new[] { new[] { 2, 1 }, new[] { 0, 3, 1, 7 } })
+        {
+            var end = MessageReader.ReadEnd(writer.End(new EndMessage(6000, goals, 5))[..^1]);
+            Assert.Equal((6000, 5), (end.Cycle, end.Faults));
+            Assert.Equal(goals, end.Goals);
+        }
+
         Assert.Equal("no", MessageReader.ReadError(writer.Error("no")[..^1]));
         Assert.Equal(new string('x', ProtocolLimits.TextChars), MessageReader.ReadError(writer.Error(new string('x', 5000))[..^1]));
     }

@@ -13,7 +13,7 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 internal static class PageProbe
 {
     /// <summary>Team colours and the ball colour of the page (docs/viewer.md).</summary>
-    public static readonly (int R, int G, int B)[] Team = [(0xd9, 0x48, 0x3b), (0x2f, 0x6f, 0xd6)];
+    public static readonly (int R, int G, int B)[] Team = [(0xd9, 0x48, 0x3b), (0x2f, 0x6f, 0xd6), (0x2e, 0x9e, 0x5b), (0x9b, 0x51, 0xc9)];
 
     public static readonly (int R, int G, int B) Ball = (0xf2, 0x9b, 0x30);
 

@@ -370,6 +370,47 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
     }
 
     [Fact]
+    public async Task AFourTeamMatchReplaysWithItsFourTeamsColoursAndScores()
+    {
+        // 4支队伍测试: four teams of three fish; the trace lists four teams and four scores.
+        string html = Path.Combine(match.Folder, "four-teams.html"), trace = Path.Combine(match.Folder, "four-teams.jsonl");
+        var run = RecordedMatch.Cli("run", "--item", "four-teams", "--cycles", "40", "--html", html, "--trace", trace);
+        Assert.True(run.Code == 0, run.Stderr);
+        var lines = File.ReadLines(trace).Select(l => JsonDocument.Parse(l).RootElement).ToArray();
+        var layout = lines[0].GetProperty("layout");
+        Assert.Equal(4, layout.GetProperty("teams").GetArrayLength());
+        Assert.Equal(41, lines.Length);
+        Assert.All(lines, l => Assert.Equal(4, l.GetProperty("score").GetArrayLength()));
+
+        var (page, errors, _) = await Open(html);
+        await Labels(page, false);
+        for (int t = 0; t < 4; t++)
+        {
+            Assert.True(await page.IsVisibleAsync("#team" + t));
+            Assert.Equal("team " + t + " (four-teams demo)", await page.TextContentAsync("#team" + t + " .name"));
+        }
+
+        Assert.Equal("0 : 0 : 0 : 0", await page.TextContentAsync("#score"));
+
+        // Every fish's body in its team's colour, at the start and at the end of the replay.
+        foreach (int cycle in (int[])[0, 40])
+        {
+            await Scrub(page, cycle);
+            Assert.Equal(cycle, await Cycle(page));
+            var fish = Fish(lines[cycle], layout);
+            var rgb = await Pixels(page, fish.Select(f => f.Pose.Position).ToArray());
+            for (int i = 0; i < fish.Length; i++)
+            {
+                int team = layout.GetProperty("fish")[i].GetProperty("team").GetInt32();
+                Assert.True(Near(rgb[i], Team[team]), $"cycle {cycle}: fish{i} of team {team} is {rgb[i]}, expected {Team[team]}");
+            }
+        }
+
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
     public async Task ScreenshotForTheReadme()
     {
         // The README's picture: the page of the README's command (the default match), at cycle 1000.

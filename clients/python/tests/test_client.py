@@ -29,6 +29,10 @@ class Messages(unittest.TestCase):
         self.assertAlmostEqual(s.time, 1.2)
         self.assertNotEqual(s.balls[0].velocity[0], s.balls[0].velocity[0])  # NaN
 
+    def test_a_four_team_item_carries_four_scores(self):
+        four = dict(CYCLE, goals=[0, 1, 2, 3])
+        self.assertEqual(Snapshot.from_json(four, Assignment.from_json(dict(ASSIGNMENT, team=3))).goals, (0, 1, 2, 3))
+
     def test_an_answer_is_decisions_or_that_cycles_fault(self):
         s = Snapshot.from_json(CYCLE, Assignment.from_json(ASSIGNMENT))
 

@@ -4,7 +4,7 @@ import sys
 from typing import List, Optional, Sequence, Tuple
 
 from . import protocol
-from .protocol import Assignment, End, ProtocolError, Snapshot
+from .protocol import Assignment, End, ProtocolError, Snapshot, goals_of
 
 
 class Refused(Exception):
@@ -57,7 +57,7 @@ def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, 
                 snapshot = Snapshot.from_json(message, assignment)
                 connection.send(_answer(strategy, snapshot, len(assignment.fish)))
             elif kind == "end":
-                result = End(int(message["cycle"]), (int(message["goals"][0]), int(message["goals"][1])), int(message["faults"]))
+                result = End(int(message["cycle"]), goals_of(message), int(message["faults"]))
                 strategy.end(result)
                 return result
             elif kind == "error":
@@ -114,5 +114,5 @@ def main(strategy: Strategy, argv: Optional[List[str]] = None) -> int:
     except (ProtocolError, OSError) as e:
         print("connection: %s" % e, file=sys.stderr)
         return 5
-    print("match ended after %d cycles: %d:%d, %d fault(s) charged to this team" % (result.cycle, result.goals[0], result.goals[1], result.faults))
+    print("match ended after %d cycles: %s, %d fault(s) charged to this team" % (result.cycle, ":".join(str(g) for g in result.goals), result.faults))
     return 0

@@ -18,7 +18,7 @@ import subprocess
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 from . import protocol
-from .protocol import Assignment, ProtocolError, Snapshot
+from .protocol import Assignment, ProtocolError, Snapshot, goals_of
 
 try:  # optional
     import gymnasium as _gym
@@ -66,15 +66,15 @@ class MultiDiscrete:
 
 
 def default_server() -> List[str]:
-    """The server command: $URWPGSIM2D_SERVER (a command line), else the built server of this repository (Release, then Debug)."""
+    """The server command: $URWPGSIM2D_SERVER (a command line), else the built server of this repository (the newer of Release and Debug)."""
     command = os.environ.get("URWPGSIM2D_SERVER")
     if command:
         return shlex.split(command)
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-    for configuration in ("Release", "Debug"):
-        dll = os.path.join(root, "src", "URWPGSim2D.Server", "bin", configuration, "net10.0", "URWPGSim2D.Server.dll")
-        if os.path.exists(dll):
-            return ["dotnet", dll]
+    built = [os.path.join(root, "src", "URWPGSim2D.Server", "bin", configuration, "net10.0", "URWPGSim2D.Server.dll") for configuration in ("Release", "Debug")]
+    built = [dll for dll in built if os.path.exists(dll)]
+    if built:
+        return ["dotnet", max(built, key=os.path.getmtime)]
     raise FileNotFoundError("the server is not built (dotnet build src/URWPGSim2D.Server) and URWPGSIM2D_SERVER is not set")
 
 
@@ -137,7 +137,7 @@ class FishEnv(_Base):
         if message is None:
             raise ProtocolError("the server closed the connection: %s" % self._server_error())
         if message["type"] == "end":
-            goals = (int(message["goals"][0]), int(message["goals"][1]))
+            goals = goals_of(message)
             reward = float(self._score(goals) - self._difference)
             self._difference = self._score(goals)
             info = self._info()
@@ -228,7 +228,7 @@ class FishEnv(_Base):
 
     # -- observations ------------------------------------------------------------------------
 
-    def _score(self, goals: Tuple[int, int]) -> int:
+    def _score(self, goals: Tuple[int, ...]) -> int:
         return goals[self.team] - goals[1 - self.team]
 
     def _pairs(self, action) -> List[Tuple[int, int]]:

@@ -80,12 +80,17 @@ class Ball:
     radius: float
 
 
+def goals_of(m: dict) -> Tuple[int, ...]:
+    """The `goals` of a cycle or end message: each team's score."""
+    return tuple(int(g) for g in m["goals"])
+
+
 @dataclass
 class Snapshot:
     """What a strategy sees in one cycle (the SDK's MatchSnapshot)."""
 
     cycle: int
-    goals: Tuple[int, int]
+    goals: Tuple[int, ...]  # each team's score: 2 entries, or 4 in a four-team item
     sides_swapped: bool
     variables: Dict[str, str]
     fish: List[Fish]
@@ -105,7 +110,7 @@ class Snapshot:
     @staticmethod
     def from_json(m: dict, assignment: Assignment) -> "Snapshot":
         return Snapshot(
-            int(m["cycle"]), (int(m["goals"][0]), int(m["goals"][1])), bool(m.get("sidesSwapped", False)),
+            int(m["cycle"]), goals_of(m), bool(m.get("sidesSwapped", False)),
             {str(k): str(v) for k, v in m.get("variables", {}).items()},
             [Fish(int(f["index"]), int(f["team"]), _pair(f["position"]), _num(f["heading"]), _num(f["speed"]), _num(f["angularSpeed"]),
                   _num(f["bodyLength"]), _num(f["headLength"]), _num(f["width"]), [_num(j) for j in f["joints"]],
@@ -119,7 +124,7 @@ class End:
     """The server's last message: cycles played, the score, the faults charged to this client's team."""
 
     cycle: int
-    goals: Tuple[int, int]
+    goals: Tuple[int, ...]  # each team's score: 2 entries, or 4 in a four-team item
     faults: int
 
 

@@ -58,7 +58,7 @@ internal sealed class MissionBuilder
             int team = ServerTeam(snapshot, index, teamCount);
             var t = new Team<RoboFish>();
             t.Para.FishCount = perTeam[team];
-            t.Para.MyHalfCourt = index == 0 ? HalfCourt.LEFT : HalfCourt.RIGHT;
+            t.Para.MyHalfCourt = index % 2 == 0 ? HalfCourt.LEFT : HalfCourt.RIGHT; // four teams: 0 and 2 left, 1 and 3 right, as Match4Teams
             t.Para.Score = snapshot.GoalsOf(team);
             t.Para.Name = team < TeamNames.Length ? TeamNames[team] : $"team {team}";
             t.Para.IsReady = true;

@@ -27,12 +27,18 @@ internal static class BatchSummary
             : string.Create(C, $"{results.Count} matches");
         s.Append(C, $"batch: {share}, seeds {header.FirstSeed} to {header.FirstSeed + (ulong)header.Matches - 1}, {header.Cycles} cycles each, scene {header.Scene}\n");
         string[] teams = header.Teams.Split(';');
-        for (int team = 0; team < 2; team++)
+        int teamCount = Math.Max(2, teams.Length);
+        foreach (var r in results)
+        {
+            teamCount = Math.Max(teamCount, r.Scores?.Length ?? 0);
+        }
+
+        for (int team = 0; team < teamCount; team++)
         {
             var goals = new double[results.Count];
             for (int i = 0; i < results.Count; i++)
             {
-                goals[i] = team == 0 ? results[i].Goals0 : results[i].Goals1;
+                goals[i] = Goals(results[i], team);
             }
 
             var (mean, sd, min, max, total) = Stats(goals);
@@ -40,26 +46,44 @@ internal static class BatchSummary
             s.Append(C, $"goals team {team} ({label}): mean {mean:0.000}, sd {sd:0.000}, min {min}, max {max}, total {total}\n");
         }
 
-        int won0 = 0, won1 = 0, drawn = 0, faults = 0, worst = -1;
+        var won = new int[teamCount];
+        int drawn = 0, faults = 0, worst = -1;
         for (int i = 0; i < results.Count; i++)
         {
             var r = results[i];
             // An item's winner follows its own rules (tie deciders); plain matches by goals.
             int winner = r.Item is not null ? r.Winner : r.Goals0 > r.Goals1 ? 0 : r.Goals1 > r.Goals0 ? 1 : -1;
-            won0 += winner == 0 ? 1 : 0;
-            won1 += winner == 1 ? 1 : 0;
+            if ((uint)winner < (uint)teamCount)
+            {
+                won[winner]++;
+            }
+
             drawn += winner < 0 ? 1 : 0;
             faults += r.StrategyFaults;
             worst = worst < 0 || r.LeftoverOverlap > results[worst].LeftoverOverlap ? i : worst;
         }
 
-        s.Append(C, $"outcomes: team 0 won {won0}, team 1 won {won1}, drawn {drawn}\n");
+        s.Append("outcomes:");
+        for (int team = 0; team < teamCount; team++)
+        {
+            s.Append(C, $" team {team} won {won[team]},");
+        }
+
+        s.Append(C, $" drawn {drawn}\n");
         s.Append(worst < 0
             ? "largest leftover overlap: none\n"
             : string.Create(C, $"largest leftover overlap: {results[worst].LeftoverOverlap:0.000} mm (match {results[worst].Index}, cycle {results[worst].LeftoverCycle})\n"));
         s.Append(C, $"strategy faults: {faults}\n");
         return s.ToString();
     }
+
+    // A team's goals (an item's score) in one match: teams 0 and 1 from the goals, further teams from the scores.
+    private static int Goals(MatchResult r, int team) => team switch
+    {
+        0 => r.Goals0,
+        1 => r.Goals1,
+        _ => r.Scores is { } scores && team < scores.Length ? scores[team] : 0,
+    };
 
     /// <summary>Mean, sample standard deviation (0 for fewer than two values), min, max and total.</summary>
     public static (double Mean, double Sd, double Min, double Max, double Total) Stats(IReadOnlyList<double> values)

@@ -266,9 +266,9 @@ internal static class ResultFile
             int team = Field(f, "team").GetInt32();
             int exceptions = Field(f, "exceptions").GetInt32(), timeouts = Field(f, "timeouts").GetInt32(), bad = Field(f, "badAnswers").GetInt32();
             int crashes = f.TryGetProperty("crashes", out var crashed) ? crashed.GetInt32() : 0;
-            if (team is < 0 or > 1 || exceptions < 0 || timeouts < 0 || bad < 0 || crashes is < 0 or > 1 || exceptions + timeouts + bad + crashes == 0)
+            if (team is < 0 or > 3 || exceptions < 0 || timeouts < 0 || bad < 0 || crashes is < 0 or > 1 || exceptions + timeouts + bad + crashes == 0)
             {
-                throw new ResultFileException($"\"faults\"[{i}] must name team 0 or 1 and counts >= 0 that are not all 0, got {Short(f.GetRawText())}");
+                throw new ResultFileException($"\"faults\"[{i}] must name team 0 to 3 and counts >= 0 that are not all 0, got {Short(f.GetRawText())}");
             }
 
             faults[i] = new TeamFaults(team, Field(f, "strategy").GetString()!, exceptions, timeouts, bad, Field(f, "first").GetString()!, crashes);

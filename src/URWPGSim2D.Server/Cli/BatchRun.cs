@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
@@ -87,16 +88,29 @@ internal static class BatchRun
 
     private static string StrategiesText(RunOptions options)
     {
-        string a = options.Strategies[0] is { } s0 ? "0=" + s0 : string.Empty;
-        string b = options.Strategies[1] is { } s1 ? "1=" + s1 : string.Empty;
-        return a.Length > 0 && b.Length > 0 ? a + ";" + b : a + b;
+        var given = new List<string>();
+        for (int t = 0; t < options.Strategies.Length; t++)
+        {
+            if (options.Strategies[t] is { } spec)
+            {
+                given.Add(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{t}={spec}"));
+            }
+        }
+
+        return string.Join(";", given);
     }
 
     private static string TeamsText(ScenarioDefinition scenario, RunOptions options)
     {
         var probe = MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), options.Seed, options.Noise, options.StrategyTimeoutMs);
         probe.Strategies.Stop();
-        return probe.TeamLabel(0) + ";" + probe.TeamLabel(1);
+        var labels = new List<string>();
+        for (int t = 0; t < probe.TeamCount; t++)
+        {
+            labels.Add(probe.TeamLabel(t));
+        }
+
+        return string.Join(";", labels);
     }
 
     private static string NoiseText(RunOptions options) => options.Noise switch

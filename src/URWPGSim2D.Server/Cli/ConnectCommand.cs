@@ -78,7 +78,7 @@ internal sealed class ConnectCommand : ICliCommand
             {
                 case StrategyClient.Ending.Ended:
                     var end = client.End!;
-                    console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"match ended after {end.Cycle} cycles: {end.Goals0}:{end.Goals1}, {end.Faults} fault(s) charged to this team"));
+                    console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"match ended after {end.Cycle} cycles: {string.Join(':', end.Goals)}, {end.Faults} fault(s) charged to this team"));
                     return ExitCodes.Success;
                 case StrategyClient.Ending.Refused:
                     console.ErrorLine("connect: the server refused the client: " + client.Error);

@@ -67,6 +67,21 @@ internal sealed class RunCommand : ICliCommand
             return ExitCodes.BadInput;
         }
 
+        int sceneTeams = 2;
+        foreach (var f in scenario.Fish)
+        {
+            sceneTeams = Math.Max(sceneTeams, f.Team + 1);
+        }
+
+        for (int t = sceneTeams; t < options.Strategies.Length; t++)
+        {
+            if (options.Strategies[t] is not null)
+            {
+                console.ErrorLine($"run: --strategy {t}: the scene has no team {t} (teams 0 to {sceneTeams - 1})");
+                return ExitCodes.BadInput;
+            }
+        }
+
         TeamStrategy?[] teams;
         HostSandbox.Warn = console.ErrorLine;
         try
@@ -145,7 +160,13 @@ internal sealed class RunCommand : ICliCommand
         progress?.Clear();
         if (options.Svg is not null)
         {
-            SvgFrame.Write(match.World, options.Svg, [match.TeamLabel(0), match.TeamLabel(1)]);
+            var names = new string[match.TeamCount];
+            for (int t = 0; t < names.Length; t++)
+            {
+                names[t] = match.TeamLabel(t);
+            }
+
+            SvgFrame.Write(match.World, options.Svg, names);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));
@@ -167,8 +188,8 @@ internal sealed class RunCommand : ICliCommand
     /// <param name="console">Where the remote teams' lines go (null: no remote teams are made; <c>--batch</c> and <c>--live</c> have none).</param>
     public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null)
     {
-        var teams = new TeamStrategy?[2];
-        for (int t = 0; t < 2; t++)
+        var teams = new TeamStrategy?[options.Strategies.Length];
+        for (int t = 0; t < teams.Length; t++)
         {
             if (options.Strategies[t] is { } spec)
             {

@@ -89,14 +89,14 @@ internal sealed class RunOptions
     /// <summary>Default port of the live view.</summary>
     public const int DefaultPort = 8080;
 
-    /// <summary>Per team (0, 1), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
-    public string?[] Strategies { get; } = new string?[2];
+    /// <summary>Per team (0 to 3: teams 2 and 3 play only in four-team scenes), a strategy spec (built-in name, .dll, .cs file or folder) or null.</summary>
+    public string?[] Strategies { get; } = new string?[4];
 
-    /// <summary>Per team (0, 1), the port of a remote team (<c>--strategy TEAM=remote:PORT</c>; 0: any free one), or null.</summary>
-    public int?[] RemotePorts { get; } = new int?[2];
+    /// <summary>Per team (0 to 3), the port of a remote team (<c>--strategy TEAM=remote:PORT</c>; 0: any free one), or null.</summary>
+    public int?[] RemotePorts { get; } = new int?[4];
 
-    /// <summary>Per team (0, 1), the token its remote client must present (<c>--remote-token</c>), or null.</summary>
-    public string?[] RemoteTokens { get; } = new string?[2];
+    /// <summary>Per team (0 to 3), the token its remote client must present (<c>--remote-token</c>), or null.</summary>
+    public string?[] RemoteTokens { get; } = new string?[4];
 
     /// <summary>How long a match waits for its remote clients (<c>--remote-wait SECONDS</c>; default 60).</summary>
     public int RemoteWaitSeconds { get; private set; } = RemoteSeat.DefaultWaitSeconds;
@@ -247,9 +247,9 @@ internal sealed class RunOptions
                     break;
                 case "--strategy":
                     int eq = value.IndexOf('=', StringComparison.Ordinal);
-                    if (eq != 1 || value[0] is not ('0' or '1') || eq + 1 >= value.Length)
+                    if (eq != 1 || value[0] is < '0' or > '3' || eq + 1 >= value.Length)
                     {
-                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 or 1, got {MessageText.Quote(value)}");
+                        throw UsageError($"--strategy must be TEAM=SPEC with TEAM 0 to 3, got {MessageText.Quote(value)}");
                     }
 
                     o.Strategies[value[0] - '0'] = value[(eq + 1)..];
@@ -286,19 +286,19 @@ internal sealed class RunOptions
     /// <summary>What <c>--strategy TEAM=</c> starts with for a remote team.</summary>
     public const string RemotePrefix = "remote:";
 
-    private readonly bool[] _tokenFor = new bool[2];
+    private readonly bool[] _tokenFor = new bool[4];
 
     // TOKEN (every remote team) or TEAM=TOKEN; printable, at most the protocol's text length.
     private void ParseToken(string value, HashSet<string> seen)
     {
-        bool perTeam = value.Length > 2 && value[0] is ('0' or '1') && value[1] == '=';
+        bool perTeam = value.Length > 2 && value[0] is >= '0' and <= '3' && value[1] == '=';
         string token = perTeam ? value[2..] : value;
         if (token.Length == 0 || token.Length > URWPGSim2D.Protocol.ProtocolLimits.TextChars || token.Any(char.IsControl))
         {
             throw UsageError($"--remote-token must be [TEAM=]TOKEN, 1..{URWPGSim2D.Protocol.ProtocolLimits.TextChars} characters without control characters, got {MessageText.Quote(value.Length > 40 ? value[..40] + "..." : value)}");
         }
 
-        for (int t = 0; t < 2; t++)
+        for (int t = 0; t < RemoteTokens.Length; t++)
         {
             if (!perTeam || value[0] - '0' == t)
             {
@@ -376,7 +376,7 @@ internal sealed class RunOptions
     // The options of remote teams (docs/cli.md, "Remote teams").
     private void CheckRemote(HashSet<string> seen)
     {
-        bool remote = RemotePorts[0] is not null || RemotePorts[1] is not null;
+        bool remote = RemotePorts.Any(p => p is not null);
         if (!remote && (seen.Contains("--remote-wait") || seen.Contains("--remote-host") || seen.Contains("--remote-token")))
         {
             throw UsageError("--remote-wait, --remote-host and --remote-token belong to --strategy TEAM=remote:PORT");
@@ -387,12 +387,18 @@ internal sealed class RunOptions
             throw UsageError("a remote team plays one match: --batch and --live do not go with --strategy TEAM=remote:PORT");
         }
 
-        if (RemotePorts[0] is int p0 && p0 != 0 && RemotePorts[1] == p0)
+        for (int a = 0; a < RemotePorts.Length; a++)
         {
-            throw UsageError($"both remote teams ask for port {p0}; give each its own (or 0 for any free one)");
+            for (int b = a + 1; b < RemotePorts.Length; b++)
+            {
+                if (RemotePorts[a] is int port && port != 0 && RemotePorts[b] == port)
+                {
+                    throw UsageError($"both remote teams ask for port {port}; give each its own (or 0 for any free one)");
+                }
+            }
         }
 
-        for (int t = 0; t < 2; t++)
+        for (int t = 0; t < _tokenFor.Length; t++)
         {
             if (_tokenFor[t] && RemotePorts[t] is null)
             {

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Hosting;
@@ -36,19 +37,24 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
 
     /// <summary>Ends the threads of the isolated strategies and the strategy hosts (after the match), telling hosts the result.</summary>
     /// <param name="cycles">Cycles played.</param>
-    /// <param name="goals0">Team 0's final score.</param>
-    /// <param name="goals1">Team 1's final score.</param>
-    public void Stop(int cycles, int goals0, int goals1)
+    /// <param name="goals">Each team's final score (the item's, else the goals).</param>
+    public void Stop(int cycles, IReadOnlyList<int> goals)
     {
+        var end = new int[Math.Max(2, goals.Count)];
+        for (int t = 0; t < goals.Count; t++)
+        {
+            end[t] = goals[t];
+        }
+
         foreach (var slot in Slots)
         {
             slot.Runner?.Stop();
-            slot.Hosted?.Stop(new Protocol.EndMessage(cycles, goals0, goals1, slot.Faults));
+            slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
         }
     }
 
     /// <summary>Ends the threads of the isolated strategies and the strategy hosts of a match never played (cycle 0, no goals).</summary>
-    public void Stop() => Stop(0, 0, 0);
+    public void Stop() => Stop(0, [0, 0]);
 
     /// <summary>Runs every strategy on <paramref name="snapshot"/> and writes the fish's decisions.</summary>
     public void Decide(MatchSnapshot snapshot, FishState[] fish)

@@ -12,6 +12,7 @@ internal static class ItemRegistry
     private static readonly CompetitionItem[] Known =
     [
         new BallGrab.BallGrabItem(),
+        new NewBallGrab.NewBallGrabItem(),
         new Survival.SurvivalItem(),
         new Transport.TransportItem(),
         new SynchronisedSwimming.SynchronisedSwimmingItem(),
@@ -22,6 +23,10 @@ internal static class ItemRegistry
         new Polo.PoloItem(5),
         new Snooker.SnookerItem(),
         new PushBallAvoidObstacles.PushBallAvoidObstaclesItem(),
+        new PushBallViaChannel.PushBallViaChannelItem(),
+        new RelayWithBall.RelayWithBallItem(),
+        new DoubleFishRace.DoubleFishRaceItem(),
+        new FourTeams.FourTeamsItem(),
     ];
 
     /// <summary>The items, in listing order.</summary>

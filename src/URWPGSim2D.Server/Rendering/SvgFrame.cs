@@ -10,13 +10,13 @@ namespace URWPGSim2D.Server.Rendering;
 /// <summary>
 /// Draws one frame of the match as SVG in world millimetres (x right, z down, as in the pool):
 /// water, goal mouths, goal blocks, obstacles, balls and every fish's eight leaf polygons
-/// (team 0 red, team 1 blue) with a heading line, the ids (fishN above each fish, the ball's
+/// (team 0 red, team 1 blue, teams 2 and 3 green and purple) with a heading line, the ids (fishN above each fish, the ball's
 /// number on each ball), the cycle and score as a caption and a legend of the colours. The picture
 /// shows the pool, grown to take in any body outside it (a fish an item parks off the field).
 /// </summary>
 internal static class SvgFrame
 {
-    private static readonly string[] TeamColours = ["#d9483b", "#2f6fd6"];
+    private static readonly string[] TeamColours = ["#d9483b", "#2f6fd6", "#2e9e5b", "#9b51c9"];
 
     /// <summary>Fill of the balls.</summary>
     private const string BallColour = "#f29b30";
@@ -40,7 +40,7 @@ internal static class SvgFrame
         var s = new SvgWriter("0.##");
         s.StartDocument(min.X - 20, top - 170, max.X - min.X + 40, max.Y - min.Y + 190, (max.X - min.X + 40) / 3, (max.Y - min.Y + 190) / 3);
         s.Element("text").Attribute("x", min.X).Attribute("y", top - 110).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
-            .Content("text", string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — team 0: {world.Goals[0]}, team 1: {world.Goals[1]}"));
+            .Content("text", Caption(world));
         Legend(s, world, teamNames, min.X, top - 45);
         Rect(s, new Vector2(-l / 2, -w / 2), new Vector2(l / 2, w / 2), "#cfe8f7", "#1b3a4b");
         float mouth = Field.GoalWidth / 2;
@@ -74,7 +74,7 @@ internal static class SvgFrame
 
         foreach (var f in world.Fish)
         {
-            string colour = TeamColours[f.Team & 1];
+            string colour = TeamColours[f.Team % TeamColours.Length];
             var model = new FishModel(f.Size, f.Pose);
             for (var part = FishPart.LeftPectoral; part <= FishPart.RightCaudal; part++)
             {
@@ -138,12 +138,13 @@ internal static class SvgFrame
     // The key: each team's colour, name and goals, then the ball and obstacle colours.
     private static void Legend(SvgWriter s, World world, System.Collections.Generic.IReadOnlyList<string>? teamNames, float x, float y)
     {
-        for (int team = 0; team < 2; team++)
+        int teams = Teams(world);
+        for (int team = 0; team < teams; team++)
         {
             s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40)
                 .Attribute("fill", TeamColours[team]).Attribute("stroke", "#222").Attribute("stroke-width", "2").End();
             string name = teamNames is not null && team < teamNames.Count ? $" ({teamNames[team]})" : string.Empty;
-            string text = string.Create(CultureInfo.InvariantCulture, $"team {team}{name}: {world.Goals[team]}");
+            string text = string.Create(CultureInfo.InvariantCulture, $"team {team}{name}: {Goals(world, team)}");
             s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", text);
             x += 130 + (22 * text.Length);
         }
@@ -154,6 +155,33 @@ internal static class SvgFrame
         s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40).Attribute("fill", ObstacleColour).End();
         s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", "obstacle");
     }
+
+    // The caption: the cycle and every team's goals.
+    private static string Caption(World world)
+    {
+        var text = new System.Text.StringBuilder(string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — "));
+        int teams = Teams(world);
+        for (int team = 0; team < teams; team++)
+        {
+            text.Append(CultureInfo.InvariantCulture, $"{(team > 0 ? ", " : string.Empty)}team {team}: {Goals(world, team)}");
+        }
+
+        return text.ToString();
+    }
+
+    // Teams drawn: 2, or as many as the fish play for (four-teams).
+    private static int Teams(World world)
+    {
+        int teams = 2;
+        foreach (var f in world.Fish)
+        {
+            teams = Math.Max(teams, f.Team + 1);
+        }
+
+        return teams;
+    }
+
+    private static int Goals(World world, int team) => team < world.Goals.Length ? world.Goals[team] : 0;
 
     private static void Label(SvgWriter s, Vector2 at, string text, string colour) =>
         s.Element("text").Attribute("x", at.X).Attribute("y", at.Y).Attribute("font-size", "40").Attribute("font-family", "sans-serif")

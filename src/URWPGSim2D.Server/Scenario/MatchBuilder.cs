@@ -72,8 +72,14 @@ internal static class MatchBuilder
     private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee, MatchFacts match)
     {
         var slots = new List<StrategySlot>();
-        var teamDone = new bool[2];
-        var demoDone = new bool[2];
+        int teamCount = 2;
+        foreach (var f in scenario.Fish)
+        {
+            teamCount = Math.Max(teamCount, f.Team + 1);
+        }
+
+        var teamDone = new bool[teamCount];
+        var demoDone = new bool[teamCount];
         for (int i = 0; i < scenario.Fish.Count; i++)
         {
             var d = scenario.Fish[i];

@@ -86,6 +86,21 @@ internal sealed class Match
         Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
     }
 
+    /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
+    public int TeamCount
+    {
+        get
+        {
+            int teams = 2;
+            foreach (var f in World.Fish)
+            {
+                teams = System.Math.Max(teams, f.Team + 1);
+            }
+
+            return teams;
+        }
+    }
+
     /// <summary>The labels of the strategies playing for <paramref name="team"/>, joined with "+" ("no fish" for a team without fish).</summary>
     public string TeamLabel(int team)
     {
@@ -105,14 +120,13 @@ internal sealed class Match
     {
         if (Referee is { } item)
         {
-            var scores = item.Scores;
-            Snapshot.SetHeader(World.Cycle, scores[0], scores.Length > 1 ? scores[1] : 0);
+            Snapshot.SetHeader(World.Cycle, item.Scores);
             Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
             Snapshot.SetSidesSwapped(item.SidesSwapped);
         }
         else
         {
-            Snapshot.SetHeader(World.Cycle, World.Goals[0], World.Goals[1]);
+            Snapshot.SetHeader(World.Cycle, World.Goals);
         }
 
         var fish = Snapshot.FishBuffer;

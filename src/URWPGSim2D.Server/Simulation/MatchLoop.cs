@@ -101,10 +101,7 @@ internal sealed class MatchLoop : IDisposable
     /// <summary>Stops <paramref name="match"/>'s strategies, telling hosts the cycles played and the final score (the item's, else the goals).</summary>
     public static void StopStrategies(Match match)
     {
-        var referee = match.Referee;
-        int score0 = referee is null ? match.World.Goals[0] : referee.Scores[0];
-        int score1 = referee is null ? match.World.Goals[1] : referee.Scores.Length > 1 ? referee.Scores[1] : 0;
-        match.Strategies.Stop(match.World.Cycle, score0, score1);
+        match.Strategies.Stop(match.World.Cycle, match.Referee?.Scores ?? match.World.Goals);
     }
 
     private void Write(ReadOnlySpan<ContactRecord> contacts)

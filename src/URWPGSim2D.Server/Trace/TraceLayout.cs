@@ -14,9 +14,6 @@ namespace URWPGSim2D.Server.Trace;
 /// </summary>
 internal static class TraceLayout
 {
-    /// <summary>Teams of a match (team 0 attacks +X, team 1 attacks −X).</summary>
-    public const int TeamCount = 2;
-
     /// <summary>Writes the layout object as the writer's next value.</summary>
     public static void Write(Utf8JsonWriter w, Match match, ITraceItemInfo item)
     {
@@ -83,7 +80,8 @@ internal static class TraceLayout
 
         w.WriteEndArray();
         w.WriteStartArray("teams");
-        for (int team = 0; team < TeamCount; team++)
+        int teams = match.TeamCount;
+        for (int team = 0; team < teams; team++)
         {
             w.WriteStartObject();
             w.WriteNumber("id", team);
@@ -93,12 +91,12 @@ internal static class TraceLayout
 
         w.WriteEndArray();
         w.WriteStartArray("fish");
-        Span<int> inTeam = stackalloc int[TeamCount];
+        Span<int> inTeam = stackalloc int[teams];
         foreach (var f in world.Fish)
         {
             w.WriteStartObject();
             w.WriteNumber("team", f.Team);
-            w.WriteNumber("index", (uint)f.Team < TeamCount ? inTeam[f.Team]++ : 0);
+            w.WriteNumber("index", (uint)f.Team < (uint)teams ? inTeam[f.Team]++ : 0);
             w.WriteStartObject("size");
             w.WriteNumber("length", f.Size.Length);
             w.WriteNumber("width", f.Size.Width);

@@ -20,6 +20,7 @@ internal sealed class TraceLine
     private readonly ArrayBufferWriter<byte> _buffer = new(1 << 12);
     private readonly Utf8JsonWriter _json;
     private readonly List<TraceEvent> _events = [];
+    private readonly int _teams;
 
     /// <summary>Creates the serialiser of a match's lines.</summary>
     /// <param name="match">The match.</param>
@@ -29,6 +30,7 @@ internal sealed class TraceLine
         _match = match;
         _item = item ?? (ITraceItemInfo?)match.Referee ?? new DefaultTraceItem(match); // a competition item's referee reports itself
         _json = new Utf8JsonWriter(_buffer);
+        _teams = match.TeamCount;
     }
 
     /// <summary>The item information written into the lines.</summary>
@@ -101,7 +103,7 @@ internal sealed class TraceLine
         }
 
         w.WriteStartArray("score");
-        for (int team = 0; team < TraceLayout.TeamCount; team++)
+        for (int team = 0; team < _teams; team++)
         {
             w.WriteNumberValue(_item.Score(team));
         }

@@ -94,6 +94,7 @@ internal static class FrameworkStubs
             public static class Convert
             {
                 public static int ToInt32(object value) { return 0; }
+                public static bool ToBoolean(object value) { return false; }
                 public static float ToSingle(object value) { return 0; }
                 public static string ToString(object value) { return null; }
             }

@@ -119,4 +119,59 @@ internal static class OldStrategySources
             }
         }
         """;
+
+    /// <summary>
+    /// Reads the older items' <c>HtMissionVariables</c> as their entries did (<c>Convert.ToInt32</c>,
+    /// <c>Convert.ToBoolean</c> on the <c>Hashtable</c>'s values) and writes what it read, key=value in
+    /// the original's key order, to <c>Seen</c>; its fish swim slowly straight on.
+    /// </summary>
+    public const string VariableReader = """
+        using System;
+        using URWPGSim2D.Common;
+        using URWPGSim2D.StrategyLoader;
+
+        namespace URWPGSim2D.Strategy
+        {
+            public class Strategy : MarshalByRefObject, IStrategy
+            {
+                public string Seen = "";
+
+                private static readonly string[] Numbers = new string[] { "CompetitionPeriod", "ExecutingTaskNo", "FinishedSingleTripCount" };
+
+                public string GetTeamName() { return "Old variable reader"; }
+
+                public Decision[] GetDecision(Mission mission, int teamId)
+                {
+                    string seen = "";
+                    for (int stage = 1; stage <= 4; stage++)
+                    {
+                        for (int fish = 0; fish < 2; fish++)
+                        {
+                            string key = "IsCollidedBallAndFish" + Convert.ToString(fish);
+                            key = key + "AtStage" + Convert.ToString(stage);
+                            if (mission.HtMissionVariables.ContainsKey(key))
+                            {
+                                bool touched = Convert.ToBoolean(mission.HtMissionVariables[key]);
+                                seen = seen + key + "=";
+                                seen = seen + (touched ? "yes" : "no") + ";";
+                            }
+                        }
+                    }
+                    foreach (string key in Numbers)
+                    {
+                        if (mission.HtMissionVariables.ContainsKey(key))
+                        {
+                            int value = Convert.ToInt32(mission.HtMissionVariables[key]);
+                            seen = seen + key + "=";
+                            seen = seen + Convert.ToString(value) + ";";
+                        }
+                    }
+                    Seen = seen;
+                    Decision[] decisions = new Decision[mission.CommonPara.FishCntPerTeam];
+                    for (int i = 0; i < decisions.Length; i++) { decisions[i].VCode = 2; decisions[i].TCode = 7; }
+                    return decisions;
+                }
+            }
+        }
+        """;
 }

@@ -116,7 +116,7 @@ public sealed class BatchRunTests : IDisposable
         AssertError(CliRun.Of(string.Empty, "merge", s0, wrong), $"{wrong}:2: \"faults\" add up to 9, but \"strategyFaults\" is 10");
         string none = Path.Combine(_folder, "none-faults.jsonl");
         File.WriteAllLines(none, [shard1[0], shard1[1].Replace("\"exceptions\":5,\"timeouts\":0,\"badAnswers\":5", "\"exceptions\":0,\"timeouts\":0,\"badAnswers\":0", StringComparison.Ordinal), .. shard1.Skip(2)]);
-        AssertError(CliRun.Of(string.Empty, "merge", s0, none), $"{none}:2: \"faults\"[0] must name team 0 or 1 and counts >= 0 that are not all 0");
+        AssertError(CliRun.Of(string.Empty, "merge", s0, none), $"{none}:2: \"faults\"[0] must name team 0 to 3 and counts >= 0 that are not all 0");
     }
 
     [Theory]

@@ -21,7 +21,7 @@ public sealed class IsolatedSnapshotTests
         variables.Set("Ball_0_Left_Status", 0);
         var snapshot = new MatchSnapshot(1, 0, [], 3000f, 2000f);
         snapshot.SetItem("抢球博弈", variables, 6000);
-        snapshot.SetHeader(1, 0, 0);
+        snapshot.SetHeader(1, [0, 0]);
         snapshot.FishBuffer[0] = new FishView(0, 0, new Vector2(-100f, 50f), 0f, 0f, 0f, 160f, 30f, Decision.Stop);
 
         var clock = new ManualStrategyClock();
@@ -31,7 +31,7 @@ public sealed class IsolatedSnapshotTests
         Assert.Equal(IsolatedStrategyRunner.Outcome.TimedOut, runner.Decide(snapshot, [0], decisions, 50, out _));
 
         // The match moves on while the first call still runs: new cycle, fish moved, a ball scored.
-        snapshot.SetHeader(2, 3, 0);
+        snapshot.SetHeader(2, [3, 0]);
         snapshot.FishBuffer[0] = snapshot.FishBuffer[0] with { Position = new Vector2(900f, -400f) };
         variables.Set("Ball_0_Left_Status", 1);
         clock.Release();

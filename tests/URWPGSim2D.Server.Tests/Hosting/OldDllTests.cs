@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using Microsoft.CodeAnalysis;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
@@ -16,8 +17,10 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// <c>run --strategy TEAM=old.dll</c> with DLLs in the shape of those built for the original (x86,
 /// mscorlib 2.0, the original's assembly names; compiled here by <see cref="OldStrategyCompiler"/>):
 /// they play every item, exactly as the same source compiled for this server does, and fault like any
-/// other strategy; a DLL holding native code is refused in one line.
+/// other strategy; a DLL holding native code is refused in one line. The matches play original-API
+/// strategies in this test process, so these tests run alone (<see cref="InProcessStaticsCollection"/>).
 /// </summary>
+[Collection(InProcessStaticsCollection.Name)]
 public sealed class OldDllTests : IDisposable
 {
     private const string OneFishOneBall =
@@ -80,6 +83,27 @@ public sealed class OldDllTests : IDisposable
         match.Strategies.Stop();
         Assert.Equal(0, match.Strategies.TotalFaults);
         Assert.True(match.World.Cycle > 0);
+    }
+
+    [Theory]
+    [InlineData("new-ball-grab", "CompetitionPeriod=0;")]
+    [InlineData("relay-with-ball", "FinishedSingleTripCount=1;")]
+    [InlineData("push-ball-via-channel", "IsCollidedBallAndFish0AtStage1=no;IsCollidedBallAndFish1AtStage1=no;IsCollidedBallAndFish0AtStage2=no;IsCollidedBallAndFish1AtStage2=no;IsCollidedBallAndFish0AtStage3=no;IsCollidedBallAndFish1AtStage3=no;IsCollidedBallAndFish0AtStage4=no;IsCollidedBallAndFish1AtStage4=no;ExecutingTaskNo=2;")]
+    public void AnOldDllReadsTheOlderItemsVariablesAsItsEntriesDid(string item, string seen)
+    {
+        string dll = Write("OldReader.dll", OldStrategyCompiler.Compile("OldReader", Platform.X86, OldStrategySources.VariableReader));
+        var competition = ItemRegistry.Find(item)!;
+        IStrategy old = StrategyResolver.Load(dll);
+        var teams = new TeamStrategy?[] { new("old.dll", old, Isolated: true, new ManualStrategyClock()), null };
+
+        // The ball where it ends relay leg 1 (right pocket) and the channel item's first stage (past x 600).
+        var scenario = competition.CreateScenario(1);
+        scenario = scenario with { Balls = [scenario.Balls[0] with { Position = item == "new-ball-grab" ? scenario.Balls[0].Position : new System.Numerics.Vector2(400f, 0f) }, .. scenario.Balls.Skip(1)] };
+        var match = MatchBuilder.Build(scenario, teams, seed: 1, cycles: 20);
+        match.Play(5);
+        match.Strategies.Stop();
+        Assert.Equal(0, match.Strategies.TotalFaults);
+        Assert.Equal(seen, OriginalStrategyTests.Field<string>(OriginalStrategyTests.Inner(old), "Seen"));
     }
 
     [Fact]

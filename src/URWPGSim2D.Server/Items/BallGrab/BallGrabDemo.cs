@@ -21,7 +21,7 @@ namespace URWPGSim2D.Server.Items.BallGrab;
 /// (<see cref="FishTrack"/>, <see cref="BallTrack"/>). Works in a frame where the team's box is at +x
 /// (mirrored for the left end).
 /// </summary>
-internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
+internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball-grab demo") : IStrategy
 {
     private const int PushVCode = 6;
     private const int FineVCode = 4;
@@ -36,18 +36,18 @@ internal sealed class BallGrabDemo(BallGrabReferee referee) : IStrategy
     private int[] _since = [];
     private int[] _restUntil = [];
     private readonly Tracking _tracking = new();
-    private int _half;
+    private int _restarts = -1;
 
     /// <inheritdoc/>
-    public string TeamName => "ball-grab demo";
+    public string TeamName => teamName;
 
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
-        if (_target.Length != fish.Length || referee.Half != _half)
+        if (_target.Length != fish.Length || referee.Restarts != _restarts)
         {
             // A new half: the referee has placed every body afresh.
-            _half = referee.Half;
+            _restarts = referee.Restarts;
             _target = new int[fish.Length];
             _stuck = new Stuck[fish.Length];
             _pushers = new Pusher[fish.Length];

@@ -1,10 +1,6 @@
 using System.Collections.Generic;
 using System.Numerics;
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Trace;
-using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Items.BallGrab.BallGrabLayout;
 
 namespace URWPGSim2D.Server.Items.BallGrab;
@@ -35,16 +31,6 @@ internal sealed class BallGrabItem : CompetitionItem
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)
     {
-        FishSize size = FishSize.Default;
-        float x = HalfLength - (size.Length * 6f);
-        float z = size.Width * 3f;
-        var fish = new List<FishDefinition>
-        {
-            new(0, new Vector2(-x, z), 0f, "demo", Decision.Stop),
-            new(0, new Vector2(-x, -z), 0f, "demo", Decision.Stop),
-            new(1, new Vector2(x, z), System.MathF.PI, "demo", Decision.Stop),
-            new(1, new Vector2(x, -z), System.MathF.PI, "demo", Decision.Stop),
-        };
         var balls = new List<BallDefinition>();
         var values = new List<double>();
         for (int i = 0; i < BallStarts.Length; i++)
@@ -53,20 +39,6 @@ internal sealed class BallGrabItem : CompetitionItem
             values.Add(Values[i]);
         }
 
-        var obstacles = new List<ObstacleDefinition>
-        {
-            Rectangle(-BarX, BarZ, BarLength, BarWidth),
-            Rectangle(-BarX, -BarZ, BarLength, BarWidth),
-            Rectangle(BarX, BarZ, BarLength, BarWidth),
-            Rectangle(BarX, -BarZ, BarLength, BarWidth),
-            Rectangle(-BackX, 0, BackLength, BackWidth),
-            Rectangle(BackX, 0, BackLength, BackWidth),
-        };
-        var zones = new List<TraceZone>
-        {
-            TraceZone.Box("goal-box", 0, new Vector2(-BoxOuterX, -BoxHalfWidth), new Vector2(-BoxInnerX, BoxHalfWidth), team: 0),
-            TraceZone.Box("goal-box", 1, new Vector2(BoxInnerX, -BoxHalfWidth), new Vector2(BoxOuterX, BoxHalfWidth), team: 1),
-        };
         return new ScenarioDefinition
         {
             FieldLength = 3000f,
@@ -74,12 +46,12 @@ internal sealed class BallGrabItem : CompetitionItem
             GoalBlocks = false,
             Cycles = DefaultCycles,
             Seed = seed,
-            Fish = fish,
+            Fish = StartFish(),
             Balls = balls,
-            Obstacles = obstacles,
+            Obstacles = BoxObstacles(),
             Item = this,
             BallValues = values,
-            Zones = zones,
+            Zones = BoxZones(),
         };
     }
 
@@ -88,7 +60,4 @@ internal sealed class BallGrabItem : CompetitionItem
 
     /// <inheritdoc/>
     public override IStrategy CreateDemoStrategy(int team, ItemReferee referee) => new BallGrabDemo((BallGrabReferee)referee);
-
-    private static ObstacleDefinition Rectangle(float x, float z, float length, float width) =>
-        new(ObstacleKind.Rectangle, new Vector2(x, z), length, width, 0f, 0f);
 }

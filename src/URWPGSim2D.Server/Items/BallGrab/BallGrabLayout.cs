@@ -1,4 +1,9 @@
+using System.Collections.Generic;
 using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Server.Trace;
 
 namespace URWPGSim2D.Server.Items.BallGrab;
 
@@ -72,4 +77,40 @@ internal static class BallGrabLayout
         return x - radius >= BoxInnerX && x + radius <= BoxOuterX
             && center.Y + radius <= BoxHalfWidth && center.Y - radius >= -BoxHalfWidth;
     }
+
+    /// <summary>The four fish at cycle 0 (every one on the demo): team 0 at (−(1500 − 6 × 160), ±3 × 45) facing +x, team 1 mirrored facing −x.</summary>
+    public static List<FishDefinition> StartFish()
+    {
+        FishSize size = FishSize.Default;
+        float x = HalfLength - (size.Length * 6f);
+        float z = size.Width * 3f;
+        return
+        [
+            new(0, new Vector2(-x, z), 0f, "demo", Decision.Stop),
+            new(0, new Vector2(-x, -z), 0f, "demo", Decision.Stop),
+            new(1, new Vector2(x, z), System.MathF.PI, "demo", Decision.Stop),
+            new(1, new Vector2(x, -z), System.MathF.PI, "demo", Decision.Stop),
+        ];
+    }
+
+    /// <summary>The six rectangles of the two goal boxes in the original's order: the bars, then the back walls.</summary>
+    public static List<ObstacleDefinition> BoxObstacles() =>
+    [
+        Rectangle(-BarX, BarZ, BarLength, BarWidth),
+        Rectangle(-BarX, -BarZ, BarLength, BarWidth),
+        Rectangle(BarX, BarZ, BarLength, BarWidth),
+        Rectangle(BarX, -BarZ, BarLength, BarWidth),
+        Rectangle(-BackX, 0, BackLength, BackWidth),
+        Rectangle(BackX, 0, BackLength, BackWidth),
+    ];
+
+    /// <summary>The goal boxes as trace zones (team 0's at the left end, team 1's at the right).</summary>
+    public static List<TraceZone> BoxZones() =>
+    [
+        TraceZone.Box("goal-box", 0, new Vector2(-BoxOuterX, -BoxHalfWidth), new Vector2(-BoxInnerX, BoxHalfWidth), team: 0),
+        TraceZone.Box("goal-box", 1, new Vector2(BoxInnerX, -BoxHalfWidth), new Vector2(BoxOuterX, BoxHalfWidth), team: 1),
+    ];
+
+    private static ObstacleDefinition Rectangle(float x, float z, float length, float width) =>
+        new(ObstacleKind.Rectangle, new Vector2(x, z), length, width, 0f, 0f);
 }

@@ -15,7 +15,7 @@ namespace URWPGSim2D.Server.Items.BallGrab;
 /// Ball_{i}_Left_Status / Ball_{i}_Right_Status (1 once the team now at the left / right end has
 /// scored ball i).
 /// </summary>
-internal sealed class BallGrabReferee : ItemReferee
+internal sealed class BallGrabReferee : ItemReferee, IGoalBoxGame
 {
     private readonly bool[,] _scored;
     private readonly int[] _firstScoreCycle = [0, 0];
@@ -39,6 +39,9 @@ internal sealed class BallGrabReferee : ItemReferee
 
     /// <summary>The team playing from the left end now.</summary>
     public int LeftTeam => SidesSwapped ? 1 : 0;
+
+    /// <inheritdoc/>
+    public int Restarts => Half;
 
     /// <summary>The end (−1 left, +1 right) whose goal box scores for <paramref name="team"/> now.</summary>
     public int BoxSide(int team) => team == LeftTeam ? -1 : 1;

@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -59,12 +58,6 @@ internal static class PushBallAvoidObstaclesLayout
     /// <summary>The item's scenario: one team of one fish, obstacles 0–9 in the original's order.</summary>
     public static ScenarioDefinition Scenario()
     {
-        var obstacles = new List<ObstacleDefinition>(Obstacles.Length);
-        foreach (var (centre, length, width) in Obstacles)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, centre, length, width, 0f, 0f));
-        }
-
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,
@@ -72,7 +65,7 @@ internal static class PushBallAvoidObstaclesLayout
             GoalBlocks = false,
             Fish = [new FishDefinition(0, FishStart, 0f, "demo", Decision.Stop)],
             Balls = [new BallDefinition(BallStart, Vector2.Zero, BallRadius)],
-            Obstacles = obstacles,
+            Obstacles = AxisRectangles.Obstacles(Obstacles),
         };
     }
 }

@@ -393,9 +393,10 @@
     $('clock').textContent = formatClock(n);
     $('cycle').textContent = 'cycle ' + n + ' / ' + cycleNumber(s, Math.max(0, s.count - 1));
     const row = k * s.nt;
-    // A one-team item (its other team has no fish) shows that team's score alone.
-    $('score').textContent = s.teamsPlaying[0] && s.teamsPlaying[1] ? formatNumber(s.scores[row]) + ' : ' + formatNumber(s.scores[row + 1])
-      : formatNumber(s.scores[row + (s.teamsPlaying[0] ? 0 : 1)]);
+    // The scores of the teams that play, in team order (a one-team item shows its team's alone).
+    const shown = [];
+    for (let t = 0; t < s.nt; t++) if (s.teamsPlaying[t]) shown.push(formatNumber(s.scores[row + t]));
+    $('score').textContent = shown.join(' : ');
     const scrub = $('scrub');
     scrub.max = String(Math.max(0, s.count - 1));
     if (document.activeElement !== scrub || String(k) !== scrub.value) scrub.value = String(k);
@@ -435,11 +436,14 @@
   }
 
   function setTeams(s) {
-    // The teams that play: those with fish (both when the match has none). The trace always lists
-    // two teams and two scores; a one-team item's other team has no fish and is not shown.
-    s.teamsPlaying = [0, 1].map(t => s.layout.fish.length === 0 || s.layout.fish.some(f => f.team === t));
-    for (let t = 0; t < 2; t++) {
+    // The teams that play: those with fish (teams 0 and 1 when the match has none). The trace lists
+    // at least two teams and scores (four for four-teams); a one-team item's other team has no fish
+    // and is not shown.
+    s.teamsPlaying = [];
+    for (let t = 0; t < s.nt; t++) s.teamsPlaying.push(s.layout.fish.length === 0 ? t < 2 : s.layout.fish.some(f => f.team === t));
+    for (let t = 0; t < 4; t++) {
       const team = s.layout.teams[t] || { name: 'team ' + t }, el = $('team' + t);
+      if (t >= s.nt) { el.style.display = 'none'; continue; }
       el.querySelector('.swatch').style.background = api.teamColour(t);
       el.querySelector('.name').textContent = 'team ' + t + ' (' + team.name + ')';
       el.style.display = s.teamsPlaying[t] ? '' : 'none';
