@@ -43,8 +43,8 @@ public sealed class IsolationDeterminismTests : IDisposable
             foreach (string seed in new[] { "1", "2" })
             {
                 string inProcess = Path.Combine(_folder, "none.jsonl"), hosted = Path.Combine(_folder, "process.jsonl");
-                var a = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--trace", inProcess, "--isolation", "none", "--strategy-timeout", Deadline);
-                var b = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--trace", hosted, "--sandbox", "required", "--strategy-timeout", Deadline);
+                var a = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--force", "--trace", inProcess, "--isolation", "none", "--strategy-timeout", Deadline);
+                var b = CliRun.Of(string.Empty, "run", "--item", item, "--seed", seed, "--cycles", Cycles, "--strategy", "0=" + spec, "--force", "--trace", hosted, "--sandbox", "required", "--strategy-timeout", Deadline);
                 Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
                 Assert.Contains("strategy faults: none", a.Stdout, StringComparison.Ordinal);
                 Assert.Contains("strategy faults: none", b.Stdout, StringComparison.Ordinal);

@@ -112,7 +112,7 @@ public sealed class OldDllTests : IDisposable
         string dll = Write("OldDribbler.dll", Dribbler.Value);
         var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "40", "--strategy", "0=" + dll, "--strategy", "1=" + dll);
         Assert.True(run.ExitCode == 0, run.Stderr);
-        Assert.True(run.Stdout.Contains("score: team 0 (OldDribbler.dll) 0, team 1 (OldDribbler.dll) 0\n", StringComparison.Ordinal), run.Stdout);
+        Assert.True(run.Stdout.Contains("score: team 0 (Old dribbler [OldDribbler.dll]) 0, team 1 (Old dribbler [OldDribbler.dll]) 0\n", StringComparison.Ordinal), run.Stdout);
         Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
     }
 
@@ -122,7 +122,7 @@ public sealed class OldDllTests : IDisposable
         string dll = Write("OldFaulty.dll", OldStrategyCompiler.Compile("OldFaulty", Platform.X86, OldStrategySources.Faulty));
         var run = CliRun.Of(string.Empty, "run", "--cycles", "25", "--strategy", "0=" + dll);
         Assert.Equal(0, run.ExitCode);
-        const string Line = "  team 0 (OldFaulty.dll): 15 exceptions, 0 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 11: InvalidOperationException: broken after ten cycles\n";
+        const string Line = "  team 0 (Old faulty [OldFaulty.dll]): 15 exceptions, 0 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 11: InvalidOperationException: broken after ten cycles\n";
         Assert.True(run.Stdout.Contains(Line, StringComparison.Ordinal), run.Stdout);
     }
 
