@@ -100,6 +100,7 @@ internal static class MessageReader
             int[]? fish = null;
             float? length = null, width = null;
             ObstacleView[] obstacles = [];
+            bool draw = false;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("version"u8))
@@ -146,6 +147,10 @@ internal static class MessageReader
                 {
                     obstacles = Obstacles(ref r);
                 }
+                else if (r.ValueTextEquals("draw"u8))
+                {
+                    draw = JsonFields.Bool(ref r, "draw");
+                }
                 else
                 {
                     JsonFields.Skip(ref r);
@@ -155,7 +160,10 @@ internal static class MessageReader
             var a = new AssignmentMessage(
                 version ?? throw Missing("version"), team ?? throw Missing("team"), item, itemName, fish ?? throw Missing("fish"),
                 fishCount ?? throw Missing("fishCount"), ballCount ?? throw Missing("ballCount"), totalCycles ?? 0,
-                deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles);
+                deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles)
+            {
+                Draw = draw,
+            };
             Check(a);
             return a;
         }
@@ -169,9 +177,10 @@ internal static class MessageReader
     /// Reads a client's <c>decisions</c> for <paramref name="cycle"/> into <paramref name="decisions"/>
     /// (one per fish). A reported fault, a wrong count or a gear outside 0..15 is returned as that
     /// kind with a message (and <paramref name="decisions"/> may be partly written); a message for
-    /// another cycle or one that is not a decisions message throws.
+    /// another cycle or one that is not a decisions message throws. The message's debug drawings
+    /// (<c>draw</c>) go to <paramref name="drawings"/> when given (a malformed one throws), else are skipped.
     /// </summary>
-    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message)
+    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message, DebugRecorder? drawings = null)
     {
         message = null;
         try
@@ -205,6 +214,10 @@ internal static class MessageReader
                 else if (r.ValueTextEquals("message"u8))
                 {
                     message = JsonFields.Text(ref r, "message");
+                }
+                else if (drawings is not null && r.ValueTextEquals("draw"u8))
+                {
+                    DebugShapeJson.ReadArray(ref r, drawings);
                 }
                 else
                 {

@@ -55,6 +55,11 @@ internal sealed class MessageWriter
         _json.WriteNumber("totalCycles", a.TotalCycles);
         _json.WriteNumber("cycleMs", 100);
         _json.WriteNumber("deadlineMs", a.DeadlineMs);
+        if (a.Draw)
+        {
+            _json.WriteBoolean("draw", true);
+        }
+
         _json.WriteStartObject("field");
         Number("length", a.FieldLength);
         Number("width", a.FieldWidth);
@@ -141,8 +146,8 @@ internal sealed class MessageWriter
         return End();
     }
 
-    /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/>: one <c>[vcode, tcode]</c> per fish.</summary>
-    public ReadOnlySpan<byte> Decisions(int cycle, ReadOnlySpan<Decision> decisions)
+    /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/>: one <c>[vcode, tcode]</c> per fish, and the strategy's debug drawings when given and not empty.</summary>
+    public ReadOnlySpan<byte> Decisions(int cycle, ReadOnlySpan<Decision> decisions, DebugRecorder? drawings = null)
     {
         Begin("decisions");
         _json.WriteNumber("cycle", cycle);
@@ -156,11 +161,12 @@ internal sealed class MessageWriter
         }
 
         _json.WriteEndArray();
+        Drawings(drawings);
         return End();
     }
 
     /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/> reporting a fault instead (the fish keep their last decisions).</summary>
-    public ReadOnlySpan<byte> Fault(int cycle, AnswerKind fault, string message)
+    public ReadOnlySpan<byte> Fault(int cycle, AnswerKind fault, string message, DebugRecorder? drawings = null)
     {
         Begin("decisions");
         _json.WriteNumber("cycle", cycle);
@@ -172,7 +178,16 @@ internal sealed class MessageWriter
             _ => throw new ArgumentOutOfRangeException(nameof(fault), fault, "a fault is exception, timeout or badAnswer"),
         });
         _json.WriteString("message", Cut(message));
+        Drawings(drawings);
         return End();
+    }
+
+    private void Drawings(DebugRecorder? drawings)
+    {
+        if (drawings is { Count: > 0 })
+        {
+            DebugShapeJson.WriteArray(_json, drawings);
+        }
     }
 
     /// <summary>The server's <c>end</c>.</summary>

@@ -15,7 +15,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--debug-draw] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -85,6 +85,9 @@ internal sealed class RunOptions
 
     /// <summary>Whether the live match waits for resume or step before its first cycle (<c>--paused</c>).</summary>
     public bool Paused { get; private set; }
+
+    /// <summary>Whether the strategies' debug drawings are recorded in the trace, the replay page and the live view (<c>--debug-draw</c>).</summary>
+    public bool DebugDraw { get; private set; }
 
     /// <summary>Default port of the live view.</summary>
     public const int DefaultPort = 8080;
@@ -186,7 +189,7 @@ internal sealed class RunOptions
                 throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
-            if (name is "--live" or "--paused")
+            if (name is "--live" or "--paused" or "--debug-draw")
             {
                 if (!seen.Add(name))
                 {
@@ -195,6 +198,7 @@ internal sealed class RunOptions
 
                 o.Live |= name == "--live";
                 o.Paused |= name == "--paused";
+                o.DebugDraw |= name == "--debug-draw";
                 continue;
             }
 
@@ -367,6 +371,11 @@ internal sealed class RunOptions
         if (Live && (Batch is not null || Trace is not null || Svg is not null || Html is not null))
         {
             throw UsageError("--live plays the match in the browser; --batch, --trace, --svg and --html do not go with it");
+        }
+
+        if (DebugDraw && !Live && Trace is null && Html is null)
+        {
+            throw UsageError("--debug-draw records the strategies' drawings in --trace, --html or --live; give one of them");
         }
 
         CheckSlurm();

@@ -24,6 +24,7 @@ internal sealed class IsolatedStrategyRunner
     private bool _pending;
     private bool _warm;
     private volatile bool _stopped;
+    private DebugRecorder? _drawings;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
     {
@@ -108,6 +109,15 @@ internal sealed class IsolatedStrategyRunner
         return Outcome.Decided;
     }
 
+    /// <summary>
+    /// The debug drawings of the last call that finished (decided or threw), or null when they are not
+    /// recorded. Read only after such an outcome: a call past its deadline may still be drawing.
+    /// </summary>
+    public DebugRecorder? Drawings => _drawings;
+
+    /// <summary>Records the strategy's debug drawings from the next call on.</summary>
+    public void RecordDrawings() => _drawings ??= new DebugRecorder();
+
     /// <summary>Lets the strategy's thread end once its current call (if any) returns; the runner is not used afterwards.</summary>
     public void Stop()
     {
@@ -125,6 +135,8 @@ internal sealed class IsolatedStrategyRunner
                 return;
             }
 
+            var drawings = _drawings;
+            drawings?.Enter(_fish);
             _clock.CallStarting();
             try
             {
@@ -133,6 +145,13 @@ internal sealed class IsolatedStrategyRunner
             catch (Exception e)
             {
                 _error = e;
+            }
+            finally
+            {
+                if (drawings is not null)
+                {
+                    DebugRecorder.Exit();
+                }
             }
 
             _used = _clock.CallEnded();

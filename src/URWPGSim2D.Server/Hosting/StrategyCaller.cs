@@ -63,6 +63,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         foreach (var slot in Slots)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
+            slot.Drawings?.Reset(slot.Fish);
             if (slot.EndedInCycle > 0)
             {
                 // its host has ended (or it was never created): its fish stay stopped
@@ -77,6 +78,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             }
             else if (slot.Runner is null)
             {
+                slot.Drawings?.Enter(slot.Fish);
                 try
                 {
                     slot.Strategy!.Decide(snapshot, slot.Fish, slot.Scratch);
@@ -86,6 +88,13 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 {
                     Fault(slot, cycle, e);
                 }
+                finally
+                {
+                    if (slot.Drawings is not null)
+                    {
+                        DebugRecorder.Exit();
+                    }
+                }
             }
             else
             {
@@ -93,9 +102,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 {
                     case IsolatedStrategyRunner.Outcome.Decided:
                         slot.Scratch.CopyTo(slot.Decisions, 0);
+                        CopyDrawings(slot, slot.Runner.Drawings);
                         break;
                     case IsolatedStrategyRunner.Outcome.Threw:
                         Fault(slot, cycle, error!);
+                        CopyDrawings(slot, slot.Runner.Drawings);
                         break;
                     default:
                         slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
@@ -111,6 +122,15 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
+    // A call that finished (decided or threw) on another thread or process: its drawings count too.
+    private static void CopyDrawings(StrategySlot slot, DebugRecorder? from)
+    {
+        if (slot.Drawings is { } to && from is not null)
+        {
+            to.AddFrom(from);
+        }
+    }
+
     private string TimeoutText => _timeoutText ??= $"no decision within {TimeoutMs} ms";
 
     // One cycle of a strategy in another process: the same faults as in the server's process; an
@@ -122,9 +142,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         {
             case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
+                CopyDrawings(slot, hosted.Drawings);
                 break;
             case ConnectionOutcome.Exception:
                 slot.Charge(cycle, FaultKind.Exception, message ?? "exception");
+                CopyDrawings(slot, hosted.Drawings);
                 break;
             case ConnectionOutcome.BadAnswer:
                 slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");

@@ -79,6 +79,11 @@ internal sealed class StrategyClient
         var assignment = MessageReader.ReadAssignment(line);
         var reader = new CycleReader(assignment);
         var runner = new IsolatedStrategyRunner(strategy, assignment.Fish.Length, assignment.Team, _clock());
+        if (assignment.Draw)
+        {
+            runner.RecordDrawings();
+        }
+
         var inForce = new Decision[assignment.Fish.Length];
         Array.Fill(inForce, Decision.Stop);
         try
@@ -115,13 +120,13 @@ internal sealed class StrategyClient
         switch (runner.Decide(snapshot, assignment.Fish, inForce, assignment.DeadlineMs, out Exception? error))
         {
             case IsolatedStrategyRunner.Outcome.Decided:
-                _channel.WriteLine(_writer.Decisions(cycle, inForce));
+                _channel.WriteLine(_writer.Decisions(cycle, inForce, runner.Drawings));
                 break;
             case IsolatedStrategyRunner.Outcome.Threw when error is StrategyContractException:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message));
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message, runner.Drawings));
                 break;
             case IsolatedStrategyRunner.Outcome.Threw:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error!.GetType().Name}: {error.Message}"));
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error!.GetType().Name}: {error.Message}", runner.Drawings));
                 break;
             default:
                 _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Timeout, $"no decision within {assignment.DeadlineMs} ms"));

@@ -29,6 +29,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly Action<string>? _log;
     private readonly Decision[] _answer;
     private readonly string _peer;
+    private readonly DebugRecorder? _drawings;
     private bool _answered;
     private bool _started;
     private bool _stopped;
@@ -49,6 +50,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
         _link = link;
         _assignment = assignment;
         _answer = new Decision[assignment.Fish.Length];
+        _drawings = assignment.Draw ? new DebugRecorder() : null;
         _token = token is null ? null : Encoding.UTF8.GetBytes(token);
         _helloLimit = helloLimit;
         _log = log;
@@ -152,10 +154,14 @@ internal sealed class StrategyConnection : IConnectedStrategy
     }
 
     /// <inheritdoc/>
+    public DebugRecorder? Drawings => _drawings;
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;
         EndedBy = null;
+        _drawings?.Reset(_assignment.Fish);
         if (HasEnded)
         {
             message = "the connection has ended";
@@ -181,7 +187,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
                 return Bad(cycle, $"{_peer} answered something other than decisions", out message);
             }
 
-            switch (MessageReader.ReadDecisions(line, cycle, _answer, out message))
+            switch (MessageReader.ReadDecisions(line, cycle, _answer, out message, _drawings))
             {
                 case AnswerKind.Decided:
                     _answer.CopyTo(decisions);

@@ -118,6 +118,16 @@ internal sealed class StrategySlot
         LastFaultKind = kind;
     }
 
+    /// <summary>The strategy's debug drawings of the cycle just decided, or null when drawings are not recorded.</summary>
+    public DebugRecorder? Drawings { get; private set; }
+
+    /// <summary>Records the strategy's debug drawings from now on (<c>run --debug-draw</c>).</summary>
+    public void RecordDrawings()
+    {
+        Drawings ??= new DebugRecorder();
+        Runner?.RecordDrawings();
+    }
+
     /// <summary>The kind of the latest fault.</summary>
     public FaultKind LastFaultKind { get; private set; }
 }
