@@ -28,6 +28,8 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
     private readonly List<short> _contacts = new(1 << 12);
     private readonly ArrayBufferWriter<byte> _scores = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _events = new(1 << 10);
+    private readonly ArrayBufferWriter<byte> _draws = new(1 << 10);
+    private Utf8JsonWriter? _drawJson;
     private readonly Utf8JsonWriter _scoreJson;
     private readonly Utf8JsonWriter _eventJson;
     private double[] _lastScore = [];
@@ -153,6 +155,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
         _contactCounts.Add((ushort)Math.Min(contacts, ushort.MaxValue));
         AddScore(line, cycle);
         AddEvents(line, cycle);
+        AddDrawings(line, cycle);
         Count++;
     }
 
@@ -176,8 +179,15 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             .Append("\",\"contactCounts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contactCounts))))
             .Append("\",\"contacts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contacts))))
             .Append("\",\"scores\":").Append(Encoding.UTF8.GetString(_scores.WrittenSpan))
-            .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan))
-            .Append('}');
+            .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan));
+        if (_drawJson is not null)
+        {
+            _drawJson.WriteEndArray();
+            _drawJson.Flush();
+            s.Append(",\"draws\":").Append(Encoding.UTF8.GetString(_draws.WrittenSpan));
+        }
+
+        s.Append('}');
         return s.Replace("<", "\\u003c").ToString();
     }
 
@@ -314,6 +324,44 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             _eventJson.WriteEndObject();
             i++;
         }
+    }
+
+    // The strategies' debug drawings (run --debug-draw): [cycle, [shape, ...]] for each line that has any.
+    private void AddDrawings(JsonElement line, int cycle)
+    {
+        if (!line.TryGetProperty("draw", out var draw))
+        {
+            return;
+        }
+
+        if (draw.ValueKind != JsonValueKind.Array)
+        {
+            throw new TraceFormatException("draw: expected an array of shapes");
+        }
+
+        if (_drawJson is null)
+        {
+            _drawJson = new Utf8JsonWriter(_draws);
+            _drawJson.WriteStartArray();
+        }
+
+        _drawJson.WriteStartArray();
+        _drawJson.WriteNumberValue(cycle);
+        _drawJson.WriteStartArray();
+        int i = 0;
+        foreach (var shape in draw.EnumerateArray())
+        {
+            if (shape.ValueKind != JsonValueKind.Object || !shape.TryGetProperty("kind", out var kind) || kind.ValueKind != JsonValueKind.String)
+            {
+                throw new TraceFormatException($"draw[{i}]: a drawing is an object with a \"kind\" string");
+            }
+
+            shape.WriteTo(_drawJson);
+            i++;
+        }
+
+        _drawJson.WriteEndArray();
+        _drawJson.WriteEndArray();
     }
 
     private void Add(short value) => _frames.Add(value);
