@@ -359,7 +359,7 @@
       } else if (d.kind === 'text' && d.at) {
         const q = worldToCanvas(d.at[0], d.at[1]), px = Math.round(12 * dpr);
         ctx.font = '600 ' + px + 'px system-ui, sans-serif'; ctx.textAlign = 'left'; ctx.textBaseline = 'alphabetic';
-        ctx.lineWidth = 3 * dpr; ctx.strokeStyle = 'rgba(0,0,0,0.75)'; ctx.strokeText(String(d.text), q[0], q[1]); ctx.fillText(String(d.text), q[0], q[1]);
+        ctx.lineWidth = 3 * dpr; ctx.strokeStyle = 'rgba(255,255,255,0.9)'; ctx.strokeText(String(d.text), q[0], q[1]); ctx.fillText(String(d.text), q[0], q[1]);
       }
     }
   }
