@@ -22,6 +22,9 @@ internal sealed record AssignmentMessage(
     /// <summary>Whether the server records the strategy's debug drawings: the client then sends them in each <c>decisions</c> message's <c>draw</c>.</summary>
     public bool Draw { get; init; }
 
+    /// <summary>Whether the server records what the strategy prints: the client then sends it in each <c>decisions</c> message's <c>log</c>.</summary>
+    public bool Log { get; init; }
+
     /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
     public MatchSnapshot CreateSnapshot() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
 }

@@ -100,7 +100,7 @@ internal static class MessageReader
             int[]? fish = null;
             float? length = null, width = null;
             ObstacleView[] obstacles = [];
-            bool draw = false;
+            bool draw = false, log = false;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("version"u8))
@@ -151,6 +151,10 @@ internal static class MessageReader
                 {
                     draw = JsonFields.Bool(ref r, "draw");
                 }
+                else if (r.ValueTextEquals("log"u8))
+                {
+                    log = JsonFields.Bool(ref r, "log");
+                }
                 else
                 {
                     JsonFields.Skip(ref r);
@@ -163,6 +167,7 @@ internal static class MessageReader
                 deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles)
             {
                 Draw = draw,
+                Log = log,
             };
             Check(a);
             return a;
@@ -178,9 +183,10 @@ internal static class MessageReader
     /// (one per fish). A reported fault, a wrong count or a gear outside 0..15 is returned as that
     /// kind with a message (and <paramref name="decisions"/> may be partly written); a message for
     /// another cycle or one that is not a decisions message throws. The message's debug drawings
-    /// (<c>draw</c>) go to <paramref name="drawings"/> when given (a malformed one throws), else are skipped.
+    /// (<c>draw</c>) go to <paramref name="drawings"/> when given (a malformed one throws), else are skipped;
+    /// what the strategy printed (<c>log</c>, at most <see cref="ProtocolLimits.LogChars"/> characters kept) goes to <paramref name="log"/> when given.
     /// </summary>
-    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message, DebugRecorder? drawings = null)
+    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message, DebugRecorder? drawings = null, PrintedOutput? log = null)
     {
         message = null;
         try
@@ -218,6 +224,14 @@ internal static class MessageReader
                 else if (drawings is not null && r.ValueTextEquals("draw"u8))
                 {
                     DebugShapeJson.ReadArray(ref r, drawings);
+                }
+                else if (log is not null && r.ValueTextEquals("log"u8))
+                {
+                    log.Text.Append(JsonFields.Text(ref r, "log", ProtocolLimits.LogChars));
+                }
+                else if (log is not null && r.ValueTextEquals("logDropped"u8))
+                {
+                    log.Dropped = System.Math.Max(0, JsonFields.Int(ref r, "logDropped"));
                 }
                 else
                 {

@@ -40,6 +40,16 @@ public sealed class DebugDrawMessageTests
     }
 
     [Fact]
+    public void A_strategys_output_round_trips_with_the_count_it_dropped()
+    {
+        var line = new MessageWriter().Decisions(3, [Decision.Stop], null, "saw \"cycle\" 3\n", 17).ToArray();
+        var printed = new PrintedOutput();
+        Assert.Equal(AnswerKind.Decided, MessageReader.ReadDecisions(line, 3, new Decision[1], out _, null, printed));
+        Assert.Equal("saw \"cycle\" 3\n", printed.Text.ToString());
+        Assert.Equal(17, printed.Dropped);
+    }
+
+    [Fact]
     public void Without_drawings_a_decisions_message_is_unchanged()
     {
         var writer = new MessageWriter();

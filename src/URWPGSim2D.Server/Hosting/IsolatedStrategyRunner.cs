@@ -25,6 +25,7 @@ internal sealed class IsolatedStrategyRunner
     private bool _warm;
     private volatile bool _stopped;
     private DebugRecorder? _drawings;
+    private StrategyLog? _log;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
     {
@@ -118,6 +119,12 @@ internal sealed class IsolatedStrategyRunner
     /// <summary>Records the strategy's debug drawings from the next call on.</summary>
     public void RecordDrawings() => _drawings ??= new DebugRecorder();
 
+    /// <summary>What the last call that finished printed, or null when it is not recorded (read as <see cref="Drawings"/>).</summary>
+    public StrategyLog? Log => _log;
+
+    /// <summary>Records what the strategy prints from the next call on (the console must be routed: <see cref="ConsoleRouter.Install"/>).</summary>
+    public void RecordLog() => _log ??= new StrategyLog();
+
     /// <summary>Lets the strategy's thread end once its current call (if any) returns; the runner is not used afterwards.</summary>
     public void Stop()
     {
@@ -137,6 +144,13 @@ internal sealed class IsolatedStrategyRunner
 
             var drawings = _drawings;
             drawings?.Enter(_fish);
+            var log = _log;
+            if (log is not null)
+            {
+                log.Clear();
+                ConsoleRouter.Enter(log);
+            }
+
             _clock.CallStarting();
             try
             {
@@ -151,6 +165,11 @@ internal sealed class IsolatedStrategyRunner
                 if (drawings is not null)
                 {
                     DebugRecorder.Exit();
+                }
+
+                if (log is not null)
+                {
+                    ConsoleRouter.Exit();
                 }
             }
 

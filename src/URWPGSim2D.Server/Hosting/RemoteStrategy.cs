@@ -65,6 +65,9 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     public DebugRecorder? Drawings => _current?.Drawings;
 
     /// <inheritdoc/>
+    public StrategyLog? Log => _current?.Log;
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;

@@ -64,6 +64,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
             slot.Drawings?.Reset(slot.Fish);
+            slot.Log?.Clear();
             if (slot.EndedInCycle > 0)
             {
                 // its host has ended (or it was never created): its fish stay stopped
@@ -79,6 +80,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             else if (slot.Runner is null)
             {
                 slot.Drawings?.Enter(slot.Fish);
+                if (slot.Log is { } log)
+                {
+                    ConsoleRouter.Enter(log);
+                }
+
                 try
                 {
                     slot.Strategy!.Decide(snapshot, slot.Fish, slot.Scratch);
@@ -94,6 +100,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                     {
                         DebugRecorder.Exit();
                     }
+
+                    if (slot.Log is not null)
+                    {
+                        ConsoleRouter.Exit();
+                    }
                 }
             }
             else
@@ -102,11 +113,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 {
                     case IsolatedStrategyRunner.Outcome.Decided:
                         slot.Scratch.CopyTo(slot.Decisions, 0);
-                        CopyDrawings(slot, slot.Runner.Drawings);
+                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
                         break;
                     case IsolatedStrategyRunner.Outcome.Threw:
                         Fault(slot, cycle, error!);
-                        CopyDrawings(slot, slot.Runner.Drawings);
+                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
                         break;
                     default:
                         slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
@@ -122,12 +133,17 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
-    // A call that finished (decided or threw) on another thread or process: its drawings count too.
-    private static void CopyDrawings(StrategySlot slot, DebugRecorder? from)
+    // A call that finished (decided or threw) on another thread or process: its drawings and output count too.
+    private static void CopyDrawings(StrategySlot slot, DebugRecorder? from, StrategyLog? log)
     {
         if (slot.Drawings is { } to && from is not null)
         {
             to.AddFrom(from);
+        }
+
+        if (slot.Log is { } into && log is not null)
+        {
+            into.AppendFrom(log);
         }
     }
 
@@ -142,11 +158,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         {
             case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
-                CopyDrawings(slot, hosted.Drawings);
+                CopyDrawings(slot, hosted.Drawings, hosted.Log);
                 break;
             case ConnectionOutcome.Exception:
                 slot.Charge(cycle, FaultKind.Exception, message ?? "exception");
-                CopyDrawings(slot, hosted.Drawings);
+                CopyDrawings(slot, hosted.Drawings, hosted.Log);
                 break;
             case ConnectionOutcome.BadAnswer:
                 slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");

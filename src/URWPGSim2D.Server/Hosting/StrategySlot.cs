@@ -128,6 +128,17 @@ internal sealed class StrategySlot
         Runner?.RecordDrawings();
     }
 
+    /// <summary>What the strategy printed in the cycle just decided, or null when its output is not recorded.</summary>
+    public StrategyLog? Log { get; private set; }
+
+    /// <summary>Records what the strategy prints from now on (<c>run --strategy-log</c>; routes the process's console, <see cref="ConsoleRouter"/>).</summary>
+    public void RecordLog()
+    {
+        ConsoleRouter.Install();
+        Log ??= new StrategyLog();
+        Runner?.RecordLog();
+    }
+
     /// <summary>The kind of the latest fault.</summary>
     public FaultKind LastFaultKind { get; private set; }
 }

@@ -29,7 +29,8 @@ internal static class MatchBuilder
     /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <param name="debugDraw">Whether the strategies' debug drawings are recorded (<c>run --debug-draw</c>).</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false)
+    /// <param name="strategyLog">Whether what the strategies print is recorded (<c>run --strategy-log</c>).</param>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var motion = new Stepper(broadPhase);
@@ -65,13 +66,18 @@ internal static class MatchBuilder
 
         var world = new World(motion, field, fish, balls, views, statics);
         var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
-        var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw);
+        var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
         var slots = Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match);
-        if (debugDraw)
+        foreach (var slot in slots)
         {
-            foreach (var slot in slots)
+            if (debugDraw)
             {
                 slot.RecordDrawings();
+            }
+
+            if (strategyLog)
+            {
+                slot.RecordLog();
             }
         }
 
@@ -130,13 +136,14 @@ internal static class MatchBuilder
     }
 
     // What a strategy host is told of the match (docs/protocol.md, assignment).
-    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles, bool DebugDraw)
+    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles, bool DebugDraw, bool StrategyLog)
     {
         public Protocol.AssignmentMessage Assignment(int team, int[] fish) => new(
             Protocol.ProtocolVersion.Current, team, Referee?.Item.Slug ?? "", Referee?.Item.ChineseName ?? "match", fish,
             World.Fish.Length, World.Balls.Length, Referee?.Cycles ?? 0, DeadlineMs, World.Field.Length, World.Field.Width, World.Obstacles)
         {
             Draw = DebugDraw,
+            Log = StrategyLog,
         };
     }
 

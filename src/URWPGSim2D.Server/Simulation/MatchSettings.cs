@@ -17,6 +17,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// <param name="StrategyTimeoutMs">The deadline of an isolated strategy's call, ms of its thread's CPU time.</param>
 /// <param name="Threads">Threads the stepper spreads a cycle's independent islands over (the same match whatever the count).</param>
 /// <param name="DebugDraw">Whether the strategies' debug drawings are recorded in the trace (<c>run --debug-draw</c>).</param>
+/// <param name="StrategyLog">Whether what the strategies print is recorded in the trace (<c>run --strategy-log</c>).</param>
 internal sealed record MatchSettings(
     ScenarioDefinition Scenario,
     int Cycles,
@@ -25,12 +26,13 @@ internal sealed record MatchSettings(
     TeamStrategy?[]? Teams = null,
     int StrategyTimeoutMs = MatchBuilder.DefaultStrategyTimeoutMs,
     int Threads = 1,
-    bool DebugDraw = false)
+    bool DebugDraw = false,
+    bool StrategyLog = false)
 {
     /// <summary>Builds a fresh match of these settings, ready for cycle 1.</summary>
     public Match Build()
     {
-        var match = MatchBuilder.Build(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw);
+        var match = MatchBuilder.Build(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog);
         match.Stepper.Threads = Threads;
         return match;
     }

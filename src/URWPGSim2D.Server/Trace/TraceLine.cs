@@ -118,6 +118,7 @@ internal sealed class TraceLine
 
         w.WriteEndArray();
         WriteDrawings(w);
+        WriteLogs(w);
         w.WriteEndObject();
         w.Flush();
         return _buffer.WrittenSpan;
@@ -156,6 +157,35 @@ internal sealed class TraceLine
             {
                 Protocol.DebugShapeJson.Write(w, s, slot.Team);
             }
+        }
+
+        if (any)
+        {
+            w.WriteEndArray();
+        }
+    }
+
+    // What the strategies printed while deciding this cycle (run --strategy-log), only on lines where one printed.
+    private void WriteLogs(Utf8JsonWriter w)
+    {
+        bool any = false;
+        foreach (var slot in _match.Strategies.Slots)
+        {
+            if (slot.Log is not { } log || (log.Length == 0 && log.Dropped == 0))
+            {
+                continue;
+            }
+
+            if (!any)
+            {
+                w.WriteStartArray("log");
+                any = true;
+            }
+
+            w.WriteStartObject();
+            w.WriteNumber("team", slot.Team);
+            w.WriteString("text", log.ToString());
+            w.WriteEndObject();
         }
 
         if (any)

@@ -29,7 +29,9 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
     private readonly ArrayBufferWriter<byte> _scores = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _events = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _draws = new(1 << 10);
+    private readonly ArrayBufferWriter<byte> _logs = new(1 << 10);
     private Utf8JsonWriter? _drawJson;
+    private Utf8JsonWriter? _logJson;
     private readonly Utf8JsonWriter _scoreJson;
     private readonly Utf8JsonWriter _eventJson;
     private double[] _lastScore = [];
@@ -155,7 +157,8 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
         _contactCounts.Add((ushort)Math.Min(contacts, ushort.MaxValue));
         AddScore(line, cycle);
         AddEvents(line, cycle);
-        AddDrawings(line, cycle);
+        PerCycle(line, cycle, "draw", "a drawing", _draws, ref _drawJson);
+        PerCycle(line, cycle, "log", "a strategy's output", _logs, ref _logJson);
         Count++;
     }
 
@@ -180,12 +183,8 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             .Append("\",\"contacts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contacts))))
             .Append("\",\"scores\":").Append(Encoding.UTF8.GetString(_scores.WrittenSpan))
             .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan));
-        if (_drawJson is not null)
-        {
-            _drawJson.WriteEndArray();
-            _drawJson.Flush();
-            s.Append(",\"draws\":").Append(Encoding.UTF8.GetString(_draws.WrittenSpan));
-        }
+        Finish(s, "draws", _draws, _drawJson);
+        Finish(s, "logs", _logs, _logJson);
 
         s.Append('}');
         return s.Replace("<", "\\u003c").ToString();
@@ -326,42 +325,56 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
         }
     }
 
-    // The strategies' debug drawings (run --debug-draw): [cycle, [shape, ...]] for each line that has any.
-    private void AddDrawings(JsonElement line, int cycle)
+    // The strategies' debug drawings (draw, run --debug-draw) and output (log, run --strategy-log):
+    // [cycle, [entry, ...]] for each line that has any, the entries as in the trace.
+    private static void PerCycle(JsonElement line, int cycle, string name, string what, ArrayBufferWriter<byte> buffer, ref Utf8JsonWriter? json)
     {
-        if (!line.TryGetProperty("draw", out var draw))
+        if (!line.TryGetProperty(name, out var entries))
         {
             return;
         }
 
-        if (draw.ValueKind != JsonValueKind.Array)
+        if (entries.ValueKind != JsonValueKind.Array)
         {
-            throw new TraceFormatException("draw: expected an array of shapes");
+            throw new TraceFormatException($"{name}: expected an array");
         }
 
-        if (_drawJson is null)
+        if (json is null)
         {
-            _drawJson = new Utf8JsonWriter(_draws);
-            _drawJson.WriteStartArray();
+            json = new Utf8JsonWriter(buffer);
+            json.WriteStartArray();
         }
 
-        _drawJson.WriteStartArray();
-        _drawJson.WriteNumberValue(cycle);
-        _drawJson.WriteStartArray();
+        json.WriteStartArray();
+        json.WriteNumberValue(cycle);
+        json.WriteStartArray();
         int i = 0;
-        foreach (var shape in draw.EnumerateArray())
+        foreach (var entry in entries.EnumerateArray())
         {
-            if (shape.ValueKind != JsonValueKind.Object || !shape.TryGetProperty("kind", out var kind) || kind.ValueKind != JsonValueKind.String)
+            if (entry.ValueKind != JsonValueKind.Object || !entry.TryGetProperty(name == "draw" ? "kind" : "text", out var key) || key.ValueKind != JsonValueKind.String)
             {
-                throw new TraceFormatException($"draw[{i}]: a drawing is an object with a \"kind\" string");
+                throw new TraceFormatException($"{name}[{i}]: {what} is an object with a \"{(name == "draw" ? "kind" : "text")}\" string");
             }
 
-            shape.WriteTo(_drawJson);
+            entry.WriteTo(json);
             i++;
         }
 
-        _drawJson.WriteEndArray();
-        _drawJson.WriteEndArray();
+        json.WriteEndArray();
+        json.WriteEndArray();
+    }
+
+    // Appends ,"name":[...] when the match had any.
+    private static void Finish(StringBuilder s, string name, ArrayBufferWriter<byte> buffer, Utf8JsonWriter? json)
+    {
+        if (json is null)
+        {
+            return;
+        }
+
+        json.WriteEndArray();
+        json.Flush();
+        s.Append(",\"").Append(name).Append("\":").Append(Encoding.UTF8.GetString(buffer.WrittenSpan));
     }
 
     private void Add(short value) => _frames.Add(value);

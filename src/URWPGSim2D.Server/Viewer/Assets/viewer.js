@@ -121,6 +121,7 @@
     this.events = [];
     this.draws = []; // per cycle index: the strategies' debug drawings (run --debug-draw), if any
     this.hasDraws = false;
+    this.logs = []; // what the strategies printed (run --strategy-log): {cycle, team, text}
     this.local = layout.fish.map(f => localLeaves(f.size));
   }
   Store.prototype.ensure = function (cycles, contactValues) {
@@ -148,6 +149,7 @@
     for (let t = 0; t < this.nt; t++) this.scores[k * this.nt + t] = score[t] !== undefined ? score[t] : (k > 0 ? this.scores[(k - 1) * this.nt + t] : 0);
     for (const e of line.events || []) this.events.push(Object.assign({ cycle: line.cycle }, e));
     if (line.draw && line.draw.length > 0) { this.draws[k] = line.draw; this.hasDraws = true; }
+    for (const l of line.log || []) this.logs.push({ cycle: line.cycle, team: l.team | 0, text: String(l.text) });
     this.count = k + 1;
   };
   // Builds a store from the page's packed replay (see Viewer/ReplayData.cs).
@@ -178,6 +180,7 @@
     }
     s.events = data.events;
     for (const [cycle, shapes] of data.draws || []) { s.draws[cycle - s.firstCycle] = shapes; s.hasDraws = true; }
+    for (const [cycle, entries] of data.logs || []) for (const l of entries) s.logs.push({ cycle, team: l.team | 0, text: String(l.text) });
     s.count = n;
     return s;
   };
@@ -449,6 +452,7 @@
     scrub.max = String(Math.max(0, s.count - 1));
     if (document.activeElement !== scrub || String(k) !== scrub.value) scrub.value = String(k);
     if (s.events.length !== lastEventsShown || previous !== k) renderEvents(s, n, previous);
+    if (s.logs.length !== lastLogsShown || previous !== k || logFilterChanged) renderLogs(s, n);
     refreshDrawLayers(s);
     lastEventsShown = s.events.length;
   }
@@ -476,6 +480,37 @@
       if (passed.length > 0) toast(passed.map(e => e.text || e.kind).join(' · '));
     }
   }
+  // What the strategies printed up to the cycle shown, newest first, for the team chosen (or all).
+  let lastLogsShown = -1, logFilterChanged = false;
+  function renderLogs(s, n) {
+    lastLogsShown = s.logs.length; logFilterChanged = false;
+    const box = $('strategy-output');
+    box.hidden = s.logs.length === 0;
+    if (box.hidden) return;
+    const filter = $('log-team'), team = filter.value === 'all' ? -1 : parseInt(filter.value, 10);
+    if (filter.options.length !== s.nt + 1) {
+      filter.textContent = '';
+      const all = document.createElement('option'); all.value = 'all'; all.textContent = 'every team'; filter.appendChild(all);
+      for (let t = 0; t < s.nt; t++) { const o = document.createElement('option'); o.value = String(t); o.textContent = 'team ' + t; filter.appendChild(o); }
+      filter.value = team < 0 ? 'all' : String(team);
+    }
+    const list = $('strategy-log');
+    list.textContent = '';
+    for (let i = s.logs.length - 1; i >= 0 && list.childElementCount < 200; i--) {
+      const l = s.logs[i];
+      if (l.cycle > n || (team >= 0 && l.team !== team)) continue;
+      const li = document.createElement('li');
+      li.dataset.cycle = l.cycle; li.dataset.team = l.team;
+      const at = document.createElement('span'); at.className = 'at'; at.textContent = '#' + l.cycle + ' team ' + l.team;
+      at.style.color = api.teamColour(l.team);
+      const text = document.createElement('pre'); text.textContent = l.text;
+      li.appendChild(at); li.appendChild(text);
+      if (l.cycle === n) li.className = 'now';
+      list.appendChild(li);
+    }
+  }
+  api.logsShown = () => Array.from(document.querySelectorAll('#strategy-log li')).map(li => ({ cycle: +li.dataset.cycle, team: +li.dataset.team, text: li.querySelector('pre').textContent }));
+
   let toastTimer = 0;
   function toast(text) {
     const el = $('toast');
@@ -564,6 +599,11 @@
       box.checked = api.show[name];
       box.addEventListener('change', () => { api.show[name] = box.checked; dirty = true; });
     }
+    $('log-team').addEventListener('change', () => { logFilterChanged = true; hudDirty = true; dirty = true; });
+    $('strategy-log').addEventListener('click', e => {
+      const li = e.target.closest('li');
+      if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
+    });
     $('events').addEventListener('click', e => {
       const li = e.target.closest('li');
       if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
@@ -617,7 +657,7 @@
     const status = $('live-status');
     const source = new EventSource('events');
     api.source = source;
-    source.addEventListener('reset', () => { api.store = null; api.cycle = 0; api.position = 0; lastCycleShown = -1; lastEventsShown = -1; dirty = true; });
+    source.addEventListener('reset', () => { api.store = null; api.cycle = 0; api.position = 0; lastCycleShown = -1; lastEventsShown = -1; lastLogsShown = -1; dirty = true; });
     source.addEventListener('status', e => {
       const st = JSON.parse(e.data);
       api.serverStatus = st;
