@@ -1,3 +1,4 @@
+#define DEBUG // Debug.WriteLine is this test's subject: compiled in Release builds of the tests too
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
