@@ -21,7 +21,7 @@ done
 #    folder otherwise; a screenshot can differ by a few pixels between machines' fonts).
 if [ "${1:-}" = "--screenshot" ]; then
   bash .ci/install-chromium
-  URWPGSIM2D_REGENERATE_DOCS=1 dotnet test tests/URWPGSim2D.Server.Viewer.Tests --filter 'FullyQualifiedName~ScreenshotForTheReadme' \
+  URWPGSIM2D_REGENERATE_DOCS=1 dotnet test tests/URWPGSim2D.Server.Viewer.Tests --filter 'FullyQualifiedName~Screenshot' \
     --logger 'console;verbosity=minimal'
 fi
 git --no-pager diff --stat -- README.md docs

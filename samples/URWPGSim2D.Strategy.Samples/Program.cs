@@ -16,6 +16,11 @@ internal static class Program
             var s = new MyTeam.TowardTheBall();
             Expect(s.TeamName == "toward the ball", "team name");
         });
+        failed += Check("DrawingStrategy", () =>
+        {
+            var s = new MyTeam.DrawsItsPlan();
+            Expect(s.TeamName == "draws its plan" && !URWPGSim2D.Strategies.DebugDraw.IsOn, "team name, drawings off outside a match");
+        });
         return failed == 0 ? 0 : 1;
     }
 

@@ -19,6 +19,12 @@ internal sealed record AssignmentMessage(
     int Version, int Team, string Item, string ItemName, int[] Fish, int FishCount, int BallCount, int TotalCycles,
     int DeadlineMs, float FieldLength, float FieldWidth, ObstacleView[] Obstacles)
 {
+    /// <summary>Whether the server records the strategy's debug drawings: the client then sends them in each <c>decisions</c> message's <c>draw</c>.</summary>
+    public bool Draw { get; init; }
+
+    /// <summary>Whether the server records what the strategy prints: the client then sends it in each <c>decisions</c> message's <c>log</c>.</summary>
+    public bool Log { get; init; }
+
     /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
     public MatchSnapshot CreateSnapshot() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
 }

@@ -88,7 +88,10 @@ internal static class JsonFields
     }
 
     /// <summary>The value of the current property as a string (cut to <see cref="ProtocolLimits.TextChars"/>), or null for <c>null</c>.</summary>
-    public static string? Text(ref Utf8JsonReader r, string field)
+    public static string? Text(ref Utf8JsonReader r, string field) => Text(ref r, field, ProtocolLimits.TextChars);
+
+    /// <summary>The value of the current property as a string cut to <paramref name="maxChars"/>, or null for <c>null</c>.</summary>
+    public static string? Text(ref Utf8JsonReader r, string field, int maxChars)
     {
         r.Read();
         if (r.TokenType == JsonTokenType.Null)
@@ -102,7 +105,7 @@ internal static class JsonFields
         }
 
         string s = r.GetString()!;
-        return s.Length <= ProtocolLimits.TextChars ? s : s[..ProtocolLimits.TextChars];
+        return s.Length <= maxChars ? s : s[..maxChars];
     }
 
     /// <summary>Moves into an array value of the current property.</summary>

@@ -100,6 +100,7 @@ internal static class MessageReader
             int[]? fish = null;
             float? length = null, width = null;
             ObstacleView[] obstacles = [];
+            bool draw = false, log = false;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("version"u8))
@@ -146,6 +147,14 @@ internal static class MessageReader
                 {
                     obstacles = Obstacles(ref r);
                 }
+                else if (r.ValueTextEquals("draw"u8))
+                {
+                    draw = JsonFields.Bool(ref r, "draw");
+                }
+                else if (r.ValueTextEquals("log"u8))
+                {
+                    log = JsonFields.Bool(ref r, "log");
+                }
                 else
                 {
                     JsonFields.Skip(ref r);
@@ -155,7 +164,11 @@ internal static class MessageReader
             var a = new AssignmentMessage(
                 version ?? throw Missing("version"), team ?? throw Missing("team"), item, itemName, fish ?? throw Missing("fish"),
                 fishCount ?? throw Missing("fishCount"), ballCount ?? throw Missing("ballCount"), totalCycles ?? 0,
-                deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles);
+                deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles)
+            {
+                Draw = draw,
+                Log = log,
+            };
             Check(a);
             return a;
         }
@@ -169,9 +182,11 @@ internal static class MessageReader
     /// Reads a client's <c>decisions</c> for <paramref name="cycle"/> into <paramref name="decisions"/>
     /// (one per fish). A reported fault, a wrong count or a gear outside 0..15 is returned as that
     /// kind with a message (and <paramref name="decisions"/> may be partly written); a message for
-    /// another cycle or one that is not a decisions message throws.
+    /// another cycle or one that is not a decisions message throws. The message's debug drawings
+    /// (<c>draw</c>) go to <paramref name="drawings"/> when given (a malformed one throws), else are skipped;
+    /// what the strategy printed (<c>log</c>, at most <see cref="ProtocolLimits.LogChars"/> characters kept) goes to <paramref name="log"/> when given.
     /// </summary>
-    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message)
+    public static AnswerKind ReadDecisions(ReadOnlySpan<byte> line, int cycle, Span<Decision> decisions, out string? message, DebugRecorder? drawings = null, PrintedOutput? log = null)
     {
         message = null;
         try
@@ -205,6 +220,18 @@ internal static class MessageReader
                 else if (r.ValueTextEquals("message"u8))
                 {
                     message = JsonFields.Text(ref r, "message");
+                }
+                else if (drawings is not null && r.ValueTextEquals("draw"u8))
+                {
+                    DebugShapeJson.ReadArray(ref r, drawings);
+                }
+                else if (log is not null && r.ValueTextEquals("log"u8))
+                {
+                    log.Text.Append(JsonFields.Text(ref r, "log", ProtocolLimits.LogChars));
+                }
+                else if (log is not null && r.ValueTextEquals("logDropped"u8))
+                {
+                    log.Dropped = System.Math.Max(0, JsonFields.Int(ref r, "logDropped"));
                 }
                 else
                 {

@@ -55,6 +55,16 @@ internal sealed class MessageWriter
         _json.WriteNumber("totalCycles", a.TotalCycles);
         _json.WriteNumber("cycleMs", 100);
         _json.WriteNumber("deadlineMs", a.DeadlineMs);
+        if (a.Draw)
+        {
+            _json.WriteBoolean("draw", true);
+        }
+
+        if (a.Log)
+        {
+            _json.WriteBoolean("log", true);
+        }
+
         _json.WriteStartObject("field");
         Number("length", a.FieldLength);
         Number("width", a.FieldWidth);
@@ -141,8 +151,8 @@ internal sealed class MessageWriter
         return End();
     }
 
-    /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/>: one <c>[vcode, tcode]</c> per fish.</summary>
-    public ReadOnlySpan<byte> Decisions(int cycle, ReadOnlySpan<Decision> decisions)
+    /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/>: one <c>[vcode, tcode]</c> per fish, and the strategy's debug drawings when given and not empty.</summary>
+    public ReadOnlySpan<byte> Decisions(int cycle, ReadOnlySpan<Decision> decisions, DebugRecorder? drawings = null, string? log = null, int logDropped = 0)
     {
         Begin("decisions");
         _json.WriteNumber("cycle", cycle);
@@ -156,11 +166,12 @@ internal sealed class MessageWriter
         }
 
         _json.WriteEndArray();
+        Drawings(drawings, log, logDropped);
         return End();
     }
 
     /// <summary>A client's <c>decisions</c> for <paramref name="cycle"/> reporting a fault instead (the fish keep their last decisions).</summary>
-    public ReadOnlySpan<byte> Fault(int cycle, AnswerKind fault, string message)
+    public ReadOnlySpan<byte> Fault(int cycle, AnswerKind fault, string message, DebugRecorder? drawings = null, string? log = null, int logDropped = 0)
     {
         Begin("decisions");
         _json.WriteNumber("cycle", cycle);
@@ -172,7 +183,26 @@ internal sealed class MessageWriter
             _ => throw new ArgumentOutOfRangeException(nameof(fault), fault, "a fault is exception, timeout or badAnswer"),
         });
         _json.WriteString("message", Cut(message));
+        Drawings(drawings, log, logDropped);
         return End();
+    }
+
+    private void Drawings(DebugRecorder? drawings, string? log, int logDropped)
+    {
+        if (drawings is { Count: > 0 })
+        {
+            DebugShapeJson.WriteArray(_json, drawings);
+        }
+
+        if (!string.IsNullOrEmpty(log))
+        {
+            _json.WriteString("log", log.Length <= ProtocolLimits.LogChars ? log : log[..ProtocolLimits.LogChars]);
+        }
+
+        if (logDropped > 0)
+        {
+            _json.WriteNumber("logDropped", logDropped);
+        }
     }
 
     /// <summary>The server's <c>end</c>.</summary>

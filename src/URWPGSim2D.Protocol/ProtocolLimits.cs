@@ -11,4 +11,7 @@ internal static class ProtocolLimits
 
     /// <summary>Longest text field (token, name, fault message) a reader keeps, characters; longer ones are cut.</summary>
     public const int TextChars = 1024;
+
+    /// <summary>Characters of a <c>decisions</c> message's <c>log</c> a reader keeps (what a strategy printed in one cycle).</summary>
+    public const int LogChars = 4096;
 }

@@ -34,7 +34,9 @@ public partial class ProtocolDocTests
                     Assert.Equal(12, new CycleReader(one).Read(line));
                     break;
                 case MessageType.Decisions:
-                    var kind = MessageReader.ReadDecisions(line, 12, new Decision[2], out string? message);
+                    var drawings = new DebugRecorder();
+                    drawings.Reset([0, 1]);
+                    var kind = MessageReader.ReadDecisions(line, 12, new Decision[2], out string? message, drawings);
                     Assert.True(kind != AnswerKind.BadAnswer, message);
                     break;
                 case MessageType.End:
@@ -51,6 +53,6 @@ public partial class ProtocolDocTests
             seen++;
         }
 
-        Assert.Equal(7, seen);
+        Assert.Equal(8, seen);
     }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Diagnostics;
 using System.IO;
+using System.Linq;
 using System.Net;
 using System.Net.Sockets;
 using System.Threading;
@@ -245,4 +246,47 @@ public sealed class LiveViewTests(Browser browser)
             }
         }
     }
+
+    [Fact]
+    public async Task The_live_page_shows_the_strategies_drawings_as_they_are_played()
+    {
+        var live = await Start("--debug-draw");
+        var (page, errors) = await Open(live);
+        await PausedAt(page, 0);
+        for (int k = 1; k <= 3; k++)
+        {
+            await page.ClickAsync("#server-step");
+            await PausedAt(page, k);
+        }
+
+        await Settle(page);
+        Assert.True(await page.IsVisibleAsync("#show-draw0"));
+
+        // The drawings of each cycle are those of the trace of the same match.
+        var reference = Path.Combine(Path.GetTempPath(), $"urwpg-live-draw-{Guid.NewGuid():N}.jsonl");
+        Assert.Equal(0, RecordedMatch.Cli("run", "--item", "default", "--cycles", "3", "--debug-draw", "--trace", reference).Code);
+        var lines = File.ReadAllLines(reference);
+        File.Delete(reference);
+        for (int k = 1; k <= 3; k++)
+        {
+            string expected = System.Text.Json.JsonDocument.Parse(lines[k]).RootElement.GetProperty("draw").GetRawText();
+            string shown = await page.EvaluateAsync<string>("k => JSON.stringify(urwpg.drawingsAt(k))", k);
+            Assert.True(SameJson(System.Text.Json.JsonDocument.Parse(expected).RootElement, System.Text.Json.JsonDocument.Parse(shown).RootElement), $"cycle {k}: the page shows {shown}, the trace has {expected}");
+        }
+
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+        Assert.Equal(0, await Stop(live));
+    }
+
+    // The same JSON values (numbers compared as numbers: the browser and .NET may print one differently).
+    private static bool SameJson(System.Text.Json.JsonElement a, System.Text.Json.JsonElement b) => a.ValueKind == b.ValueKind && a.ValueKind switch
+    {
+        System.Text.Json.JsonValueKind.Number => a.GetDouble() == b.GetDouble(),
+        System.Text.Json.JsonValueKind.String => a.GetString() == b.GetString(),
+        System.Text.Json.JsonValueKind.Array => a.GetArrayLength() == b.GetArrayLength() && a.EnumerateArray().Zip(b.EnumerateArray()).All(p => SameJson(p.First, p.Second)),
+        System.Text.Json.JsonValueKind.Object => a.EnumerateObject().Count() == b.EnumerateObject().Count()
+            && a.EnumerateObject().All(p => b.TryGetProperty(p.Name, out var q) && SameJson(p.Value, q)),
+        _ => true,
+    };
 }

@@ -17,6 +17,25 @@ internal static class PageProbe
 
     public static readonly (int R, int G, int B) Ball = (0xf2, 0x9b, 0x30);
 
+    /// <summary>Opens a replay page file with every request but the page itself aborted and recorded, once its first frame is drawn.</summary>
+    public static async Task<(IPage Page, List<string> Errors, List<string> Requests)> OpenFile(Browser browser, string path)
+    {
+        var (page, errors) = await browser.NewPageAsync();
+        string url = new Uri(path).AbsoluteUri;
+        var requests = new List<string>();
+        page.Request += (_, r) =>
+        {
+            lock (requests)
+            {
+                requests.Add(r.Url);
+            }
+        };
+        await page.Context.RouteAsync("**/*", route => route.Request.Url == url ? route.ContinueAsync() : route.AbortAsync());
+        await page.GotoAsync(url);
+        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = 15_000 });
+        return (page, errors, requests);
+    }
+
     /// <summary>Waits until the page has drawn the frame of its current state (two animation frames).</summary>
     public static Task Settle(IPage page) => page.EvaluateAsync("() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))");
 

@@ -20,23 +20,7 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
 {
     // Opens a replay page (the recorded match's by default) with every request but the page itself aborted and recorded.
-    private async Task<(IPage Page, List<string> Errors, List<string> Requests)> Open(string? path = null)
-    {
-        var (page, errors) = await browser.NewPageAsync();
-        string url = new Uri(path ?? match.HtmlPath).AbsoluteUri;
-        var requests = new List<string>();
-        page.Request += (_, r) =>
-        {
-            lock (requests)
-            {
-                requests.Add(r.Url);
-            }
-        };
-        await page.Context.RouteAsync("**/*", route => route.Request.Url == url ? route.ContinueAsync() : route.AbortAsync());
-        await page.GotoAsync(url);
-        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = 15_000 });
-        return (page, errors, requests);
-    }
+    private Task<(IPage Page, List<string> Errors, List<string> Requests)> Open(string? path = null) => OpenFile(browser, path ?? match.HtmlPath);
 
     private static async Task Labels(IPage page, bool on)
     {
@@ -425,16 +409,7 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
         Assert.Equal("cycle 1000 / 1000", await page.TextContentAsync("#cycle"));
         byte[] png = await page.ScreenshotAsync(new() { Type = ScreenshotType.Png });
         Assert.True(png.Length > 20_000, "the screenshot has content");
-        // The committed figure is rewritten only when asked (scripts/regenerate-docs-outputs.sh
-        // --screenshot sets URWPGSIM2D_REGENERATE_DOCS=1); otherwise the shot goes to the test's
-        // temporary folder and the working tree is left alone.
-        bool refresh = Environment.GetEnvironmentVariable("URWPGSIM2D_REGENERATE_DOCS") == "1";
-        string figure = refresh ? Path.Combine(Repository.Root, "docs", "figures", "match.png") : Path.Combine(match.Folder, "match.png");
-        if (!File.Exists(figure) || !File.ReadAllBytes(figure).AsSpan().SequenceEqual(png))
-        {
-            await File.WriteAllBytesAsync(figure, png);
-        }
-
+        Figures.Write("match.png", png, match.Folder);
         NoErrors(errors);
         await page.Context.CloseAsync();
     }

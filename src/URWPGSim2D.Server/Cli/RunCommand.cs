@@ -196,7 +196,7 @@ internal sealed class RunCommand : ICliCommand
 
     /// <summary>The settings of the match the options ask for (the scene's cycles unless --cycles or --minutes).</summary>
     public static MatchSettings Settings(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams) =>
-        new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1);
+        new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1, options.DebugDraw, options.StrategyLog);
 
     /// <summary>
     /// The strategies of the command line: with <c>--isolation process</c> (the default) readied for
@@ -325,6 +325,8 @@ internal sealed class RunCommand : ICliCommand
         "--trace writes JSON Lines, --svg the final frame, --html a self-contained replay page (docs/viewer.md); an\n" +
         "existing trace, page or results file is replaced only with --force. --live serves the match in the browser at\n" +
         "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
+        "--debug-draw records the strategies' debug drawings (DebugDraw) in the trace and both pages; --strategy-log\n" +
+        "records what they print (Console, Debug; at most 4,096 characters per team and cycle) there too.\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
         "the same match whatever P); with --batch, P is the number of matches played at once (default: every core).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +

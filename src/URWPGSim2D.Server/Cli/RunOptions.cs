@@ -15,7 +15,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -88,6 +88,12 @@ internal sealed class RunOptions
 
     /// <summary>Whether the live match waits for resume or step before its first cycle (<c>--paused</c>).</summary>
     public bool Paused { get; private set; }
+
+    /// <summary>Whether the strategies' debug drawings are recorded in the trace, the replay page and the live view (<c>--debug-draw</c>).</summary>
+    public bool DebugDraw { get; private set; }
+
+    /// <summary>Whether what the strategies print is recorded in the trace, the replay page and the live view (<c>--strategy-log</c>).</summary>
+    public bool StrategyLog { get; private set; }
 
     /// <summary>Default port of the live view.</summary>
     public const int DefaultPort = 8080;
@@ -189,7 +195,7 @@ internal sealed class RunOptions
                 throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
-            if (name is "--live" or "--paused" or "--force")
+            if (name is "--live" or "--paused" or "--force" or "--debug-draw" or "--strategy-log")
             {
                 if (!seen.Add(name))
                 {
@@ -199,6 +205,8 @@ internal sealed class RunOptions
                 o.Live |= name == "--live";
                 o.Paused |= name == "--paused";
                 o.Force |= name == "--force";
+                o.DebugDraw |= name == "--debug-draw";
+                o.StrategyLog |= name == "--strategy-log";
                 continue;
             }
 
@@ -371,6 +379,16 @@ internal sealed class RunOptions
         if (Live && (Batch is not null || Trace is not null || Svg is not null || Html is not null))
         {
             throw UsageError("--live plays the match in the browser; --batch, --trace, --svg and --html do not go with it");
+        }
+
+        if (DebugDraw && !Live && Trace is null && Html is null)
+        {
+            throw UsageError("--debug-draw records the strategies' drawings in --trace, --html or --live; give one of them");
+        }
+
+        if (StrategyLog && !Live && Trace is null && Html is null)
+        {
+            throw UsageError("--strategy-log records what the strategies print in --trace, --html or --live; give one of them");
         }
 
         CheckSlurm();

@@ -10,11 +10,15 @@ namespace URWPGSim2D.Server.Hosting;
 /// ball on the goal–ball line, then, once lined up, drives through the ball. It slows down to turn
 /// tightly, and a fish that has not moved for two seconds (wedged against a wall) turns the other way
 /// for a while: the steering and the escape are the demo strategies' (<see cref="Steering"/>,
-/// <see cref="Stuck"/>). Deterministic: the only state is each fish's recent progress.
+/// <see cref="Stuck"/>). Deterministic: the only state is each fish's recent progress. It draws its
+/// plan (<see cref="DebugDraw"/>, shown with <c>run --debug-draw</c>): per fish the route head → aim →
+/// ball → goal, the target ball circled, the aim point and what it is doing (<c>line up</c>, <c>push</c>).
 /// </summary>
 internal sealed class ChaseBallStrategy : IStrategy
 {
     private const float LineUpAngle = 0.6f;
+    private const int PlanColour = 0x2e8b57; // the planned route after the aim point
+    private const int TargetColour = 0xffd400; // the target ball and the aim point
 
     private Stuck[] _stuck = [];
 
@@ -68,6 +72,16 @@ internal sealed class ChaseBallStrategy : IStrategy
                 && Vector2.Distance(me.Position, behind) < 260f;
             Vector2 aim = linedUp ? ball.Position + (toGoal * ball.Radius) : behind;
             decisions[k] = Steering.SwimTo(me, aim, linedUp ? 15 : 14); // through the ball at full speed
+            if (DebugDraw.IsOn)
+            {
+                Vector2 goal = new(goalX, 0f);
+                DebugDraw.Line(head, aim, me.Index);
+                DebugDraw.Line(aim, ball.Position, me.Index, PlanColour);
+                DebugDraw.Line(ball.Position, goal, me.Index, PlanColour);
+                DebugDraw.Circle(ball.Position, ball.Radius + 12f, me.Index, TargetColour);
+                DebugDraw.Point(aim, me.Index, TargetColour);
+                DebugDraw.Text(aim + new Vector2(20f, -20f), linedUp ? "push" : "line up", me.Index);
+            }
         }
     }
 

@@ -15,6 +15,12 @@ internal interface IConnectedStrategy : IDisposable
     /// <summary>Whether another client may take over after the connection ends (a remote team), rather than the team's strategy ending for the match (a host).</summary>
     bool Reconnects { get; }
 
+    /// <summary>The debug drawings the client sent with the last call's answer (decided or an exception), or null when they are not recorded.</summary>
+    DebugRecorder? Drawings { get; }
+
+    /// <summary>What the client's strategy printed, sent with the last call's answer (decided or an exception), or null when it is not recorded.</summary>
+    StrategyLog? Log { get; }
+
     /// <summary>
     /// Sends <paramref name="snapshot"/> and reads the cycle's decisions into <paramref name="decisions"/>
     /// (written only on <see cref="ConnectionOutcome.Decided"/>). <paramref name="message"/> says what went wrong otherwise.

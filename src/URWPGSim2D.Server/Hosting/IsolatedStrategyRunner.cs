@@ -24,6 +24,8 @@ internal sealed class IsolatedStrategyRunner
     private bool _pending;
     private bool _warm;
     private volatile bool _stopped;
+    private DebugRecorder? _drawings;
+    private StrategyLog? _log;
 
     public IsolatedStrategyRunner(IStrategy strategy, int fishCount, int team, StrategyClock clock)
     {
@@ -108,6 +110,21 @@ internal sealed class IsolatedStrategyRunner
         return Outcome.Decided;
     }
 
+    /// <summary>
+    /// The debug drawings of the last call that finished (decided or threw), or null when they are not
+    /// recorded. Read only after such an outcome: a call past its deadline may still be drawing.
+    /// </summary>
+    public DebugRecorder? Drawings => _drawings;
+
+    /// <summary>Records the strategy's debug drawings from the next call on.</summary>
+    public void RecordDrawings() => _drawings ??= new DebugRecorder();
+
+    /// <summary>What the last call that finished printed, or null when it is not recorded (read as <see cref="Drawings"/>).</summary>
+    public StrategyLog? Log => _log;
+
+    /// <summary>Records what the strategy prints from the next call on (the console must be routed: <see cref="ConsoleRouter.Install"/>).</summary>
+    public void RecordLog() => _log ??= new StrategyLog();
+
     /// <summary>Lets the strategy's thread end once its current call (if any) returns; the runner is not used afterwards.</summary>
     public void Stop()
     {
@@ -125,6 +142,15 @@ internal sealed class IsolatedStrategyRunner
                 return;
             }
 
+            var drawings = _drawings;
+            drawings?.Enter(_fish);
+            var log = _log;
+            if (log is not null)
+            {
+                log.Clear();
+                ConsoleRouter.Enter(log);
+            }
+
             _clock.CallStarting();
             try
             {
@@ -133,6 +159,18 @@ internal sealed class IsolatedStrategyRunner
             catch (Exception e)
             {
                 _error = e;
+            }
+            finally
+            {
+                if (drawings is not null)
+                {
+                    DebugRecorder.Exit();
+                }
+
+                if (log is not null)
+                {
+                    ConsoleRouter.Exit();
+                }
             }
 
             _used = _clock.CallEnded();

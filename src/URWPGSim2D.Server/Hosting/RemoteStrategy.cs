@@ -62,6 +62,12 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     }
 
     /// <inheritdoc/>
+    public DebugRecorder? Drawings => _current?.Drawings;
+
+    /// <inheritdoc/>
+    public StrategyLog? Log => _current?.Log;
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;

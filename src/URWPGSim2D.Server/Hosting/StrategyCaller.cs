@@ -63,6 +63,8 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         foreach (var slot in Slots)
         {
             slot.Decisions.CopyTo(slot.Scratch, 0);
+            slot.Drawings?.Reset(slot.Fish);
+            slot.Log?.Clear();
             if (slot.EndedInCycle > 0)
             {
                 // its host has ended (or it was never created): its fish stay stopped
@@ -77,6 +79,12 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             }
             else if (slot.Runner is null)
             {
+                slot.Drawings?.Enter(slot.Fish);
+                if (slot.Log is { } log)
+                {
+                    ConsoleRouter.Enter(log);
+                }
+
                 try
                 {
                     slot.Strategy!.Decide(snapshot, slot.Fish, slot.Scratch);
@@ -86,6 +94,18 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 {
                     Fault(slot, cycle, e);
                 }
+                finally
+                {
+                    if (slot.Drawings is not null)
+                    {
+                        DebugRecorder.Exit();
+                    }
+
+                    if (slot.Log is not null)
+                    {
+                        ConsoleRouter.Exit();
+                    }
+                }
             }
             else
             {
@@ -93,9 +113,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
                 {
                     case IsolatedStrategyRunner.Outcome.Decided:
                         slot.Scratch.CopyTo(slot.Decisions, 0);
+                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
                         break;
                     case IsolatedStrategyRunner.Outcome.Threw:
                         Fault(slot, cycle, error!);
+                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
                         break;
                     default:
                         slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
@@ -111,6 +133,20 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
+    // A call that finished (decided or threw) on another thread or process: its drawings and output count too.
+    private static void CopyDrawings(StrategySlot slot, DebugRecorder? from, StrategyLog? log)
+    {
+        if (slot.Drawings is { } to && from is not null)
+        {
+            to.AddFrom(from);
+        }
+
+        if (slot.Log is { } into && log is not null)
+        {
+            into.AppendFrom(log);
+        }
+    }
+
     private string TimeoutText => _timeoutText ??= $"no decision within {TimeoutMs} ms";
 
     // One cycle of a strategy in another process: the same faults as in the server's process; an
@@ -122,9 +158,11 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         {
             case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);
+                CopyDrawings(slot, hosted.Drawings, hosted.Log);
                 break;
             case ConnectionOutcome.Exception:
                 slot.Charge(cycle, FaultKind.Exception, message ?? "exception");
+                CopyDrawings(slot, hosted.Drawings, hosted.Log);
                 break;
             case ConnectionOutcome.BadAnswer:
                 slot.Charge(cycle, FaultKind.BadAnswer, message ?? "bad answer");

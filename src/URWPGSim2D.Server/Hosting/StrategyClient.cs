@@ -79,6 +79,17 @@ internal sealed class StrategyClient
         var assignment = MessageReader.ReadAssignment(line);
         var reader = new CycleReader(assignment);
         var runner = new IsolatedStrategyRunner(strategy, assignment.Fish.Length, assignment.Team, _clock());
+        if (assignment.Draw)
+        {
+            runner.RecordDrawings();
+        }
+
+        if (assignment.Log)
+        {
+            ConsoleRouter.Install(); // this process plays one strategy: its console is the strategy's
+            runner.RecordLog();
+        }
+
         var inForce = new Decision[assignment.Fish.Length];
         Array.Fill(inForce, Decision.Stop);
         try
@@ -110,18 +121,20 @@ internal sealed class StrategyClient
         }
     }
 
+    private static string? LogOf(IsolatedStrategyRunner runner) => runner.Log is { Length: > 0 } log ? log.Kept : null;
+
     private void Answer(IsolatedStrategyRunner runner, MatchSnapshot snapshot, AssignmentMessage assignment, int cycle, Decision[] inForce)
     {
         switch (runner.Decide(snapshot, assignment.Fish, inForce, assignment.DeadlineMs, out Exception? error))
         {
             case IsolatedStrategyRunner.Outcome.Decided:
-                _channel.WriteLine(_writer.Decisions(cycle, inForce));
+                _channel.WriteLine(_writer.Decisions(cycle, inForce, runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
                 break;
             case IsolatedStrategyRunner.Outcome.Threw when error is StrategyContractException:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message));
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message, runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
                 break;
             case IsolatedStrategyRunner.Outcome.Threw:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error!.GetType().Name}: {error.Message}"));
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error!.GetType().Name}: {error.Message}", runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
                 break;
             default:
                 _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Timeout, $"no decision within {assignment.DeadlineMs} ms"));

@@ -30,6 +30,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly Action<string>? _log;
     private readonly Decision[] _answer;
     private readonly string _peer;
+    private readonly DebugRecorder? _drawings;
+    private readonly StrategyLog? _printed;
+    private readonly PrintedOutput? _printedText;
     private bool _answered;
     private bool _started;
     private bool _stopped;
@@ -50,6 +53,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
         _link = link;
         _assignment = assignment;
         _answer = new Decision[assignment.Fish.Length];
+        _drawings = assignment.Draw ? new DebugRecorder() : null;
+        (_printed, _printedText) = assignment.Log ? (new StrategyLog(), new PrintedOutput()) : (null, null);
         _token = token is null ? null : Encoding.UTF8.GetBytes(token);
         _helloLimit = helloLimit;
         _log = log;
@@ -165,10 +170,19 @@ internal sealed class StrategyConnection : IConnectedStrategy
     }
 
     /// <inheritdoc/>
+    public DebugRecorder? Drawings => _drawings;
+
+    /// <inheritdoc/>
+    public StrategyLog? Log => _printed;
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
     {
         message = null;
         EndedBy = null;
+        _drawings?.Reset(_assignment.Fish);
+        _printed?.Clear();
+        _printedText?.Clear();
         if (HasEnded)
         {
             message = _introductionFailure ?? "the connection has ended";
@@ -195,7 +209,13 @@ internal sealed class StrategyConnection : IConnectedStrategy
                 return Bad(cycle, $"{_peer} answered something other than decisions", out message);
             }
 
-            switch (MessageReader.ReadDecisions(line, cycle, _answer, out message))
+            var answer = MessageReader.ReadDecisions(line, cycle, _answer, out message, _drawings, _printedText);
+            if (_printedText is { } printed)
+            {
+                _printed!.Add(printed.Text, printed.Dropped);
+            }
+
+            switch (answer)
             {
                 case AnswerKind.Decided:
                     _answer.CopyTo(decisions);

@@ -128,6 +128,27 @@ internal sealed class StrategySlot
         LastFaultKind = kind;
     }
 
+    /// <summary>The strategy's debug drawings of the cycle just decided, or null when drawings are not recorded.</summary>
+    public DebugRecorder? Drawings { get; private set; }
+
+    /// <summary>Records the strategy's debug drawings from now on (<c>run --debug-draw</c>).</summary>
+    public void RecordDrawings()
+    {
+        Drawings ??= new DebugRecorder();
+        Runner?.RecordDrawings();
+    }
+
+    /// <summary>What the strategy printed in the cycle just decided, or null when its output is not recorded.</summary>
+    public StrategyLog? Log { get; private set; }
+
+    /// <summary>Records what the strategy prints from now on (<c>run --strategy-log</c>; routes the process's console, <see cref="ConsoleRouter"/>).</summary>
+    public void RecordLog()
+    {
+        ConsoleRouter.Install();
+        Log ??= new StrategyLog();
+        Runner?.RecordLog();
+    }
+
     /// <summary>The kind of the latest fault.</summary>
     public FaultKind LastFaultKind { get; private set; }
 }

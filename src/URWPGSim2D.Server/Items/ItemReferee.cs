@@ -19,7 +19,7 @@ namespace URWPGSim2D.Server.Items;
 /// </summary>
 internal abstract class ItemReferee : ITraceItemInfo
 {
-    private readonly List<ItemEvent> _events = new(32);
+    private readonly List<ItemEvent> _events;
     private int _traced;
     private MatchOutcome _outcome;
 
@@ -28,8 +28,10 @@ internal abstract class ItemReferee : ITraceItemInfo
     /// <param name="scenario">The match's layout (the item's, positions possibly overridden).</param>
     /// <param name="cycles">Cycles of the whole match (both halves).</param>
     /// <param name="halves">1 or 2.</param>
-    protected ItemReferee(CompetitionItem item, ScenarioDefinition scenario, int cycles, int halves)
+    /// <param name="eventCapacity">Room for events before the list grows (an item scoring often, many).</param>
+    protected ItemReferee(CompetitionItem item, ScenarioDefinition scenario, int cycles, int halves, int eventCapacity = 32)
     {
+        _events = new(eventCapacity);
         Item = item;
         Scenario = scenario;
         Cycles = cycles;

@@ -28,7 +28,9 @@ internal static class MatchBuilder
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
     /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null)
+    /// <param name="debugDraw">Whether the strategies' debug drawings are recorded (<c>run --debug-draw</c>).</param>
+    /// <param name="strategyLog">Whether what the strategies print is recorded (<c>run --strategy-log</c>).</param>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var motion = new Stepper(broadPhase);
@@ -64,8 +66,22 @@ internal static class MatchBuilder
 
         var world = new World(motion, field, fish, balls, views, statics);
         var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
-        var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles);
-        var host = new StrategyCaller(Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match), strategyTimeoutMs);
+        var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
+        var slots = Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match);
+        foreach (var slot in slots)
+        {
+            if (debugDraw)
+            {
+                slot.RecordDrawings();
+            }
+
+            if (strategyLog)
+            {
+                slot.RecordLog();
+            }
+        }
+
+        var host = new StrategyCaller(slots, strategyTimeoutMs);
         return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, referee);
     }
 
@@ -127,11 +143,15 @@ internal static class MatchBuilder
     }
 
     // What a strategy host is told of the match (docs/protocol.md, assignment).
-    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles)
+    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles, bool DebugDraw, bool StrategyLog)
     {
         public Protocol.AssignmentMessage Assignment(int team, int[] fish) => new(
             Protocol.ProtocolVersion.Current, team, Referee?.Item.Slug ?? "", Referee?.Item.ChineseName ?? "match", fish,
-            World.Fish.Length, World.Balls.Length, Referee?.Cycles ?? 0, DeadlineMs, World.Field.Length, World.Field.Width, World.Obstacles);
+            World.Fish.Length, World.Balls.Length, Referee?.Cycles ?? 0, DeadlineMs, World.Field.Length, World.Field.Width, World.Obstacles)
+        {
+            Draw = DebugDraw,
+            Log = StrategyLog,
+        };
     }
 
     // The fish of a team (those on the given built-in strategy, or all when null), by index.

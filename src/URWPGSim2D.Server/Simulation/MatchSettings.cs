@@ -16,6 +16,8 @@ namespace URWPGSim2D.Server.Simulation;
 /// <param name="Teams">Per team (index 0, 1): a strategy that takes every fish of the team, or null for the scenario's own (an item's demo).</param>
 /// <param name="StrategyTimeoutMs">The deadline of an isolated strategy's call, ms of its thread's CPU time.</param>
 /// <param name="Threads">Threads the stepper spreads a cycle's independent islands over (the same match whatever the count).</param>
+/// <param name="DebugDraw">Whether the strategies' debug drawings are recorded in the trace (<c>run --debug-draw</c>).</param>
+/// <param name="StrategyLog">Whether what the strategies print is recorded in the trace (<c>run --strategy-log</c>).</param>
 internal sealed record MatchSettings(
     ScenarioDefinition Scenario,
     int Cycles,
@@ -23,12 +25,14 @@ internal sealed record MatchSettings(
     bool? Noise = null,
     TeamStrategy?[]? Teams = null,
     int StrategyTimeoutMs = MatchBuilder.DefaultStrategyTimeoutMs,
-    int Threads = 1)
+    int Threads = 1,
+    bool DebugDraw = false,
+    bool StrategyLog = false)
 {
     /// <summary>Builds a fresh match of these settings, ready for cycle 1.</summary>
     public Match Build()
     {
-        var match = MatchBuilder.Build(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles);
+        var match = MatchBuilder.Build(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog);
         match.Stepper.Threads = Threads;
         return match;
     }

@@ -117,6 +117,8 @@ internal sealed class TraceLine
         }
 
         w.WriteEndArray();
+        WriteDrawings(w);
+        WriteLogs(w);
         w.WriteEndObject();
         w.Flush();
         return _buffer.WrittenSpan;
@@ -131,6 +133,64 @@ internal sealed class TraceLine
             {
                 _events.Add(new TraceEvent("fault", $"team {slot.Team} ({slot.Label}) {FaultText(slot.LastFaultKind)}: {slot.LastFault}", Team: slot.Team));
             }
+        }
+    }
+
+    // The strategies' debug drawings of this cycle (run --debug-draw), only on lines where one drew: other lines are unchanged.
+    private void WriteDrawings(Utf8JsonWriter w)
+    {
+        bool any = false;
+        foreach (var slot in _match.Strategies.Slots)
+        {
+            if (slot.Drawings is not { Count: > 0 } drawings)
+            {
+                continue;
+            }
+
+            if (!any)
+            {
+                w.WriteStartArray("draw");
+                any = true;
+            }
+
+            foreach (ref readonly var s in drawings.Shapes)
+            {
+                Protocol.DebugShapeJson.Write(w, s, slot.Team);
+            }
+        }
+
+        if (any)
+        {
+            w.WriteEndArray();
+        }
+    }
+
+    // What the strategies printed while deciding this cycle (run --strategy-log), only on lines where one printed.
+    private void WriteLogs(Utf8JsonWriter w)
+    {
+        bool any = false;
+        foreach (var slot in _match.Strategies.Slots)
+        {
+            if (slot.Log is not { } log || (log.Length == 0 && log.Dropped == 0))
+            {
+                continue;
+            }
+
+            if (!any)
+            {
+                w.WriteStartArray("log");
+                any = true;
+            }
+
+            w.WriteStartObject();
+            w.WriteNumber("team", slot.Team);
+            w.WriteString("text", log.ToString());
+            w.WriteEndObject();
+        }
+
+        if (any)
+        {
+            w.WriteEndArray();
         }
     }
 

@@ -28,6 +28,10 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
     private readonly List<short> _contacts = new(1 << 12);
     private readonly ArrayBufferWriter<byte> _scores = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _events = new(1 << 10);
+    private readonly ArrayBufferWriter<byte> _draws = new(1 << 10);
+    private readonly ArrayBufferWriter<byte> _logs = new(1 << 10);
+    private Utf8JsonWriter? _drawJson;
+    private Utf8JsonWriter? _logJson;
     private readonly Utf8JsonWriter _scoreJson;
     private readonly Utf8JsonWriter _eventJson;
     private double[] _lastScore = [];
@@ -153,6 +157,8 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
         _contactCounts.Add((ushort)Math.Min(contacts, ushort.MaxValue));
         AddScore(line, cycle);
         AddEvents(line, cycle);
+        PerCycle(line, cycle, "draw", "a drawing", _draws, ref _drawJson);
+        PerCycle(line, cycle, "log", "a strategy's output", _logs, ref _logJson);
         Count++;
     }
 
@@ -176,8 +182,11 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             .Append("\",\"contactCounts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contactCounts))))
             .Append("\",\"contacts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contacts))))
             .Append("\",\"scores\":").Append(Encoding.UTF8.GetString(_scores.WrittenSpan))
-            .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan))
-            .Append('}');
+            .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan));
+        Finish(s, "draws", _draws, _drawJson);
+        Finish(s, "logs", _logs, _logJson);
+
+        s.Append('}');
         return s.Replace("<", "\\u003c").ToString();
     }
 
@@ -314,6 +323,58 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             _eventJson.WriteEndObject();
             i++;
         }
+    }
+
+    // The strategies' debug drawings (draw, run --debug-draw) and output (log, run --strategy-log):
+    // [cycle, [entry, ...]] for each line that has any, the entries as in the trace.
+    private static void PerCycle(JsonElement line, int cycle, string name, string what, ArrayBufferWriter<byte> buffer, ref Utf8JsonWriter? json)
+    {
+        if (!line.TryGetProperty(name, out var entries))
+        {
+            return;
+        }
+
+        if (entries.ValueKind != JsonValueKind.Array)
+        {
+            throw new TraceFormatException($"{name}: expected an array");
+        }
+
+        if (json is null)
+        {
+            json = new Utf8JsonWriter(buffer);
+            json.WriteStartArray();
+        }
+
+        json.WriteStartArray();
+        json.WriteNumberValue(cycle);
+        json.WriteStartArray();
+        int i = 0;
+        foreach (var entry in entries.EnumerateArray())
+        {
+            if (entry.ValueKind != JsonValueKind.Object || !entry.TryGetProperty(name == "draw" ? "kind" : "text", out var key) || key.ValueKind != JsonValueKind.String)
+            {
+                throw new TraceFormatException($"{name}[{i}]: {what} is an object with a \"{(name == "draw" ? "kind" : "text")}\" string");
+            }
+
+            entry.WriteTo(json);
+            i++;
+        }
+
+        json.WriteEndArray();
+        json.WriteEndArray();
+    }
+
+    // Appends ,"name":[...] when the match had any.
+    private static void Finish(StringBuilder s, string name, ArrayBufferWriter<byte> buffer, Utf8JsonWriter? json)
+    {
+        if (json is null)
+        {
+            return;
+        }
+
+        json.WriteEndArray();
+        json.Flush();
+        s.Append(",\"").Append(name).Append("\":").Append(Encoding.UTF8.GetString(buffer.WrittenSpan));
     }
 
     private void Add(short value) => _frames.Add(value);

@@ -1,3 +1,4 @@
+using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Items.PlainScene;
@@ -59,6 +60,31 @@ public sealed class PlainSceneRefereeTests
         Assert.False(match.IsOver);
         Assert.Equal(1, match.Rules.Scores[0]);
         Assert.Equal(new MatchOutcome(0, "higher score"), match.Rules.Outcome);
+    }
+
+    [Fact]
+    public void AGoalAllocatesNothing()
+    {
+        // Ball 0 scores for team 0 first, ball 1 for team 1 later. One match plays both goals
+        // first (a goal's text is made once per process); in a second match the cycle of a goal
+        // (the score, its event, the ball put back) allocates nothing.
+        float[] balls = [1200f, 0f, 1500f, 0f, -800f, 0f, -1500f, 0f];
+        var first = TestMatches.Balls(string.Empty, balls);
+        first.Play(20);
+        Assert.Equal([1, 1], first.Rules.Scores);
+
+        var match = TestMatches.Balls(string.Empty, balls);
+        long atGoal = -1;
+        for (int k = 0; k < 20 && atGoal < 0; k++)
+        {
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            match.Step();
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            atGoal = match.Rules.Scores[1] == 1 ? allocated : -1;
+        }
+
+        Assert.Equal(2, match.Rules.Events.Count);
+        Assert.Equal(0L, atGoal);
     }
 
     [Fact]

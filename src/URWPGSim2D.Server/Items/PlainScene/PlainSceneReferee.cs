@@ -15,10 +15,13 @@ namespace URWPGSim2D.Server.Items.PlainScene;
 /// </summary>
 internal sealed class PlainSceneReferee : ItemReferee
 {
+    // Goal texts by team and ball, made once per process (a goal during a match allocates nothing).
+    private static readonly string?[][] Texts = [new string?[64], new string?[64]];
+
     /// <summary>Creates the referee of a plain match.</summary>
     /// <param name="cycles">Cycles of the match.</param>
     public PlainSceneReferee(int cycles)
-        : base(PlainScene.Instance, new ScenarioDefinition(), cycles, halves: 1)
+        : base(PlainScene.Instance, new ScenarioDefinition(), cycles, halves: 1, eventCapacity: 256)
     {
     }
 
@@ -38,13 +41,25 @@ internal sealed class PlainSceneReferee : ItemReferee
 
             int team = World.ScoringTeam(side);
             Scores[team]++;
-            AddEvent(new ItemEvent(world.Cycle, "goal", team, -1, b.Index, 1.0, string.Create(CultureInfo.InvariantCulture, $"team {team} scores ball {b.Index}")));
+            AddEvent(new ItemEvent(world.Cycle, "goal", team, -1, b.Index, 1.0, Text(team, b.Index)));
             b.Position = b.StartPosition;
             b.Velocity = Vector2.Zero;
             moved = true;
         }
 
         return moved;
+    }
+
+    // "team T scores ball B" (cached for the first 64 balls; two threads may both make one, which is harmless).
+    private static string Text(int team, int ball)
+    {
+        string?[] texts = Texts[team];
+        if (ball >= texts.Length)
+        {
+            return string.Create(CultureInfo.InvariantCulture, $"team {team} scores ball {ball}");
+        }
+
+        return texts[ball] ??= string.Create(CultureInfo.InvariantCulture, $"team {team} scores ball {ball}");
     }
 
     /// <inheritdoc/>

@@ -119,6 +119,9 @@
     this.contacts = new Float32Array(256);
     this.scores = new Float64Array(this.nt * 64);
     this.events = [];
+    this.draws = []; // per cycle index: the strategies' debug drawings (run --debug-draw), if any
+    this.hasDraws = false;
+    this.logs = []; // what the strategies printed (run --strategy-log): {cycle, team, text}
     this.local = layout.fish.map(f => localLeaves(f.size));
   }
   Store.prototype.ensure = function (cycles, contactValues) {
@@ -145,6 +148,8 @@
     const score = line.score || [];
     for (let t = 0; t < this.nt; t++) this.scores[k * this.nt + t] = score[t] !== undefined ? score[t] : (k > 0 ? this.scores[(k - 1) * this.nt + t] : 0);
     for (const e of line.events || []) this.events.push(Object.assign({ cycle: line.cycle }, e));
+    if (line.draw && line.draw.length > 0) { this.draws[k] = line.draw; this.hasDraws = true; }
+    for (const l of line.log || []) this.logs.push({ cycle: line.cycle, team: l.team | 0, text: String(l.text) });
     this.count = k + 1;
   };
   // Builds a store from the page's packed replay (see Viewer/ReplayData.cs).
@@ -174,6 +179,8 @@
       for (let t = 0; t < s.nt; t++) s.scores[k * s.nt + t] = row ? row[1 + t] : 0;
     }
     s.events = data.events;
+    for (const [cycle, shapes] of data.draws || []) { s.draws[cycle - s.firstCycle] = shapes; s.hasDraws = true; }
+    for (const [cycle, entries] of data.logs || []) for (const l of entries) s.logs.push({ cycle, team: l.team | 0, text: String(l.text) });
     s.count = n;
     return s;
   };
@@ -189,7 +196,7 @@
   const data = JSON.parse($('match-data').textContent);
   const api = {
     store: null, cycle: 0, position: 0, playing: false, speed: 1, follow: -1, live: !!data.live, followLive: !!data.live,
-    show: { labels: true, contacts: false, bounds: false, trails: false },
+    show: { labels: true, contacts: false, bounds: false, trails: false, draw: [true, true, true, true] },
     teamColour: t => TEAM_COLOURS[t % TEAM_COLOURS.length], ballColour: BALL_COLOUR,
     leaves, localLeaves, kdop, enclosingCircle, frames: 0, firstFrameAt: null, errors: [], received: 0,
     view: { scale: 1, cx: 0, cz: 0, ox: 0, oy: 0, dpr: 1 },
@@ -317,6 +324,7 @@
       ctx.fillStyle = api.teamColour(layout.fish[i].team); ctx.strokeStyle = i === api.follow ? '#ffffff' : '#1a1a1a'; ctx.lineWidth = (i === api.follow ? 2 : 1) * dpr;
       for (const poly of polys) { path(poly); ctx.fill(); ctx.stroke(); }
     }
+    if (s.hasDraws) drawDebug(s, k);
     if (api.show.bounds) drawBounds(s, t, poses);
     if (api.show.contacts) drawContacts(s, k);
     if (api.show.labels) {
@@ -333,6 +341,49 @@
     }
     api.frames++;
     if (api.firstFrameAt === null) api.firstFrameAt = performance.now();
+  }
+
+  // The strategies' debug drawings of cycle index k, a layer per team (the team's checkbox).
+  function drawDebug(s, k) {
+    const shapes = s.draws[k], dpr = api.view.dpr;
+    if (!shapes) return;
+    for (const d of shapes) {
+      const team = d.team | 0;
+      if (!api.show.draw[team % 4]) continue;
+      const colour = typeof d.color === 'string' && /^#[0-9a-f]{6}$/i.test(d.color) ? d.color : api.teamColour(team);
+      ctx.strokeStyle = colour; ctx.fillStyle = colour; ctx.lineWidth = 2 * dpr;
+      if (d.kind === 'line' && d.from && d.to) {
+        const a = worldToCanvas(d.from[0], d.from[1]), b = worldToCanvas(d.to[0], d.to[1]);
+        ctx.setLineDash([8 * dpr, 4 * dpr]); ctx.beginPath(); ctx.moveTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.stroke(); ctx.setLineDash([]);
+      } else if (d.kind === 'circle' && d.center) {
+        circle(d.center[0], d.center[1], Math.max(0, +d.radius || 0)); ctx.stroke();
+      } else if (d.kind === 'point' && d.at) {
+        const q = worldToCanvas(d.at[0], d.at[1]); ctx.beginPath(); ctx.arc(q[0], q[1], 4 * dpr, 0, 2 * Math.PI); ctx.fill();
+      } else if (d.kind === 'text' && d.at) {
+        const q = worldToCanvas(d.at[0], d.at[1]), px = Math.round(12 * dpr);
+        ctx.font = '600 ' + px + 'px system-ui, sans-serif'; ctx.textAlign = 'left'; ctx.textBaseline = 'alphabetic';
+        ctx.lineWidth = 3 * dpr; ctx.strokeStyle = 'rgba(255,255,255,0.9)'; ctx.strokeText(String(d.text), q[0], q[1]); ctx.fillText(String(d.text), q[0], q[1]);
+      }
+    }
+  }
+  api.drawingsAt = k => (api.store && api.store.draws[k]) || [];
+
+  // One checkbox per playing team for its drawings layer, shown once the match has drawings.
+  function refreshDrawLayers(s) {
+    const box = $('draw-layers');
+    if (!s || !s.hasDraws) { box.hidden = true; return; }
+    if (!box.hidden && box.dataset.teams === String(s.nt)) return;
+    box.hidden = false; box.dataset.teams = String(s.nt);
+    box.textContent = 'drawings';
+    for (let t = 0; t < s.nt; t++) {
+      if (!s.teamsPlaying[t]) continue;
+      const label = document.createElement('label'), input = document.createElement('input');
+      input.type = 'checkbox'; input.id = 'show-draw' + t; input.checked = api.show.draw[t];
+      input.addEventListener('change', () => { api.show.draw[t] = input.checked; dirty = true; });
+      label.appendChild(input); label.appendChild(document.createTextNode(' team ' + t));
+      label.style.color = api.teamColour(t);
+      box.appendChild(label);
+    }
   }
 
   function drawTrails(s, k) {
@@ -401,6 +452,8 @@
     scrub.max = String(Math.max(0, s.count - 1));
     if (document.activeElement !== scrub || String(k) !== scrub.value) scrub.value = String(k);
     if (s.events.length !== lastEventsShown || previous !== k) renderEvents(s, n, previous);
+    if (s.logs.length !== lastLogsShown || previous !== k || logFilterChanged) renderLogs(s, n);
+    refreshDrawLayers(s);
     lastEventsShown = s.events.length;
   }
   let hudDirty = true;
@@ -427,6 +480,37 @@
       if (passed.length > 0) toast(passed.map(e => e.text || e.kind).join(' · '));
     }
   }
+  // What the strategies printed up to the cycle shown, newest first, for the team chosen (or all).
+  let lastLogsShown = -1, logFilterChanged = false;
+  function renderLogs(s, n) {
+    lastLogsShown = s.logs.length; logFilterChanged = false;
+    const box = $('strategy-output');
+    box.hidden = s.logs.length === 0;
+    if (box.hidden) return;
+    const filter = $('log-team'), team = filter.value === 'all' ? -1 : parseInt(filter.value, 10);
+    if (filter.options.length !== s.nt + 1) {
+      filter.textContent = '';
+      const all = document.createElement('option'); all.value = 'all'; all.textContent = 'every team'; filter.appendChild(all);
+      for (let t = 0; t < s.nt; t++) { const o = document.createElement('option'); o.value = String(t); o.textContent = 'team ' + t; filter.appendChild(o); }
+      filter.value = team < 0 ? 'all' : String(team);
+    }
+    const list = $('strategy-log');
+    list.textContent = '';
+    for (let i = s.logs.length - 1; i >= 0 && list.childElementCount < 200; i--) {
+      const l = s.logs[i];
+      if (l.cycle > n || (team >= 0 && l.team !== team)) continue;
+      const li = document.createElement('li');
+      li.dataset.cycle = l.cycle; li.dataset.team = l.team;
+      const at = document.createElement('span'); at.className = 'at'; at.textContent = '#' + l.cycle + ' team ' + l.team;
+      at.style.color = api.teamColour(l.team);
+      const text = document.createElement('pre'); text.textContent = l.text;
+      li.appendChild(at); li.appendChild(text);
+      if (l.cycle === n) li.className = 'now';
+      list.appendChild(li);
+    }
+  }
+  api.logsShown = () => Array.from(document.querySelectorAll('#strategy-log li')).map(li => ({ cycle: +li.dataset.cycle, team: +li.dataset.team, text: li.querySelector('pre').textContent }));
+
   let toastTimer = 0;
   function toast(text) {
     const el = $('toast');
@@ -515,6 +599,11 @@
       box.checked = api.show[name];
       box.addEventListener('change', () => { api.show[name] = box.checked; dirty = true; });
     }
+    $('log-team').addEventListener('change', () => { logFilterChanged = true; hudDirty = true; dirty = true; });
+    $('strategy-log').addEventListener('click', e => {
+      const li = e.target.closest('li');
+      if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
+    });
     $('events').addEventListener('click', e => {
       const li = e.target.closest('li');
       if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
@@ -568,7 +657,7 @@
     const status = $('live-status');
     const source = new EventSource('events');
     api.source = source;
-    source.addEventListener('reset', () => { api.store = null; api.cycle = 0; api.position = 0; lastCycleShown = -1; lastEventsShown = -1; dirty = true; });
+    source.addEventListener('reset', () => { api.store = null; api.cycle = 0; api.position = 0; lastCycleShown = -1; lastEventsShown = -1; lastLogsShown = -1; dirty = true; });
     source.addEventListener('status', e => {
       const st = JSON.parse(e.data);
       api.serverStatus = st;
