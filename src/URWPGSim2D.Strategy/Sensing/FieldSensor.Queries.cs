@@ -7,6 +7,9 @@ namespace URWPGSim2D.Strategies;
 
 public sealed partial class FieldSensor
 {
+    // Up to this many bodies of a kind, Nearest measures each instead of asking the broad phase.
+    private const int BruteForceCount = 32;
+
     /// <summary>
     /// The body the ray from <paramref name="from"/> to <paramref name="to"/> enters first. A ray that
     /// starts inside a body does not hit that body (so a ray from a fish's head tip outward passes its
@@ -178,12 +181,12 @@ public sealed partial class FieldSensor
 
             var world = _worlds[slot];
             var kind = KindOf(slot);
-            if (ignore.Kind == kind)
+            if (ignore.Kind == kind || world.Count <= BruteForceCount)
             {
-                // Every other body of the kind: a strategy sees a handful.
+                // Every other body of the kind, one by one: cheaper than the broad phase for a handful.
                 for (int body = 0; body < world.Count; body++)
                 {
-                    if (body != ignore.Index)
+                    if (ignore.Kind != kind || body != ignore.Index)
                     {
                         Keep(ref best, new SensedBody(kind, body), DistanceTo(kind, body, point));
                     }
@@ -261,9 +264,9 @@ public sealed partial class FieldSensor
 
     private DistanceResult DistanceTo(SensedKind kind, int body, Vector2 point) => kind == SensedKind.Fish
         ? ShapeQuery.Distance(_models[body], point)
-        : ShapeQuery.Distance(ShapeOf(new SensedBody(kind, body)), point);
+        : ShapeQuery.Distance(_shapes[Slot(kind)][body], point);
 
-    private Shape ShapeOf(SensedBody body) => _worlds[Slot(body.Kind)].GetShape(body.Index);
+    private ref readonly Shape ShapeOf(SensedBody body) => ref _shapes[Slot(body.Kind)][body.Index];
 
     private void Ready(SensedKinds kinds)
     {

@@ -27,12 +27,14 @@ public sealed partial class FieldSensor
 {
     private const int KindCount = 4;
     private readonly QueryWorld[] _worlds = [new(), new(), new(), new()];
+
+    // The shapes of the borders, obstacles and balls, by slot (the worlds hold copies for their broad phases).
+    private readonly Shape[][] _shapes = [new Shape[4], [], []];
     private ObstacleView[] _obstacles = [];
     private FishModel[] _models = [];
     private BodyRayHit[] _rayHits = new BodyRayHit[8];
     private int[] _indices = new int[8];
     private Vector2 _field = new(float.NaN);
-    private int _ballCount = -1;
     private bool _observed;
 
     /// <summary>The cycle of the snapshot last observed (−1 before the first).</summary>
@@ -83,7 +85,7 @@ public sealed partial class FieldSensor
     {
         Check(body, nameof(body));
         return body.Kind != SensedKind.Fish
-            ? _worlds[Slot(body.Kind)].GetShape(body.Index)
+            ? _shapes[Slot(body.Kind)][body.Index]
             : throw new ArgumentException($"must be a border, obstacle or ball, got {body} (a fish has eight parts: use GetFish)", nameof(body));
     }
 
@@ -99,10 +101,15 @@ public sealed partial class FieldSensor
         var walls = _worlds[Slot(SensedKind.Wall)];
         walls.Clear();
         Vector2 topLeft = -half, topRight = new(half.X, -half.Y), bottomRight = half, bottomLeft = new(-half.X, half.Y);
-        walls.Add(new Segment(topLeft, topRight));
-        walls.Add(new Segment(topRight, bottomRight));
-        walls.Add(new Segment(bottomRight, bottomLeft));
-        walls.Add(new Segment(bottomLeft, topLeft));
+        var shapes = _shapes[Slot(SensedKind.Wall)];
+        shapes[0] = new Segment(topLeft, topRight);
+        shapes[1] = new Segment(topRight, bottomRight);
+        shapes[2] = new Segment(bottomRight, bottomLeft);
+        shapes[3] = new Segment(bottomLeft, topLeft);
+        foreach (ref readonly var wall in shapes.AsSpan())
+        {
+            walls.Add(wall);
+        }
     }
 
     private void TakeObstacles(ReadOnlySpan<ObstacleView> obstacles)
@@ -110,12 +117,15 @@ public sealed partial class FieldSensor
         var world = _worlds[Slot(SensedKind.Obstacle)];
         world.Clear();
         _obstacles = obstacles.ToArray();
+        var shapes = _shapes[Slot(SensedKind.Obstacle)] = new Shape[obstacles.Length];
         Span<Vector2> corners = stackalloc Vector2[4];
-        foreach (ref readonly var o in obstacles)
+        for (int i = 0; i < obstacles.Length; i++)
         {
+            ref readonly var o = ref obstacles[i];
             if (o.Kind == ObstacleKind.Round)
             {
-                world.Add(new Circle(o.Center, o.Radius));
+                shapes[i] = new Circle(o.Center, o.Radius);
+                world.Add(shapes[i]);
                 continue;
             }
 
@@ -125,7 +135,8 @@ public sealed partial class FieldSensor
             corners[1] = o.Center + Rotate(new Vector2(half.X, -half.Y), cos, sin);
             corners[2] = o.Center + Rotate(half, cos, sin);
             corners[3] = o.Center + Rotate(new Vector2(-half.X, half.Y), cos, sin);
-            world.Add(new ConvexPolygon(corners));
+            shapes[i] = new ConvexPolygon(corners);
+            world.Add(shapes[i]);
         }
 
         Reserve(obstacles.Length);
@@ -134,22 +145,25 @@ public sealed partial class FieldSensor
     private void TakeBalls(ReadOnlySpan<BallView> balls)
     {
         var world = _worlds[Slot(SensedKind.Ball)];
-        if (balls.Length != _ballCount)
+        var shapes = _shapes[Slot(SensedKind.Ball)];
+        if (balls.Length != shapes.Length)
         {
             world.Clear();
-            foreach (ref readonly var b in balls)
+            shapes = _shapes[Slot(SensedKind.Ball)] = new Shape[balls.Length];
+            for (int i = 0; i < balls.Length; i++)
             {
-                world.Add(new Circle(b.Position, b.Radius));
+                shapes[i] = new Circle(balls[i].Position, balls[i].Radius);
+                world.Add(shapes[i]);
             }
 
-            _ballCount = balls.Length;
             Reserve(balls.Length);
             return;
         }
 
         for (int i = 0; i < balls.Length; i++)
         {
-            world.Update(i, new Circle(balls[i].Position, balls[i].Radius));
+            shapes[i] = new Circle(balls[i].Position, balls[i].Radius);
+            world.Update(i, shapes[i]);
         }
     }
 
