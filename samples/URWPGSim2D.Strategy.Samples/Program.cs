@@ -16,6 +16,11 @@ internal static class Program
             var s = new MyTeam.TowardTheBall();
             Expect(s.TeamName == "toward the ball", "team name");
         });
+        failed += Check("SensingStrategy", () =>
+        {
+            var s = new MyTeam.LookBeforeSwimming();
+            Expect(s.TeamName == "look before swimming", "team name");
+        });
         return failed == 0 ? 0 : 1;
     }
 
