@@ -37,7 +37,7 @@ internal static class ReportPage
 
         h.Append("<h2>Intervals</h2>\n");
         Plot(h, s);
-        if (s.Teams == 2)
+        if (s.Teams >= 2)
         {
             h.Append("<h2>Wins, draws and losses</h2>\n<p class=\"note\">Row against column, both sides of the field together.</p>\n");
             Matrix(h, s);

@@ -6,8 +6,8 @@ namespace URWPGSim2D.Server.Tournament;
 
 /// <summary>
 /// The standings of a tournament, computed from its records alone (so a tournament and the merge
-/// of its shards give the same standings): for a two-team item the <see cref="PairRatings"/>, for
-/// a one-team item the <see cref="ScoreRatings"/>; ranks follow the rating (two-team) or the mean
+/// of its shards give the same standings): for an item of two or more teams the <see cref="PairRatings"/>
+/// over every pair of sides of each match, for a one-team item the <see cref="ScoreRatings"/>; ranks follow the rating (two-team) or the mean
 /// score, then the shorter mean match (one-team), then the name; each line names the other ranks
 /// whose interval overlaps its own (their order is not settled by the results).
 /// </summary>
@@ -15,13 +15,13 @@ namespace URWPGSim2D.Server.Tournament;
 /// <param name="Teams">Teams per match of its item.</param>
 /// <param name="Records">Its records (one per scheduled match at most, any order).</param>
 /// <param name="Rows">The lines, by rank.</param>
-/// <param name="Wdl">Two-team items: [i, j] = (wins, draws, losses) of entrant i against j, both sides together.</param>
+/// <param name="Wdl">Items of two or more teams: [i, j] = (wins, draws, losses) of entrant i against j, all sides together.</param>
 internal sealed record Standings(
     TournamentHeader Header, int Teams, IReadOnlyList<TournamentRecord> Records, IReadOnlyList<StandingsRow> Rows, (int W, int D, int L)[,] Wdl)
 {
     /// <summary>Computes the standings.</summary>
     /// <param name="header">The tournament.</param>
-    /// <param name="teams">Teams per match (1 or 2).</param>
+    /// <param name="teams">Teams per match (1, 2 or 4).</param>
     /// <param name="records">Its records.</param>
     /// <param name="errors">Per entrant, why it could not be loaded in this run, or null (then the reason its forfeit records give).</param>
     /// <param name="replicates">Bootstrap replicates.</param>
@@ -50,7 +50,7 @@ internal sealed record Standings(
             }
         }
 
-        var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : TwoTeam(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);
+        var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : Versus(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);
         return new Standings(header, teams, sorted, Ranked(rows, teams), wdl);
     }
 
@@ -80,31 +80,29 @@ internal sealed record Standings(
         return ranked;
     }
 
-    private static List<StandingsRow> TwoTeam(List<TournamentRecord> records, string[] names, Dictionary<string, int> index, string?[] error, int replicates, out (int W, int D, int L)[,] wdl)
+    private static List<StandingsRow> Versus(List<TournamentRecord> records, string[] names, Dictionary<string, int> index, string?[] error, int replicates, out (int W, int D, int L)[,] wdl)
     {
         int n = names.Length;
         var games = new List<Game>(records.Count);
         var table = new (int W, int D, int L)[n, n];
         foreach (var r in records)
         {
-            int a = index[r.Entrants[0]], b = index[r.Entrants[1]];
-            double score;
-            if (r.Result is { } result)
+            // Every pair of sides of the match is one game (two teams: the match itself).
+            for (int p = 0; p < r.Entrants.Count; p++)
             {
-                score = result.Winner == 0 ? 1 : result.Winner == 1 ? 0 : 0.5;
-            }
-            else if (r.Forfeits.Count == 1)
-            {
-                score = r.Forfeits[0] == 0 ? 0 : 1; // the team that could not play loses
-            }
-            else
-            {
-                continue; // both forfeit: not a game
-            }
+                for (int q = p + 1; q < r.Entrants.Count; q++)
+                {
+                    if (Outcome(r, p, q) is not { } score)
+                    {
+                        continue; // both forfeit, or neither played: not a game
+                    }
 
-            games.Add(new Game(a, b, score));
-            Count(table, a, b, score);
-            Count(table, b, a, 1 - score);
+                    int a = index[r.Entrants[p]], b = index[r.Entrants[q]];
+                    games.Add(new Game(a, b, score));
+                    Count(table, a, b, score);
+                    Count(table, b, a, 1 - score);
+                }
+            }
         }
 
         wdl = table;
@@ -124,6 +122,23 @@ internal sealed record Standings(
         }
 
         return rows;
+    }
+
+    // Side p against side q of a match: 1 (p won), 0.5 (draw), 0 (q won), or null (no game). The
+    // item's winner beats every other side; otherwise, with more than two sides, the higher score
+    // wins; a side that could not play loses to one that did.
+    private static double? Outcome(TournamentRecord r, int p, int q)
+    {
+        if (r.Result is { } result)
+        {
+            return result.Winner == p ? 1
+                : result.Winner == q ? 0
+                : r.Entrants.Count > 2 && result.Winner < 0 && result.Scores is { } s && s.Length > Math.Max(p, q) ? (s[p] > s[q] ? 1 : s[p] < s[q] ? 0 : 0.5)
+                : 0.5;
+        }
+
+        bool pOut = r.Forfeits.Contains(p), qOut = r.Forfeits.Contains(q);
+        return pOut == qOut ? null : pOut ? 0 : 1;
     }
 
     private static void Count((int W, int D, int L)[,] table, int i, int j, double score)

@@ -11,7 +11,8 @@ internal static class StandingsText
     /// <summary>The model in one sentence.</summary>
     public static string Method(Standings s) => s.Teams == 1
         ? "Mean score per match (ties: the shorter mean match); 95 % intervals by a bootstrap over each entrant's matches (1,000 replicates, fixed seed)."
-        : "Bradley-Terry ratings by maximum likelihood (a draw counts half a win; one virtual draw against a 1500 opponent each) on the Elo scale, 400 points = odds of 10 to 1, mean 1500; 95 % intervals by a bootstrap over each pairing's matches (1,000 replicates, fixed seed).";
+        : "Bradley-Terry ratings by maximum likelihood (a draw counts half a win; one virtual draw against a 1500 opponent each) on the Elo scale, 400 points = odds of 10 to 1, mean 1500; 95 % intervals by a bootstrap over each pairing's matches (1,000 replicates, fixed seed)."
+            + (s.Teams > 2 ? " A match of more than two teams counts as one game between every two of its sides: the item's winner beats the others, else the higher score wins; Played counts these games." : "");
 
     /// <summary>The rating (or mean score) as written.</summary>
     public static string Value(Standings s, double value) =>
