@@ -26,11 +26,29 @@ internal static class PointDistance
             return ToSegment(v[0], v[1], point, out nearest);
         }
 
-        // Counter-clockwise: inside is on the left of every edge.
+        // Counter-clockwise: inside is on the left of every edge. Outside, the nearest point lies on
+        // an edge the point is outside of; those are compared by squared distance, one root at the end.
         bool inside = true;
-        for (int i = 0; i < v.Length && inside; i++)
+        float best = float.PositiveInfinity;
+        nearest = v[0];
+        for (int i = 0; i < v.Length; i++)
         {
-            inside = XZPlane.Cross(v[i == v.Length - 1 ? 0 : i + 1] - v[i], point - v[i]) >= 0f;
+            Vector2 a = v[i], e = v[i == v.Length - 1 ? 0 : i + 1] - a, w = point - a;
+            if (XZPlane.Cross(e, w) >= 0f)
+            {
+                continue;
+            }
+
+            inside = false;
+            float length2 = XZPlane.Dot(e, e);
+            float t = Math.Clamp(XZPlane.Dot(w, e) / length2, 0f, 1f);
+            Vector2 at = t >= 1f ? a + e : a + (t * e);
+            float d2 = Vector2.DistanceSquared(point, at);
+            if (d2 < best)
+            {
+                best = d2;
+                nearest = at;
+            }
         }
 
         if (inside)
@@ -39,19 +57,7 @@ internal static class PointDistance
             return 0f;
         }
 
-        float best = float.PositiveInfinity;
-        nearest = v[0];
-        for (int i = 0; i < v.Length; i++)
-        {
-            float d = ToSegment(v[i], v[i == v.Length - 1 ? 0 : i + 1], point, out Vector2 at);
-            if (d < best)
-            {
-                best = d;
-                nearest = at;
-            }
-        }
-
-        return best;
+        return MathF.Sqrt(best);
     }
 
     /// <summary>The distance from <paramref name="point"/> to the segment <paramref name="a"/>–<paramref name="b"/>, with the segment's nearest point.</summary>

@@ -186,10 +186,13 @@ public sealed partial class FieldSensor
                 // Every other body of the kind, one by one: cheaper than the broad phase for a handful.
                 for (int body = 0; body < world.Count; body++)
                 {
-                    if (ignore.Kind != kind || body != ignore.Index)
+                    // A body whose bounding circle is no nearer than the best so far cannot be nearer.
+                    if ((ignore.Kind == kind && body == ignore.Index) || (best.Body.Exists && !Within(BoundOf(kind, body), point, best.Result.Distance)))
                     {
-                        Keep(ref best, new SensedBody(kind, body), DistanceTo(kind, body, point));
+                        continue;
                     }
+
+                    Keep(ref best, new SensedBody(kind, body), DistanceTo(kind, body, point));
                 }
             }
             else if (world.Nearest(point) is { Body: >= 0 } near)
@@ -251,6 +254,16 @@ public sealed partial class FieldSensor
             best = new SensedDistance(body, d);
         }
     }
+
+    // Whether the circle comes nearer the point than the distance (it may hold a nearer body then).
+    private static bool Within(in Circle bound, Vector2 point, float distance)
+    {
+        float reach = distance + bound.Radius;
+        return Vector2.DistanceSquared(bound.Center, point) < reach * reach;
+    }
+
+    private Circle BoundOf(SensedKind kind, int body) =>
+        kind == SensedKind.Fish ? _models[body].Root : _bounds[Slot(kind)][body];
 
     private static bool Looks(SensedKinds kinds, int slot) => ((int)kinds & (1 << slot)) != 0;
 

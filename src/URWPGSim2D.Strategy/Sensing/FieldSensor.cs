@@ -30,6 +30,9 @@ public sealed partial class FieldSensor
 
     // The shapes of the borders, obstacles and balls, by slot (the worlds hold copies for their broad phases).
     private readonly Shape[][] _shapes = [new Shape[4], [], []];
+
+    // Their bounding circles, by slot: a body whose circle is far enough is not measured.
+    private readonly Circle[][] _bounds = [new Circle[4], [], []];
     private ObstacleView[] _obstacles = [];
     private FishModel[] _models = [];
     private BodyRayHit[] _rayHits = new BodyRayHit[8];
@@ -106,9 +109,10 @@ public sealed partial class FieldSensor
         shapes[1] = new Segment(topRight, bottomRight);
         shapes[2] = new Segment(bottomRight, bottomLeft);
         shapes[3] = new Segment(bottomLeft, topLeft);
-        foreach (ref readonly var wall in shapes.AsSpan())
+        for (int i = 0; i < shapes.Length; i++)
         {
-            walls.Add(wall);
+            walls.Add(shapes[i]);
+            _bounds[Slot(SensedKind.Wall)][i] = shapes[i].BoundingCircle;
         }
     }
 
@@ -118,6 +122,7 @@ public sealed partial class FieldSensor
         world.Clear();
         _obstacles = obstacles.ToArray();
         var shapes = _shapes[Slot(SensedKind.Obstacle)] = new Shape[obstacles.Length];
+        var bounds = _bounds[Slot(SensedKind.Obstacle)] = new Circle[obstacles.Length];
         Span<Vector2> corners = stackalloc Vector2[4];
         for (int i = 0; i < obstacles.Length; i++)
         {
@@ -125,6 +130,7 @@ public sealed partial class FieldSensor
             if (o.Kind == ObstacleKind.Round)
             {
                 shapes[i] = new Circle(o.Center, o.Radius);
+                bounds[i] = shapes[i].BoundingCircle;
                 world.Add(shapes[i]);
                 continue;
             }
@@ -136,6 +142,7 @@ public sealed partial class FieldSensor
             corners[2] = o.Center + Rotate(half, cos, sin);
             corners[3] = o.Center + Rotate(new Vector2(-half.X, half.Y), cos, sin);
             shapes[i] = new ConvexPolygon(corners);
+            bounds[i] = shapes[i].BoundingCircle;
             world.Add(shapes[i]);
         }
 
@@ -150,9 +157,12 @@ public sealed partial class FieldSensor
         {
             world.Clear();
             shapes = _shapes[Slot(SensedKind.Ball)] = new Shape[balls.Length];
+            _bounds[Slot(SensedKind.Ball)] = new Circle[balls.Length];
             for (int i = 0; i < balls.Length; i++)
             {
-                shapes[i] = new Circle(balls[i].Position, balls[i].Radius);
+                var circle = new Circle(balls[i].Position, balls[i].Radius);
+                shapes[i] = circle;
+                _bounds[Slot(SensedKind.Ball)][i] = circle;
                 world.Add(shapes[i]);
             }
 
@@ -160,9 +170,12 @@ public sealed partial class FieldSensor
             return;
         }
 
+        var bounds = _bounds[Slot(SensedKind.Ball)];
         for (int i = 0; i < balls.Length; i++)
         {
-            shapes[i] = new Circle(balls[i].Position, balls[i].Radius);
+            var circle = new Circle(balls[i].Position, balls[i].Radius);
+            shapes[i] = circle;
+            bounds[i] = circle;
             world.Update(i, shapes[i]);
         }
     }
