@@ -158,6 +158,18 @@ internal sealed class Body
     /// <summary>A fish's joints at the end of the previous step.</summary>
     public float StartJoint1, StartJoint2, StartJoint3;
 
+    /// <summary>
+    /// Where the last step began from (the start pose and joints as they were then): a move rejected
+    /// by the caller's response goes back there, also while <c>Settle</c> runs after the step.
+    /// </summary>
+    public Vector2 StepStartPosition;
+
+    /// <summary>Heading the last step began from.</summary>
+    public float StepStartHeading;
+
+    /// <summary>A fish's joints the last step began from.</summary>
+    public float StepStartJoint1, StepStartJoint2, StepStartJoint3;
+
     /// <summary>Changes whenever the body's shape changes (a fish's joints), so that remembered tests are not reused.</summary>
     public int ShapeStamp;
 
@@ -248,6 +260,14 @@ internal sealed class Body
     {
         Velocity = OwnVelocity + Drift;
         AngularVelocity = Kind == BodyKind.Circle ? 0f : OwnAngularVelocity + AngularDrift;
+    }
+
+    /// <summary>The start pose becomes where this step begins from (see <see cref="StepStartPosition"/>).</summary>
+    public void KeepStepStart()
+    {
+        StepStartPosition = StartPosition;
+        StepStartHeading = StartHeading;
+        (StepStartJoint1, StepStartJoint2, StepStartJoint3) = (StartJoint1, StartJoint2, StartJoint3);
     }
 
     /// <summary>Stops the body: own velocities and drifts zero.</summary>

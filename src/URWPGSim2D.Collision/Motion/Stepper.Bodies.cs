@@ -305,6 +305,7 @@ public sealed partial class Stepper
         body.BasePosition = body.Position;
         body.BaseHeading = body.Heading;
         Remember(body);
+        body.KeepStepStart();
         _bodies.Add(body);
         _loaded = false;
         return body.Id;

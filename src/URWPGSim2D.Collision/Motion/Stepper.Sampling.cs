@@ -2,39 +2,13 @@ using System;
 
 namespace URWPGSim2D.Collision.Motion;
 
-/// <content>Sampling the pairs on their own clocks (see <see cref="PairSampler"/>): wedged bodies, planning pairs.</content>
+/// <content>Sampling the pairs on their own clocks (see <see cref="PairSampler"/>): planning a pair and its first sample.</content>
 public sealed partial class Stepper
 {
     private const int Ticks = TickQueue.Ticks;
 
     private readonly PairSampler _sampler = new();
     private readonly Scheduler _scheduler;
-
-    // A hit of a wedged body (many events this step, or several in a row at one time), which cannot tunnel before the step ends,
-    // is left to the end of the step (settling, then a rejected move if it is still deep): a body
-    // wedged between two obstacles would otherwise be pushed from one into the other at every sample.
-    internal bool Deferred(in PlannedPair pair, int slot, double time)
-    {
-        bool busy = Wedged(_planner.MoverBodies[pair.MoverA]) || (pair.MoverB >= 0 && Wedged(_planner.MoverBodies[pair.MoverB]));
-        if (!busy || _table.Rate[slot] * (1.0 - time) > pair.Limit)
-        {
-            return false;
-        }
-
-        _touched.Add(pair.MoverA);
-        _deferred.Add(pair.MoverA);
-        if (pair.MoverB >= 0)
-        {
-            _touched.Add(pair.MoverB);
-            _deferred.Add(pair.MoverB);
-        }
-
-        return true;
-    }
-
-    // Many events this step, or several in a row at one time (pushed back and forth in place).
-    private static bool Wedged(Body body) =>
-        body.Events >= MotionTolerances.EventsBeforeDeferring || body.EventsInPlace >= MotionTolerances.EventsInPlaceBeforeDeferring;
 
     private void MovePair(in PlannedPair p, double time) => PairSampler.MovePair(_bodies, p, time, _planner.Seconds);
 

@@ -2,7 +2,7 @@ using System;
 
 namespace URWPGSim2D.Collision.Motion;
 
-/// <content>The end of a step: overlaps resolved without motion, rejected moves, measuring.</content>
+/// <content>The end of a step: overlaps resolved without motion, measuring.</content>
 public sealed partial class Stepper
 {
     private readonly PairCollector _collector = new();
@@ -118,88 +118,6 @@ public sealed partial class Stepper
 
         CollectPairsOf(_touched);
         return Deepest(_collector.Pairs);
-    }
-
-    // A body left inside another by more than the guarantee allows goes back to where it ended the
-    // previous step, at rest; the bodies it lands in are checked in turn (the previous step's end
-    // was free, so this ends). Returns the deepest overlap left.
-    // A body whose contacts were left to the end of the step (it is wedged) is rejected as soon as it
-    // still overlaps after settling.
-    private float RejectOverlapping(float deepest)
-    {
-        if (deepest <= MotionTolerances.RejectOverlap && (_deferred.Count == 0 || deepest <= MotionTolerances.ContactSlop))
-        {
-            return deepest;
-        }
-
-        BodySet check = _touched;
-        BodySet rejected = _involved;
-        rejected.Clear();
-        while (true)
-        {
-            CollectPairsOf(check);
-            _changed.Clear();
-            foreach (ref readonly var pair in _collector.Pairs)
-            {
-                Body a = _bodies[pair.A], b = _bodies[pair.B];
-                float depth = _sampler.Memo.DetectIfNear(a, b).Depth;
-                if (depth > MotionTolerances.RejectOverlap)
-                {
-                    Reject(a, rejected);
-                    if (pair.MoverB >= 0)
-                    {
-                        Reject(b, rejected);
-                    }
-                }
-                else if (depth > MotionTolerances.ContactSlop)
-                {
-                    if (_deferred.Marks[pair.MoverA])
-                    {
-                        Reject(a, rejected);
-                    }
-
-                    if (pair.MoverB >= 0 && _deferred.Marks[pair.MoverB])
-                    {
-                        Reject(b, rejected);
-                    }
-                }
-            }
-
-            if (_changed.Count == 0)
-            {
-                break;
-            }
-
-            Union(_touched, _changed);
-            check = _spare;
-            check.Clear();
-            Union(check, _changed);
-        }
-
-        CollectPairsOf(_touched);
-        return Deepest(_collector.Pairs);
-    }
-
-    private void Reject(Body body, BodySet rejected)
-    {
-        if (rejected.Marks[body.Slot])
-        {
-            return;
-        }
-
-        rejected.Add(body.Slot);
-        _changed.Add(body.Slot);
-        RejectedMoves++;
-        body.Position = body.StartPosition;
-        body.Heading = body.StartHeading;
-        body.Joint1 = body.StartJoint1;
-        body.Joint2 = body.StartJoint2;
-        body.Joint3 = body.StartJoint3;
-        body.ShapeStamp++;
-        body.Stop();
-        body.Invalidate();
-        body.Rebase(Time);
-        _handler!.OnMoveRejected(this, body.Id);
     }
 
     private void CollectPairsOf(BodySet set)

@@ -105,6 +105,7 @@ public sealed partial class Stepper
         foreach (Body body in _planner.MoverBodies)
         {
             body.Rebase(0.0);
+            body.KeepStepStart();
             body.Events = 0;
             body.EventsInPlace = 0;
             body.LastEventTime = -1.0;

@@ -5,12 +5,13 @@ using URWPGSim2D.Collision.Fish;
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// The time of first contact of two bodies moving rigidly over an interval (the pair-level form
-/// of the <see cref="Stepper"/>'s detection). The pair is sampled often enough that it cannot
-/// pass through itself between two samples (its relative travel between samples stays within
-/// half the sum of the two bodies' thinnest widths), and not at all while their bounding circles
-/// are too far apart to meet; the first overlapping sample is refined by bisection until nothing
-/// moves more than 0.25 mm inside the bracket. A fish's joints keep their angles throughout.
+/// The time of first contact of two bodies moving rigidly over an interval: the
+/// <see cref="Stepper"/>'s own detection, run on a world of these two bodies for one step of the
+/// interval's length. The pair is sampled on its own clock, often enough that it cannot pass
+/// through itself between two samples and not at all while its bounding circles are too far apart
+/// to meet; the first overlapping sample is refined (a false-position guess, then bisection) until
+/// nothing moves more than <see cref="MotionTolerances.TimeOfImpactTolerance"/> inside the
+/// bracket. A fish's joints keep their angles throughout; the bodies given are not changed.
 /// </summary>
 public static class TimeOfImpact
 {
@@ -27,149 +28,93 @@ public static class TimeOfImpact
             throw new ArgumentException($"interval must be positive and finite, got {seconds}", nameof(seconds));
         }
 
-        Body first = ToBody(a, 0, nameof(a));
-        Body second = ToBody(b, 1, nameof(b));
-        bool swap = !first.IsMoving;
-        if (swap)
-        {
-            (first, second) = (second, first);
-        }
-
-        if (!first.IsMoving)
+        Check(a, nameof(a));
+        Check(b, nameof(b));
+        if (!IsMoving(a.Kind) && !IsMoving(b.Kind))
         {
             throw new ArgumentException("at least one body must move (both are static)", nameof(b));
         }
 
-        FishPose? poseA = first.Model?.Pose, poseB = second.Model?.Pose;
-        try
-        {
-            TimeOfImpactResult found = Search(first, second, seconds, out Hit hit, out double time);
-            if (!found.Hit)
-            {
-                return found;
-            }
+        var world = new Stepper();
+        int first = Add(world, a);
+        int second = Add(world, b);
 
-            return new TimeOfImpactResult((float)(time * seconds), swap ? hit.Swapped() : hit);
-        }
-        finally
+        // Overlapping at the start: the contact is at time 0 (the stepper's first sample would find it later).
+        bool aMoves = IsMoving(a.Kind);
+        Contact now = aMoves ? world.Detect(first, second) : world.Detect(second, first);
+        if (now.Depth > MotionTolerances.ContactSlop)
         {
-            if (poseA.HasValue)
-            {
-                first.Model!.SetPose(poseA.Value);
-            }
-
-            if (poseB.HasValue)
-            {
-                second.Model!.SetPose(poseB.Value);
-            }
+            return new TimeOfImpactResult(0f, now, swap: !aMoves);
         }
+
+        var recorder = new FirstContact();
+        world.Step(seconds, recorder);
+        return recorder.Found
+            ? new TimeOfImpactResult((float)(recorder.Contact.Time * seconds), recorder.Contact, swap: recorder.Contact.BodyA != first)
+            : TimeOfImpactResult.NoContact;
     }
 
-    private static TimeOfImpactResult Search(Body a, Body b, float seconds, out Hit hit, out double time)
+    private static bool IsMoving(BodyKind kind) => kind is BodyKind.Circle or BodyKind.Polygon or BodyKind.Fish;
+
+    private static void Check(in MovingBody m, string name)
     {
-        time = 0.0;
-        hit = PairTest.Detect(a, b);
-        if (hit.Depth > MotionTolerances.ContactSlop)
+        bool valid = m.Kind switch
         {
-            return new TimeOfImpactResult(0f, hit);
-        }
-
-        Vector2 relative = a.Velocity - (b.IsMoving ? b.Velocity : Vector2.Zero);
-        float rate = (relative.Length() * seconds) + Spin(a, seconds) + Spin(b, seconds);
-        if (!(rate > 0f))
-        {
-            return TimeOfImpactResult.NoContact;
-        }
-
-        float limit = 0.5f * (a.Thickness + b.Thickness);
-        double interval = float.IsPositiveInfinity(limit) ? 1.0 : Math.Min(1.0, limit / (double)rate);
-        interval = Math.Max(interval, 1.0 / TickQueue.Ticks);
-        double t = 0.0;
-        while (t < 1.0)
-        {
-            float gap = PairTest.Gap(a, b);
-            double step = gap > 0f ? Math.Max(interval, gap / (double)rate) : interval;
-            if (gap > 0f && t + (gap / (double)rate) >= 1.0)
-            {
-                return TimeOfImpactResult.NoContact;
-            }
-
-            double next = Math.Min(1.0, t + step);
-            MoveTo(a, b, next, seconds);
-            if (PairTest.DetectIfNear(a, b).Depth > MotionTolerances.ContactSlop)
-            {
-                time = Refine(a, b, t, next, rate, seconds);
-                MoveTo(a, b, time, seconds);
-                hit = PairTest.Detect(a, b);
-                return new TimeOfImpactResult((float)time, hit);
-            }
-
-            t = next;
-        }
-
-        return TimeOfImpactResult.NoContact;
-    }
-
-    // Bisection between a free time and an overlapping one, to the tolerance in travel.
-    private static double Refine(Body a, Body b, double lo, double hi, float rate, float seconds)
-    {
-        for (int i = 0; i < 48 && (hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance; i++)
-        {
-            double mid = 0.5 * (lo + hi);
-            MoveTo(a, b, mid, seconds);
-            if (PairTest.DetectIfNear(a, b).Depth > MotionTolerances.ContactSlop)
-            {
-                hi = mid;
-            }
-            else
-            {
-                lo = mid;
-            }
-        }
-
-        return hi;
-    }
-
-    private static void MoveTo(Body a, Body b, double time, float seconds)
-    {
-        a.MoveTo(time, seconds);
-        if (b.IsMoving)
-        {
-            b.MoveTo(time, seconds);
-        }
-    }
-
-    // The most any point of the body moves over the interval by turning, mm.
-    private static float Spin(Body body, float seconds)
-    {
-        if (body.Kind is not (BodyKind.Polygon or BodyKind.Fish))
-        {
-            return 0f;
-        }
-
-        Disc bound = body.Bound();
-        float reach = Vector2.Distance(bound.Center, body.Position) + bound.Radius;
-        return MathF.Abs(body.AngularVelocity) * reach * seconds;
-    }
-
-    private static Body ToBody(in MovingBody m, int id, string name)
-    {
-        Body body = m.Kind switch
-        {
-            BodyKind.Circle => Body.Circle(id, m.CircleShape.Radius, m.CircleShape.Center),
-            BodyKind.Polygon => m.Outline.Vertices.Length > 0 ? Body.Polygon(id, m.Outline, m.Position, m.Heading) : throw new ArgumentException("polygon is default(ConvexPolygon)", name),
-            BodyKind.Fish => Body.Fish(id, m.Model ?? throw new ArgumentException("body is default(MovingBody)", name)),
-            BodyKind.Static => Body.Static(id, m.StaticShape),
-            _ => Body.Walls(id, m.Field ?? throw new ArgumentException("body is default(MovingBody)", name)),
+            BodyKind.Circle => m.CircleShape.Radius > 0f,
+            BodyKind.Polygon => m.Outline.Vertices.Length > 0,
+            BodyKind.Fish => m.Model is not null,
+            BodyKind.Static => true,
+            _ => m.Field is not null,
         };
-        if (m.Kind == BodyKind.Circle && m.CircleShape.Radius <= 0f)
+        if (!valid)
         {
-            throw new ArgumentException("body is default(MovingBody)", name);
+            throw new ArgumentException(m.Kind == BodyKind.Polygon ? "polygon is default(ConvexPolygon)" : "body is default(MovingBody)", name);
+        }
+    }
+
+    // The body in the two-body world, with its motion over the interval.
+    private static int Add(Stepper world, in MovingBody m)
+    {
+        int id = m.Kind switch
+        {
+            BodyKind.Circle => world.AddCircle(m.CircleShape.Radius, m.CircleShape.Center),
+            BodyKind.Polygon => world.AddPolygon(m.Outline, m.Position, m.Heading),
+            BodyKind.Fish => world.AddFish(m.Model!.Size, m.Model.Pose),
+            BodyKind.Static => world.AddStatic(m.StaticShape),
+            _ => world.AddWalls(m.Field!),
+        };
+        if (IsMoving(m.Kind))
+        {
+            world.SetVelocity(id, m.Velocity, m.AngularVelocity);
         }
 
-        body.Velocity = m.Velocity;
-        body.AngularVelocity = m.Kind == BodyKind.Circle ? 0f : m.AngularVelocity;
-        body.Rebase(0.0);
-        return body;
+        return id;
+    }
+
+    // Keeps the step's first contact and takes the bodies out of contact handling: nothing after it matters.
+    private sealed class FirstContact : IContactHandler
+    {
+        public bool Found { get; private set; }
+
+        public Contact Contact { get; private set; }
+
+        public void OnContact(Stepper stepper, in Contact contact)
+        {
+            if (!Found)
+            {
+                Found = true;
+                Contact = contact;
+            }
+
+            stepper.SetCollides(contact.BodyA, false);
+            if (IsMoving(stepper.KindOf(contact.BodyB)))
+            {
+                stepper.SetCollides(contact.BodyB, false);
+            }
+        }
+
+        public void OnMoveRejected(Stepper stepper, int body)
+        {
+        }
     }
 }

@@ -5,13 +5,14 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>The answer of <see cref="TimeOfImpact.Find"/>: when two moving bodies first touch, and how.</summary>
 public readonly struct TimeOfImpactResult
 {
-    internal TimeOfImpactResult(float time, in Hit hit)
+    // The stepper's contact, seen from the query's first body (swap: the contact's A is the query's second body).
+    internal TimeOfImpactResult(float time, in Contact contact, bool swap)
     {
         Hit = true;
         Time = time;
-        Result = hit.Result;
-        PartA = hit.PartA < 0 ? null : (FishPart)hit.PartA;
-        PartB = hit.PartB < 0 ? null : (FishPart)hit.PartB;
+        Result = swap ? contact.Result.Swapped() : contact.Result;
+        PartA = swap ? contact.PartB : contact.PartA;
+        PartB = swap ? contact.PartA : contact.PartB;
     }
 
     /// <summary>The answer for bodies that do not touch within the interval.</summary>

@@ -30,7 +30,8 @@ namespace URWPGSim2D.Server.Simulation;
 /// A fish's speed and angular speed (its gear approach) are never changed by a contact: each cycle
 /// it swims with its own motion again. A fish corrected deeper than the time-of-impact tolerance
 /// more than <see cref="PhysicsConstants.MaximumCorrectionsPerFish"/> times in one cycle is wedged:
-/// <see cref="FishState.Freeze"/> rejects its move, and for the rest of that cycle it counts as
+/// the motion world rejects its move (<see cref="Stepper.RejectMove"/>: back where it started the
+/// cycle, at rest), and for the rest of that cycle it counts as
 /// immovable (its partners take the whole correction, it neither moves nor turns).
 /// </summary>
 internal sealed class ContactResponse
@@ -273,13 +274,14 @@ internal sealed class ContactResponse
         return true;
     }
 
-    // A fish that keeps needing deep corrections in one cycle is wedged: reject its move for this cycle.
-    // Corrections at a refined time of first contact are no deeper than the tolerance and not counted.
-    private static void Count(FishState fish, in Contact hit)
+    // A fish that keeps needing deep corrections in one cycle is wedged: the motion world rejects its
+    // move for this cycle (and the handler marks it frozen). Corrections at a refined time of first
+    // contact are no deeper than the tolerance and not counted.
+    private void Count(FishState fish, in Contact hit)
     {
         if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
         {
-            fish.Freeze();
+            _world.Motion.RejectMove(fish.Handle);
         }
     }
 }

@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// One fish's game state: team, size, the decision it executes, its speed and turn gears, its
-/// tail-wave phase, its start-of-cycle pose and corrections. Its body — pose, joints, shape,
+/// tail-wave phase, its corrections this cycle and whether its move was rejected. Its body — pose, joints, shape,
 /// velocity, noise drift, whether it collides — is the motion world's (<see cref="Stepper"/>),
 /// reached by <see cref="Handle"/>: the properties of those read and write it there, so there is
 /// one copy. Within a cycle the stepper moves it with
@@ -123,20 +123,12 @@ internal sealed class FishState
         set => _motion.SetDrift(Handle, _motion.DriftOf(Handle), value);
     }
 
-    /// <summary>Pose at the start of the cycle (the last cycle's resolved end), restored by <see cref="Freeze"/>.</summary>
-    public Vector2 StartPosition;
-
-    /// <summary>Heading at the start of the cycle.</summary>
-    public float StartHeading;
-
-    /// <summary>Joint angles at the start of the cycle.</summary>
-    public float StartJoint1, StartJoint2, StartJoint3;
-
     /// <summary>Position corrections this fish has had in the current cycle.</summary>
     public int Corrections;
 
     /// <summary>
-    /// True when this cycle's move was rejected: the fish is back at its start pose and holds still
+    /// True when this cycle's move was rejected (by the motion world, or by the response through
+    /// <see cref="Stepper.RejectMove"/>): the fish is back where it started the cycle and holds still
     /// (it counts as immovable in contacts) for the rest of the cycle.
     /// </summary>
     public bool Frozen;
@@ -181,31 +173,10 @@ internal sealed class FishState
         }
     }
 
-    /// <summary>Remembers the current pose as the cycle's start pose and clears the per-cycle flags.</summary>
+    /// <summary>Clears the per-cycle counts and flags (where the cycle started is the motion world's).</summary>
     public void BeginCycle()
     {
-        FishPose pose = Pose;
-        StartPosition = pose.Position;
-        StartHeading = pose.Heading;
-        (StartJoint1, StartJoint2, StartJoint3) = (pose.Joint1, pose.Joint2, pose.Joint3);
         Corrections = 0;
         Frozen = false;
-    }
-
-    /// <summary>
-    /// Rejects this cycle's move: back to the start pose (position, heading and joints), no motion
-    /// for the rest of the cycle. Used when contacts cannot be resolved by moving the fish (it is
-    /// wedged, e.g. its tail pose does not fit between two walls).
-    /// </summary>
-    public void Freeze()
-    {
-        Position = StartPosition;
-        Heading = StartHeading;
-        SetJoints(StartJoint1, StartJoint2, StartJoint3);
-        Velocity = Vector2.Zero;
-        AngularVelocity = 0f;
-        NoiseVelocity = Vector2.Zero;
-        NoiseAngularVelocity = 0f;
-        Frozen = true;
     }
 }

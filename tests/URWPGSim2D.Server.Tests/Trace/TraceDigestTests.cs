@@ -19,6 +19,9 @@ namespace URWPGSim2D.Server.Tests.Trace;
 /// halves, extra time and penalties scale with the cycles asked for, so a tied polo match plays them
 /// here too. A refactoring that changes one byte of one trace fails here, naming the case and the
 /// new digest; a deliberate change of the physics or of the trace format updates the table.
+/// A few whole matches of 6,000 cycles are pinned too (a change of, say, the order of two
+/// simultaneous contacts can take thousands of cycles to show), and some cases are played again
+/// with the stepper's islands spread over two threads: the same bytes.
 /// </summary>
 public sealed class TraceDigestTests
 {
@@ -82,6 +85,16 @@ public sealed class TraceDigestTests
         [("item transport", 7)] = "d12982f2a098f60535567b58e00a95e1884e0cad20bce933d89dff86e48d50d0",
     };
 
+    // Whole matches: (scene, seed) → digest of a 6,000-cycle trace.
+    private static readonly Dictionary<(string Scene, ulong Seed), string> PinnedLong = new()
+    {
+        [("default", 1)] = "2ba75716a8dd8690d15276d9d303bd90b0472a6d19ba438b14dcdc7fb8b8eafa",
+        [("item ball-grab", 1)] = "d9a8e683d10bbeccb9275bab70f9df3290132819394f2784e01562f02da8acbd",
+        [("item polo-3v3", 2)] = "e5ae9048b843ba65dc24977f6d3ee29ad1b3d657c281f11a659e28fa10a99221",
+    };
+
+    private const int LongCycles = 6_000;
+
     private static readonly ulong[] Seeds = [1, 2, 7];
 
     /// <summary>The cases: every registered item × <see cref="Seeds"/>, the default scene and two crowds.</summary>
@@ -113,6 +126,28 @@ public sealed class TraceDigestTests
         Assert.True(expected == actual, $"{scene} seed {seed}: the trace changed: digest {actual}, pinned {expected}");
     }
 
+    [Theory]
+    [InlineData("default", 1UL)]
+    [InlineData("item ball-grab", 1UL)]
+    [InlineData("item polo-3v3", 2UL)]
+    public void AWholeMatchIsByteIdenticalToThePinnedOne(string scene, ulong seed)
+    {
+        string actual = Digest(scene, seed, LongCycles);
+        Assert.True(PinnedLong.TryGetValue((scene, seed), out string? expected), $"no pinned digest for {scene} seed {seed} ({LongCycles} cycles): {actual}");
+        Assert.True(expected == actual, $"{scene} seed {seed}, {LongCycles} cycles: the trace changed: digest {actual}, pinned {expected}");
+    }
+
+    [Theory]
+    [InlineData("crowd 200", 3UL, 0)]
+    [InlineData("item polo-5v5", 1UL, 0)]
+    [InlineData("item ball-grab", 1UL, LongCycles)]
+    public void OnTwoThreadsTheTraceIsThePinnedOne(string scene, ulong seed, int cycles)
+    {
+        string actual = Digest(scene, seed, cycles, threads: 2);
+        string expected = cycles == 0 ? Pinned[(scene, seed)] : PinnedLong[(scene, seed)];
+        Assert.True(expected == actual, $"{scene} seed {seed} on two threads: digest {actual}, pinned {expected}");
+    }
+
     [Fact]
     public void EveryPinnedCaseIsStillPlayed()
     {
@@ -130,12 +165,20 @@ public sealed class TraceDigestTests
         Assert.NotEqual(Digest("item ball-grab", 1), Digest("item ball-grab", 2));
     }
 
-    // The digest of the trace of a scene played as `run` plays it (the one match loop).
-    private static string Digest(string scene, ulong seed)
+    // The digest of the trace of a scene played as `run` plays it (the one match loop), for the
+    // scene's own cycles unless others are given; on two threads, every world's islands are spread.
+    private static string Digest(string scene, ulong seed, int cycles = 0, int threads = 1)
     {
-        var (scenario, cycles) = Scene(scene, seed);
+        var (scenario, sceneCycles) = Scene(scene, seed);
+        cycles = cycles > 0 ? cycles : sceneCycles;
         using var hash = new TraceHash();
-        using var loop = new MatchLoop(new MatchSettings(scenario, cycles, seed).Build(), cycles, hash);
+        Match match = new MatchSettings(scenario, cycles, seed, Threads: threads).Build();
+        if (threads > 1)
+        {
+            match.Stepper.MinimumMoversForThreads = 2;
+        }
+
+        using var loop = new MatchLoop(match, cycles, hash);
         loop.Play();
         return hash.Digest();
     }
