@@ -5,13 +5,12 @@ namespace URWPGSim2D.Server.Items.Demo;
 
 /// <summary>
 /// What a demo team knows of the match, kept across cycles: a <see cref="FishTrack"/> for each of
-/// its fish, a <see cref="BallTrack"/> for each ball, the sensor of the field's bodies (observed every cycle), and the way-finder of the field's obstacles
+/// its fish, a <see cref="BallTrack"/> for each ball, and the way-finder of the field's obstacles
 /// (found once). <see cref="Observe"/> takes each cycle's views; <see cref="Restart"/> forgets the
 /// tracks when the referee has placed every body afresh (a new half).
 /// </summary>
 internal sealed class Tracking
 {
-    private readonly FieldSensor _sensor = new();
     private Waypath? _ways;
 
     /// <summary>The track of each of the team's fish, in the order the strategy is given them.</summary>
@@ -50,8 +49,7 @@ internal sealed class Tracking
             Fish[k].Update(snapshot.Fish[fish[k]]);
         }
 
-        _sensor.Observe(snapshot);
         _ways ??= Surroundings.WaysOf(snapshot);
-        return new Surroundings(_sensor, _ways);
+        return new Surroundings(snapshot, _ways);
     }
 }
