@@ -144,8 +144,6 @@ public sealed class RescueTests
     public void TheDemoRoutesStartAtTheBallsKeepClearOfTheWallsAndEndInTheZone()
     {
         var walls = RescueLayout.Walls.Select((c, i) => new ObstacleView(i, ObstacleKind.Rectangle, c, RescueLayout.WallLength, RescueLayout.WallWidth, 0f, 0f)).ToArray();
-        var sensor = new FieldSensor();
-        sensor.Observe(new MatchSnapshot(0, 0, walls, RescueLayout.FieldLength, RescueLayout.FieldWidth));
         for (int ball = 0; ball < 2; ball++)
         {
             var route = RescueRoutes.Route(ball).ToArray();
@@ -159,7 +157,8 @@ public sealed class RescueTests
                 for (int k = 0; k <= steps; k++)
                 {
                     Vector2 p = Vector2.Lerp(route[i], route[i + 1], k / (float)steps);
-                    float clear = sensor.Clearance(p); // to the nearest wall or pool side
+                    float clear = walls.Min(w => URWPGSim2D.Server.Items.Demo.Surroundings.Distance(w, p));
+                    clear = System.MathF.Min(clear, System.MathF.Min((RescueLayout.FieldLength / 2f) - System.MathF.Abs(p.X), (RescueLayout.FieldWidth / 2f) - System.MathF.Abs(p.Y)));
                     Assert.True(clear - RescueLayout.BallRadius >= 65f, $"ball {ball} at {p}: {clear - RescueLayout.BallRadius:F1} mm from a wall");
                 }
             }

@@ -161,7 +161,6 @@ public sealed class PushingTests
         private BallTrack _ball;
         private Pusher _pusher;
         private RouteProgress _progress;
-        private readonly FieldSensor _sensor = new();
         private Waypath? _ways;
         private bool _was;
 
@@ -175,9 +174,8 @@ public sealed class PushingTests
             _me.Update(view);
             _ball.Update(snapshot.Balls[0]);
             _ways ??= Surroundings.WaysOf(snapshot);
-            _sensor.Observe(snapshot);
             Vector2 direction = _progress.Direction(route, _ball.Position, 350f);
-            decisions[0] = _pusher.Push(view, _me, ref _ball, snapshot.Balls[0].Radius, direction, new Surroundings(_sensor, _ways), 6);
+            decisions[0] = _pusher.Push(view, _me, ref _ball, snapshot.Balls[0].Radius, direction, new Surroundings(snapshot, _ways), 6);
             if (_pusher.Pushing && !_was)
             {
                 Starts++;
