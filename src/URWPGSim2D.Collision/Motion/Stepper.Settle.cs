@@ -6,6 +6,7 @@ namespace URWPGSim2D.Collision.Motion;
 public sealed partial class Stepper
 {
     private readonly PairCollector _collector = new();
+    private BodySet _spare = new(0);
 
     /// <summary>
     /// Resolves overlaps left by jumps between steps (bodies placed with <see cref="SetPose"/>):

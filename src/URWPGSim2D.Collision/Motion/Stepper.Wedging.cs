@@ -14,6 +14,8 @@ namespace URWPGSim2D.Collision.Motion;
 /// </content>
 public sealed partial class Stepper
 {
+    private BodySet _deferred = new(0);
+
     /// <summary>
     /// Rejects a moving body's move in the current step, from a handler (a response that finds the
     /// body wedged): it goes back to where it began the step (its pose and joints at the end of the

@@ -38,8 +38,9 @@ internal sealed record MatchResult(
     {
         var stats = match.Statistics;
         var referee = match.Referee;
-        int goals0 = referee is null ? match.World.Goals[0] : referee.Scores[0];
-        int goals1 = referee is null ? match.World.Goals[1] : referee.Scores.Length > 1 ? referee.Scores[1] : 0;
+        int[] scores = match.Rules.Scores;
+        int goals0 = scores[0];
+        int goals1 = scores.Length > 1 ? scores[1] : 0;
         var outcome = referee?.Outcome;
         return new MatchResult(
             index, seed, stats.Cycles, goals0, goals1, match.Contacts.ByKind.ToArray(),

@@ -26,7 +26,7 @@ internal static class MatchSummary
         }
         else
         {
-            s.Append(c, $"goals: team 0 ({match.TeamLabel(0)}) {match.World.Goals[0]}, team 1 ({match.TeamLabel(1)}) {match.World.Goals[1]}\n");
+            s.Append(c, $"goals: team 0 ({match.TeamLabel(0)}) {match.Rules.Scores[0]}, team 1 ({match.TeamLabel(1)}) {match.Rules.Scores[1]}\n");
         }
 
         s.Append("contacts:");

@@ -166,7 +166,7 @@ internal sealed class RunCommand : ICliCommand
                 names[t] = match.TeamLabel(t);
             }
 
-            SvgFrame.Write(match.World, options.Svg, names);
+            SvgFrame.Write(match.World, match.Rules.Scores, options.Svg, names);
         }
 
         console.Out.Write(MatchSummary.Format(match, clock.Elapsed));

@@ -29,8 +29,9 @@ internal static class SvgFrame
 
     /// <summary>The SVG document of the world's current state.</summary>
     /// <param name="world">The world.</param>
+    /// <param name="scores">Each team's score (team 0 first; a team past the end has 0).</param>
     /// <param name="teamNames">The teams' names for the legend (team 0 first), or null for none.</param>
-    public static string Render(World world, System.Collections.Generic.IReadOnlyList<string>? teamNames = null)
+    public static string Render(World world, System.Collections.Generic.IReadOnlyList<int> scores, System.Collections.Generic.IReadOnlyList<string>? teamNames = null)
     {
         var field = world.Field;
         float l = field.Length;
@@ -40,8 +41,8 @@ internal static class SvgFrame
         var s = new SvgWriter("0.##");
         s.StartDocument(min.X - 20, top - 170, max.X - min.X + 40, max.Y - min.Y + 190, (max.X - min.X + 40) / 3, (max.Y - min.Y + 190) / 3);
         s.Element("text").Attribute("x", min.X).Attribute("y", top - 110).Attribute("font-size", "50").Attribute("font-family", "sans-serif")
-            .Content("text", Caption(world));
-        Legend(s, world, teamNames, min.X, top - 45);
+            .Content("text", Caption(world, scores));
+        Legend(s, world, scores, teamNames, min.X, top - 45);
         Rect(s, new Vector2(-l / 2, -w / 2), new Vector2(l / 2, w / 2), "#cfe8f7", "#1b3a4b");
         float mouth = Field.GoalWidth / 2;
         Rect(s, new Vector2(-l / 2, -mouth), new Vector2(-l / 2 + Field.GoalDepth, mouth), "#f6f2c4", "none");
@@ -135,8 +136,8 @@ internal static class SvgFrame
         return outside.IsEmpty ? (-half, half) : (Vector2.Min(-half, outside.Min), Vector2.Max(half, outside.Max));
     }
 
-    // The key: each team's colour, name and goals, then the ball and obstacle colours.
-    private static void Legend(SvgWriter s, World world, System.Collections.Generic.IReadOnlyList<string>? teamNames, float x, float y)
+    // The key: each team's colour, name and score, then the ball and obstacle colours.
+    private static void Legend(SvgWriter s, World world, System.Collections.Generic.IReadOnlyList<int> scores, System.Collections.Generic.IReadOnlyList<string>? teamNames, float x, float y)
     {
         int teams = Teams(world);
         for (int team = 0; team < teams; team++)
@@ -144,7 +145,7 @@ internal static class SvgFrame
             s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40)
                 .Attribute("fill", TeamColours[team]).Attribute("stroke", "#222").Attribute("stroke-width", "2").End();
             string name = teamNames is not null && team < teamNames.Count ? $" ({teamNames[team]})" : string.Empty;
-            string text = string.Create(CultureInfo.InvariantCulture, $"team {team}{name}: {Goals(world, team)}");
+            string text = string.Create(CultureInfo.InvariantCulture, $"team {team}{name}: {Goals(scores, team)}");
             s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", text);
             x += 130 + (22 * text.Length);
         }
@@ -156,14 +157,14 @@ internal static class SvgFrame
         s.Element("text").Attribute("x", x + 55).Attribute("y", y).Attribute("font-size", "40").Attribute("font-family", "sans-serif").Content("text", "obstacle");
     }
 
-    // The caption: the cycle and every team's goals.
-    private static string Caption(World world)
+    // The caption: the cycle and every team's score.
+    private static string Caption(World world, System.Collections.Generic.IReadOnlyList<int> scores)
     {
         var text = new System.Text.StringBuilder(string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — "));
         int teams = Teams(world);
         for (int team = 0; team < teams; team++)
         {
-            text.Append(CultureInfo.InvariantCulture, $"{(team > 0 ? ", " : string.Empty)}team {team}: {Goals(world, team)}");
+            text.Append(CultureInfo.InvariantCulture, $"{(team > 0 ? ", " : string.Empty)}team {team}: {Goals(scores, team)}");
         }
 
         return text.ToString();
@@ -181,7 +182,7 @@ internal static class SvgFrame
         return teams;
     }
 
-    private static int Goals(World world, int team) => team < world.Goals.Length ? world.Goals[team] : 0;
+    private static int Goals(System.Collections.Generic.IReadOnlyList<int> scores, int team) => team < scores.Count ? scores[team] : 0;
 
     private static void Label(SvgWriter s, Vector2 at, string text, string colour) =>
         s.Element("text").Attribute("x", at.X).Attribute("y", at.Y).Attribute("font-size", "40").Attribute("font-family", "sans-serif")
@@ -190,9 +191,11 @@ internal static class SvgFrame
 
     /// <summary>Writes the frame to a file (temporary name, then renamed; see <see cref="AtomicFile"/>).</summary>
     /// <param name="world">The world.</param>
+    /// <param name="scores">Each team's score (team 0 first).</param>
     /// <param name="path">The SVG file.</param>
     /// <param name="teamNames">The teams' names for the legend, or null.</param>
-    public static void Write(World world, string path, System.Collections.Generic.IReadOnlyList<string>? teamNames) => AtomicFile.WriteAllText(path, Render(world, teamNames));
+    public static void Write(World world, System.Collections.Generic.IReadOnlyList<int> scores, string path, System.Collections.Generic.IReadOnlyList<string>? teamNames) =>
+        AtomicFile.WriteAllText(path, Render(world, scores, teamNames));
 
     private static void Rect(SvgWriter s, Vector2 min, Vector2 max, string fill, string stroke) =>
         s.Element("rect").Attribute("x", min.X).Attribute("y", min.Y).Attribute("width", max.X - min.X).Attribute("height", max.Y - min.Y)

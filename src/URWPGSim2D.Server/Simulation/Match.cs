@@ -2,13 +2,15 @@ using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.PlainScene;
 
 namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
 /// read-only snapshot of the last cycle → fish locomotion → ball locomotion → motion with collision
-/// detection and response (<see cref="CycleMotion"/>) → rules (goals). Everything iterates by index;
+/// detection and response (<see cref="CycleMotion"/>) → rules (<see cref="Rules"/>: the competition
+/// item's referee, or the plain scene's goal rule). Everything iterates by index;
 /// the noise generators are seeded, so the same scenario and seed replay the same match. After the
 /// first cycles a step allocates nothing (built-in strategies).
 /// </summary>
@@ -22,16 +24,17 @@ internal sealed class Match
     /// <param name="strategies">Who decides for the fish.</param>
     /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
     /// <param name="seed">Seed of the noise generators.</param>
-    /// <param name="referee">The rules of a competition item, or null for the plain goal rules (<see cref="Rules"/>).</param>
+    /// <param name="referee">The rules of a competition item, or null for the plain scene's goal rule (<see cref="PlainSceneReferee"/>).</param>
     public Match(World world, StrategyCaller strategies, bool noise, ulong seed, Items.ItemReferee? referee = null)
     {
         World = world;
         Strategies = strategies;
         Referee = referee;
+        Rules = referee ?? new PlainSceneReferee(0);
         Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
         Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
         Stepper = new CycleMotion(world, Contacts);
-        referee?.Start(world);
+        Rules.Start(world);
         if (noise)
         {
             _motionNoise = new SeededRandom(seed);
@@ -54,14 +57,14 @@ internal sealed class Match
     /// <summary>Motion interpolation and contact handling.</summary>
     public CycleMotion Stepper { get; }
 
-    /// <summary>The competition item's rules, or null for the plain goal rules.</summary>
+    /// <summary>The competition item's referee, or null for a plain scene.</summary>
     public Items.ItemReferee? Referee { get; }
 
-    /// <summary>Whether the item's match is over (never for the plain goal rules: they play every cycle asked for).</summary>
-    public bool IsOver => Referee?.IsOver ?? false;
+    /// <summary>The rules the match is judged by, the one owner of its score and events: <see cref="Referee"/>, or the plain scene's goal rule.</summary>
+    public Items.ItemReferee Rules { get; }
 
-    /// <summary>Every goal so far (plain goal rules only).</summary>
-    public List<GoalEvent> Goals { get; } = new(64);
+    /// <summary>Whether the match is over (never for a plain scene: it plays every cycle asked for).</summary>
+    public bool IsOver => Rules.IsOver;
 
     /// <summary>Totals for the summary.</summary>
     public MatchStatistics Statistics { get; } = new();
@@ -71,13 +74,12 @@ internal sealed class Match
     {
         FillSnapshot();
         Strategies.Decide(Snapshot, World.Fish);
-        Referee?.AfterDecisions(World);
+        Rules.AfterDecisions(World);
         Contacts.BeginCycle();
         Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
         Stepper.Run();
         World.Cycle++;
-        bool moved = Referee is null ? Rules.Apply(World, Goals) > 0 : Referee.Judge(World, Contacts.Cycle);
-        if (moved)
+        if (Rules.Judge(World, Contacts.Cycle))
         {
             Stepper.Settle();
         }
@@ -118,15 +120,11 @@ internal sealed class Match
 
     private void FillSnapshot()
     {
+        Snapshot.SetHeader(World.Cycle, Rules.Scores);
         if (Referee is { } item)
         {
-            Snapshot.SetHeader(World.Cycle, item.Scores);
             Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
             Snapshot.SetSidesSwapped(item.SidesSwapped);
-        }
-        else
-        {
-            Snapshot.SetHeader(World.Cycle, World.Goals);
         }
 
         var fish = Snapshot.FishBuffer;

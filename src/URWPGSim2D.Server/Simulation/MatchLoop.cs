@@ -98,10 +98,10 @@ internal sealed class MatchLoop : IDisposable
     /// <summary>Stops the match's strategy hosts (idempotent), telling them the cycles played and the final score.</summary>
     public void Dispose() => StopStrategies(Match);
 
-    /// <summary>Stops <paramref name="match"/>'s strategies, telling hosts the cycles played and the final score (the item's, else the goals).</summary>
+    /// <summary>Stops <paramref name="match"/>'s strategies, telling hosts the cycles played and the final score.</summary>
     public static void StopStrategies(Match match)
     {
-        match.Strategies.Stop(match.World.Cycle, match.Referee?.Scores ?? match.World.Goals);
+        match.Strategies.Stop(match.World.Cycle, match.Rules.Scores);
     }
 
     private void Write(ReadOnlySpan<ContactRecord> contacts)

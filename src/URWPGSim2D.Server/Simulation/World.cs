@@ -8,7 +8,7 @@ namespace URWPGSim2D.Server.Simulation;
 
 /// <summary>
 /// The pool and everything in it: the field (walls, goal blocks), fish, balls and obstacles, plus
-/// the match clock and score. The bodies themselves live in the motion world (<see cref="Motion"/>,
+/// the match clock (the score is the match's rules'). The bodies themselves live in the motion world (<see cref="Motion"/>,
 /// the collision library's <see cref="Stepper"/>): fish, then balls (its moving bodies), then
 /// obstacles and goal blocks (static), then the walls; the fish and balls here hold the game state
 /// and their body's handle. Arrays are fixed for the whole match; iteration is always by index.
@@ -73,8 +73,8 @@ internal sealed class World
     /// <summary>Cycles completed.</summary>
     public int Cycle { get; set; }
 
-    /// <summary>Goals scored by team 0 and team 1.</summary>
-    public int[] Goals { get; } = new int[2];
+    /// <summary>The team that scores when a ball ends in the goal on <paramref name="side"/> (−1 left, +1 right): team 0 attacks the right goal (+X), team 1 the left one.</summary>
+    public static int ScoringTeam(int side) => side > 0 ? 0 : 1;
 
     /// <summary>Match time in seconds, cycles × 0.1 (exact decimal multiple, no drift).</summary>
     public double Time => Cycle * 0.1;

@@ -5,8 +5,8 @@ namespace URWPGSim2D.Server.Trace;
 /// <summary>
 /// What a competition item adds to the trace (CONTRACT: docs/viewer.md, "Trace additions"): its
 /// slug, its zones and ball values on the cycle-0 line, and on every line the score and the
-/// cycle's events. <see cref="DefaultTraceItem"/> is the plain match (goals only); an item
-/// implements this and is handed to <see cref="TraceLine"/>. Each cycle, after it was played, the
+/// cycle's events. Every match's rules implement it (an item's referee; a plain match's goal
+/// rule, slug <c>default</c>, goals only) and <see cref="TraceLine"/> reads them. Each cycle, after it was played, the
 /// trace calls <see cref="AddEvents"/> (not for cycle 0) and then <see cref="Score"/> per team;
 /// <see cref="Slug"/>, <see cref="Zones"/> and <see cref="BallValue"/> only for the cycle-0 line.
 /// </summary>

@@ -26,12 +26,12 @@ internal static class TraceLayout
         w.WriteNumber("width", field.Width);
         w.WriteEndObject();
 
-        // Team 0 attacks the right goal (Rules.ScoringTeam), so it defends the left one.
+        // Team 0 attacks the right goal (World.ScoringTeam), so it defends the left one.
         w.WriteStartArray("goals");
         for (int side = -1; side <= 1; side += 2)
         {
             w.WriteStartObject();
-            w.WriteNumber("team", 1 - Rules.ScoringTeam(side));
+            w.WriteNumber("team", 1 - World.ScoringTeam(side));
             float inner = side * (halfLength - Field.GoalDepth), outer = side * halfLength;
             TraceLine.Pair(w, "min", new Vector2(MathF.Min(inner, outer), -mouth));
             TraceLine.Pair(w, "max", new Vector2(MathF.Max(inner, outer), mouth));

@@ -24,11 +24,11 @@ internal sealed class TraceLine
 
     /// <summary>Creates the serialiser of a match's lines.</summary>
     /// <param name="match">The match.</param>
-    /// <param name="item">The competition item's information, or null for a plain match (<see cref="DefaultTraceItem"/>).</param>
+    /// <param name="item">The item's information, or null for the match's rules' (its item's referee, or the plain scene's).</param>
     public TraceLine(Match match, ITraceItemInfo? item = null)
     {
         _match = match;
-        _item = item ?? (ITraceItemInfo?)match.Referee ?? new DefaultTraceItem(match); // a competition item's referee reports itself
+        _item = item ?? match.Rules; // the referee reports itself
         _json = new Utf8JsonWriter(_buffer);
         _teams = match.TeamCount;
     }

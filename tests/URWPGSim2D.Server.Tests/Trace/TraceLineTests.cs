@@ -37,7 +37,7 @@ public sealed class TraceLineTests
         Assert.Equal(2, goals.GetArrayLength());
         Assert.Equal("{\"team\":0,\"min\":[-1500,-200],\"max\":[-1350,200]}", goals[0].GetRawText());
         Assert.Equal("{\"team\":1,\"min\":[1350,-200],\"max\":[1500,200]}", goals[1].GetRawText());
-        Assert.Equal(0, Rules.ScoringTeam(-1) == 1 ? 0 : 1); // the ball in the left goal scores for team 1: team 0 defends it
+        Assert.Equal(0, World.ScoringTeam(-1) == 1 ? 0 : 1); // the ball in the left goal scores for team 1: team 0 defends it
 
         var blocks = layout.GetProperty("goalBlocks");
         Assert.Equal(4, blocks.GetArrayLength());
@@ -88,10 +88,11 @@ public sealed class TraceLineTests
         // Ball 1 runs into the right goal (team 0 scores), ball 2 into the left one (team 1 scores).
         Assert.Contains(goalCycles, g => g.Team == 0 && g.Ball == 1);
         Assert.Contains(goalCycles, g => g.Team == 1 && g.Ball == 2);
-        Assert.Equal(match.Goals.Count, goalCycles.Count);
-        for (int i = 0; i < match.Goals.Count; i++)
+        var goalEvents = match.Rules.Events;
+        Assert.Equal(goalEvents.Count, goalCycles.Count);
+        for (int i = 0; i < goalEvents.Count; i++)
         {
-            Assert.Equal((match.Goals[i].Cycle, match.Goals[i].Team, match.Goals[i].Ball), goalCycles[i]);
+            Assert.Equal((goalEvents[i].Cycle, goalEvents[i].Team, goalEvents[i].Ball), goalCycles[i]);
         }
     }
 

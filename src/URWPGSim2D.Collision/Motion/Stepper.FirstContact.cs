@@ -1,0 +1,174 @@
+using System;
+using System.Numerics;
+
+namespace URWPGSim2D.Collision.Motion;
+
+/// <content>
+/// The time of first contact of an event (the one time-of-impact search of the library; the
+/// pair-level <see cref="TimeOfImpact"/> runs it on a world of two bodies): between the last time
+/// all the event's pairs were apart and the sample that found them overlapping, a false-position
+/// guess from the deepest hit's closing rate, then bisection until nothing involved moves more
+/// than <see cref="MotionTolerances.TimeOfImpactTolerance"/> inside the bracket.
+/// </content>
+public sealed partial class Stepper
+{
+    // Rounds of the false-position estimate of the time of first contact before bisection takes over.
+    private const int GuessRounds = 3;
+
+    // False-position estimate of a hit's time of first contact (its last free time when unknown).
+    private double EstimatedContact(int slot, in Hit hit, double found)
+    {
+        float closing = ClosingRate(_table.Pair[slot], hit);
+        double guess = closing > 0f ? found - (hit.Depth / closing) : _table.LastFree[slot];
+        return Math.Clamp(guess, _table.LastFree[slot], found);
+    }
+
+    // Between the last time all hits were apart and the sample that found them (checked first
+    // unless the hits are known to be apart then): a false-position guess, then bisection until
+    // nothing involved moves more than the tolerance inside the bracket.
+    private double FirstContact(double free, double hit, bool knownApart)
+    {
+        float rate = 0f;
+        for (int i = 0; i < _sampler.HitCount; i++)
+        {
+            rate = MathF.Max(rate, _table.Rate[_sampler.HitSlots[i]]);
+        }
+
+        if (!knownApart)
+        {
+            MoveInvolved(free);
+            if (AnyHitIntersects())
+            {
+                return free;
+            }
+        }
+
+        double lo = free;
+        double hi = hit;
+        if ((hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance)
+        {
+            Guess(ref lo, ref hi, rate);
+        }
+        for (int iteration = 0; iteration < 48 && (hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance; iteration++)
+        {
+            double mid = 0.5 * (lo + hi);
+            MoveInvolved(mid);
+            if (AnyHitIntersects())
+            {
+                hi = mid;
+            }
+            else
+            {
+                lo = mid;
+            }
+        }
+
+        return hi;
+    }
+
+    // The deepest hit's depth shrinks at its closing rate, so it reached zero near hi − depth / rate:
+    // probe there (exact for translation). While the probe still overlaps, the same estimate from
+    // its own depth moves hi on (a few rounds: turning bodies close at a changing rate); once a
+    // probe is apart, one more just after it brackets the contact tightly.
+    private void Guess(ref double lo, ref double hi, float rate)
+    {
+        int deepest = 0;
+        for (int i = 1; i < _sampler.HitCount; i++)
+        {
+            deepest = _sampler.HitValues[i].Depth > _sampler.HitValues[deepest].Depth ? i : deepest;
+        }
+
+        int slot = _sampler.HitSlots[deepest];
+        Hit hit = _sampler.HitValues[deepest];
+        for (int round = 0; round < GuessRounds; round++)
+        {
+            float closing = ClosingRate(_table.Pair[slot], hit);
+            if (!(closing > 0f) || rate <= 0f)
+            {
+                return;
+            }
+
+            double guess = hi - (hit.Depth / closing);
+            if (!(guess > lo && guess < hi))
+            {
+                return;
+            }
+
+            MoveInvolved(guess);
+            if (DeepestHitNow(out slot, out hit))
+            {
+                hi = guess;
+                if ((hi - lo) * rate <= MotionTolerances.TimeOfImpactTolerance)
+                {
+                    return;
+                }
+
+                continue;
+            }
+
+            lo = guess;
+            double next = lo + (0.5 * MotionTolerances.TimeOfImpactTolerance / rate);
+            if (next < hi)
+            {
+                MoveInvolved(next);
+                if (AnyHitIntersects())
+                {
+                    hi = next;
+                }
+                else
+                {
+                    lo = next;
+                }
+            }
+
+            return;
+        }
+    }
+
+    // The deepest of the event's pairs that overlaps now, if any.
+    private bool DeepestHitNow(out int slot, out Hit deepest)
+    {
+        slot = -1;
+        deepest = default;
+        for (int i = 0; i < _sampler.HitCount; i++)
+        {
+            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
+            Hit hit = _sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]);
+            if (hit.Depth > MotionTolerances.ContactSlop && hit.Depth > deepest.Depth)
+            {
+                slot = _sampler.HitSlots[i];
+                deepest = hit;
+            }
+        }
+
+        return slot >= 0;
+    }
+
+    private bool AnyHitIntersects()
+    {
+        for (int i = 0; i < _sampler.HitCount; i++)
+        {
+            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
+            if (_sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    // How fast the two bodies close along the hit's normal at its action point, mm per whole step (positive when approaching).
+    private float ClosingRate(in PlannedPair pair, in Hit hit)
+    {
+        Vector2 a = PointVelocity(_bodies[pair.A], hit.Point);
+        Vector2 b = pair.MoverB >= 0 ? PointVelocity(_bodies[pair.B], hit.Point) : Vector2.Zero;
+        return -Vector2.Dot(a - b, hit.Normal) * _planner.Seconds;
+    }
+
+    private static Vector2 PointVelocity(Body body, Vector2 point)
+    {
+        Vector2 r = point - body.Position;
+        return body.Velocity + (body.AngularVelocity * new Vector2(-r.Y, r.X));
+    }
+}
