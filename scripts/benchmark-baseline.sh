@@ -23,9 +23,13 @@ if ! git -C "$root" cat-file -e "$commit^{commit}" 2>/dev/null; then
 fi
 exec 9>"$root/benchmarks/URWPGSim2D.Collision.Benchmarks.Baseline/.tagged.lock"
 flock 9
+# Only the tagged src/ is compiled. The tagged benchmarks/ folder goes: BenchmarkDotNet looks for
+# its project by name under the clone and fails on a second URWPGSim2D.Collision.Benchmarks.csproj.
 if [ -e "$dir/.git" ] && [ "$(git -C "$dir" rev-parse HEAD 2>/dev/null)" = "$commit" ]; then
+  rm -rf "$dir/benchmarks"
   exit 0
 fi
 rm -rf "$dir"
 git -C "$root" worktree prune
 git -C "$root" worktree add --detach --quiet "$dir" "$commit"
+rm -rf "$dir/benchmarks"

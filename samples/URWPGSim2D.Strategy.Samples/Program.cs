@@ -21,6 +21,11 @@ internal static class Program
             var s = new MyTeam.DrawsItsPlan();
             Expect(s.TeamName == "draws its plan" && !URWPGSim2D.Strategies.DebugDraw.IsOn, "team name, drawings off outside a match");
         });
+        failed += Check("SensingStrategy", () =>
+        {
+            var s = new MyTeam.LookBeforeSwimming();
+            Expect(s.TeamName == "look before swimming", "team name");
+        });
         return failed == 0 ? 0 : 1;
     }
 

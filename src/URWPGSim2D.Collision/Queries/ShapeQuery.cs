@@ -18,7 +18,8 @@ namespace URWPGSim2D.Collision.Queries;
 /// Precision: ray casts are exact up to float round-off (edge clipping for polygons, boxes and
 /// 8-DOPs, a line crossing for segments, a quadratic for circles). Distances come from a GJK
 /// descent that ends on the closest features, so on polygons they are the exact vertex–edge
-/// distance up to round-off (about 10⁻⁶ of the shapes' size). Casts advance conservatively and stop
+/// distance up to round-off (about 10⁻⁶ of the shapes' size); the distance from a point to a shape
+/// is in closed form (nearest vertex or edge). Casts advance conservatively and stop
 /// within <see cref="CastTolerance"/> mm of the contact,
 /// never past it. Overlaps are decided by the narrow phase, so touching is not overlapping, as there.
 /// </remarks>
@@ -165,21 +166,20 @@ public static partial class ShapeQuery
 
     internal static DistanceResult ToPoint(scoped in QueryBody a, Vector2 point)
     {
-        VertexBuffer8 bufferA = default, bufferP = default;
-        var qp = QueryShape.Point(ref bufferP, point);
+        VertexBuffer8 bufferA = default;
         float best = float.PositiveInfinity;
         Vector2 bestA = point;
         int part = 0;
         for (int i = 0; i < a.Count; i++)
         {
             var qa = a.Part(i, ref bufferA);
-            float d = Gjk.Distance(qa, default, qp, out Vector2 pa, out _, out Vector2 separation);
+            float d = PointDistance.ToCore(qa, point, out Vector2 pa);
             float gap = d - qa.Radius;
             if (gap < best)
             {
                 best = gap;
                 part = i;
-                bestA = d > 0f ? pa - (separation * (qa.Radius / d)) : point;
+                bestA = d > 0f ? pa + ((point - pa) * (qa.Radius / d)) : point;
             }
         }
 

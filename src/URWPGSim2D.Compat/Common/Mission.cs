@@ -54,6 +54,9 @@ public class Mission : ICloneable
     /// <returns><see cref="DecisionRef"/>.</returns>
     public Decision[,]? GetDecision() => DecisionRef;
 
+    /// <summary>The snapshot the host built this mission from (null for a mission made by hand): what <see cref="StrategyHelper.CollisionQueries"/> asks about.</summary>
+    internal Strategies.MatchSnapshot? Source { get; set; }
+
     /// <summary>A deep copy (parameters, teams and fish, environment, variables).</summary>
     /// <returns>A new <see cref="Mission"/>.</returns>
     public virtual object Clone()
@@ -71,6 +74,7 @@ public class Mission : ICloneable
         }
 
         copy.HtMissionVariables = (Hashtable)HtMissionVariables.Clone();
+        copy.Source = Source;
         return copy;
     }
 }

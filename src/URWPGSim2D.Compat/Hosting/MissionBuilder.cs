@@ -26,7 +26,7 @@ internal sealed class MissionBuilder
     public Mission Build(MatchSnapshot snapshot)
     {
         ArgumentNullException.ThrowIfNull(snapshot);
-        var mission = new Mission();
+        var mission = new Mission { Source = snapshot };
         int teamCount = TeamCount(snapshot);
         var perTeam = new int[teamCount];
         foreach (ref readonly var f in snapshot.Fish)

@@ -147,7 +147,7 @@ internal static class StrategyCompiler
         return b.ToImmutable();
     }
 
-    // The framework's own assemblies (from the trusted platform list, in the runtime's folder) plus the SDK and the compatibility assembly.
+    // The framework's own assemblies (from the trusted platform list, in the runtime's folder) plus the SDK, the collision library under it and the compatibility assembly.
     [UnconditionalSuppressMessage("SingleFile", "IL3000", Justification = "The server runs from its own folder (never a single-file bundle): assemblies have paths.")]
     private static ImmutableArray<MetadataReference> CreateReferences()
     {
@@ -163,6 +163,7 @@ internal static class StrategyCompiler
         }
 
         list.Add(MetadataReference.CreateFromFile(typeof(IStrategy).Assembly.Location));
+        list.Add(MetadataReference.CreateFromFile(typeof(Collision.Queries.ShapeQuery).Assembly.Location)); // the SDK's FieldSensor answers in its types
         list.Add(MetadataReference.CreateFromFile(typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly.Location));
         return list.ToImmutable();
     }

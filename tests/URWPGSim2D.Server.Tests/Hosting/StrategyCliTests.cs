@@ -74,6 +74,17 @@ public sealed class StrategyCliTests : IDisposable
         Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void TheSensingSampleSeesTheMatchWithoutFaults()
+    {
+        // The docs' FieldSensor sample, compiled from source and played for 100 cycles of ball-grab.
+        string sample = Docs.Repository.PathOf("samples/URWPGSim2D.Strategy.Samples/SensingStrategy.cs");
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "100", "--strategy", "0=" + sample);
+        Assert.Equal(0, run.ExitCode);
+        Assert.Contains("team 0 (SensingStrategy.cs)", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
+    }
+
     // The text of the docs/strategies.md code block starting with the given line.
     private static string DocsBlock(string firstLine)
     {
