@@ -81,7 +81,7 @@ public sealed class StrategyCliTests : IDisposable
         string sample = Docs.Repository.PathOf("samples/URWPGSim2D.Strategy.Samples/SensingStrategy.cs");
         var run = CliRun.Of(string.Empty, "run", "--cycles", "100", "--strategy", "0=" + sample);
         Assert.Equal(0, run.ExitCode);
-        Assert.Contains("team 0 (SensingStrategy.cs)", run.Stdout, StringComparison.Ordinal);
+        Assert.Contains("team 0 (look before swimming [SensingStrategy.cs])", run.Stdout, StringComparison.Ordinal);
         Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
     }
 
