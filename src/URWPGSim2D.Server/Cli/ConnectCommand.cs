@@ -52,7 +52,7 @@ internal sealed class ConnectCommand : ICliCommand
         IStrategy strategy;
         try
         {
-            strategy = StrategyResolver.Load(spec);
+            strategy = StrategyResolver.Load(spec, console.ErrorLine);
         }
         catch (StrategyLoadException e)
         {

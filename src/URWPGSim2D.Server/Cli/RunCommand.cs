@@ -95,7 +95,7 @@ internal sealed class RunCommand : ICliCommand
         HostSandbox.Warn = console.ErrorLine;
         try
         {
-            teams = LoadTeams(options, console);
+            teams = LoadTeams(options, console, console.ErrorLine);
         }
         catch (StrategyLoadException e)
         {
@@ -207,7 +207,8 @@ internal sealed class RunCommand : ICliCommand
     /// <exception cref="StrategyLoadException">A strategy cannot be used, or <c>--sandbox required</c> cannot be met; the message starts with the option.</exception>
     /// <param name="options">The options.</param>
     /// <param name="console">Where the remote teams' lines go (null: no remote teams are made; <c>--batch</c> and <c>--live</c> have none).</param>
-    public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null)
+    /// <param name="progress">Told a line when a team's sources start and finish compiling.</param>
+    public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null, Action<string>? progress = null)
     {
         var teams = new TeamStrategy?[options.Strategies.Length];
         for (int t = 0; t < teams.Length; t++)
@@ -228,14 +229,14 @@ internal sealed class RunCommand : ICliCommand
                         continue;
                     }
 
-                    var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec) : null;
+                    var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress) : null;
                     if (prepared is not null)
                     {
                         HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
                     }
 
                     teams[t] = prepared is null
-                        ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec)
+                        ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress)
                         : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
                 }
                 catch (StrategyLoadException e)

@@ -116,7 +116,7 @@ internal sealed class TournamentCommand : ICliCommand
     private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, CliConsole console)
     {
         HostSandbox.Warn = console.ErrorLine;
-        var entrants = new EntrantLoader(o.Entrants, o.HostSettings);
+        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine);
         var errors = entrants.Errors;
         if (entrants.AnyHosted)
         {

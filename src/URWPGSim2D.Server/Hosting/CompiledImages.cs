@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Concurrent;
 using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
 using System.IO;
 using System.Security.Cryptography;
 using System.Text;
@@ -18,11 +20,14 @@ internal static class CompiledImages
     private static readonly ConcurrentDictionary<string, string> Files = new(StringComparer.Ordinal);
 
     /// <summary>The compiled image of the sources <paramref name="files"/> of <paramref name="path"/>.</summary>
+    /// <param name="path">The spec's folder or file, as the user wrote it.</param>
+    /// <param name="files">Its source files.</param>
+    /// <param name="progress">Told a line when compiling starts and one when it is done (with the time it took); not told when the image is already compiled.</param>
     /// <exception cref="StrategyLoadException">They do not compile (the message names <paramref name="path"/>).</exception>
-    public static byte[] Get(string path, IReadOnlyList<string> files)
+    public static byte[] Get(string path, IReadOnlyList<string> files, Action<string>? progress = null)
     {
         string key = Key(path, files);
-        var lazy = Images.GetOrAdd(key, _ => new Lazy<byte[]>(() => Compile(path, files)));
+        var lazy = Images.GetOrAdd(key, _ => new Lazy<byte[]>(() => Compile(path, files, progress)));
         try
         {
             return lazy.Value;
@@ -35,9 +40,12 @@ internal static class CompiledImages
     }
 
     /// <summary>The compiled image of <paramref name="path"/>'s sources written to a file of this run's folder (once), for a strategy host to load.</summary>
-    public static string File(string path, IReadOnlyList<string> files)
+    /// <param name="path">The spec's folder or file, as the user wrote it.</param>
+    /// <param name="files">Its source files.</param>
+    /// <param name="progress">As for <see cref="Get"/>.</param>
+    public static string File(string path, IReadOnlyList<string> files, Action<string>? progress = null)
     {
-        byte[] image = Get(path, files);
+        byte[] image = Get(path, files, progress);
         string key = Key(path, files);
         return Files.GetOrAdd(key, _ =>
         {
@@ -50,11 +58,15 @@ internal static class CompiledImages
     /// <summary>The assembly name of a compiled strategy.</summary>
     public static string Name(string path) => "Strategy_" + System.IO.Path.GetFileNameWithoutExtension(System.IO.Path.TrimEndingDirectorySeparator(path));
 
-    private static byte[] Compile(string path, IReadOnlyList<string> files)
+    private static byte[] Compile(string path, IReadOnlyList<string> files, Action<string>? progress)
     {
         try
         {
-            return StrategyCompiler.Compile(Name(path), files);
+            progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiling {path} ({files.Count} file{(files.Count == 1 ? string.Empty : "s")})..."));
+            long start = Stopwatch.GetTimestamp();
+            byte[] image = StrategyCompiler.Compile(Name(path), files);
+            progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiled {path} in {Stopwatch.GetElapsedTime(start).TotalSeconds:0.0} s"));
+            return image;
         }
         catch (StrategyLoadException e)
         {

@@ -13,7 +13,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// Compiles a team's strategy sources in process (Roslyn) against the framework, the strategy SDK and
 /// the compatibility assembly (the original's API). Errors come back as <c>file(line,col): error CSnnnn:
-/// message</c> lines; warnings are ignored, and the ones old sources always raise on .NET 10 are
+/// message</c> lines, led by their likely cause (<see cref="CompileErrors"/>); warnings are ignored, and the ones old sources always raise on .NET 10 are
 /// suppressed outright: the obsolete <c>InitializeLifetimeService</c> override (CS0672, SYSLIB0010,
 /// CS0618), the lower-case <c>xna</c> alias (CS8981) and a team's own <c>StrategyHelper.cs</c> taking
 /// precedence over the compatibility assembly's copy (CS0436).
@@ -56,7 +56,7 @@ internal static class StrategyCompiler
     /// <param name="name">Assembly name.</param>
     /// <param name="files">The source files.</param>
     /// <returns>The assembly image.</returns>
-    /// <exception cref="StrategyLoadException">A file cannot be read, or the sources do not compile (one line per error).</exception>
+    /// <exception cref="StrategyLoadException">A file cannot be read, or the sources do not compile (<see cref="CompileErrors"/>).</exception>
     public static byte[] Compile(string name, IReadOnlyList<string> files)
     {
         var trees = new List<SyntaxTree>(files.Count);
@@ -87,42 +87,11 @@ internal static class StrategyCompiler
         var result = compilation.Emit(image);
         if (!result.Success)
         {
-            var errors = Errors(result.Diagnostics);
-            throw new StrategyLoadException(
-                string.Create(CultureInfo.InvariantCulture, $"{errors.Count} compile error{(errors.Count == 1 ? string.Empty : "s")} in {files.Count} file{(files.Count == 1 ? string.Empty : "s")}:"),
-                errors);
+            var (message, details) = CompileErrors.Report(compilation, result.Diagnostics, files.Count);
+            throw new StrategyLoadException(message, details);
         }
 
         return image.ToArray();
-    }
-
-    /// <summary>The error lines of a failed compilation, by file, line and column.</summary>
-    private static List<string> Errors(ImmutableArray<Diagnostic> diagnostics)
-    {
-        var errors = new List<Diagnostic>();
-        foreach (var d in diagnostics)
-        {
-            if (d.Severity == DiagnosticSeverity.Error)
-            {
-                errors.Add(d);
-            }
-        }
-
-        errors.Sort((a, b) =>
-        {
-            var pa = a.Location.GetLineSpan();
-            var pb = b.Location.GetLineSpan();
-            int c = string.CompareOrdinal(pa.Path, pb.Path);
-            c = c != 0 ? c : pa.StartLinePosition.Line.CompareTo(pb.StartLinePosition.Line);
-            return c != 0 ? c : pa.StartLinePosition.Character.CompareTo(pb.StartLinePosition.Character);
-        });
-        var lines = new List<string>(errors.Count);
-        foreach (var d in errors)
-        {
-            lines.Add(Format(d));
-        }
-
-        return lines;
     }
 
     /// <summary>One diagnostic as <c>file(line,col): error ID: message</c> (1-based line and column).</summary>

@@ -27,8 +27,10 @@ internal static class StrategyResolver
     public static IReadOnlyList<string> BuiltInNames { get; } = ["idle", "chase-ball"];
 
     /// <summary>Creates the strategy named by <paramref name="spec"/>.</summary>
+    /// <param name="spec">The spec.</param>
+    /// <param name="progress">Told when sources start and finish compiling (<see cref="CompiledImages.Get"/>).</param>
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    public static IStrategy Load(string spec)
+    public static IStrategy Load(string spec, Action<string>? progress = null)
     {
         if (spec == "idle")
         {
@@ -43,7 +45,7 @@ internal static class StrategyResolver
         (string path, string? typeName) = Split(spec);
         if (IsSources(path))
         {
-            return FromSources(path, typeName);
+            return FromSources(path, typeName, progress);
         }
 
         string full = CheckAssembly(spec, path);
@@ -55,9 +57,11 @@ internal static class StrategyResolver
     /// its code: sources are compiled (once per run) to a file of the run's folder, and the assembly's
     /// strategy class is looked up. Null for a built-in name (built-ins run in the server's process).
     /// </summary>
+    /// <param name="spec">The spec.</param>
+    /// <param name="progress">Told when sources start and finish compiling (<see cref="CompiledImages.Get"/>).</param>
     /// <exception cref="StrategyLoadException">The strategy cannot be used (same messages as <see cref="Load"/>).</exception>
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    public static PreparedStrategy? Prepare(string spec)
+    public static PreparedStrategy? Prepare(string spec, Action<string>? progress = null)
     {
         if (spec is "idle" or "chase-ball")
         {
@@ -69,7 +73,7 @@ internal static class StrategyResolver
         if (IsSources(path))
         {
             var files = Sources(path);
-            byte[] image = CompiledImages.Get(path, files);
+            byte[] image = CompiledImages.Get(path, files, progress);
             var context = new StrategyLoadContext(path, null);
             try
             {
@@ -142,9 +146,9 @@ internal static class StrategyResolver
     }
 
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    private static IStrategy FromSources(string path, string? typeName)
+    private static IStrategy FromSources(string path, string? typeName, Action<string>? progress)
     {
-        byte[] image = CompiledImages.Get(path, Sources(path));
+        byte[] image = CompiledImages.Get(path, Sources(path), progress);
         var context = new StrategyLoadContext(path, null);
         using var stream = new MemoryStream(image, writable: false);
         return Create(context.LoadFromStream(stream), path, typeName);

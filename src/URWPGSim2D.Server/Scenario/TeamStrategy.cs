@@ -31,12 +31,15 @@ internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isol
     /// A team played in the server's process by a fresh instance of <paramref name="spec"/>
     /// (<c>--isolation none</c>): isolated on its own thread; a constructor that throws is the team's fault, not a load error.
     /// </summary>
+    /// <param name="label">The spec's label, for a strategy that has no name of its own.</param>
+    /// <param name="spec">The spec.</param>
+    /// <param name="progress">Told when sources start and finish compiling.</param>
     /// <exception cref="StrategyLoadException">The strategy cannot be loaded (not found, does not compile, no strategy class).</exception>
-    public static TeamStrategy InProcess(string label, string spec)
+    public static TeamStrategy InProcess(string label, string spec, Action<string>? progress = null)
     {
         try
         {
-            IStrategy strategy = StrategyResolver.Load(spec);
+            IStrategy strategy = StrategyResolver.Load(spec, progress);
             return new TeamStrategy(Hosting.TeamName.Label(NameOf(strategy), label), strategy, Isolated: true);
         }
         catch (StrategyCreationException e)

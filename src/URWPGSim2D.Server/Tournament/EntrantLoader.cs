@@ -24,7 +24,8 @@ internal sealed class EntrantLoader
     /// <summary>Readies every entrant under <paramref name="settings"/>.</summary>
     /// <param name="entrants">The entrants, in command-line order.</param>
     /// <param name="settings">How user strategies run (<c>--isolation</c>, <c>--sandbox</c>, <c>--strategy-memory</c>).</param>
-    public EntrantLoader(IReadOnlyList<Entrant> entrants, HostSettings settings)
+    /// <param name="progress">Told a line when an entrant's sources start and finish compiling.</param>
+    public EntrantLoader(IReadOnlyList<Entrant> entrants, HostSettings settings, Action<string>? progress = null)
     {
         ArgumentNullException.ThrowIfNull(entrants);
         ArgumentNullException.ThrowIfNull(settings);
@@ -34,7 +35,7 @@ internal sealed class EntrantLoader
         var errors = new string?[entrants.Count];
         for (int i = 0; i < entrants.Count; i++)
         {
-            (_prepared[i], errors[i]) = Ready(entrants[i], settings);
+            (_prepared[i], errors[i]) = Ready(entrants[i], settings, progress);
         }
 
         Errors = errors;
@@ -75,7 +76,7 @@ internal sealed class EntrantLoader
         StandingsText.Line(e.Details.Count == 0 ? e.Message : $"{e.Message.TrimEnd(':', ' ')}; first: {e.Details[0]}");
 
     // The prepared strategy (hosted entrants) and null, or null and the reason it cannot be used.
-    private static (PreparedStrategy? Prepared, string? Error) Ready(Entrant entrant, HostSettings settings)
+    private static (PreparedStrategy? Prepared, string? Error) Ready(Entrant entrant, HostSettings settings, Action<string>? progress)
     {
         if (entrant.Spec == Entrant.Demo)
         {
@@ -84,7 +85,7 @@ internal sealed class EntrantLoader
 
         try
         {
-            var prepared = StrategyResolver.Prepare(entrant.Spec); // compiles and checks; runs none of the entrant's code
+            var prepared = StrategyResolver.Prepare(entrant.Spec, progress); // compiles and checks; runs none of the entrant's code
             return (settings.Isolation == IsolationMode.Process ? prepared : null, null);
         }
         catch (StrategyLoadException e)

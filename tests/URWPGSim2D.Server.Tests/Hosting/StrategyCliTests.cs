@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 
@@ -28,12 +29,14 @@ public sealed class StrategyCliTests : IDisposable
         string prefix = _folder + Path.DirectorySeparatorChar;
         string[] expected =
         [
-            "--strategy 0: cannot compile teams/red: 2 compile errors in 1 file:",
+            "compiling teams/red (1 file)...",
+            "--strategy 0: cannot compile teams/red: likely cause: Mission.NoSuchMember is a part of the original's API this simulator does not provide (CS1061); use the members docs/strategies.md lists, or report the missing one",
             "teams/red/Strategy.cs(14,21): error CS0103: The name 'undefinedThing' does not exist in the current context",
             "teams/red/Strategy.cs(15,28): error CS1061: 'Mission' does not contain a definition for 'NoSuchMember' and no accessible extension method 'NoSuchMember' accepting a first argument of type 'Mission' could be found (are you missing a using directive or an assembly reference?)",
+            "2 compile errors in 1 file",
         ];
         Assert.Equal(expected, run.Stderr.Replace(prefix, string.Empty, StringComparison.Ordinal).TrimEnd('\n').Split('\n'));
-        Assert.Equal(string.Join('\n', expected), DocsBlock("--strategy 0: cannot compile"));
+        Assert.Equal(string.Join('\n', expected), DocsBlock("compiling teams/red"));
     }
 
     [Fact]
@@ -68,9 +71,17 @@ public sealed class StrategyCliTests : IDisposable
     {
         string file = Path.Combine(_folder, "Sprinter.cs");
         File.WriteAllText(file, StrategyLoaderTests.SprinterSource);
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + file);
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + file, "--strategy", "1=" + file);
         Assert.Equal(0, run.ExitCode);
         Assert.Contains("team 0 (sprinters [Sprinter.cs])", run.Stdout, StringComparison.Ordinal);
+
+        // Progress while waiting: a line when compiling starts and one when it is done, on stderr,
+        // once for the two teams of the same source (the summary on stdout is unchanged).
+        string[] progress = [.. run.Stderr.Split('\n').Where(l => l.StartsWith("compil", StringComparison.Ordinal))];
+        Assert.Equal(2, progress.Length);
+        Assert.Equal($"compiling {file} (1 file)...", progress[0]);
+        Assert.Matches("^compiled " + System.Text.RegularExpressions.Regex.Escape(file) + " in [0-9]+\\.[0-9] s$", progress[1]);
+        Assert.DoesNotContain("compil", run.Stdout, StringComparison.Ordinal);
         Assert.Contains("strategy faults: none", run.Stdout, StringComparison.Ordinal);
     }
 
