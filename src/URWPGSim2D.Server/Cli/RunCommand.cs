@@ -332,7 +332,8 @@ internal sealed class RunCommand : ICliCommand
         "the same match whatever P); with --batch, P is the number of matches played at once (default: every core).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +
         "--shard I/K plays matches j with j mod K = I; --results FILE writes JSON Lines for 'merge'.\n" +
-        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time);\n" +
+        "--slurm DIR writes the batch as a Slurm job array of --shards K tasks and a merge job (--partition, --time,\n" +
+        "--sbatch-arg ARG for any other sbatch option, --slurm-setup FILE sourced by the jobs first, e.g. module loads);\n" +
         "--submit submits them; asked again, only the shards without results are played.\n" +
         "Formats: docs/items.md, docs/scenario.md, docs/simulation.md, docs/batch.md, docs/strategies.md.\n";
 }

@@ -15,7 +15,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -140,12 +140,21 @@ internal sealed class RunOptions
     /// <summary>Slurm time limit of each job (<c>--time T</c>, sbatch's format), or null for the partition's default.</summary>
     public string? TimeLimit { get; private set; }
 
+    /// <summary>Further sbatch options of both jobs (<c>--sbatch-arg ARG</c>, repeatable), in order.</summary>
+    public IReadOnlyList<string> SbatchArguments => _sbatchArguments;
+
+    private readonly List<string> _sbatchArguments = [];
+
+    /// <summary>A bash file the jobs source before the server starts (<c>--slurm-setup FILE</c>), or null.</summary>
+    public string? SlurmSetup { get; private set; }
+
     /// <summary>Whether to submit the written Slurm jobs (<c>--submit</c>).</summary>
     public bool Submit { get; private set; }
 
     /// <summary>
     /// The arguments as given but for the options of <c>--slurm</c> itself (<c>--slurm</c>,
-    /// <c>--shards</c>, <c>--partition</c>, <c>--time</c>, <c>--results</c>, <c>--submit</c>): what
+    /// <c>--shards</c>, <c>--partition</c>, <c>--time</c>, <c>--sbatch-arg</c>, <c>--slurm-setup</c>,
+    /// <c>--results</c>, <c>--submit</c>): what
     /// every task of a Slurm batch passes on, so it plays exactly the batch asked for.
     /// </summary>
     public IReadOnlyList<string> PassedOn { get; private set; } = [];
@@ -184,7 +193,7 @@ internal sealed class RunOptions
                 continue;
             }
 
-            if (name is "--slurm" or "--shards" or "--partition" or "--time" or "--results")
+            if (name is "--slurm" or "--shards" or "--partition" or "--time" or "--results" or "--sbatch-arg" or "--slurm-setup")
             {
                 slurmOwn.Add(i);
                 slurmOwn.Add(i + 1);
@@ -216,7 +225,7 @@ internal sealed class RunOptions
             }
 
             string value = args[++i];
-            if (name is not ("--strategy" or "--remote-token") && !seen.Add(name))
+            if (name is not ("--strategy" or "--remote-token" or "--sbatch-arg") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
             }
@@ -240,6 +249,8 @@ internal sealed class RunOptions
                 case "--shards": o.SlurmShards = (int)Number(name, value, 1, global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.MaximumShards); break;
                 case "--partition": o.Partition = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
                 case "--time": o.TimeLimit = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
+                case "--sbatch-arg": o._sbatchArguments.Add(global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.SbatchArgumentError(value) is { } why ? throw UsageError(why) : value); seen.Add(name); break;
+                case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
@@ -432,9 +443,9 @@ internal sealed class RunOptions
     // The options of a Slurm batch (docs/batch.md, "On a Slurm cluster").
     private void CheckSlurm()
     {
-        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit))
+        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit || SbatchArguments.Count > 0 || SlurmSetup is not null))
         {
-            throw UsageError("--shards, --partition, --time and --submit belong to --slurm DIR");
+            throw UsageError("--shards, --partition, --time, --sbatch-arg, --slurm-setup and --submit belong to --slurm DIR");
         }
 
         if (Slurm is null)

@@ -62,10 +62,43 @@ internal static class SlurmRun
             return Refuse(console, e.Message);
         }
 
+        if (Setup(options.SlurmSetup, console, "run") is not { } setup)
+        {
+            return ExitCodes.BadInput;
+        }
+
         var job = new SlurmJob(
             ServerCommand.OfThisProcess(), options.PassedOn, Environment.CurrentDirectory, folder, results, shards, toPlay,
-            options.Threads ?? 1, options.Threads is not null, options.Partition, options.TimeLimit);
+            options.Threads ?? 1, options.Threads is not null, options.Partition, options.TimeLimit,
+            SbatchArguments: options.SbatchArguments, Setup: setup.Length > 0 ? setup : null);
         return WriteJobs(job, header.Matches, options.Submit, console, "run");
+    }
+
+    /// <summary>
+    /// The absolute path of <c>--slurm-setup FILE</c> (empty without the option), or null after a
+    /// line on stderr when FILE is not a readable file.
+    /// </summary>
+    internal static string? Setup(string? file, CliConsole console, string command)
+    {
+        if (file is null)
+        {
+            return string.Empty;
+        }
+
+        try
+        {
+            string full = Path.GetFullPath(file);
+            if (File.Exists(full))
+            {
+                return full;
+            }
+        }
+        catch (Exception e) when (e is ArgumentException or NotSupportedException or PathTooLongException)
+        {
+        }
+
+        console.ErrorLine($"{command}: --slurm-setup: {file} is not a file (a bash file the jobs source before the server starts)");
+        return null;
     }
 
     /// <summary>
@@ -103,11 +136,12 @@ internal static class SlurmRun
             return ExitCodes.Success;
         }
 
-        return Submit(submitScript, console);
+        return Submit(submitScript, console, command);
     }
 
-    // bash DIR/submit.sh: its lines (the job ids) go to stdout; when sbatch refuses, its message to stderr and exit 1.
-    private static int Submit(string script, CliConsole console)
+    // bash DIR/submit.sh: its lines (the job ids) go to stdout; when sbatch refuses, a line saying so
+    // and sbatch's message as it wrote it go to stderr, exit code 2.
+    private static int Submit(string script, CliConsole console, string command)
     {
         var start = new ProcessStartInfo("bash") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         start.ArgumentList.Add(script);
@@ -118,9 +152,17 @@ internal static class SlurmRun
         console.Out.Write(output);
         if (process.ExitCode != 0)
         {
-            string message = error.Result.Trim();
-            console.ErrorLine($"slurm: submitting failed (bash {ShellWord.Quote(script)} exited {process.ExitCode}){(message.Length > 0 ? ": " + message : string.Empty)}");
-            return ExitCodes.InternalError;
+            string message = error.Result.TrimEnd();
+            console.ErrorLine($"{command}: --submit: sbatch refused the jobs (bash {ShellWord.Quote(script)} exited {process.ExitCode}){(message.Length > 0 ? "; its message:" : string.Empty)}");
+            foreach (string line in message.Split('\n'))
+            {
+                if (line.Length > 0)
+                {
+                    console.ErrorLine(line.TrimEnd('\r'));
+                }
+            }
+
+            return ExitCodes.BadInput;
         }
 
         return ExitCodes.Success;

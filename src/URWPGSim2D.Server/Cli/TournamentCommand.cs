@@ -288,10 +288,16 @@ internal sealed class TournamentCommand : ICliCommand
             return Refuse(console, e.Message);
         }
 
+        if (SlurmRun.Setup(o.SlurmSetup, console, "tournament") is not { } setup)
+        {
+            return ExitCodes.BadInput;
+        }
+
         var server = ServerCommand.OfThisProcess();
         var job = new SlurmJob(
             server, o.PassedOn, Environment.CurrentDirectory, jobs, Path.Combine(Path.GetFullPath(o.Out), TournamentOutputs.Results), shards, toPlay,
-            o.Threads ?? 1, o.Threads is not null, o.Partition, o.TimeLimit, "tournament", ["tournament", .. o.PassedOn, "--merge"]);
+            o.Threads ?? 1, o.Threads is not null, o.Partition, o.TimeLimit, "tournament", ["tournament", .. o.PassedOn, "--merge"],
+            o.SbatchArguments, setup.Length > 0 ? setup : null);
         return SlurmRun.WriteJobs(job, schedule.Matches.Count, o.Submit, console, "tournament");
     }
 
@@ -319,6 +325,7 @@ internal sealed class TournamentCommand : ICliCommand
         "--sandbox auto|required|off, --strategy-memory MB), or in the server's process with --isolation none; faults\n" +
         "are charged to the team that made them and the match is played.\n" +
         "--slurm SDIR writes the tournament as a Slurm job array of --shards K tasks (--shard I/K --results FILE each)\n" +
-        "and a merge job (--merge FILE...) into SDIR (--partition, --time); --submit submits them.\n" +
+        "and a merge job (--merge FILE...) into SDIR (--partition, --time, --sbatch-arg ARG for any other sbatch\n" +
+        "option, --slurm-setup FILE sourced by the jobs first); --submit submits them.\n" +
         "Formats: docs/tournament.md.\n";
 }

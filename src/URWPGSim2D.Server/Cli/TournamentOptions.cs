@@ -18,7 +18,7 @@ internal sealed class TournamentOptions
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -70,6 +70,12 @@ internal sealed class TournamentOptions
 
     /// <summary>Slurm time limit, or null.</summary>
     public string? TimeLimit { get; private set; }
+
+    /// <summary>Further sbatch options of both jobs (<c>--sbatch-arg ARG</c>, repeatable), in order.</summary>
+    public List<string> SbatchArguments { get; } = [];
+
+    /// <summary>A bash file the jobs source before the server starts (<c>--slurm-setup FILE</c>), or null.</summary>
+    public string? SlurmSetup { get; private set; }
 
     /// <summary>Whether to submit the Slurm jobs.</summary>
     public bool Submit { get; private set; }
@@ -155,12 +161,12 @@ internal sealed class TournamentOptions
             }
 
             string value = args[++i];
-            if (name != "--entrant" && !seen.Add(name))
+            if (name is not ("--entrant" or "--sbatch-arg") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
             }
 
-            if (name is not ("--slurm" or "--shards" or "--partition" or "--time" or "--shard" or "--results"))
+            if (name is not ("--slurm" or "--shards" or "--partition" or "--time" or "--sbatch-arg" or "--slurm-setup" or "--shard" or "--results"))
             {
                 passedOn.Add(name);
                 passedOn.Add(value);
@@ -186,6 +192,8 @@ internal sealed class TournamentOptions
                 case "--shards": o.SlurmShards = (int)Number(name, value, 1, SlurmJob.MaximumShards); break;
                 case "--partition": o.Partition = SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
                 case "--time": o.TimeLimit = SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
+                case "--sbatch-arg": o.SbatchArguments.Add(SlurmJob.SbatchArgumentError(value) is { } why ? throw UsageError(why) : value); seen.Add(name); break;
+                case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
                 default: throw UsageError($"unknown option {MessageText.Quote(name)}");
@@ -239,9 +247,9 @@ internal sealed class TournamentOptions
             throw UsageError("--shard I/K and --results FILE go together (a Slurm task's share of the tournament)");
         }
 
-        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit))
+        if (Slurm is null && (SlurmShards is not null || Partition is not null || TimeLimit is not null || Submit || SbatchArguments.Count > 0 || SlurmSetup is not null))
         {
-            throw UsageError("--shards, --partition, --time and --submit belong to --slurm SDIR");
+            throw UsageError("--shards, --partition, --time, --sbatch-arg, --slurm-setup and --submit belong to --slurm SDIR");
         }
 
         if (Slurm is not null && (Results is not null || Merge.Count > 0))

@@ -138,7 +138,7 @@ public sealed class TournamentCommandTests : IDisposable
     [InlineData("--entrant", "chase=nowhere/Mine.cs", "--entrant chase: \"nowhere/Mine.cs\" is not demo, a built-in strategy")]
     [InlineData("--entrant", "x", "--entrant must be NAME=SPEC")]
     [InlineData("--entrant", "demo=idle", "--entrant: the name \"demo\" is given twice")]
-    [InlineData("--shards", "3", "--shards, --partition, --time and --submit belong to --slurm SDIR")]
+    [InlineData("--shards", "3", "--shards, --partition, --time, --sbatch-arg, --slurm-setup and --submit belong to --slurm SDIR")]
     [InlineData("--seed", "9223372036854775807", "--seeds 2 --seed 9223372036854775807: seeds from 9223372036854775807 would go beyond 9223372036854775807")]
     public void BadInputIsOneLineAndExitCode2BeforeAnythingIsWritten(string option, string value, string message)
     {

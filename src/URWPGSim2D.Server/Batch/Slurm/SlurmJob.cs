@@ -15,7 +15,9 @@ namespace URWPGSim2D.Server.Batch.Slurm;
 /// them is absolute and every word shell-quoted, so they run from any working directory; the tasks
 /// <c>cd</c> to the directory the batch was asked from, so relative paths among the passed-on
 /// options (a scenario, a strategy) mean what they meant there (when that directory is not on the
-/// node, a task says so in its log and runs in the batch's folder).
+/// node, a task says so in its log and runs in the batch's folder). The jobs start the server that
+/// wrote them unless the environment variables <see cref="DotnetVariable"/> and
+/// <see cref="ServerVariable"/> say otherwise, after sourcing the <see cref="Setup"/> file if any.
 /// </summary>
 /// <param name="Server">The command words that start the server (<see cref="ServerCommand"/>).</param>
 /// <param name="RunArguments">The options of <c>run</c> every task passes on (the batch, its scene, cycles, seed, noise, strategies…).</param>
@@ -30,6 +32,8 @@ namespace URWPGSim2D.Server.Batch.Slurm;
 /// <param name="TimeLimit">sbatch's <c>--time</c>, or null.</param>
 /// <param name="Command">The server's command the tasks run with <paramref name="RunArguments"/>: <c>run</c> (a batch) or <c>tournament</c>.</param>
 /// <param name="MergeArguments">The merge job's command words before the shard files, or null for <c>merge --out RESULTS</c> (a batch's).</param>
+/// <param name="SbatchArguments">Further sbatch options for both jobs (<c>--sbatch-arg</c>: <c>--account=A</c>, <c>--qos=Q</c>, <c>--mem=M</c>…), in order, or null.</param>
+/// <param name="Setup">The absolute path of a bash file both job scripts source before the server starts (<c>--slurm-setup</c>: module loads, environment), or null.</param>
 internal sealed partial record SlurmJob(
     IReadOnlyList<string> Server,
     IReadOnlyList<string> RunArguments,
@@ -43,8 +47,40 @@ internal sealed partial record SlurmJob(
     string? Partition,
     string? TimeLimit,
     string Command = "run",
-    IReadOnlyList<string>? MergeArguments = null)
+    IReadOnlyList<string>? MergeArguments = null,
+    IReadOnlyList<string>? SbatchArguments = null,
+    string? Setup = null)
 {
+    /// <summary>The environment variable that names the <c>dotnet</c> host the jobs run a server DLL with.</summary>
+    public const string DotnetVariable = "URWPGSIM2D_DOTNET";
+
+    /// <summary>The environment variable that names the server the jobs run: a <c>.dll</c> (run with <c>dotnet</c>) or a program.</summary>
+    public const string ServerVariable = "URWPGSIM2D_SERVER";
+
+    /// <summary>sbatch options the scripts set themselves, refused in <c>--sbatch-arg</c>.</summary>
+    private static readonly string[] OwnSbatchOptions = ["--array", "-a", "--dependency", "-d", "--parsable", "--chdir", "-D", "--output", "-o", "--wrap", "--kill-on-invalid-dep"];
+
+    /// <summary>Why <paramref name="value"/> cannot be an <c>--sbatch-arg</c>, or null when it can: one sbatch option word such as <c>--account=fish</c>.</summary>
+    public static string? SbatchArgumentError(string value)
+    {
+        ArgumentNullException.ThrowIfNull(value);
+        if (!value.StartsWith('-') || value.Length < 2 || value.Any(char.IsControl))
+        {
+            return "--sbatch-arg must be one sbatch option such as --account=NAME or --mem=4G (one word; NAME after '=')";
+        }
+
+        string name = value.Split('=')[0];
+        string? own = OwnSbatchOptions.Contains(name) ? name
+            : name.Length > 2 && name[1] != '-' && OwnSbatchOptions.Contains(name[..2]) ? name[..2] // -ologs/x.txt
+            : null;
+        if (own is not null)
+        {
+            return $"--sbatch-arg {name}: the scripts set {own} themselves";
+        }
+
+        return null;
+    }
+
     /// <summary>Most shards of one batch: task indices 0 … 999 fit Slurm's default <c>MaxArraySize</c> (1001).</summary>
     public const int MaximumShards = 1000;
 
@@ -77,11 +113,11 @@ internal sealed partial record SlurmJob(
             "Submitted by submit.sh, next to this file.");
         s.Append("shard=${SLURM_ARRAY_TASK_ID:?not a task of a Slurm job array: submit with submit.sh}\n");
         s.Append("folder=").Append(ShellWord.Quote(Folder)).Append('\n');
+        ServerLines(s);
         string asked = ShellWord.Quote(WorkingDirectory);
         s.Append("cd -- ").Append(asked).Append(" 2>/dev/null || { echo \"shards.sbatch: \"").Append(asked)
             .Append("\" (where the batch was asked from) is not on this node: running in $folder, where relative paths of the options are not found\" >&2; cd -- \"$folder\"; }\n");
-        s.Append("exec");
-        Words(s, Server);
+        s.Append("exec \"${server[@]}\"");
         s.Append(' ').Append(ShellWord.Quote(Command));
         Words(s, RunArguments);
         if (!ThreadsPassedOn)
@@ -102,8 +138,8 @@ internal sealed partial record SlurmJob(
         s.Append("folder=").Append(ShellWord.Quote(Folder)).Append('\n');
         s.Append("files=()\n");
         s.Append("for ((i = 0; i < ").Append(Shards.ToString(CultureInfo.InvariantCulture)).Append("; i++)); do files+=(\"$folder/shard-$i.jsonl\"); done\n");
-        s.Append("exec");
-        Words(s, Server);
+        ServerLines(s);
+        s.Append("exec \"${server[@]}\"");
         Words(s, MergeArguments ?? ["merge", "--out", Results]);
         s.Append(" \"${files[@]}\"\n");
         return s.ToString();
@@ -118,7 +154,8 @@ internal sealed partial record SlurmJob(
         s.Append("folder=").Append(ShellWord.Quote(Folder)).Append('\n');
         string shards = Shards.ToString(CultureInfo.InvariantCulture);
         string limits = (Partition is null ? string.Empty : " --partition=" + ShellWord.Quote(Partition))
-            + (TimeLimit is null ? string.Empty : " --time=" + ShellWord.Quote(TimeLimit));
+            + (TimeLimit is null ? string.Empty : " --time=" + ShellWord.Quote(TimeLimit))
+            + string.Concat((SbatchArguments ?? []).Select(a => " " + ShellWord.Quote(a)));
         string results = ShellWord.Quote(Results);
         if (ToPlay.Count > 0)
         {
@@ -154,6 +191,27 @@ internal sealed partial record SlurmJob(
         s.Append("# The batch: run").Append(Comment(string.Join(' ', RunArguments.Select(ShellWord.Quote)))).Append('\n');
         s.Append("set -euo pipefail\n");
         return s;
+    }
+
+    // The setup file, then the server the job runs as the array "server": the defaults are the
+    // server that wrote the script (dotnet on its DLL, or the program itself), each overridden by
+    // its environment variable; a default dotnet host missing on the node gives way to the dotnet
+    // on PATH (a module's, say).
+    private void ServerLines(StringBuilder s)
+    {
+        if (Setup is not null)
+        {
+            string setup = ShellWord.Quote(Setup);
+            s.Append("set +u # --slurm-setup: module scripts read unset variables\n");
+            s.Append("source ").Append(setup).Append(" || { echo \"slurm setup \"").Append(setup).Append("\" failed\" >&2; exit 1; }\n");
+            s.Append("set -u\n");
+        }
+
+        bool framework = Server.Count == 2;
+        s.Append("dotnet=${").Append(DotnetVariable).Append(":-").Append(framework ? ShellWord.Quote(Server[0]) : "dotnet").Append("}\n");
+        s.Append("[ -n \"${").Append(DotnetVariable).Append(":-}\" ] || command -v \"$dotnet\" >/dev/null || dotnet=dotnet\n");
+        s.Append("server=${").Append(ServerVariable).Append(":-").Append(ShellWord.Quote(Server[^1])).Append("}\n");
+        s.Append("if [[ $server == *.dll ]]; then server=(\"$dotnet\" \"$server\"); else server=(\"$server\"); fi\n");
     }
 
     private static void Words(StringBuilder s, IEnumerable<string> words)

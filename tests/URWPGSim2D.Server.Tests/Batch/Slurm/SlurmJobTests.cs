@@ -155,6 +155,98 @@ public sealed class SlurmJobTests : IDisposable
         Assert.DoesNotContain("merge job", stdout, StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void TheEnvironmentNamesTheDotnetHostAndTheServerTheJobsRun()
+    {
+        // URWPGSIM2D_SERVER: another server (a program: run as is; a .dll: with the dotnet host),
+        // URWPGSIM2D_DOTNET: another dotnet host. Both jobs follow them.
+        string other = Bash.Recorder(Path.Combine(_root, "other server"), "echo program >> \"$RECORD.who\"\n");
+        string host = Bash.Recorder(Path.Combine(_root, "my dotnet"), "echo host >> \"$RECORD.who\"\n");
+        var job = Job(["--batch", "8"]);
+        string shards = Write(SlurmJob.ShardScriptName, job.ShardScript());
+        string merge = Write(SlurmJob.MergeScriptName, job.MergeScript());
+
+        var (code, _, stderr) = Bash.Run(shards, "/", new() { ["RECORD"] = _record, ["SLURM_ARRAY_TASK_ID"] = "0", [SlurmJob.ServerVariable] = other });
+        Assert.True(code == 0, stderr);
+        (code, _, stderr) = Bash.Run(merge, "/", new() { ["RECORD"] = _record, [SlurmJob.DotnetVariable] = host });
+        Assert.True(code == 0, stderr);
+
+        var calls = Bash.Records(_record);
+        Assert.Equal(2, calls.Count);
+        Assert.Equal("run", calls[0][1]); // the program itself, its first argument the command
+        Assert.Equal([ServerScript, "merge"], calls[1][1..3]); // the host, given the default server DLL
+        Assert.Equal(["program", "host"], File.ReadAllLines(_record + ".who"));
+    }
+
+    [Fact]
+    public void ADefaultDotnetHostMissingOnTheNodeGivesWayToTheOneOnPath()
+    {
+        // The scripts were written where dotnet is /nowhere/dotnet; on the node a module puts dotnet on PATH.
+        string bin = Path.Combine(_root, "module bin");
+        Directory.CreateDirectory(bin);
+        Bash.Recorder(Path.Combine(bin, "dotnet"));
+        var job = Job(["--batch", "8"]) with { Server = ["/nowhere/dotnet", ServerScript] };
+        string merge = Write(SlurmJob.MergeScriptName, job.MergeScript());
+
+        var (code, _, stderr) = Bash.Run(merge, "/", new() { ["RECORD"] = _record, ["PATH"] = bin + ":" + Environment.GetEnvironmentVariable("PATH") });
+
+        Assert.True(code == 0, stderr);
+        Assert.Equal([ServerScript, "merge"], Assert.Single(Bash.Records(_record))[1..3]);
+    }
+
+    [Fact]
+    public void TheSetupFileIsSourcedByBothJobsBeforeTheServerStarts()
+    {
+        // A setup file in the style of a module load: it reads an unset variable and puts dotnet on PATH.
+        string bin = Path.Combine(_root, "module 'bin'");
+        Directory.CreateDirectory(bin);
+        Bash.Recorder(Path.Combine(bin, "dotnet"));
+        string setup = Path.Combine(_root, "setup $x.sh");
+        File.WriteAllText(setup, $"[ -z \"$MODULES_UNSET_VARIABLE\" ] && export PATH={ShellWord.Quote(bin)}:\"$PATH\"\necho sourced >> \"$RECORD.setup\"\n");
+        var job = Job(["--batch", "8"]) with { Server = ["/nowhere/dotnet", ServerScript], Setup = setup };
+
+        foreach (var (name, text) in new[] { (SlurmJob.ShardScriptName, job.ShardScript()), (SlurmJob.MergeScriptName, job.MergeScript()) })
+        {
+            var (code, _, stderr) = Bash.Run(Write(name, text), "/", new() { ["RECORD"] = _record, ["SLURM_ARRAY_TASK_ID"] = "1" });
+            Assert.True(code == 0, name + ": " + stderr);
+        }
+
+        Assert.Equal(["sourced", "sourced"], File.ReadAllLines(_record + ".setup"));
+        Assert.Equal(2, Bash.Records(_record).Count);
+
+        // A setup that fails stops the job before the server starts.
+        File.WriteAllText(setup, "false\n");
+        var failed = Bash.Run(Write(SlurmJob.MergeScriptName, job.MergeScript()), "/", new() { ["RECORD"] = _record });
+        Assert.NotEqual(0, failed.Code);
+        Assert.Equal(2, Bash.Records(_record).Count);
+    }
+
+    [Fact]
+    public void SbatchArgumentsGoToBothJobsInOrder()
+    {
+        string[] extra = ["--account=fish 'team'", "--qos=normal", "--mem=4G"];
+        var job = Job(["--batch", "8"]) with { ToPlay = [2], SbatchArguments = extra };
+        var (calls, _) = Submit(job, "41", "42");
+
+        Assert.Equal(2, calls.Count);
+        Assert.All(calls, c => Assert.Equal(extra, c.Skip(c.ToList().IndexOf("--chdir=" + _folder) - extra.Length).Take(extra.Length)));
+    }
+
+    [Theory]
+    [InlineData("--account=fish", null)]
+    [InlineData("-A", null)]
+    [InlineData("--mem=4G", null)]
+    [InlineData("account=fish", "--sbatch-arg must be one sbatch option such as --account=NAME or --mem=4G (one word; NAME after '=')")]
+    [InlineData("-", "--sbatch-arg must be one sbatch option such as --account=NAME or --mem=4G (one word; NAME after '=')")]
+    [InlineData("--array=1-3", "--sbatch-arg --array: the scripts set --array themselves")]
+    [InlineData("--dependency=afterok:1", "--sbatch-arg --dependency: the scripts set --dependency themselves")]
+    [InlineData("-ologs/x.txt", "--sbatch-arg -ologs/x.txt: the scripts set -o themselves")]
+    public void SbatchArgumentsAreOptionWordsTheScriptsDoNotSetThemselves(string value, string? error)
+    {
+        string? why = SlurmJob.SbatchArgumentError(value);
+        Assert.Equal(error, why);
+    }
+
     [Theory]
     [InlineData("60", true)]
     [InlineData("1:30", true)]
@@ -182,8 +274,8 @@ public sealed class SlurmJobTests : IDisposable
     [InlineData("x'y", false)]
     public void PartitionsAreNames(string value, bool valid) => Assert.Equal(valid, SlurmJob.IsPartition(value));
 
-    // The server stand-in: bash on a recorder in a folder with a difficult name, like dotnet on a DLL.
-    private string ServerScript => Path.Combine(_root, "server's \"bin\"", "server");
+    // The server stand-in: bash on a recorder named like a DLL in a folder with a difficult name, like dotnet on a DLL.
+    private string ServerScript => Path.Combine(_root, "server's \"bin\"", "server.dll");
 
     private SlurmJob Job(string[] options, int? threads = null)
     {

@@ -96,8 +96,8 @@ public sealed class SlurmRunTests : IDisposable
     }
 
     [Theory]
-    [InlineData("run: --shards, --partition, --time and --submit belong to --slurm DIR", "--batch", "8", "--shards", "4")]
-    [InlineData("run: --shards, --partition, --time and --submit belong to --slurm DIR", "--batch", "8", "--submit")]
+    [InlineData("run: --shards, --partition, --time, --sbatch-arg, --slurm-setup and --submit belong to --slurm DIR", "--batch", "8", "--shards", "4")]
+    [InlineData("run: --shards, --partition, --time, --sbatch-arg, --slurm-setup and --submit belong to --slurm DIR", "--batch", "8", "--submit")]
     [InlineData("run: --slurm DIR belongs to --batch N", "--slurm", "DIR")]
     [InlineData("run: --slurm makes the shards itself (--shards K); --shard I/K does not go with it", "--batch", "8", "--slurm", "DIR", "--shard", "1/4")]
     [InlineData("run: --shards 9 is more than the 8 matches of --batch", "--batch", "8", "--slurm", "DIR", "--shards", "9")]
@@ -131,13 +131,82 @@ public sealed class SlurmRunTests : IDisposable
     }
 
     [Fact]
+    public void SbatchArgumentsAndTheSetupFileGoIntoTheScriptsAndNotToTheTasks()
+    {
+        string setup = Path.Combine(_root, "setup.sh");
+        File.WriteAllText(setup, "module load dotnet\n");
+        var run = CliRun.Of(string.Empty, "run", "--batch", "8", "--cycles", "3", "--slurm", _folder, "--sbatch-arg", "--account=fish", "--sbatch-arg", "--mem=4G", "--slurm-setup", setup);
+
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        string submit = File.ReadAllText(Path.Combine(_folder, "submit.sh"));
+        Assert.Equal(2, submit.Split(" --account=fish --mem=4G --chdir=").Length - 1); // both jobs
+        foreach (string script in new[] { "shards.sbatch", "merge.sbatch" })
+        {
+            string text = File.ReadAllText(Path.Combine(_folder, script));
+            Assert.Contains("\nsource " + ShellWord.Quote(setup) + " ", text, StringComparison.Ordinal);
+            Assert.DoesNotContain("--account", text.Split('\n').Single(l => l.StartsWith("exec ", StringComparison.Ordinal)), StringComparison.Ordinal);
+        }
+
+        var missing = CliRun.Of(string.Empty, "run", "--batch", "8", "--slurm", Path.Combine(_root, "other"), "--slurm-setup", Path.Combine(_root, "none.sh"));
+        Assert.Equal((2, $"run: --slurm-setup: {Path.Combine(_root, "none.sh")} is not a file (a bash file the jobs source before the server starts)\n"), (missing.ExitCode, missing.Stderr));
+        Assert.False(Directory.Exists(Path.Combine(_root, "other")));
+
+        var own = CliRun.Of(string.Empty, "run", "--batch", "8", "--slurm", Path.Combine(_root, "other"), "--sbatch-arg", "--array=0-3");
+        Assert.Equal(2, own.ExitCode);
+        Assert.StartsWith("run: --sbatch-arg --array: the scripts set --array themselves. Usage: ", own.Stderr, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public async System.Threading.Tasks.Task ARefusedSubmissionShowsSbatchsMessageAsWrittenAndExitsTwo()
+    {
+        // A stand-in sbatch that refuses as a cluster does without --account: two lines on stderr, exit 1.
+        string bin = Path.Combine(_root, "bin");
+        Directory.CreateDirectory(bin);
+        string sbatch = Path.Combine(bin, "sbatch");
+        File.WriteAllText(sbatch, "#!/bin/bash\necho 'sbatch: error: Batch job submission failed: Invalid account' >&2\necho 'sbatch: error: (give --account)' >&2\nexit 1\n");
+        if (!OperatingSystem.IsWindows())
+        {
+            File.SetUnixFileMode(sbatch, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
+        }
+
+        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        var start = new System.Diagnostics.ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+        {
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+        };
+        foreach (string a in new[] { server, "run", "--batch", "4", "--cycles", "3", "--slurm", _folder, "--submit" })
+        {
+            start.ArgumentList.Add(a);
+        }
+
+        start.Environment["PATH"] = bin + ":" + Environment.GetEnvironmentVariable("PATH");
+        using var process = System.Diagnostics.Process.Start(start)!;
+        var error = process.StandardError.ReadToEndAsync();
+        string stdout = await process.StandardOutput.ReadToEndAsync();
+        string stderr = await error;
+        Assert.True(process.WaitForExit(60_000));
+
+        Assert.Equal(2, process.ExitCode);
+        Assert.StartsWith($"slurm: 4 matches in 4 shards, in {_folder}; shards to play: 0-3\n", stdout, StringComparison.Ordinal);
+        Assert.Equal(
+            $"run: --submit: sbatch refused the jobs (bash {ShellWord.Quote(Path.Combine(_folder, "submit.sh"))} exited 1); its message:\n" +
+            "sbatch: error: Batch job submission failed: Invalid account\n" +
+            "sbatch: error: (give --account)\n",
+            stderr);
+    }
+
+    [Fact]
     public void TheTasksGetEveryOptionButThoseOfSlurmInTheirOrder()
     {
         var options = RunOptions.Parse([
             "--scenario", "--submit", "--slurm", "d", "--batch", "8", "--shards", "2", "--strategy", "0=a.dll", "--partition", "p",
-            "--time", "10", "--strategy", "1=b.dll", "--results", "r.jsonl", "--submit", "--seed", "3"]);
+            "--time", "10", "--strategy", "1=b.dll", "--sbatch-arg", "--qos=x", "--results", "r.jsonl", "--slurm-setup", "s.sh", "--submit", "--seed", "3"]);
 
         Assert.Equal(["--scenario", "--submit", "--batch", "8", "--strategy", "0=a.dll", "--strategy", "1=b.dll", "--seed", "3"], options.PassedOn);
+        Assert.Equal(["--qos=x"], options.SbatchArguments);
+        Assert.Equal("s.sh", options.SlurmSetup);
         Assert.Equal(("--submit", "d", 2, "p", "10", "r.jsonl", true), (options.Scenario, options.Slurm, options.SlurmShards, options.Partition, options.TimeLimit, options.Results, options.Submit));
     }
 }
