@@ -84,8 +84,7 @@ internal sealed class CliApp
                 return ExitCodes.Success;
             }
 
-            ICliCommand command = Array.Find(_commands, c => c.Name == args[0])
-                ?? throw new CliUsageException($"unknown command {MessageText.Quote(args[0])}", Synopsis);
+            ICliCommand command = Array.Find(_commands, c => c.Name == args[0]) ?? throw UnknownCommand(args[0]);
             return command.Run(args.AsSpan(1), console);
         }
         catch (CliUsageException ex)
@@ -129,6 +128,15 @@ internal sealed class CliApp
 
         void Line(string synopsis, string summary) =>
             text.Append("  ").Append(ProgramName).Append(' ').Append(synopsis.PadRight(width)).Append("  ").Append(summary).Append('\n');
+    }
+
+    // An unknown command: with the nearest command when one is near ("rn": run), else the synopsis.
+    private CliUsageException UnknownCommand(string name)
+    {
+        string message = $"unknown command {MessageText.Quote(name)}";
+        return Suggestion.Nearest(name, _commands.Select(c => c.Name)) is { } near
+            ? new CliUsageException($"{message}; did you mean {near}?", null)
+            : new CliUsageException(message, Synopsis);
     }
 
     /// <summary>

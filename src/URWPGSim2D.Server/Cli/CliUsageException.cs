@@ -1,25 +1,53 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Text.RegularExpressions;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
 /// Bad command-line arguments (unknown command, missing or extra argument, unknown option):
-/// reported as the single stderr line <c>MESSAGE. Usage: SYNOPSIS</c>, exit code 2.
+/// reported as the single stderr line <c>MESSAGE. Usage: SYNOPSIS</c>, exit code 2; a typo with
+/// a near name is the shorter line <c>MESSAGE; did you mean NAME?</c>.
 /// </summary>
-internal sealed class CliUsageException : Exception
+internal sealed partial class CliUsageException : Exception
 {
     /// <summary>Creates the error.</summary>
     /// <param name="message">What is wrong with the arguments, one line.</param>
-    /// <param name="usage">The synopsis to show, e.g. <c>URWPGSim2D.Server collide FILE</c>.</param>
-    public CliUsageException(string message, string usage)
+    /// <param name="usage">The synopsis to show, e.g. <c>URWPGSim2D.Server collide FILE</c>; null for none.</param>
+    public CliUsageException(string message, string? usage)
         : base(message)
     {
         Usage = usage;
     }
 
-    /// <summary>The synopsis shown after the message.</summary>
-    public string Usage { get; }
+    /// <summary>The synopsis shown after the message, or null.</summary>
+    public string? Usage { get; }
 
     /// <summary>The line written to stderr.</summary>
-    public string Line => $"{Message}. Usage: {Usage}";
+    public string Line => Usage is null ? Message : $"{Message}. Usage: {Usage}";
+
+    /// <summary>
+    /// An unknown option of <paramref name="command"/>: with the nearest option of
+    /// <paramref name="usage"/> (<see cref="Suggestion"/>), <c>COMMAND: unknown option "X"; did you
+    /// mean --Y?</c>; without one, the message and the usage.
+    /// </summary>
+    /// <param name="command">The command's name, e.g. <c>run</c>.</param>
+    /// <param name="option">The option as given.</param>
+    /// <param name="usage">The command's usage, which names every option it takes.</param>
+    public static CliUsageException UnknownOption(string command, string option, string usage)
+    {
+        string message = $"{command}: unknown option {MessageText.Quote(option)}";
+        return Suggestion.Nearest(option, OptionsOf(usage)) is { } near
+            ? new CliUsageException($"{message}; did you mean {near}?", null)
+            : new CliUsageException(message, usage);
+    }
+
+    /// <summary>The options a usage text names (every <c>--word</c>), and <c>--help</c>.</summary>
+    public static IReadOnlyList<string> OptionsOf(string usage) =>
+        [.. OptionNames().Matches(usage).Select(m => m.Value).Append("--help").Distinct(StringComparer.Ordinal)];
+
+    [GeneratedRegex("--[a-z0-9][a-z0-9-]*")]
+    private static partial Regex OptionNames();
 }

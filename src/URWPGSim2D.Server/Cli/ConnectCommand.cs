@@ -157,7 +157,7 @@ internal sealed class ConnectCommand : ICliCommand
             }
             else if (a.StartsWith('-'))
             {
-                throw Usage($"unknown option {MessageText.Quote(a)}");
+                throw CliUsageException.UnknownOption("connect", a, $"{CliApp.ProgramName} {Synopsis}");
             }
             else if (address is null)
             {

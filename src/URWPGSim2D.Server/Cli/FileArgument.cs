@@ -37,7 +37,7 @@ internal static class FileArgument
 
         if (file.StartsWith('-') && file != InputText.StandardInput)
         {
-            throw new CliUsageException($"{command}: unknown option {MessageText.Quote(file)}", usage);
+            throw CliUsageException.UnknownOption(command, file, usage);
         }
 
         return file;

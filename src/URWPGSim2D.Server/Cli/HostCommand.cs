@@ -44,7 +44,12 @@ internal sealed class HostCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        if (arguments.Length != 1 || arguments[0].StartsWith('-'))
+        if (arguments.Length >= 1 && arguments[0].StartsWith('-'))
+        {
+            throw CliUsageException.UnknownOption("host", arguments[0], $"{CliApp.ProgramName} {Synopsis}");
+        }
+
+        if (arguments.Length != 1)
         {
             throw new CliUsageException("host needs exactly one SPEC", $"{CliApp.ProgramName} {Synopsis}");
         }

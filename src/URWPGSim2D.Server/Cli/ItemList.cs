@@ -1,6 +1,9 @@
+using System.Collections.Generic;
 using System.Globalization;
+using System.Linq;
 using System.Text;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -25,5 +28,27 @@ internal static class ItemList
 
         s.Append(CultureInfo.InvariantCulture, $"{"default".PadRight(width)} {"-",-6} 2 x 2  the old default scene: 9 balls, 4 obstacles, goal blocks; a ball wholly in a goal mouth is a goal and goes back to its start\n");
         return s.ToString();
+    }
+
+    /// <summary>
+    /// The error of an unknown <c>--item</c>: every name with the original's Chinese name beside it,
+    /// what was given and, when one is near, the item it was probably meant to be. One line.
+    /// </summary>
+    /// <param name="command">The command, e.g. <c>run</c>.</param>
+    /// <param name="value">The name given.</param>
+    /// <param name="withDefault">Whether <c>default</c> (the old default scene) is a name too.</param>
+    public static CliUsageException Unknown(string command, string value, bool withDefault)
+    {
+        var names = new List<string>();
+        if (withDefault)
+        {
+            names.Add("default");
+        }
+
+        names.AddRange(ItemRegistry.All.Select(i => $"{i.Slug} ({i.ChineseName})"));
+        var known = ItemRegistry.All.SelectMany(i => new[] { (Name: i.Slug, i.Slug), (Name: i.ChineseName, i.Slug) }).ToList();
+        string? near = Suggestion.Nearest(value, known.Select(k => k.Name));
+        string hint = near is null ? string.Empty : $"; did you mean {known.First(k => k.Name == near).Slug}?";
+        return new CliUsageException($"{command}: --item must be one of {string.Join(", ", names)} (the name or the original's Chinese name, in any case), got {MessageText.Quote(value)}{hint}", null);
     }
 }

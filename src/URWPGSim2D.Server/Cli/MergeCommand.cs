@@ -56,7 +56,7 @@ internal sealed class MergeCommand : ICliCommand
             }
             else if (a.StartsWith("--", StringComparison.Ordinal))
             {
-                throw UsageError($"unknown option {MessageText.Quote(a)}");
+                throw CliUsageException.UnknownOption("merge", a, CliApp.ProgramName + " " + Usage);
             }
             else
             {

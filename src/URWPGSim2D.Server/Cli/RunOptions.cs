@@ -17,6 +17,9 @@ internal sealed class RunOptions
     /// <summary>The command's full usage.</summary>
     public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
 
+    /// <summary>Every option of <c>run</c>: those <see cref="Usage"/> names.</summary>
+    public static IReadOnlyList<string> KnownOptions { get; } = CliUsageException.OptionsOf(Usage);
+
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
 
@@ -219,6 +222,11 @@ internal sealed class RunOptions
                 continue;
             }
 
+            if (!KnownOptions.Contains(name))
+            {
+                throw CliUsageException.UnknownOption("run", name, CliApp.ProgramName + " " + Usage);
+            }
+
             if (i + 1 >= args.Length)
             {
                 throw UsageError($"{name} needs a value");
@@ -234,9 +242,9 @@ internal sealed class RunOptions
             {
                 case "--scenario": o.Scenario = value; break;
                 case "--item":
-                    o.Item = value == "default" || ItemRegistry.Find(value) is not null
-                        ? value
-                        : throw UsageError($"--item must be one of {ItemRegistry.Names()} (or the original's name), got {MessageText.Quote(value)}");
+                    o.Item = string.Equals(value, "default", StringComparison.OrdinalIgnoreCase) ? "default"
+                        : ItemRegistry.Find(value) is not null ? value
+                        : throw ItemList.Unknown("run", value, withDefault: true);
                     break;
                 case "--minutes":
                     o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {MessageText.Quote(value)}") };
@@ -288,7 +296,7 @@ internal sealed class RunOptions
                     break;
                 case "--remote-token": o.ParseToken(value, seen); break;
                 default:
-                    throw UsageError($"unknown option {MessageText.Quote(name)}");
+                    throw CliUsageException.UnknownOption("run", name, CliApp.ProgramName + " " + Usage);
             }
         }
 

@@ -59,6 +59,9 @@ internal sealed class TournamentOptions
     /// <summary>The output folder.</summary>
     public string Out { get; private set; } = null!;
 
+    /// <summary>Every option of <c>tournament</c>: those <see cref="Usage"/> names.</summary>
+    public static IReadOnlyList<string> KnownOptions { get; } = CliUsageException.OptionsOf(Usage);
+
     /// <summary>The Slurm jobs' folder, or null.</summary>
     public string? Slurm { get; private set; }
 
@@ -155,6 +158,11 @@ internal sealed class TournamentOptions
                 throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
+            if (!KnownOptions.Contains(name))
+            {
+                throw CliUsageException.UnknownOption("tournament", name, CliApp.ProgramName + " " + Usage);
+            }
+
             if (i + 1 >= args.Length)
             {
                 throw UsageError($"{name} needs a value");
@@ -175,7 +183,7 @@ internal sealed class TournamentOptions
             switch (name)
             {
                 case "--item":
-                    o.Item = ItemRegistry.Find(value) ?? throw UsageError($"--item must be one of {string.Join(", ", ItemSlugs())} (or the original's name), got {MessageText.Quote(value)}");
+                    o.Item = ItemRegistry.Find(value) ?? throw ItemList.Unknown("tournament", value, withDefault: false);
                     break;
                 case "--entrant": o.Entrants.Add(ParseEntrant(value)); break;
                 case "--seeds": o.Seeds = (int)Number(name, value, 1, 100_000); break;
@@ -196,7 +204,7 @@ internal sealed class TournamentOptions
                 case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
-                default: throw UsageError($"unknown option {MessageText.Quote(name)}");
+                default: throw CliUsageException.UnknownOption("tournament", name, CliApp.ProgramName + " " + Usage);
             }
         }
 
@@ -307,14 +315,6 @@ internal sealed class TournamentOptions
 
         ShardIndex = index;
         ShardCount = count;
-    }
-
-    private static IEnumerable<string> ItemSlugs()
-    {
-        foreach (var item in ItemRegistry.All)
-        {
-            yield return item.Slug;
-        }
     }
 
     private static long Number(string name, string value, long min, long max) =>

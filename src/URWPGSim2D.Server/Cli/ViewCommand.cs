@@ -55,7 +55,7 @@ internal sealed class ViewCommand : ICliCommand
             }
             else if (a.StartsWith("--", StringComparison.Ordinal) && a != "-")
             {
-                throw UsageError($"unknown option {MessageText.Quote(a)}");
+                throw CliUsageException.UnknownOption("view", a, CliApp.ProgramName + " " + Usage);
             }
             else if (trace is null)
             {

@@ -32,29 +32,17 @@ internal static class ItemRegistry
     /// <summary>The items, in listing order.</summary>
     public static IReadOnlyList<CompetitionItem> All => Known;
 
-    /// <summary>The item of a slug or Chinese name, or null (the name "default" is not an item: it is the plain scene).</summary>
+    /// <summary>The item of a slug or Chinese name (either without regard to case: <c>Ball-Grab</c>, <c>水球1vs1</c>), or null (the name "default" is not an item: it is the plain scene).</summary>
     public static CompetitionItem? Find(string name)
     {
         foreach (var item in Known)
         {
-            if (string.Equals(item.Slug, name, StringComparison.OrdinalIgnoreCase) || item.ChineseName == name)
+            if (string.Equals(item.Slug, name, StringComparison.OrdinalIgnoreCase) || string.Equals(item.ChineseName, name, StringComparison.OrdinalIgnoreCase))
             {
                 return item;
             }
         }
 
         return null;
-    }
-
-    /// <summary>The accepted names for an error message: "default", then every slug.</summary>
-    public static string Names()
-    {
-        var names = new List<string> { "default" };
-        foreach (var item in Known)
-        {
-            names.Add(item.Slug);
-        }
-
-        return string.Join(", ", names);
     }
 }

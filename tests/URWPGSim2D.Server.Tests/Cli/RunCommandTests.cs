@@ -97,7 +97,7 @@ public sealed class RunCommandTests : IDisposable
 
     [Theory]
     [InlineData(new[] { "run", "--cycles", "many" }, "run: --cycles must be an integer 0..2147483647, got \"many\"")]
-    [InlineData(new[] { "run", "--fast" }, "run: --fast needs a value")]
+    [InlineData(new[] { "run", "--cycles" }, "run: --cycles needs a value")]
     [InlineData(new[] { "run", "--fast", "1" }, "run: unknown option \"--fast\"")]
     [InlineData(new[] { "run", "--strategy", "4=x.dll" }, "run: --strategy must be TEAM=SPEC with TEAM 0 to 3, got \"4=x.dll\"")]
     [InlineData(new[] { "run", "--seed", "1", "--seed", "2" }, "run: --seed given twice")]
