@@ -86,7 +86,7 @@ public sealed class LiveViewTests(Browser browser)
             await one.ClickAsync("#server-step");
             await PausedAt(one, k);
             await Settle(one);
-            Assert.Equal($"cycle {k} / {k}", await one.TextContentAsync("#cycle"));
+            Assert.Equal($"cycle {k} / 3000", await one.TextContentAsync("#cycle")); // the match's length, not the last cycle received
         }
 
         // The stream is the match itself: the same as the trace of the same match.
@@ -151,8 +151,17 @@ public sealed class LiveViewTests(Browser browser)
         await PausedAt(page, 0);
         await page.ClickAsync("#server-step");
         await PausedAt(page, 1);
+        await Settle(page);
+        Assert.Equal("cycle 1 / 2", await page.TextContentAsync("#cycle"));
         await page.ClickAsync("#server-pause"); // resume: plays the last cycle, then the match is over
         await page.WaitForFunctionAsync("() => urwpg.serverStatus.over && urwpg.serverStatus.cycle === 2 && urwpg.store.count === 3", null, new() { Timeout = Wait });
+
+        // The summary is printed when the match ends, while the page is still served (the server
+        // prints it before it tells the viewers the match is over).
+        string atEnd = live.Out.ToString();
+        Assert.StartsWith("match: 2 cycles, 0.2 s simulated, played live in ", atEnd, StringComparison.Ordinal);
+        Assert.EndsWith("match over: the page stays up (restart there plays it again; Ctrl+C to stop)\n", atEnd, StringComparison.Ordinal);
+        Assert.False(live.Served.IsCompleted);
         await page.ClickAsync("#server-step");
         await page.WaitForFunctionAsync("() => urwpg.serverStatus.paused && urwpg.serverStatus.over", null, new() { Timeout = Wait });
         Assert.Equal(3, await Count(page));
@@ -162,10 +171,11 @@ public sealed class LiveViewTests(Browser browser)
         // The page is the replay page too: scrub back through what was received.
         await Scrub(page, 1);
         Assert.Equal(1, await Cycle(page));
+        Assert.Equal("cycle 1 / 2", await page.TextContentAsync("#cycle")); // scrubbed back; the match's last cycle is 2
         NoErrors(errors);
         await page.Context.CloseAsync();
         Assert.Equal(0, await Stop(live));
-        Assert.StartsWith("match: 2 cycles, 0.2 s simulated", live.Out.ToString(), StringComparison.Ordinal);
+        Assert.Equal(atEnd, live.Out.ToString()); // the summary once, not again at Ctrl+C
     }
 
     [Fact]

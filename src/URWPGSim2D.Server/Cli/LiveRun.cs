@@ -9,9 +9,11 @@ namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
 /// <c>run --live</c>: serves the viewer on <c>http://HOST:PORT/</c> and plays the match in real
-/// time (× <c>--speed</c>) while any number of browsers watch, pause, step or restart it. Ctrl+C
-/// (or SIGTERM) ends the match and the server and prints the usual summary. A port that cannot
-/// be used is one line on stderr and exit code 2, before anything is played.
+/// time (× <c>--speed</c>) while any number of browsers watch, pause, step or restart it. When the
+/// match is over its summary is printed at once and the page is served on (a restart plays the
+/// match again, and its summary follows when it ends); Ctrl+C (or SIGTERM) ends the server, and a
+/// match it interrupts gets its summary then. A port that cannot be used is one line on stderr and
+/// exit code 2, before anything is played.
 /// </summary>
 internal static class LiveRun
 {
@@ -40,7 +42,7 @@ internal static class LiveRun
         }
     }
 
-    /// <summary>Serves the live view until <paramref name="stop"/> is cancelled, then prints the summary.</summary>
+    /// <summary>Serves the live view until <paramref name="stop"/> is cancelled; prints a match's summary when it ends, or when <paramref name="stop"/> interrupts it.</summary>
     /// <param name="options">The run options (<c>--live</c> and its settings).</param>
     /// <param name="scenario">The scene.</param>
     /// <param name="teams">The loaded team strategies of the first match.</param>
@@ -62,6 +64,14 @@ internal static class LiveRun
 
         var feed = new LiveFeed();
         var player = new LiveMatch(Create, cycles, options.Speed, options.Paused, feed);
+        Match? summarised = null; // the last match whose summary is printed (on the playing thread, which is this one)
+        player.Ended = ended =>
+        {
+            console.Out.Write(MatchSummary.FormatLive(ended, player.Played, player.Busy));
+            console.Out.Write("match over: the page stays up (restart there plays it again; Ctrl+C to stop)\n");
+            console.Out.Flush();
+            summarised = ended;
+        };
         using var server = new LiveServer(options.Host, options.Port, feed, player.Control);
         try
         {
@@ -80,7 +90,11 @@ internal static class LiveRun
         server.Stop();
         var match = player.Match;
         MatchLoop.StopStrategies(match);
-        console.Out.Write(MatchSummary.Format(match, player.Busy));
+        if (!ReferenceEquals(match, summarised))
+        {
+            console.Out.Write(MatchSummary.FormatLive(match, player.Played, player.Busy)); // interrupted: the cycles played
+        }
+
         return ExitCodes.Success;
     }
 

@@ -11,15 +11,40 @@ internal static class MatchSummary
 {
     private static readonly string[] KindNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
 
-    /// <summary>Formats the summary (several lines, ending in a newline).</summary>
+    /// <summary>Formats the summary of a match played as fast as it goes (several lines, ending in a newline).</summary>
+    /// <param name="match">The match.</param>
+    /// <param name="wall">The wall time it took.</param>
     public static string Format(Match match, TimeSpan wall)
     {
         var c = CultureInfo.InvariantCulture;
         var stats = match.Statistics;
         double simulated = stats.Cycles * 0.1;
         double seconds = Math.Max(wall.TotalSeconds, 1e-9);
-        var s = new StringBuilder();
-        s.Append(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle), seed {match.Seed}\n");
+        return Format(match, string.Create(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated in {wall.TotalMilliseconds:0.0} ms wall time ({simulated / seconds:0}x real time, {wall.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us per cycle), seed {match.Seed}\n"));
+    }
+
+    /// <summary>
+    /// Formats the summary of a match played live (<c>run --live</c>): its real-time figure is the
+    /// match's own wall time, pauses included, and the time spent computing is given per cycle.
+    /// </summary>
+    /// <param name="match">The match.</param>
+    /// <param name="played">Its wall time from the start of its first cycle to the end of its last.</param>
+    /// <param name="computing">The part of it spent computing cycles.</param>
+    public static string FormatLive(Match match, TimeSpan played, TimeSpan computing)
+    {
+        var c = CultureInfo.InvariantCulture;
+        var stats = match.Statistics;
+        double simulated = stats.Cycles * 0.1;
+        string pace = played > TimeSpan.Zero ? string.Create(c, $"{simulated / played.TotalSeconds:0.0}x real time, ") : string.Empty;
+        return Format(match, string.Create(c, $"match: {stats.Cycles} cycles, {simulated:0.0} s simulated, played live in {played.TotalSeconds:0.0} s wall time ({pace}{computing.TotalMilliseconds * 1000.0 / Math.Max(1, stats.Cycles):0.00} us of computing per cycle), seed {match.Seed}\n"));
+    }
+
+    // The summary under its first line.
+    private static string Format(Match match, string first)
+    {
+        var c = CultureInfo.InvariantCulture;
+        var stats = match.Statistics;
+        var s = new StringBuilder(first);
         if (match.Referee is { } referee)
         {
             ItemSummary.Append(s, match, referee);

@@ -55,6 +55,16 @@ internal static class CompiledImages
         });
     }
 
+    /// <summary>
+    /// Forgets every compiled image, as a new process starts without them: for tests that show
+    /// what separate runs print (each compiles its strategies again, with its progress lines).
+    /// </summary>
+    internal static void Forget()
+    {
+        Images.Clear();
+        Files.Clear();
+    }
+
     /// <summary>The assembly name of a compiled strategy.</summary>
     public static string Name(string path) => "Strategy_" + System.IO.Path.GetFileNameWithoutExtension(System.IO.Path.TrimEndingDirectorySeparator(path));
 

@@ -15,8 +15,8 @@ namespace URWPGSim2D.Server.Viewer;
 /// buttons); a step plays exactly one cycle and leaves the match paused. Only the playing thread
 /// publishes, so a status message always follows every cycle line it counts. The cycles are played by
 /// the one match loop (<see cref="MatchLoop"/>), so the match ends where <c>run</c> ends it (a tied
-/// polo match plays its extra time and penalties live too); then it waits (a restart plays it again)
-/// until <see cref="Run"/> is cancelled.
+/// polo match plays its extra time and penalties live too); then it tells <see cref="Ended"/> and
+/// waits (a restart plays it again) until <see cref="Run"/> is cancelled.
 /// </summary>
 internal sealed class LiveMatch : ITraceSink
 {
@@ -27,6 +27,7 @@ internal sealed class LiveMatch : ITraceSink
     private readonly LiveFeed _feed;
     private readonly object _gate = new();
     private readonly Stopwatch _busy = new();
+    private readonly Stopwatch _played = new();
     private MatchLoop _loop;
     private bool _paused;
     private int _steps;
@@ -67,8 +68,21 @@ internal sealed class LiveMatch : ITraceSink
         }
     }
 
-    /// <summary>Time spent playing cycles (for the summary).</summary>
+    /// <summary>Time spent computing the current match's cycles (for the summary).</summary>
     public TimeSpan Busy => _busy.Elapsed;
+
+    /// <summary>
+    /// Wall time of the current match: from the start of its first cycle to the end of its last
+    /// (or to now, while it is played), pauses included.
+    /// </summary>
+    public TimeSpan Played => _played.Elapsed;
+
+    /// <summary>
+    /// Told on the playing thread, with the match, as soon as a match is over (after its last
+    /// cycle is published, before the status that says it is over); again for each restarted match
+    /// that ends.
+    /// </summary>
+    public Action<Match>? Ended { get; set; }
 
     /// <summary>Stops after the current cycle until <see cref="Resume"/> or <see cref="Step"/>.</summary>
     public void Pause() => Change(() => _paused = true);
@@ -162,15 +176,23 @@ internal sealed class LiveMatch : ITraceSink
                 }
 
                 old.Dispose();
-
+                _busy.Reset();
+                _played.Reset();
                 Begin();
                 deadline = clock.Elapsed;
                 continue;
             }
 
+            _played.Start(); // the first cycle starts the match's wall time; it runs on through pauses
             _busy.Start();
             _loop.Step(); // publishes the cycle's line
             _busy.Stop();
+            if (Over)
+            {
+                _played.Stop();
+                Ended?.Invoke(_loop.Match); // before the status that says so: a viewer told "over" finds the summary written
+            }
+
             if (stepping || Over)
             {
                 PublishStatus();

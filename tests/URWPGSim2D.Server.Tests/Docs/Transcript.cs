@@ -69,6 +69,7 @@ internal sealed partial record Transcript(IReadOnlyList<Transcript.Step> Steps)
     public static string Mask(string output)
     {
         output = MatchTiming().Replace(output, "in <T> wall time (<T>x real time, <T> us per cycle)");
+        output = CompileTiming().Replace(output, "$1 in <T> s");
         return BatchTiming().Replace(output, "wall time: <T> s on <T> threads, <T> matches/s, <T>x real time");
     }
 
@@ -82,6 +83,9 @@ internal sealed partial record Transcript(IReadOnlyList<Transcript.Step> Steps)
 
     [GeneratedRegex(@"in [0-9.]+ ms wall time \([0-9.]+x real time, [0-9.]+ us per cycle\)")]
     private static partial Regex MatchTiming();
+
+    [GeneratedRegex(@"^(compiled [^\n]+) in [0-9.]+ s$", RegexOptions.Multiline)]
+    private static partial Regex CompileTiming();
 
     [GeneratedRegex(@"wall time: [0-9.]+ s on [0-9]+ threads, [0-9.]+ matches/s, [0-9.]+x real time")]
     private static partial Regex BatchTiming();

@@ -442,7 +442,12 @@
     lastCycleShown = k;
     const n = cycleNumber(s, k);
     $('clock').textContent = formatClock(n);
-    $('cycle').textContent = 'cycle ' + n + ' / ' + cycleNumber(s, Math.max(0, s.count - 1));
+    // The total: the match's last cycle; live while it is played, its length from the server (its
+    // regular time, or the cycle reached in an item's extra time), not the last cycle received.
+    const last = cycleNumber(s, Math.max(0, s.count - 1));
+    const st = api.serverStatus;
+    const total = api.live && st && !st.over ? Math.max(st.cycles, last) : last;
+    $('cycle').textContent = 'cycle ' + n + ' / ' + total;
     const row = k * s.nt;
     // The scores of the teams that play, in team order (a one-team item shows its team's alone).
     const shown = [];
@@ -661,6 +666,7 @@
     source.addEventListener('status', e => {
       const st = JSON.parse(e.data);
       api.serverStatus = st;
+      hudDirty = true;
       status.textContent = st.over ? 'match over' : st.paused ? 'match paused' : 'live \u00b7 ' + st.speed + '\u00d7';
       $('server-pause').textContent = st.paused ? 'resume match' : 'pause match';
     });
