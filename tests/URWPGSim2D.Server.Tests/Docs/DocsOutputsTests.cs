@@ -99,13 +99,16 @@ public sealed class DocsOutputsTests
         Assert.StartsWith("$ cat ", shown[0], StringComparison.Ordinal);
 
         string results = Path.Combine(Path.GetTempPath(), $"urwpg-docs-merge-{Environment.ProcessId}.jsonl");
+        string merged = Path.Combine(Path.GetTempPath(), $"urwpg-docs-merged-{Environment.ProcessId}.jsonl");
         try
         {
             var (played, _, playErrors) = RunServer("", ["run", "--batch", "8", "--cycles", "200", "--results", results]);
             Assert.True(played == 0, playErrors);
-            var (merged, stdout, mergeErrors) = RunServer("", ["merge", results]);
-            Assert.True(merged == 0, mergeErrors);
-            string actual = stdout.TrimEnd('\n');
+
+            // The merge job runs merge --out DIR/results.jsonl: its log ends with the line for that file.
+            var (code, stdout, mergeErrors) = RunServer("", ["merge", "--out", merged, results]);
+            Assert.True(code == 0, mergeErrors);
+            string actual = stdout.TrimEnd('\n').Replace(merged, "/scratch/urwpg/batch-8/results.jsonl", StringComparison.Ordinal);
             if (Regenerate)
             {
                 Rewrite(file, [(block, shown[0] + "\n" + actual)]);
@@ -117,6 +120,7 @@ public sealed class DocsOutputsTests
         finally
         {
             File.Delete(results);
+            File.Delete(merged);
         }
     }
 
