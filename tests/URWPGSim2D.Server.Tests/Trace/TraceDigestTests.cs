@@ -47,9 +47,9 @@ public sealed class TraceDigestTests
         [("item four-teams", 1)] = "6eb970c859e4350ac2d20d9adf5d09a5ec84d31463a72a8c736370095f136f9a",
         [("item four-teams", 2)] = "cd49c57579b81d2bb21df6d0e6d834e4d3278a7cbb15407c2c9e31b1163131aa",
         [("item four-teams", 7)] = "e660fe1f5c90b0ae1c626435d3f841bc5f90c99762ac374f8ee82b91ca4907f4",
-        [("item new-ball-grab", 1)] = "8eb03945c6a3f21417496a09605d96c1459f27ca13fbca99e4daec56ba8a5fe9",
-        [("item new-ball-grab", 2)] = "78eadf4bc4d9f2906e8147f72b0a5089d3cdc4bc032eebe885a9219362fff893",
-        [("item new-ball-grab", 7)] = "6da70a862d6071f13bb72aa3ba5c29053e32b8d41bc634c0732056f501566ff1",
+        [("item new-ball-grab", 1)] = "654b43d80e39935e6dd97549ac247073c90c690c991f7a7535c29e5517a4319b",
+        [("item new-ball-grab", 2)] = "6b56da7092acc3c16dfc15216b65c9e752d9a2b84a72be0f3fe58c1c6e9fb13c",
+        [("item new-ball-grab", 7)] = "583fcb6fcd08dbe1359ec916dacb0abf75285de42c572282765d76535caa1e27",
         [("item polo-1v1", 1)] = "264e89d23a09cda5ce49cdeae7b11b3275d9470457cf523d081f877f13bd9268",
         [("item polo-1v1", 2)] = "d16dae27adc72341204d7ad96b48315d8f68f7384954da4a68f3b83d26b40fc4",
         [("item polo-1v1", 7)] = "df941268b3fee7ad7db7daa12a50c5063957092f92bdfcbd3e85e0f445652f7b",
@@ -89,7 +89,7 @@ public sealed class TraceDigestTests
     private static readonly Dictionary<(string Scene, ulong Seed), string> PinnedLong = new()
     {
         [("default", 1)] = "2ba75716a8dd8690d15276d9d303bd90b0472a6d19ba438b14dcdc7fb8b8eafa",
-        [("item ball-grab", 1)] = "d9a8e683d10bbeccb9275bab70f9df3290132819394f2784e01562f02da8acbd",
+        [("item ball-grab", 1)] = "6d6fbd1c91741f87abc7401ad2b896b48ba2917ed98ce0fa870f551984cc7cf7",
         [("item polo-3v3", 2)] = "e5ae9048b843ba65dc24977f6d3ee29ad1b3d657c281f11a659e28fa10a99221",
     };
 
