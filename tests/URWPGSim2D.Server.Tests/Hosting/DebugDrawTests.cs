@@ -65,12 +65,14 @@ public sealed class DebugDrawTests : IDisposable
     [Fact]
     public void Drawings_land_in_the_trace_where_the_strategy_put_them_in_process_and_from_a_host_in_both_apis()
     {
-        foreach (string spec in new[] { SdkDrawer(), OriginalStrategyTests.Folder("Drawer") })
+        string[] specs = [SdkDrawer(), OriginalStrategyTests.Folder("Drawer")];
+        for (int api = 0; api < specs.Length; api++)
         {
+            string spec = specs[api];
             var traces = new List<byte[]>();
             foreach (string isolation in new[] { "none", "process" })
             {
-                string trace = Path.Combine(_folder, isolation + ".jsonl");
+                string trace = Path.Combine(_folder, $"{api}-{isolation}.jsonl");
                 var run = CliRun.Of(string.Empty, "run", "--item", "default", "--noise", "off", "--cycles", "30", "--strategy", "0=" + spec,
                     "--isolation", isolation, "--strategy-timeout", "5000", "--debug-draw", "--trace", trace);
                 Assert.True(run.ExitCode == 0, run.Stderr);
