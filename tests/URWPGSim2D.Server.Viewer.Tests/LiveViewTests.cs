@@ -73,6 +73,44 @@ public sealed class LiveViewTests(Browser browser)
     private static Task<double[]> Frames(IPage page) => page.EvaluateAsync<double[]>("() => Array.from(urwpg.store.frames.slice(0, urwpg.store.count * urwpg.store.stride))");
 
     [Fact]
+    public async Task AFishsDetailsInTheLivePageAreTheTracesOfTheSameMatch()
+    {
+        var live = await Start("--speed", "20");
+        var (page, errors) = await Open(live);
+        await PausedAt(page, 0);
+        for (int k = 1; k <= 4; k++)
+        {
+            await page.ClickAsync("#server-step");
+            await PausedAt(page, k);
+        }
+
+        await Settle(page);
+        var reference = Path.Combine(Path.GetTempPath(), $"urwpg-live-{Guid.NewGuid():N}.jsonl");
+        Assert.Equal(0, RecordedMatch.Cli("run", "--item", "default", "--cycles", "4", "--trace", reference).Code);
+        var line = System.Text.Json.JsonDocument.Parse(File.ReadAllLines(reference)[4]).RootElement;
+        File.Delete(reference);
+        for (int i = 0; i < 4; i++)
+        {
+            await page.SelectOptionAsync("#inspect", "fish" + i);
+            var f = line.GetProperty("fish")[i];
+            var shown = await page.EvaluateAsync<double[]>("() => { const d = urwpg.details(); return [d.cycle, d.speed, d.angularSpeed, ...d.decision, ...d.gears, d.contacts.length]; }");
+            Assert.Equal(
+                [4, f.GetProperty("speed").GetSingle(), f.GetProperty("angularSpeed").GetSingle(), f.GetProperty("decision")[0].GetInt32(), f.GetProperty("decision")[1].GetInt32(),
+                 f.GetProperty("gears")[0].GetInt32(), f.GetProperty("gears")[1].GetInt32(),
+                 line.GetProperty("contacts").EnumerateArray().Count(c => c.GetProperty("a").GetString() == "fish" + i || c.GetProperty("b").GetString() == "fish" + i)],
+                shown.Select((v, j) => j is 1 or 2 ? (double)(float)v : v).ToArray());
+        }
+
+        await page.SelectOptionAsync("#inspect", "ball4");
+        var ball = line.GetProperty("balls")[4].GetProperty("velocity");
+        var velocity = await page.EvaluateAsync<double[]>("() => urwpg.details().velocity");
+        Assert.Equal([ball[0].GetSingle(), ball[1].GetSingle()], velocity.Select(v => (float)v).ToArray());
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+        Assert.Equal(0, await Stop(live));
+    }
+
+    [Fact]
     public async Task ViewersSeeTheSameCyclesPauseHoldsAndStepPlaysOne()
     {
         var live = await Start("--speed", "20");

@@ -1,5 +1,7 @@
 import json
+import math
 import subprocess
+import tempfile
 import sys
 import os
 import unittest
@@ -50,6 +52,35 @@ class Messages(unittest.TestCase):
         for bad in ([(16, 7)], [(1, 2), (3, 4)], [(1.5, 2)], [(True, 2)], 5, [("a", 1)]):
             self.assertEqual(_answer(Fixed(bad), s, 1)["fault"], "badAnswer", bad)
 
+    def test_drawings_and_output_go_with_the_answer_only_when_the_server_asks(self):
+        a = Assignment.from_json(dict(ASSIGNMENT, draw=True, log=True))
+        s = Snapshot.from_json(CYCLE, a)
+
+        class Drawer(Strategy):
+            def decide(self, snapshot):
+                print("saw cycle", snapshot.cycle)
+                print("to stderr", file=sys.stderr)
+                self.draw.line((0, 0), (10, 20), 1)
+                self.draw.circle((1, 2), 3, 0, "#FFD400")  # fish 0 is not this team's: the team's shape
+                self.draw.point((float("nan"), 0))  # not finite: dropped
+                self.draw.text((5, 5), "a" * 5000, colour=0x2E8B57)
+                for i in range(200):
+                    self.draw.point((i, 0))
+                return [(14, 7)]
+
+        answer = _answer(Drawer(), s, 1, a.draw, a.log)
+        self.assertEqual(answer["decisions"], [[14, 7]])
+        self.assertEqual(answer["log"], "saw cycle 12\nto stderr\n")
+        self.assertEqual(answer["logDropped"], 0)
+        shapes = answer["draw"]
+        self.assertEqual(len(shapes), 128)
+        self.assertEqual(shapes[0], {"kind": "line", "from": [0.0, 0.0], "to": [10.0, 20.0], "fish": 1})
+        self.assertEqual(shapes[1], {"kind": "circle", "center": [1.0, 2.0], "radius": 3.0, "color": "#ffd400"})
+        self.assertEqual(shapes[2], {"kind": "text", "at": [5.0, 5.0], "text": "a" * 4096, "color": "#2e8b57"})
+
+        quiet = _answer(Drawer(), Snapshot.from_json(CYCLE, Assignment.from_json(ASSIGNMENT)), 1)
+        self.assertEqual(quiet, {"type": "decisions", "cycle": 12, "decisions": [[14, 7]]})
+
     def test_addresses(self):
         self.assertEqual(parse_address("127.0.0.1:7000"), ("127.0.0.1", 7000))
         self.assertEqual(parse_address("[::1]:7000"), ("::1", 7000))
@@ -83,6 +114,39 @@ class Matches(unittest.TestCase):
         self.assertEqual(code, 0, err)
         self.assertEqual(result.faults, 4)
         self.assertNotIn("strategy faults: none", out)
+
+    def test_drawings_and_printed_output_reach_the_trace_over_tcp(self):
+        class Talker(ChaseBall):
+            def decide(self, snapshot):
+                print("cycle", snapshot.cycle)
+                return super().decide(snapshot)
+
+        with tempfile.TemporaryDirectory() as folder:
+            trace = os.path.join(folder, "t.jsonl")
+            server = Server("--item", "default", "--cycles", "30", "--noise", "off", "--strategy", "0=remote:0", "--strategy-timeout", "20000",
+                            "--debug-draw", "--strategy-log", "--trace", trace)
+            result = play(Talker(), "127.0.0.1", server.port)
+            code, _, err = server.finish()
+            self.assertEqual(code, 0, err)
+            self.assertEqual(result.faults, 0)
+            with open(trace, encoding="utf-8") as f:
+                lines = [json.loads(line) for line in f]
+        mine = [i for i, fish in enumerate(lines[0]["layout"]["fish"]) if fish["team"] == 0]
+        for n in range(1, len(lines)):
+            self.assertEqual([l for l in lines[n]["log"] if l["team"] == 0], [{"team": 0, "text": "cycle %d\n" % (n - 1)}])
+            drawn = [d for d in lines[n]["draw"] if d["team"] == 0]
+            self.assertEqual(sorted({d["fish"] for d in drawn}), mine)
+            for i in mine:
+                # The ball circled is the one nearest the fish in the snapshot it decided from (noise off: the line before).
+                seen = lines[n - 1]
+                at = seen["fish"][i]["position"]
+                ball = min(seen["balls"], key=lambda b: math.dist(b["position"], at))
+                circle = [d for d in drawn if d["fish"] == i and d["kind"] == "circle"]
+                self.assertEqual(len(circle), 1)
+                self.assertEqual(circle[0]["center"], ball["position"])
+                self.assertEqual(circle[0]["color"], "#ffd400")
+                way = [d for d in drawn if d["fish"] == i and d["kind"] == "line" and "color" not in d]
+                self.assertEqual(way[0]["from"], at)
 
     def test_a_wrong_token_is_refused(self):
         server = Server("--cycles", "5", "--strategy", "1=remote:0", "--remote-token", "right", "--remote-wait", "30")

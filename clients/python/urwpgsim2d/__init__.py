@@ -5,6 +5,7 @@ drives one team in lockstep as a Gymnasium environment.
 """
 
 from .client import Refused, Strategy, main, parse_address, play
+from .drawing import Drawing
 from .protocol import VERSION, Assignment, Ball, End, Fish, Obstacle, ProtocolError, Snapshot
 
-__all__ = ["VERSION", "Assignment", "Ball", "End", "Fish", "Obstacle", "ProtocolError", "Refused", "Snapshot", "Strategy", "main", "parse_address", "play"]
+__all__ = ["VERSION", "Assignment", "Ball", "Drawing", "End", "Fish", "Obstacle", "ProtocolError", "Refused", "Snapshot", "Strategy", "main", "parse_address", "play"]

@@ -1,9 +1,11 @@
 """A strategy base class and the loop that plays it for a server that waits for a remote team."""
 
+import contextlib
 import sys
 from typing import List, Optional, Sequence, Tuple
 
 from . import protocol
+from .drawing import Drawing, Output
 from .protocol import Assignment, End, ProtocolError, Snapshot, goals_of
 
 
@@ -16,6 +18,10 @@ class Strategy:
 
     name: Optional[str] = None
     """The team's name, sent in the hello."""
+
+    draw: Drawing = Drawing()
+    """This cycle's debug drawings (self.draw.line(...), see urwpgsim2d.drawing): sent with the
+    decisions when the server records them (run --debug-draw); otherwise every call does nothing."""
 
     def start(self, assignment: Assignment) -> None:
         """Called once a connection has its assignment (again after a reconnect)."""
@@ -33,7 +39,8 @@ def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, 
 
     A decide() that raises is answered as that cycle's 'exception' fault, and one that returns
     something unusable as a 'badAnswer' fault (the server keeps the fish's last decisions); the
-    match goes on. Raises Refused when the server refuses the hello, ProtocolError when it breaks
+    match goes on. When the server asks (run --debug-draw, --strategy-log), the cycle's drawings
+    (self.draw) and what decide() printed (sys.stdout and sys.stderr) go with the answer. Raises Refused when the server refuses the hello, ProtocolError when it breaks
     the protocol or closes the connection before the end.
     """
     connection = protocol.Connection(host, port, timeout)
@@ -55,7 +62,7 @@ def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, 
             kind = message["type"]
             if kind == "cycle":
                 snapshot = Snapshot.from_json(message, assignment)
-                connection.send(_answer(strategy, snapshot, len(assignment.fish)))
+                connection.send(_answer(strategy, snapshot, len(assignment.fish), assignment.draw, assignment.log))
             elif kind == "end":
                 result = End(int(message["cycle"]), goals_of(message), int(message["faults"]))
                 strategy.end(result)
@@ -67,9 +74,27 @@ def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, 
         connection.close()
 
 
-def _answer(strategy: Strategy, snapshot: Snapshot, count: int) -> dict:
+def _answer(strategy: Strategy, snapshot: Snapshot, count: int, draw: bool = False, log: bool = False) -> dict:
+    drawing = Drawing(draw, snapshot.assignment.fish)
+    strategy.draw = drawing
+    output = Output() if log else None
+    answer = _decide(strategy, snapshot, count, output)
+    strategy.draw = Strategy.draw
+    if drawing.shapes and (answer.get("fault") in (None, "exception")):
+        answer["draw"] = drawing.shapes
+    if output is not None and (output.text() or output.dropped):
+        answer["log"] = output.text()
+        answer["logDropped"] = output.dropped
+    return answer
+
+
+def _decide(strategy: Strategy, snapshot: Snapshot, count: int, output: Optional[Output]) -> dict:
     try:
-        pairs = strategy.decide(snapshot)
+        if output is None:
+            pairs = strategy.decide(snapshot)
+        else:
+            with contextlib.redirect_stdout(output), contextlib.redirect_stderr(output):
+                pairs = strategy.decide(snapshot)
     except Exception as e:  # the strategy's fault, reported to the server; the match goes on
         return protocol.fault(snapshot.cycle, "exception", "%s: %s" % (type(e).__name__, e))
     checked: List[Tuple[int, int]] = []

@@ -44,6 +44,10 @@ class Assignment:
     field_length: float
     field_width: float
     obstacles: List[Obstacle]
+    draw: bool = False
+    """Whether the server records debug drawings (run --debug-draw)."""
+    log: bool = False
+    """Whether the server records what the strategy prints (run --strategy-log)."""
 
     @staticmethod
     def from_json(m: dict) -> "Assignment":
@@ -53,7 +57,8 @@ class Assignment:
             int(m["fishCount"]), int(m["ballCount"]), int(m["totalCycles"]), int(m.get("cycleMs", 100)), int(m["deadlineMs"]),
             _num(f["length"]), _num(f["width"]),
             [Obstacle(int(o["index"]), o["kind"], _pair(o["center"]), _num(o["length"]), _num(o["width"]), _num(o["heading"]), _num(o["radius"]))
-             for o in m.get("obstacles", [])])
+             for o in m.get("obstacles", [])],
+            m.get("draw") is True, m.get("log") is True)
 
 
 @dataclass

@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Trace;
 
 /// <summary>
 /// Serialises one cycle line of the trace (docs/simulation.md, "Trace"; docs/viewer.md, "Trace
-/// additions"): cycle, fish, balls, contacts, score and events, and on the cycle-0 line also the
+/// additions"): cycle, fish (with the decision each swam by and its gear codes), balls, contacts, score and events, and on the cycle-0 line also the
 /// item slug and the static layout. The same bytes go to the trace file, the replay page and the
 /// live view. One instance per match; the returned span is valid until the next call.
 /// </summary>
@@ -66,6 +66,19 @@ internal sealed class TraceLine
             w.WriteEndArray();
             w.WriteNumber("speed", f.Speed.Value);
             w.WriteNumber("angularSpeed", f.Turn.Value);
+            if (world.Cycle > 0)
+            {
+                // The decision the fish swam this cycle by, and where its gear approach stands: the codes its speed and turn rate are at.
+                w.WriteStartArray("decision");
+                w.WriteNumberValue(f.Decision.VCode);
+                w.WriteNumberValue(f.Decision.TCode);
+                w.WriteEndArray();
+                w.WriteStartArray("gears");
+                w.WriteNumberValue(f.Speed.Code);
+                w.WriteNumberValue(f.Turn.Code);
+                w.WriteEndArray();
+            }
+
             w.WriteEndObject();
         }
 

@@ -14,7 +14,7 @@ namespace URWPGSim2D.Server.Viewer;
 /// them into the replay page's data: the cycle-0 layout as JSON, every fish pose and ball position
 /// as 16-bit integers (positions in steps of <see cref="PositionStep"/> mm, angles in steps of
 /// 10⁻⁴ rad), the contacts' action points and normals the same way, the score changes and the
-/// events — all base64 inside one JSON object (docs/viewer.md, "The replay page's data").
+/// events, and what a body's details show (<see cref="ReplayDetails"/>) — all base64 inside one JSON object (docs/viewer.md, "The replay page's data").
 /// </summary>
 internal sealed class ReplayRecorder : Trace.ITraceSink
 {
@@ -30,6 +30,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
     private readonly ArrayBufferWriter<byte> _events = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _draws = new(1 << 10);
     private readonly ArrayBufferWriter<byte> _logs = new(1 << 10);
+    private readonly ReplayDetails _details = new();
     private Utf8JsonWriter? _drawJson;
     private Utf8JsonWriter? _logJson;
     private readonly Utf8JsonWriter _scoreJson;
@@ -122,6 +123,8 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             {
                 Add(Angle(Value(j, at + ".joints")));
             }
+
+            _details.AddFish(f, PositionStep, AngleStep);
         }
 
         var balls = Array(line, "balls");
@@ -136,6 +139,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             var (x, z) = Point(b, "position", $"balls[{i++}]");
             Add(Position(x));
             Add(Position(z));
+            _details.AddBall(b, PositionStep);
         }
 
         int contacts = 0;
@@ -150,6 +154,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
                 _contacts.Add(Position(pz));
                 _contacts.Add(Angle(nx));
                 _contacts.Add(Angle(nz));
+                _details.AddContact(c);
                 contacts++;
             }
         }
@@ -183,6 +188,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
             .Append("\",\"contacts\":\"").Append(Convert.ToBase64String(MemoryMarshal.AsBytes(CollectionsMarshal.AsSpan(_contacts))))
             .Append("\",\"scores\":").Append(Encoding.UTF8.GetString(_scores.WrittenSpan))
             .Append(",\"events\":").Append(Encoding.UTF8.GetString(_events.WrittenSpan));
+        _details.Finish(s);
         Finish(s, "draws", _draws, _drawJson);
         Finish(s, "logs", _logs, _logJson);
 

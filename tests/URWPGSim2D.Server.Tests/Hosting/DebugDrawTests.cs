@@ -5,6 +5,7 @@ using System.Linq;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
+using URWPGSim2D.Server.Items.BallGrab;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Simulation;
@@ -114,12 +115,14 @@ public sealed class DebugDrawTests : IDisposable
         }
     }
 
-    [Fact]
-    public void Without_debug_draw_the_trace_is_the_same_bytes_as_with_it_less_the_drawings()
+    [Theory]
+    [InlineData("default")] // chase-ball draws its plan every cycle
+    [InlineData("ball-grab")] // the demo draws its plan every cycle it is not escaping a wall
+    public void Without_debug_draw_the_trace_is_the_same_bytes_as_with_it_less_the_drawings(string item)
     {
         string on = Path.Combine(_folder, "on.jsonl"), off = Path.Combine(_folder, "off.jsonl");
-        var a = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "200", "--debug-draw", "--trace", on);
-        var b = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "200", "--trace", off);
+        var a = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--debug-draw", "--trace", on);
+        var b = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--trace", off);
         Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
         var stripped = new StringBuilder();
         int drawn = 0;
@@ -130,7 +133,7 @@ public sealed class DebugDrawTests : IDisposable
             stripped.Append(at >= 0 ? line[..at] + "}" : line).Append('\n');
         }
 
-        Assert.Equal(200, drawn); // chase-ball draws its plan every cycle
+        Assert.Equal(200, drawn);
         string offText = File.ReadAllText(off);
         Assert.DoesNotContain("\"draw\"", offText, StringComparison.Ordinal);
         Assert.Equal(offText, stripped.ToString());
@@ -173,6 +176,65 @@ public sealed class DebugDrawTests : IDisposable
         long before = GC.GetAllocatedBytesForCurrentThread();
         match.Play(300);
         Assert.Equal(0L, GC.GetAllocatedBytesForCurrentThread() - before);
+    }
+
+    [Fact]
+    public void The_ball_grab_demo_draws_each_fishs_ball_its_route_into_the_teams_box_and_what_it_is_doing()
+    {
+        string trace = Path.Combine(_folder, "ball-grab.jsonl");
+        var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--noise", "off", "--cycles", "300", "--debug-draw", "--trace", trace);
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        var lines = Lines(trace);
+        var layout = lines[0].GetProperty("layout");
+        int plans = 0;
+        var boxSide = new Dictionary<int, int>();
+        for (int n = 1; n < lines.Length; n++)
+        {
+            var seen = lines[n - 1];
+            var balls = seen.GetProperty("balls").EnumerateArray().Select(b => Point(b.GetProperty("position"))).ToArray();
+            foreach (var text in lines[n].GetProperty("draw").EnumerateArray().Where(d => d.GetProperty("kind").GetString() == "text"))
+            {
+                int fish = text.GetProperty("fish").GetInt32();
+                int team = text.GetProperty("team").GetInt32();
+                Assert.Equal(team, layout.GetProperty("fish")[fish].GetProperty("team").GetInt32());
+                string what = text.GetProperty("text").GetString()!;
+                if (!what.StartsWith("push ball ", StringComparison.Ordinal) && !what.StartsWith("fetch ball ", StringComparison.Ordinal))
+                {
+                    Assert.Contains(what, new[] { "leave box", "wait" });
+                    continue;
+                }
+
+                // The circled ball is the one named, where the demo's filter has it (noise off: within 40 mm of where it was).
+                int ball = int.Parse(what[(what.LastIndexOf(' ') + 1)..], System.Globalization.CultureInfo.InvariantCulture);
+                var mine = lines[n].GetProperty("draw").EnumerateArray().Where(d => d.TryGetProperty("fish", out var f) && f.GetInt32() == fish).ToArray();
+                var circle = Assert.Single(mine, d => d.GetProperty("kind").GetString() == "circle");
+                Assert.True(Vector2.Distance(Point(circle.GetProperty("center")), balls[ball]) < 40f, $"cycle {n}: the circle is not on ball {ball}");
+
+                // The route (green) is a chain of segments from the circled ball into one of the boxes, the same box for a team.
+                var route = mine.Where(d => d.GetProperty("kind").GetString() == "line" && d.TryGetProperty("color", out var c) && c.GetString() == "#2e8b57").ToArray();
+                Assert.NotEmpty(route);
+                Assert.Equal(Point(circle.GetProperty("center")), Point(route[0].GetProperty("from")));
+                for (int i = 1; i < route.Length; i++)
+                {
+                    Assert.Equal(Point(route[i - 1].GetProperty("to")), Point(route[i].GetProperty("from")));
+                }
+
+                var end = Point(route[^1].GetProperty("to"));
+                int side = Math.Sign(end.X);
+                Assert.True(Math.Abs(end.X) > BallGrabLayout.BoxInnerX && Math.Abs(end.X) < BallGrabLayout.BoxOuterX && Math.Abs(end.Y) < BallGrabLayout.BoxHalfWidth, $"cycle {n}: the route of team {team} ends at {end}, not in a box");
+                if (boxSide.TryGetValue(team, out int was) && was != side)
+                {
+                    // The teams change ends at half time (the 300-cycle match's half is 150 cycles).
+                    Assert.Equal(151, n);
+                }
+
+                boxSide[team] = side;
+                plans++;
+            }
+        }
+
+        Assert.True(plans > 400, $"only {plans} plans drawn in 300 cycles of 4 fish");
+        Assert.Equal(-boxSide[0], boxSide[1]); // the two teams' boxes are at opposite ends (and each team's stay put but for the half)
     }
 
     [Fact]

@@ -19,7 +19,11 @@ def steer(fish, target):
 
 
 class ChaseBall(Strategy):
-    """Each fish swims to a point behind its nearest ball (seen from the goal it attacks), then through the ball."""
+    """Each fish swims to a point behind its nearest ball (seen from the goal it attacks), then through the ball.
+
+    With run --debug-draw it draws its plan: each fish's way to its aim, the ball's way to the goal
+    (green), the ball circled (yellow) and what the fish is doing.
+    """
 
     name = "chase-ball (python)"
 
@@ -38,7 +42,13 @@ class ChaseBall(Strategy):
             norm = math.hypot(gx, gy) or 1.0
             behind = (ball.position[0] - gx / norm * (ball.radius + 60), ball.position[1] - gy / norm * (ball.radius + 60))
             lined_up = math.dist(fish.position, behind) < ball.radius + 80
-            answer.append(steer(fish, goal if lined_up else behind))
+            aim = goal if lined_up else behind
+            answer.append(steer(fish, aim))
+            if self.draw.on:  # shown with run --debug-draw
+                self.draw.line(fish.position, aim, fish.index)
+                self.draw.line(ball.position, goal, fish.index, 0x2E8B57)
+                self.draw.circle(ball.position, ball.radius + 12, fish.index, 0xFFD400)
+                self.draw.text((aim[0] + 20, aim[1] - 20), "push" if lined_up else "line up", fish.index)
         return answer
 
 

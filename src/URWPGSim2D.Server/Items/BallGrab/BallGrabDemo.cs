@@ -1,4 +1,5 @@
 using System;
+using System.Globalization;
 using URWPGSim2D.Collision.Motion;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
@@ -19,7 +20,10 @@ namespace URWPGSim2D.Server.Items.BallGrab;
 /// it there) is taken last. A fish caught inside a box first swims out through the opening; one that
 /// has not moved for two seconds turns away (<see cref="Stuck"/>). Positions are filtered
 /// (<see cref="FishTrack"/>, <see cref="BallTrack"/>). Works in a frame where the team's box is at +x
-/// (mirrored for the left end).
+/// (mirrored for the left end). It draws its plan (<see cref="DebugDraw"/>, shown with
+/// <c>run --debug-draw</c>): per fish the planned route of its ball into the box, the ball circled,
+/// the point the ball heads for and what the fish is doing (<c>push ball N</c>, <c>fetch ball N</c>,
+/// <c>leave box</c>, <c>wait</c>).
 /// </summary>
 internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball-grab demo") : IStrategy
 {
@@ -29,6 +33,9 @@ internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball
     // Cycles a fish spends on one ball before it leaves that ball alone for as long and takes another.
     private const int GiveUpCycles = 600;
     private const float Ahead = 300f;
+
+    private const int RouteColour = 0x2e8b57; // the ball's planned route into the box
+    private const int TargetColour = 0xffd400; // the target ball and the point it heads for
 
     private int[] _target = [];
     private Stuck[] _stuck = [];
@@ -75,6 +82,14 @@ internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball
             {
                 Decision e = Steering.SwimTo(mine, exit, 4);
                 decisions[k] = side > 0 ? e : new Decision(e.VCode, 14 - e.TCode);
+                if (DebugDraw.IsOn)
+                {
+                    Vector2 to = exit * new Vector2(side, 1f);
+                    DebugDraw.Line(me.Position, to, me.Index);
+                    DebugDraw.Point(to, me.Index, TargetColour);
+                    DebugDraw.Text(to + new Vector2(20f, -20f), "leave box", me.Index);
+                }
+
                 continue;
             }
 
@@ -95,6 +110,12 @@ internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball
             if (ball < 0)
             {
                 decisions[k] = Vector2.Distance(_tracking.Fish[k].Position, Vector2.Zero) < 200f ? Decision.Stop : _pushers[k].Travel(me, _tracking.Fish[k], Vector2.Zero, around, 6);
+                if (DebugDraw.IsOn)
+                {
+                    DebugDraw.Line(me.Position, Vector2.Zero, me.Index);
+                    DebugDraw.Text(new Vector2(20f, -20f), "wait", me.Index);
+                }
+
                 continue;
             }
 
@@ -104,7 +125,35 @@ internal sealed class BallGrabDemo(IGoalBoxGame referee, string teamName = "ball
             Vector2 way = default(RouteProgress).Direction(route[..n], q, Ahead) * new Vector2(side, 1f);
             int vcode = q.X > BoxOuterX - 100f ? FineVCode : PushVCode;
             decisions[k] = _pushers[k].Push(me, _tracking.Fish[k], ref _tracking.Balls[ball], radius, way, around, vcode);
+            if (DebugDraw.IsOn)
+            {
+                Draw(me, route[..n], side, radius, way, _pushers[k].Pushing, ball);
+            }
         }
+    }
+
+    // The plan of one fish in world coordinates: its ball's route into the box (box frame, mirrored
+    // back by side), the ball circled, the point 300 mm ahead it heads for, and what the fish is doing.
+    private static void Draw(in FishView me, ReadOnlySpan<Vector2> route, int side, float radius, Vector2 way, bool pushing, int ball)
+    {
+        var mirror = new Vector2(side, 1f);
+        Vector2 at = route[0] * mirror;
+        Vector2 head = Steering.Head(me);
+        if (!pushing)
+        {
+            DebugDraw.Line(head, at, me.Index);
+        }
+
+        for (int i = 1; i < route.Length; i++)
+        {
+            DebugDraw.Line(route[i - 1] * mirror, route[i] * mirror, me.Index, RouteColour);
+        }
+
+        DebugDraw.Circle(at, radius + 12f, me.Index, TargetColour);
+        Vector2 aim = at + (way * Ahead);
+        DebugDraw.Line(at, aim, me.Index, TargetColour);
+        DebugDraw.Point(aim, me.Index, TargetColour);
+        DebugDraw.Text(at + new Vector2(radius + 20f, -radius - 20f), (pushing ? "push ball " : "fetch ball ") + ball.ToString(CultureInfo.InvariantCulture), me.Index);
     }
 
     // The route of a ball at q (box frame) into the box: from the ball past the bar end on its side,

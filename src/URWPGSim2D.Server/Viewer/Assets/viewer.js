@@ -12,6 +12,9 @@
   const FOLLOW_ZOOM = 2.5;
   const STRIDE_FISH = 6; // x, z, heading, joint 1..3
   const STRIDE_BALL = 2; // x, z
+  const MOTION_FISH = 2, MOTION_BALL = 2; // speed, angular speed / vx, vz
+  const CODES_FISH = 4; // VCode, TCode, speed gear, turn gear (255: none)
+  const NO_CODE = 255;
 
   // ---- The fish model: the eight leaf polygons of docs/fish.md, exactly as the library builds them.
   // Leaves in FishPart order; each is a list of frame points (a forward, b to the fish's right) in
@@ -122,6 +125,13 @@
     this.draws = []; // per cycle index: the strategies' debug drawings (run --debug-draw), if any
     this.hasDraws = false;
     this.logs = []; // what the strategies printed (run --strategy-log): {cycle, team, text}
+    // What a body's details show: speeds and ball velocities, decisions and gears, and each contact's bodies.
+    this.motionStride = this.nf * MOTION_FISH + this.nb * MOTION_BALL;
+    this.motion = new Float32Array(Math.max(1, this.motionStride) * 64);
+    this.codes = new Uint8Array(Math.max(1, this.nf * CODES_FISH) * 64);
+    this.contactKinds = new Uint16Array(64);
+    this.contactPairs = []; // [a, b, partA, partB]
+    this.pairIndex = new Map();
     this.local = layout.fish.map(f => localLeaves(f.size));
   }
   Store.prototype.ensure = function (cycles, contactValues) {
@@ -130,6 +140,9 @@
     this.contactStart = grow(this.contactStart, cycles + 1, Int32Array);
     this.contacts = grow(this.contacts, contactValues, Float32Array);
     this.scores = grow(this.scores, cycles * this.nt, Float64Array);
+    this.motion = grow(this.motion, cycles * this.motionStride, Float32Array);
+    this.codes = grow(this.codes, cycles * this.nf * CODES_FISH, Uint8Array);
+    this.contactKinds = grow(this.contactKinds, contactValues / 4 + 1, Uint16Array);
   };
   // Appends one trace line (an object as in the trace file / the live stream).
   Store.prototype.append = function (line) {
@@ -142,8 +155,22 @@
       this.frames[o++] = f.joints[0]; this.frames[o++] = f.joints[1]; this.frames[o++] = f.joints[2];
     }
     for (let i = 0; i < this.nb; i++) { const b = line.balls[i]; this.frames[o++] = b.position[0]; this.frames[o++] = b.position[1]; }
+    let m = k * this.motionStride, d = k * this.nf * CODES_FISH;
+    const code = v => (Number.isInteger(v) && v >= 0 && v < NO_CODE ? v : NO_CODE);
+    for (let i = 0; i < this.nf; i++) {
+      const f = line.fish[i], dec = f.decision || [], gears = f.gears || [];
+      this.motion[m++] = +f.speed || 0; this.motion[m++] = +f.angularSpeed || 0;
+      this.codes[d++] = code(dec[0]); this.codes[d++] = code(dec[1]); this.codes[d++] = code(gears[0]); this.codes[d++] = code(gears[1]);
+    }
+    for (let i = 0; i < this.nb; i++) { const v = line.balls[i].velocity || [0, 0]; this.motion[m++] = +v[0] || 0; this.motion[m++] = +v[1] || 0; }
     let c = cs;
-    for (const ct of contacts) { this.contacts[c++] = ct.actionPoint[0]; this.contacts[c++] = ct.actionPoint[1]; this.contacts[c++] = ct.normal[0]; this.contacts[c++] = ct.normal[1]; }
+    for (const ct of contacts) {
+      const key = [ct.a, ct.b, ct.partA === undefined ? null : ct.partA, ct.partB === undefined ? null : ct.partB], name = JSON.stringify(key);
+      let pair = this.pairIndex.get(name);
+      if (pair === undefined) { pair = this.contactPairs.length; this.contactPairs.push(key); this.pairIndex.set(name, pair); }
+      this.contactKinds[c / 4] = pair;
+      this.contacts[c++] = ct.actionPoint[0]; this.contacts[c++] = ct.actionPoint[1]; this.contacts[c++] = ct.normal[0]; this.contacts[c++] = ct.normal[1];
+    }
     this.contactStart[k + 1] = c;
     const score = line.score || [];
     for (let t = 0; t < this.nt; t++) this.scores[k * this.nt + t] = score[t] !== undefined ? score[t] : (k > 0 ? this.scores[(k - 1) * this.nt + t] : 0);
@@ -172,6 +199,16 @@
       }
       s.contactStart[k + 1] = c;
     }
+    if (data.motion !== undefined) {
+      const motion = decode(data.motion, Int16Array), codes = decode(data.decisions, Uint8Array), kinds = decode(data.contactKinds, Uint16Array);
+      for (let k = 0, o = 0; k < n; k++) {
+        for (let i = 0; i < s.nf; i++, o += MOTION_FISH) { s.motion[o] = motion[o] * q; s.motion[o + 1] = motion[o + 1] * a; }
+        for (let i = 0; i < s.nb; i++, o += MOTION_BALL) { s.motion[o] = motion[o] * q; s.motion[o + 1] = motion[o + 1] * q; }
+      }
+      s.codes.set(codes.subarray(0, Math.min(codes.length, s.codes.length)));
+      s.contactKinds.set(kinds.subarray(0, Math.min(kinds.length, s.contactKinds.length)));
+      s.contactPairs = data.contactPairs || [];
+    } else s.codes.fill(NO_CODE);
     let change = 0;
     for (let k = 0; k < n; k++) {
       while (change < data.scores.length && data.scores[change][0] - s.firstCycle <= k) change++;
@@ -197,6 +234,9 @@
   const api = {
     store: null, cycle: 0, position: 0, playing: false, speed: 1, follow: -1, live: !!data.live, followLive: !!data.live,
     show: { labels: true, contacts: false, bounds: false, trails: false, draw: [true, true, true, true] },
+    inspected: null, // {kind: 'fish' | 'ball', index} whose details are shown
+    tracked: [], // bodies whose trajectories are drawn: 'fish0', 'ball3', …
+    trajectoryWindow: { from: null, to: null }, // cycle numbers; null: the first cycle / the cycle shown
     teamColour: t => TEAM_COLOURS[t % TEAM_COLOURS.length], ballColour: BALL_COLOUR,
     leaves, localLeaves, kdop, enclosingCircle, frames: 0, firstFrameAt: null, errors: [], received: 0,
     view: { scale: 1, cx: 0, cz: 0, ox: 0, oy: 0, dpr: 1 },
@@ -311,6 +351,7 @@
     rect([-L, -W], [L, W]); ctx.strokeStyle = '#1b3a4b'; ctx.lineWidth = 3 * dpr; ctx.stroke();
     const k = Math.round(t) === t ? t : Math.floor(t);
     if (api.show.trails) drawTrails(s, k);
+    if (api.tracked.length > 0) drawTrajectories(s, k);
     // Balls.
     for (let i = 0; i < s.nb; i++) {
       const p = ballPos(s, t, i);
@@ -325,6 +366,7 @@
       for (const poly of polys) { path(poly); ctx.fill(); ctx.stroke(); }
     }
     if (s.hasDraws) drawDebug(s, k);
+    if (api.inspected) drawInspected(s, t);
     if (api.show.bounds) drawBounds(s, t, poses);
     if (api.show.contacts) drawContacts(s, k);
     if (api.show.labels) {
@@ -428,6 +470,176 @@
     }
   }
 
+  // ---- One body's details (click it or choose it) and the trajectories of chosen bodies.
+  const bodyId = b => b.kind + b.index;
+  function parseBody(id) {
+    const m = /^(fish|ball)(\d+)$/.exec(String(id));
+    return m ? { kind: m[1], index: parseInt(m[2], 10) } : null;
+  }
+  function bodyCount(s, kind) { return kind === 'fish' ? s.nf : s.nb; }
+  function bodyPosition(s, t, b) { return b.kind === 'fish' ? fishPose(s, t, b.index) : ballPos(s, t, b.index); }
+
+  // The window of cycle indices a trajectory covers at cycle index k.
+  function trajectoryRange(s, k) {
+    const w = api.trajectoryWindow;
+    const from = w.from === null ? 0 : Math.max(0, Math.min(s.count - 1, w.from - s.firstCycle));
+    const to = w.to === null ? k : Math.max(0, Math.min(s.count - 1, w.to - s.firstCycle));
+    return [Math.min(from, to), Math.max(from, to)];
+  }
+  // The polyline of a body over the window: [[x, z], ...] per cycle (a jump of over 300 mm starts a new piece).
+  function trajectory(s, b, k) {
+    const [from, to] = trajectoryRange(s, k), out = [];
+    for (let c = from; c <= to; c++) { const p = bodyPosition(s, c, b); out.push([p[0], p[1]]); }
+    return out;
+  }
+  api.trajectory = (id, k) => { const b = parseBody(id); return b && api.store ? trajectory(api.store, b, k === undefined ? api.cycle : k) : []; };
+
+  function drawTrajectories(s, k) {
+    const dpr = api.view.dpr;
+    for (const id of api.tracked) {
+      const b = parseBody(id);
+      if (!b || b.index >= bodyCount(s, b.kind)) continue;
+      const pts = trajectory(s, b, k), colour = b.kind === 'fish' ? api.teamColour(s.layout.fish[b.index].team) : '#b45f06';
+      if (pts.length === 0) continue;
+      ctx.beginPath();
+      pts.forEach((p, i) => { const q = worldToCanvas(p[0], p[1]); if (i === 0 || Math.hypot(p[0] - pts[i - 1][0], p[1] - pts[i - 1][1]) > 300) ctx.moveTo(q[0], q[1]); else ctx.lineTo(q[0], q[1]); });
+      ctx.strokeStyle = colour; ctx.lineWidth = 2.5 * dpr; ctx.stroke();
+      for (const [p, r] of [[pts[0], 3], [pts[pts.length - 1], 5]]) {
+        const q = worldToCanvas(p[0], p[1]); ctx.beginPath(); ctx.arc(q[0], q[1], r * dpr, 0, 2 * Math.PI); ctx.fillStyle = colour; ctx.fill(); ctx.strokeStyle = '#fff'; ctx.lineWidth = dpr; ctx.stroke();
+      }
+    }
+  }
+
+  function drawInspected(s, t) {
+    const b = api.inspected;
+    if (b.index >= bodyCount(s, b.kind)) return;
+    const p = bodyPosition(s, t, b), r = b.kind === 'fish' ? s.layout.fish[b.index].size.length * 0.9 : s.layout.balls[b.index].radius + 25;
+    circle(p[0], p[1], r);
+    ctx.setLineDash([4 * api.view.dpr, 3 * api.view.dpr]); ctx.strokeStyle = '#ffffff'; ctx.lineWidth = 2 * api.view.dpr; ctx.stroke(); ctx.setLineDash([]);
+  }
+
+  // The body under a canvas point (CSS pixels), or null: a ball within 20 mm of its edge, else a fish whose leaves hold the point.
+  function bodyAt(px, py) {
+    const s = api.store;
+    if (!s) return null;
+    const v = api.view, x = (px * v.dpr - v.ox) / v.scale + v.cx, z = (py * v.dpr - v.oy) / v.scale + v.cz, t = Math.min(api.position, s.count - 1);
+    let best = null, bestD = Infinity;
+    for (let i = 0; i < s.nb; i++) {
+      const p = ballPos(s, t, i), d = Math.hypot(p[0] - x, p[1] - z) - s.layout.balls[i].radius;
+      if (d < 20 && d < bestD) { best = { kind: 'ball', index: i }; bestD = d; }
+    }
+    if (best) return best;
+    for (let i = 0; i < s.nf; i++) {
+      const p = fishPose(s, t, i), polys = leaves(s.layout.fish[i].size, p[0], p[1], p[2], p[3], p[4], p[5], s.local[i]);
+      if (polys.some(poly => inside(poly, x, z))) return { kind: 'fish', index: i };
+      const d = Math.hypot(p[0] - x, p[1] - z);
+      if (d < s.layout.fish[i].size.length / 2 && d < bestD) { best = { kind: 'fish', index: i }; bestD = d; }
+    }
+    return best;
+  }
+  function inside(poly, x, z) {
+    let c = false;
+    for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+      const [xi, zi] = poly[i], [xj, zj] = poly[j];
+      if ((zi > z) !== (zj > z) && x < (xj - xi) * (z - zi) / (zj - zi) + xi) c = !c;
+    }
+    return c;
+  }
+  api.bodyAt = bodyAt;
+
+  function inspect(b) {
+    api.inspected = b && api.store && b.index < bodyCount(api.store, b.kind) ? { kind: b.kind, index: b.index } : null;
+    $('inspect').value = api.inspected ? bodyId(api.inspected) : '';
+    hudDirty = true; dirty = true;
+  }
+  api.inspect = id => inspect(parseBody(id));
+
+  // The details of the inspected body at cycle index k, as numbers (what the panel shows).
+  function details(s, k) {
+    const b = api.inspected;
+    if (!b) return null;
+    const n = cycleNumber(s, k), contacts = [];
+    const me = bodyId(b);
+    for (let c = s.contactStart[k]; c < s.contactStart[k + 1]; c += 4) {
+      const pair = s.contactPairs[s.contactKinds[c / 4]];
+      if (!pair) continue;
+      if (pair[0] === me) contacts.push({ other: pair[1], part: pair[2], otherPart: pair[3], at: [s.contacts[c], s.contacts[c + 1]] });
+      else if (pair[1] === me) contacts.push({ other: pair[0], part: pair[3], otherPart: pair[2], at: [s.contacts[c], s.contacts[c + 1]] });
+    }
+    const fr = s.frames, mo = s.motion;
+    if (b.kind === 'fish') {
+      const o = k * s.stride + b.index * STRIDE_FISH, m = k * s.motionStride + b.index * MOTION_FISH, d = (k * s.nf + b.index) * CODES_FISH;
+      const team = s.layout.fish[b.index].team, codes = [0, 1, 2, 3].map(j => s.codes[d + j]);
+      const faults = s.events.filter(e => e.kind === 'fault' && e.team === team && e.cycle <= n);
+      return {
+        id: me, cycle: n, team, position: [fr[o], fr[o + 1]], heading: fr[o + 2], joints: [fr[o + 3], fr[o + 4], fr[o + 5]],
+        speed: mo[m], angularSpeed: mo[m + 1],
+        decision: codes[0] === NO_CODE ? null : [codes[0], codes[1]], gears: codes[2] === NO_CODE ? null : [codes[2], codes[3]],
+        contacts, faults: faults.map(e => ({ cycle: e.cycle, text: e.text || e.kind })),
+      };
+    }
+    const o = k * s.stride + s.nf * STRIDE_FISH + b.index * STRIDE_BALL, m = k * s.motionStride + s.nf * MOTION_FISH + b.index * MOTION_BALL;
+    const ball = s.layout.balls[b.index];
+    return { id: me, cycle: n, position: [fr[o], fr[o + 1]], velocity: [mo[m], mo[m + 1]], speed: Math.hypot(mo[m], mo[m + 1]), radius: ball.radius, value: ball.value, contacts };
+  }
+  api.details = () => (api.store && api.inspected ? details(api.store, api.cycle) : null);
+
+  const fixed = (v, d) => (Math.round(v * 10 ** d) / 10 ** d).toFixed(d);
+  function renderDetails(s) {
+    const box = $('details-body'), d = details(s, api.cycle);
+    box.textContent = '';
+    $('track-body').disabled = !d;
+    $('track-body').checked = !!d && api.tracked.includes(d.id);
+    if (!d) return;
+    const rows = [['position', fixed(d.position[0], 1) + ', ' + fixed(d.position[1], 1) + ' mm']];
+    if (d.team !== undefined) {
+      rows.unshift(['team', 'team ' + d.team + ' (' + ((s.layout.teams[d.team] || {}).name || '') + ')']);
+      rows.push(['heading', fixed(d.heading, 4) + ' rad (' + fixed(d.heading * 180 / Math.PI, 1) + '\u00b0)']);
+      rows.push(['speed', fixed(d.speed, 1) + ' mm/s']);
+      rows.push(['angular speed', fixed(d.angularSpeed, 4) + ' rad/s']);
+      rows.push(['joints', d.joints.map(j => fixed(j, 4)).join(', ') + ' rad']);
+      rows.push(['decision', d.decision ? 'VCode ' + d.decision[0] + ', TCode ' + d.decision[1] : '\u2014']);
+      rows.push(['gears', d.gears ? 'speed ' + d.gears[0] + ', turn ' + d.gears[1] : '\u2014']);
+    } else {
+      rows.push(['velocity', fixed(d.velocity[0], 1) + ', ' + fixed(d.velocity[1], 1) + ' mm/s']);
+      rows.push(['speed', fixed(d.speed, 1) + ' mm/s']);
+      rows.push(['radius', fixed(d.radius, 1) + ' mm' + (d.value !== undefined ? ', value ' + formatNumber(d.value) : '')]);
+    }
+    rows.push(['contacts', d.contacts.length === 0 ? 'none' : d.contacts.map(c => (c.part ? c.part + ' \u2013 ' : '') + c.other + (c.otherPart ? ' ' + c.otherPart : '')).join('; ')]);
+    if (d.faults) rows.push(['team faults', d.faults.length === 0 ? 'none' : d.faults.length + ', last #' + d.faults[d.faults.length - 1].cycle + ': ' + d.faults[d.faults.length - 1].text]);
+    for (const [name, value] of rows) {
+      const tr = document.createElement('tr'), th = document.createElement('th'), td = document.createElement('td');
+      th.textContent = name; td.textContent = value; tr.dataset.name = name;
+      tr.appendChild(th); tr.appendChild(td); box.appendChild(tr);
+    }
+  }
+
+  function setupInspector(s) {
+    const select = $('inspect');
+    select.textContent = '';
+    const none = document.createElement('option'); none.value = ''; none.textContent = 'click a fish or a ball'; select.appendChild(none);
+    for (let i = 0; i < s.nf; i++) { const o = document.createElement('option'); o.value = 'fish' + i; o.textContent = 'fish' + i + ' (team ' + s.layout.fish[i].team + ')'; select.appendChild(o); }
+    for (let i = 0; i < s.nb; i++) { const o = document.createElement('option'); o.value = 'ball' + i; o.textContent = 'ball' + i; select.appendChild(o); }
+    if (api.inspected && api.inspected.index >= bodyCount(s, api.inspected.kind)) api.inspected = null;
+    select.value = api.inspected ? bodyId(api.inspected) : '';
+    const from = $('trajectory-from'), to = $('trajectory-to');
+    from.min = to.min = String(s.firstCycle);
+  }
+  function setTrajectoryWindow(from, to) {
+    const num = v => (v === null || v === undefined || v === '' || !isFinite(+v) ? null : Math.round(+v));
+    api.trajectoryWindow = { from: num(from), to: num(to) };
+    $('trajectory-from').value = api.trajectoryWindow.from === null ? '' : String(api.trajectoryWindow.from);
+    $('trajectory-to').value = api.trajectoryWindow.to === null ? '' : String(api.trajectoryWindow.to);
+    dirty = true;
+  }
+  api.setTrajectoryWindow = setTrajectoryWindow;
+  function track(id, on) {
+    api.tracked = api.tracked.filter(x => x !== id);
+    if (on) api.tracked.push(id);
+    hudDirty = true; dirty = true;
+  }
+  api.track = track;
+
   // ---- The heads-up display (score, clock, events) and the controls.
   let dirty = true, lastEventsShown = -1, lastCycleShown = -1;
   function cycleNumber(s, k) { return s.firstCycle + k; }
@@ -454,6 +666,7 @@
     if (s.events.length !== lastEventsShown || previous !== k) renderEvents(s, n, previous);
     if (s.logs.length !== lastLogsShown || previous !== k || logFilterChanged) renderLogs(s, n);
     refreshDrawLayers(s);
+    renderDetails(s);
     lastEventsShown = s.events.length;
   }
   let hudDirty = true;
@@ -537,6 +750,7 @@
     while (follow.options.length > 1) follow.remove(1);
     s.layout.fish.forEach((f, i) => { const o = document.createElement('option'); o.value = String(i); o.textContent = 'fish' + i + ' (team ' + f.team + ')'; follow.appendChild(o); });
     follow.value = String(api.follow < s.nf ? api.follow : -1);
+    setupInspector(s);
     hudDirty = true;
   }
 
@@ -600,6 +814,10 @@
       box.addEventListener('change', () => { api.show[name] = box.checked; dirty = true; });
     }
     $('log-team').addEventListener('change', () => { logFilterChanged = true; hudDirty = true; dirty = true; });
+    $('inspect').addEventListener('change', e => inspect(parseBody(e.target.value)));
+    canvas.addEventListener('click', e => { const b = bodyAt(e.offsetX, e.offsetY); if (b) inspect(b); });
+    $('track-body').addEventListener('change', e => { if (api.inspected) track(bodyId(api.inspected), e.target.checked); });
+    for (const id of ['trajectory-from', 'trajectory-to']) $(id).addEventListener('change', () => setTrajectoryWindow($('trajectory-from').value, $('trajectory-to').value));
     $('strategy-log').addEventListener('click', e => {
       const li = e.target.closest('li');
       if (li && api.store) { if (api.live) api.followLive = false; seek(parseInt(li.dataset.cycle, 10) - api.store.firstCycle); }
