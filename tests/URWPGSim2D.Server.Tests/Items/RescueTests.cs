@@ -157,7 +157,7 @@ public sealed class RescueTests
                 for (int k = 0; k <= steps; k++)
                 {
                     Vector2 p = Vector2.Lerp(route[i], route[i + 1], k / (float)steps);
-                    float clear = walls.Min(w => URWPGSim2D.Server.Items.Demo.Surroundings.Distance(w, p));
+                    float clear = walls.Min(w => OutsideOf(w, p));
                     clear = System.MathF.Min(clear, System.MathF.Min((RescueLayout.FieldLength / 2f) - System.MathF.Abs(p.X), (RescueLayout.FieldWidth / 2f) - System.MathF.Abs(p.Y)));
                     Assert.True(clear - RescueLayout.BallRadius >= 65f, $"ball {ball} at {p}: {clear - RescueLayout.BallRadius:F1} mm from a wall");
                 }
@@ -236,4 +236,8 @@ public sealed class RescueTests
 
     private static string Describe(System.Collections.Generic.IEnumerable<(ulong Seed, int Rescued)> results) =>
         string.Join(", ", results.Select(r => $"seed {r.Seed}: {r.Rescued}"));
+
+    // Distance from a point to an unrotated rectangular wall (0 inside it).
+    private static float OutsideOf(in ObstacleView wall, System.Numerics.Vector2 p) =>
+        System.Numerics.Vector2.Max(System.Numerics.Vector2.Abs(p - wall.Center) - (new System.Numerics.Vector2(wall.Length, wall.Width) * 0.5f), System.Numerics.Vector2.Zero).Length();
 }

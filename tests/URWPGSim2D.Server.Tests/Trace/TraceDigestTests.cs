@@ -47,9 +47,9 @@ public sealed class TraceDigestTests
         [("item four-teams", 1)] = "6e8e0496ff087c62e6f7565631565715b8c0b62308b9a53bc8aaf2722a93cc3f",
         [("item four-teams", 2)] = "7d47f268570da84c08c6b40b3ddb3fb5ebff0c1ad8feaa381a49be7847262638",
         [("item four-teams", 7)] = "42540721184d7902e978a2ea22e6cde67bda5447410a537b709d1f84adccdbf1",
-        [("item new-ball-grab", 1)] = "1e83e0c47c93829301ccd884787d3e2871caab9b7c1fe08a9c799ae150344cb6",
-        [("item new-ball-grab", 2)] = "a689a136f45ce3a9ecff6895488b2beeaf2e16ca63ab4e31f463f4923f3ce58d",
-        [("item new-ball-grab", 7)] = "458bc533534ed490c46e6f5c9dc5958aa6919541a6dd0220243036aa1e80a3ff",
+        [("item new-ball-grab", 1)] = "b6bcf7f27af8657d8e3bba02661daa5a0f65e67e54de32b3b6dba3b390491d0a",
+        [("item new-ball-grab", 2)] = "88f6ef5e2f3ef5ec49a78782d41b98adfb9717f8461ac8a99345ef5f8ec6b52f",
+        [("item new-ball-grab", 7)] = "eb12a301691c83c75d31a1b59ce313a23185da3fe2e9b5950dbd5201eb46c744",
         [("item polo-1v1", 1)] = "a3131dacd61e5d534bc60d1d34081c567e1a442c481f3db301d36d255cce027f",
         [("item polo-1v1", 2)] = "6feb904f088d81b60bcdc7c8a5e84b527fb8215ad18f5c2ccfc8a2cc259a2857",
         [("item polo-1v1", 7)] = "da3c97aea7e96751ad226eb1b93e609da1a400459d87b7716efbda85d25c1ed4",
@@ -89,7 +89,7 @@ public sealed class TraceDigestTests
     private static readonly Dictionary<(string Scene, ulong Seed), string> PinnedLong = new()
     {
         [("default", 1)] = "3ff3341e3b67f700884efc8dfc37b47b8f6680a6dce6a2866c7dc9d657e6462c",
-        [("item ball-grab", 1)] = "d8a4a38c12e179351eecde37c097e48d23d608f1aa2081f92f8a1ad62423882b",
+        [("item ball-grab", 1)] = "5e28f86182c26d63ea5079fe976703b0e1daca85d7901958971e3cd8c69d797c",
         [("item polo-3v3", 2)] = "7b8a6591cc2aaabc6ab31c75a7c49524cd3cba9270500a0e7ac2337cc0e752d2",
     };
 

@@ -5,12 +5,13 @@ namespace URWPGSim2D.Server.Items.Demo;
 
 /// <summary>
 /// What a demo team knows of the match, kept across cycles: a <see cref="FishTrack"/> for each of
-/// its fish, a <see cref="BallTrack"/> for each ball, and the way-finder of the field's obstacles
-/// (found once). <see cref="Observe"/> takes each cycle's views; <see cref="Restart"/> forgets the
+/// its fish, a <see cref="BallTrack"/> for each ball, the field's borders and obstacles and the way round
+/// them (found once). <see cref="Observe"/> takes each cycle's views; <see cref="Restart"/> forgets the
 /// tracks when the referee has placed every body afresh (a new half).
 /// </summary>
 internal sealed class Tracking
 {
+    private ObstacleField? _field;
     private Waypath? _ways;
 
     /// <summary>The track of each of the team's fish, in the order the strategy is given them.</summary>
@@ -49,7 +50,8 @@ internal sealed class Tracking
             Fish[k].Update(snapshot.Fish[fish[k]]);
         }
 
-        _ways ??= Surroundings.WaysOf(snapshot);
-        return new Surroundings(snapshot, _ways);
+        _field ??= new ObstacleField(snapshot);
+        _ways ??= new Waypath(_field);
+        return new Surroundings(_field, _ways);
     }
 }

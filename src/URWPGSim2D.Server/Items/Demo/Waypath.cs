@@ -6,7 +6,9 @@ namespace URWPGSim2D.Server.Items.Demo;
 /// <summary>
 /// The shortest way between two points round the obstacles of a field: a polyline through the
 /// corners of the obstacles' bounding boxes grown by <see cref="Margin"/> (a visibility graph,
-/// searched by Dijkstra). Built once per strategy from the snapshot's obstacles (they never move);
+/// searched by Dijkstra). Built once per strategy from the field's obstacles (they never move);
+/// whether a leg keeps the margin is the field's question (<see cref="ObstacleField.Free"/>, the
+/// collision library's ray cast);
 /// which corner sees which is worked out then, so a query only tests the segments from its two ends.
 /// A query allocates nothing.
 /// </summary>
@@ -18,35 +20,27 @@ internal sealed class Waypath
     // Corners sit a little beyond the grown boxes so that the legs between them do not graze.
     private const float CornerOut = 10f;
 
-    private readonly Vector2[] _centres;
-    private readonly Vector2[] _halves;
-    private readonly Vector2 _room;
+    private readonly ObstacleField _field;
     private readonly Vector2[] _corners;
     private readonly bool[,] _sees;
     private readonly float[] _distance;
     private readonly int[] _previous;
     private readonly bool[] _done;
 
-    /// <summary>The way-finder of a field (half its size, <paramref name="halfField"/>) and its obstacles.</summary>
-    public Waypath(ReadOnlySpan<ObstacleView> obstacles, Vector2 halfField)
+    /// <summary>The way-finder of a field's obstacles.</summary>
+    public Waypath(ObstacleField field)
     {
-        _centres = new Vector2[obstacles.Length];
-        _halves = new Vector2[obstacles.Length];
-        for (int i = 0; i < obstacles.Length; i++)
-        {
-            _centres[i] = obstacles[i].Center;
-            _halves[i] = HalfExtent(obstacles[i]);
-        }
-
-        _room = halfField - new Vector2(Margin);
+        _field = field;
+        Vector2 room = field.HalfField - new Vector2(Margin);
         var corners = new System.Collections.Generic.List<Vector2>();
-        for (int i = 0; i < obstacles.Length; i++)
+        for (int i = 0; i < field.Count; i++)
         {
-            Vector2 h = _halves[i] + new Vector2(Margin + CornerOut);
+            var box = field.Bounds(i);
+            Vector2 h = ((box.Max - box.Min) * 0.5f) + new Vector2(Margin + CornerOut);
             for (int k = 0; k < 4; k++)
             {
-                Vector2 c = _centres[i] + new Vector2((k & 1) == 0 ? -h.X : h.X, (k & 2) == 0 ? -h.Y : h.Y);
-                if (MathF.Abs(c.X) <= _room.X && MathF.Abs(c.Y) <= _room.Y && Inside(c, Margin) < 0)
+                Vector2 c = box.Center + new Vector2((k & 1) == 0 ? -h.X : h.X, (k & 2) == 0 ? -h.Y : h.Y);
+                if (MathF.Abs(c.X) <= room.X && MathF.Abs(c.Y) <= room.Y && field.FirstBlocking(c, c, Margin) < 0)
                 {
                     corners.Add(c);
                 }
@@ -146,93 +140,18 @@ internal sealed class Waypath
         return true;
     }
 
-    /// <summary>Whether the segment keeps <paramref name="margin"/> from every obstacle's bounding box and stays in the field.</summary>
-    public bool Free(Vector2 a, Vector2 b, float margin)
-    {
-        for (int i = 0; i < _centres.Length; i++)
-        {
-            if (Crosses(a - _centres[i], b - _centres[i], _halves[i] + new Vector2(margin)))
-            {
-                return false;
-            }
-        }
-
-        return true;
-    }
+    /// <summary>Whether the segment keeps <paramref name="margin"/> from every obstacle's bounding box.</summary>
+    public bool Free(Vector2 a, Vector2 b, float margin) => _field.Free(a, b, margin);
 
     // The margin a leg from or to p can keep: the full margin, or less when p itself is closer to a box.
     private float EndMargin(Vector2 p)
     {
         float margin = Margin;
-        for (int i = 0; i < _centres.Length; i++)
+        for (int i = 0; i < _field.Count; i++)
         {
-            Vector2 outside = Vector2.Abs(p - _centres[i]) - _halves[i];
-            float d = outside.X <= 0f && outside.Y <= 0f ? 0f : Vector2.Max(outside, Vector2.Zero).Length();
-            margin = MathF.Min(margin, MathF.Max(0f, (d * 0.7f) - 1f));
+            margin = MathF.Min(margin, MathF.Max(0f, (_field.DistanceToBounds(i, p) * 0.7f) - 1f));
         }
 
         return margin;
-    }
-
-    // The index of a grown box containing p, or −1.
-    private int Inside(Vector2 p, float margin)
-    {
-        for (int i = 0; i < _centres.Length; i++)
-        {
-            Vector2 d = Vector2.Abs(p - _centres[i]) - (_halves[i] + new Vector2(margin));
-            if (d.X < 0f && d.Y < 0f)
-            {
-                return i;
-            }
-        }
-
-        return -1;
-    }
-
-    // Half the axis-aligned bounding box of an obstacle.
-    private static Vector2 HalfExtent(in ObstacleView o)
-    {
-        if (o.Kind == ObstacleKind.Round)
-        {
-            return new Vector2(o.Radius);
-        }
-
-        float c = MathF.Abs(MathF.Cos(o.Heading)), s = MathF.Abs(MathF.Sin(o.Heading));
-        return new Vector2((o.Length * c) + (o.Width * s), (o.Length * s) + (o.Width * c)) * 0.5f;
-    }
-
-    // Whether the segment a–b meets the open box (−half, half) (slab test).
-    private static bool Crosses(Vector2 a, Vector2 b, Vector2 half)
-    {
-        Vector2 d = b - a;
-        float t0 = 0f, t1 = 1f;
-        for (int axis = 0; axis < 2; axis++)
-        {
-            float p = axis == 0 ? a.X : a.Y, v = axis == 0 ? d.X : d.Y, h = axis == 0 ? half.X : half.Y;
-            if (MathF.Abs(v) < 1e-6f)
-            {
-                if (p <= -h || p >= h)
-                {
-                    return false;
-                }
-
-                continue;
-            }
-
-            float u0 = (-h - p) / v, u1 = (h - p) / v;
-            if (u0 > u1)
-            {
-                (u0, u1) = (u1, u0);
-            }
-
-            t0 = MathF.Max(t0, u0);
-            t1 = MathF.Min(t1, u1);
-            if (t0 >= t1)
-            {
-                return false;
-            }
-        }
-
-        return true;
     }
 }

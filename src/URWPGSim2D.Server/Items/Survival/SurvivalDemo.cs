@@ -16,6 +16,7 @@ internal sealed class SurvivalDemo(int team, SurvivalReferee referee) : IStrateg
     private const float Margin = 90f;
     private const float Alarm = 1000f;
     private Stuck[] _stuck = [];
+    private ObstacleField? _field;
 
     /// <inheritdoc/>
     public string TeamName => "survival demo";
@@ -49,6 +50,9 @@ internal sealed class SurvivalDemo(int team, SurvivalReferee referee) : IStrateg
             decisions[k] = hunting ? Hunt(snapshot, me) : Flee(snapshot, me, snapshot.Fish[hunterFish].Position);
         }
     }
+
+    // The field's squares, found the first time (they never move).
+    private ObstacleField FieldOf(MatchSnapshot snapshot) => _field ??= new ObstacleField(snapshot);
 
     private int HunterFish(MatchSnapshot snapshot)
     {
@@ -90,10 +94,10 @@ internal sealed class SurvivalDemo(int team, SurvivalReferee referee) : IStrateg
             return Decision.Stop;
         }
 
-        return Steering.SwimTo(me, Detour.Aim(snapshot.Obstacles, me.Position, target, Margin), 14);
+        return Steering.SwimTo(me, Detour.Aim(FieldOf(snapshot), me.Position, target, Margin), 14);
     }
 
-    private static Decision Flee(MatchSnapshot snapshot, in FishView me, Vector2 hunter)
+    private Decision Flee(MatchSnapshot snapshot, in FishView me, Vector2 hunter)
     {
         if (Vector2.Distance(me.Position, hunter) > Alarm)
         {
@@ -108,7 +112,7 @@ internal sealed class SurvivalDemo(int team, SurvivalReferee referee) : IStrateg
             Vector2 aim = me.Position + (Steering.Direction(k * MathF.PI / 4f) * 500f);
             Vector2 inside = Vector2.Clamp(aim, -room, room);
             float score = Vector2.Distance(inside, hunter) - (2f * Vector2.Distance(inside, aim));
-            if (Detour.FirstBlocking(snapshot.Obstacles, me.Position, inside, Margin) >= 0)
+            if (!FieldOf(snapshot).Free(me.Position, inside, Margin))
             {
                 score -= 400f;
             }

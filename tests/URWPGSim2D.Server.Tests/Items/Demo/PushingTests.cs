@@ -161,6 +161,7 @@ public sealed class PushingTests
         private BallTrack _ball;
         private Pusher _pusher;
         private RouteProgress _progress;
+        private ObstacleField? _field;
         private Waypath? _ways;
         private bool _was;
 
@@ -173,9 +174,10 @@ public sealed class PushingTests
             var view = snapshot.Fish[fish[0]];
             _me.Update(view);
             _ball.Update(snapshot.Balls[0]);
-            _ways ??= Surroundings.WaysOf(snapshot);
+            _field ??= new ObstacleField(snapshot);
+            _ways ??= new Waypath(_field);
             Vector2 direction = _progress.Direction(route, _ball.Position, 350f);
-            decisions[0] = _pusher.Push(view, _me, ref _ball, snapshot.Balls[0].Radius, direction, new Surroundings(snapshot, _ways), 6);
+            decisions[0] = _pusher.Push(view, _me, ref _ball, snapshot.Balls[0].Radius, direction, new Surroundings(_field, _ways), 6);
             if (_pusher.Pushing && !_was)
             {
                 Starts++;

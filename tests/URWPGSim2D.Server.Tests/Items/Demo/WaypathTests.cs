@@ -18,10 +18,12 @@ public sealed class WaypathTests
 
     private static readonly Vector2 Half = new(RescueLayout.FieldLength / 2f, RescueLayout.FieldWidth / 2f);
 
+    private static ObstacleField Field => new(new MatchSnapshot(0, 0, Walls, RescueLayout.FieldLength, RescueLayout.FieldWidth));
+
     [Fact]
     public void AClearLineIsTakenStraight()
     {
-        var ways = new Waypath(Walls, Half);
+        var ways = new Waypath(Field);
         Assert.True(ways.Next(new Vector2(-1800f, 0f), new Vector2(-1000f, 800f), out var first, out var second));
         Assert.Equal(new Vector2(-1000f, 800f), first);
         Assert.Equal(first, second);
@@ -36,7 +38,7 @@ public sealed class WaypathTests
         // neighbours, the same clearance at the cells' centres) finds: at most 30 mm longer (the
         // grid's steps between cell centres may cut a wall corner's clearance by a few mm, at each of
         // the four or so corners passed) and at most the grid's 8.3 % of detour shorter.
-        var ways = new Waypath(Walls, Half);
+        var ways = new Waypath(Field);
         var rng = new Random(12);
         for (int i = 0; i < 6; i++)
         {
@@ -130,7 +132,7 @@ public sealed class WaypathTests
     public void APointNearAWallStillFindsItsWayOut()
     {
         // 60 mm from the left gap's lower wall (inside the margin): the first leg keeps what clearance there is.
-        var ways = new Waypath(Walls, Half);
+        var ways = new Waypath(Field);
         Assert.True(ways.Next(new Vector2(-440f, 900f), new Vector2(1500f, 0f), out var first, out _));
         Assert.True(ways.Free(new Vector2(-440f, 900f), first, 30f));
     }
