@@ -99,9 +99,7 @@ public sealed class DebugDrawPageTests(Browser browser, RecordedMatch match)
         await page.Keyboard.PressAsync("End");
         await Settle(page);
         Assert.Equal("cycle 120 / 120", await page.TextContentAsync("#cycle"));
-        byte[] png = await page.ScreenshotAsync(new() { Type = ScreenshotType.Png });
-        Assert.True(png.Length > 20_000, "the screenshot has content");
-        Figures.Write("debug-draw.png", png, match.Folder);
+        await Figures.Shoot(page, "debug-draw.png", match.Folder);
         NoErrors(errors);
         await page.Context.CloseAsync();
     }

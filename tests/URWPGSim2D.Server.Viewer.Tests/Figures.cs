@@ -1,5 +1,8 @@
 using System;
 using System.IO;
+using System.Threading.Tasks;
+using Microsoft.Playwright;
+using Xunit;
 
 namespace URWPGSim2D.Server.Viewer.Tests;
 
@@ -10,6 +13,14 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 /// </summary>
 internal static class Figures
 {
+    /// <summary>Takes a screenshot of the page (which must have content) and writes it as <see cref="Write"/> does.</summary>
+    public static async Task Shoot(IPage page, string name, string folder)
+    {
+        byte[] png = await page.ScreenshotAsync(new() { Type = ScreenshotType.Png });
+        Assert.True(png.Length > 20_000, $"the screenshot {name} has content");
+        Write(name, png, folder);
+    }
+
     /// <summary>Writes <paramref name="png"/> as docs/figures/<paramref name="name"/> when asked, else into <paramref name="folder"/>.</summary>
     public static void Write(string name, byte[] png, string folder)
     {

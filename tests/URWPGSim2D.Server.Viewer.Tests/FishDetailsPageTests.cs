@@ -53,6 +53,17 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
                 : new Contact(c.GetProperty("a").GetString()!, c.GetProperty("partB").GetString(), c.GetProperty("partA").GetString()))
             .ToArray();
 
+    // The same JSON value: numbers by value (the page prints them its own way), the rest exactly.
+    private static bool Same(JsonElement a, JsonElement b) => (a.ValueKind, b.ValueKind) switch
+    {
+        (JsonValueKind.Number, JsonValueKind.Number) => a.GetDouble() == b.GetDouble(),
+        (JsonValueKind.Array, JsonValueKind.Array) => a.GetArrayLength() == b.GetArrayLength() && a.EnumerateArray().Zip(b.EnumerateArray()).All(p => Same(p.First, p.Second)),
+        (JsonValueKind.Object, JsonValueKind.Object) => a.EnumerateObject().Count() == b.EnumerateObject().Count()
+            && a.EnumerateObject().All(p => b.TryGetProperty(p.Name, out var q) && Same(p.Value, q)),
+        var (x, y) when x == y => a.GetRawText() == b.GetRawText(),
+        _ => false,
+    };
+
     private static void Close(double expected, double actual, double tolerance, string what) =>
         Assert.True(Math.Abs(expected - actual) <= tolerance, $"{what}: the trace has {expected}, the page {actual}");
 
@@ -68,6 +79,11 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
         {
             await Scrub(page, cycle);
             var line = lines[cycle];
+
+            // The ball-grab demo's plan: the page holds the shapes the trace has for this cycle.
+            var shown = JsonDocument.Parse(await page.EvaluateAsync<string>("k => JSON.stringify(urwpg.drawingsAt(k))", cycle)).RootElement;
+            Assert.True(Same(line.TryGetProperty("draw", out var draw) ? draw : JsonDocument.Parse("[]").RootElement, shown), $"cycle {cycle}: the page's drawings are not the trace's");
+            Assert.True(cycle == 0 || shown.GetArrayLength() > 0, $"cycle {cycle}: no drawings");
             for (int i = 0; i < fishCount; i++)
             {
                 await page.SelectOptionAsync("#inspect", "fish" + i);
@@ -268,9 +284,7 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
         await page.Locator("#trajectory-from").DispatchEventAsync("change");
         await Settle(page);
         Assert.Equal("cycle 450 / 600", await page.TextContentAsync("#cycle"));
-        byte[] png = await page.ScreenshotAsync(new() { Type = ScreenshotType.Png });
-        Assert.True(png.Length > 20_000, "the screenshot has content");
-        Figures.Write("fish-details.png", png, match.Folder);
+        await Figures.Shoot(page, "fish-details.png", match.Folder);
         NoErrors(errors);
         await page.Context.CloseAsync();
     }

@@ -62,7 +62,7 @@ public sealed class StrategyOutputPageTests(Browser browser, RecordedMatch match
         Assert.Equal(shown[4].Cycle, await Cycle(page));
         await page.SelectOptionAsync("#log-team", "all");
         await Settle(page);
-        Figures.Write("strategy-output.png", await page.ScreenshotAsync(new() { Type = Microsoft.Playwright.ScreenshotType.Png }), match.Folder);
+        await Figures.Shoot(page, "strategy-output.png", match.Folder);
         NoErrors(errors);
         await page.Context.CloseAsync();
     }
