@@ -29,12 +29,8 @@ public sealed class DocsOutputsTests
     {
         var problems = new List<string>();
         var replacements = new List<(MarkdownBlock Block, string Text)>();
-        foreach (var block in MarkdownBlock.Read(file).Where(b => b.Text.StartsWith("$ ", StringComparison.Ordinal)))
+        foreach (var block in MarkdownBlock.Read(file).Where(RunsForReal))
         {
-            if (block.Marker is { } marker && (marker.StartsWith(".ci/", StringComparison.Ordinal) || marker.StartsWith("output: not run", StringComparison.Ordinal)))
-            {
-                continue; // checked by that script, or (say why in the marker) a command that does not end by itself
-            }
 
             Transcript transcript;
             try
@@ -84,6 +80,15 @@ public sealed class DocsOutputsTests
 
         Assert.True(problems.Count == 0, string.Join("\n\n", problems) + "\n(bash scripts/regenerate-docs-outputs.sh writes the real outputs into the docs)");
     }
+
+    /// <summary>
+    /// Whether this test runs a block: a transcript (first line <c>$ …</c>) unless the line before it
+    /// says that a CI script checks it or (saying why) that it is not run, as for a command that does
+    /// not end by itself.
+    /// </summary>
+    internal static bool RunsForReal(MarkdownBlock block) =>
+        block.Text.StartsWith("$ ", StringComparison.Ordinal)
+        && !(block.Marker is { } marker && (marker.StartsWith(".ci/", StringComparison.Ordinal) || marker.StartsWith("output: not run", StringComparison.Ordinal)));
 
     /// <summary>
     /// The merge log that docs/batch.md shows for the Slurm recipe (checked for real by .ci/slurm,
@@ -171,7 +176,8 @@ public sealed class DocsOutputsTests
         File.WriteAllText(path, string.Join('\n', lines) + "\n");
     }
 
-    private static (int Code, string Stdout, string Stderr) RunServer(string stdin, string[] args)
+    /// <summary>Runs the server built next to the tests from the repository root, with standard input <paramref name="stdin"/>.</summary>
+    internal static (int Code, string Stdout, string Stderr) RunServer(string stdin, string[] args)
     {
         string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
         var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")

@@ -27,10 +27,11 @@ internal static class Repository
     /// <summary>A path relative to the root (forward slashes) made absolute.</summary>
     public static string PathOf(string relative) => Path.Combine(Root, relative.Replace('/', Path.DirectorySeparatorChar));
 
-    /// <summary>README.md, every Markdown file under docs/ and the package READMEs under src/, as paths relative to the root.</summary>
+    /// <summary>README.md and its translations, every Markdown file under docs/ and the package READMEs under src/, as paths relative to the root.</summary>
     public static IReadOnlyList<string> MarkdownFiles() =>
         [
             "README.md",
+            "README.zh-CN.md",
             .. Directory.EnumerateFiles(PathOf("docs"), "*.md", SearchOption.AllDirectories)
                 .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
                 .Order(StringComparer.Ordinal),
@@ -38,6 +39,15 @@ internal static class Repository
             .. Directory.EnumerateFiles(PathOf("src"), "README.md", SearchOption.AllDirectories)
                 .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
                 .Where(f => !f.Contains("/bin/", StringComparison.Ordinal) && !f.Contains("/obj/", StringComparison.Ordinal))
+                .Order(StringComparer.Ordinal),
+        ];
+
+    /// <summary>The pages in Chinese: README.zh-CN.md and every Markdown file under docs/zh-CN/.</summary>
+    public static IReadOnlyList<string> TranslatedPages() =>
+        [
+            "README.zh-CN.md",
+            .. Directory.EnumerateFiles(PathOf("docs/zh-CN"), "*.md", SearchOption.AllDirectories)
+                .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
                 .Order(StringComparer.Ordinal),
         ];
 }

@@ -11,12 +11,13 @@ namespace URWPGSim2D.Server.Tests.Docs;
 /// <c>$</c> line is a command (continued on the next lines while a quote is open), the lines up to
 /// the next <c>$</c> line are what it prints (stdout, then stderr); <c>$ echo $?</c> prints the
 /// previous command's exit code. The commands understood: <c>URWPGSim2D.Server ARGS</c>,
+/// <c>urwpgsim2d ARGS</c> (the tool's command),
 /// <c>dotnet run -c Release --project src/URWPGSim2D.Server -- ARGS</c>, each optionally after
 /// <c>echo 'TEXT' |</c> (TEXT on standard input). Run from the repository root.
 /// </summary>
 internal sealed partial record Transcript(IReadOnlyList<Transcript.Step> Steps)
 {
-    private static readonly string[] ServerPrefixes = ["URWPGSim2D.Server", "dotnet run -c Release --project src/URWPGSim2D.Server --"];
+    private static readonly string[] ServerPrefixes = ["URWPGSim2D.Server", "urwpgsim2d", "dotnet run -c Release --project src/URWPGSim2D.Server --"];
 
     /// <summary>One command and what the docs say it prints.</summary>
     /// <param name="Command">The command text as shown (without <c>$ </c>; may span lines).</param>
@@ -113,60 +114,7 @@ internal sealed partial record Transcript(IReadOnlyList<Transcript.Step> Steps)
             throw new FormatException($"not a command of the server: {shown}");
         }
 
-        return (Words(rest[prefix.Length..]), stdin);
-    }
-
-    // Splits on blanks, honouring '…' and "…" (no escapes inside, as the docs never need them).
-    private static string[] Words(string text)
-    {
-        var words = new List<string>();
-        var word = new StringBuilder();
-        bool inWord = false;
-        char quote = '\0';
-        foreach (char c in text)
-        {
-            if (quote != '\0')
-            {
-                if (c == quote)
-                {
-                    quote = '\0';
-                }
-                else
-                {
-                    word.Append(c);
-                }
-            }
-            else if (c is '\'' or '"')
-            {
-                quote = c;
-                inWord = true;
-            }
-            else if (char.IsWhiteSpace(c))
-            {
-                if (inWord)
-                {
-                    words.Add(word.ToString());
-                    word.Clear();
-                    inWord = false;
-                }
-            }
-            else if (c is '|' or '>' or '<' or ';' or '&' or '*' or '$')
-            {
-                throw new FormatException($"shell syntax the docs' transcripts do not run: {c} in {text}");
-            }
-            else
-            {
-                word.Append(c);
-                inWord = true;
-            }
-        }
-
-        if (inWord)
-        {
-            words.Add(word.ToString());
-        }
-
-        return [.. words];
+        return (ShellWords.Split(rest[prefix.Length..], strict: true), stdin);
     }
 
     private static bool OpenQuote(string text) => text.Count(c => c == '\'') % 2 == 1;
