@@ -69,8 +69,14 @@ internal sealed partial record ShownCommand(string Where, string Line, string Co
     /// <summary>The options of the command: each word starting with <c>-</c>, up to an <c>=</c>.</summary>
     public IEnumerable<string> Options()
     {
-        foreach (string word in Arguments)
+        for (int i = 0; i < Arguments.Count; i++)
         {
+            string word = Arguments[i];
+            if (i > 0 && Arguments[i - 1] == "--sbatch-arg")
+            {
+                continue; // passed to sbatch as written: sbatch's option, not the server's
+            }
+
             if (word.StartsWith('-') && word != "-")
             {
                 int equals = word.IndexOf('=', StringComparison.Ordinal);
