@@ -26,6 +26,7 @@ public class DemoClearanceBenchmarks
     public void Setup()
     {
         var match = MatchBuilder.Build(ItemRegistry.Find("ball-grab")!.CreateScenario(1), seed: 1);
+        match.Step(); // the snapshot is filled by the first cycle
         MatchSnapshot snapshot = match.Snapshot;
         _field = new ObstacleField(snapshot);
         var rng = new Random(28);
