@@ -125,7 +125,9 @@ internal sealed partial record SlurmJob(
             s.Append(" --threads ").Append(Cpus.ToString(CultureInfo.InvariantCulture));
         }
 
-        s.Append(" --shard \"$shard/").Append(Shards.ToString(CultureInfo.InvariantCulture)).Append("\" --results \"$folder/shard-$shard.jsonl\"\n");
+        // The submission plays only shards without a whole result, so a file left there is an unfinished one to replace.
+        s.Append(" --shard \"$shard/").Append(Shards.ToString(CultureInfo.InvariantCulture)).Append("\" --results \"$folder/shard-$shard.jsonl\"");
+        s.Append(Command == "run" ? " --force\n" : "\n");
         return s.ToString();
     }
 
@@ -140,7 +142,7 @@ internal sealed partial record SlurmJob(
         s.Append("for ((i = 0; i < ").Append(Shards.ToString(CultureInfo.InvariantCulture)).Append("; i++)); do files+=(\"$folder/shard-$i.jsonl\"); done\n");
         ServerLines(s);
         s.Append("exec \"${server[@]}\"");
-        Words(s, MergeArguments ?? ["merge", "--out", Results]);
+        Words(s, MergeArguments ?? ["merge", "--out", Results, "--force"]); // the merge rebuilds the results from every shard
         s.Append(" \"${files[@]}\"\n");
         return s.ToString();
     }

@@ -44,7 +44,7 @@ public sealed class SlurmJobTests : IDisposable
         var call = Assert.Single(Bash.Records(_record));
         Assert.Equal(_asked, call[0]);
         Assert.Equal(
-            ["run", .. options, "--threads", "1", "--shard", "2/4", "--results", Path.Combine(_folder, "shard-2.jsonl")],
+            ["run", .. options, "--threads", "1", "--shard", "2/4", "--results", Path.Combine(_folder, "shard-2.jsonl"), "--force"],
             call[1..]);
     }
 
@@ -58,7 +58,7 @@ public sealed class SlurmJobTests : IDisposable
 
         Assert.True(code == 0, stderr);
         Assert.Equal(
-            ["run", "--batch", "8", "--threads", "3", "--shard", "0/4", "--results", Path.Combine(_folder, "shard-0.jsonl")],
+            ["run", "--batch", "8", "--threads", "3", "--shard", "0/4", "--results", Path.Combine(_folder, "shard-0.jsonl"), "--force"],
             Assert.Single(Bash.Records(_record))[1..]);
     }
 
@@ -99,7 +99,7 @@ public sealed class SlurmJobTests : IDisposable
 
         Assert.True(code == 0, stderr);
         Assert.Equal(
-            ["merge", "--out", results, .. Enumerable.Range(0, 4).Select(i => Path.Combine(_folder, $"shard-{i}.jsonl"))],
+            ["merge", "--out", results, "--force", .. Enumerable.Range(0, 4).Select(i => Path.Combine(_folder, $"shard-{i}.jsonl"))],
             Assert.Single(Bash.Records(_record))[1..]);
     }
 
