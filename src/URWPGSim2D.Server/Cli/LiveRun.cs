@@ -57,7 +57,7 @@ internal static class LiveRun
         {
             var t = first ? teams : Reload(options, teams);
             first = false;
-            var match = MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles, debugDraw: options.DebugDraw, strategyLog: options.StrategyLog);
+            var match = MatchBuilder.BuildRecording(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles, debugDraw: options.DebugDraw, strategyLog: options.StrategyLog);
             match.Stepper.Threads = options.Threads ?? 1;
             return match;
         }

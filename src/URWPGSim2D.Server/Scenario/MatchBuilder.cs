@@ -28,9 +28,24 @@ internal static class MatchBuilder
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
     /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
+    /// <remarks>
+    /// The Box2D side-by-side harness (<c>../shared/peers/box2d</c>) finds this method by name and
+    /// calls it with these seven arguments: keep it the only <c>Build</c>, with this signature.
+    /// </remarks>
+    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null) =>
+        BuildRecording(scenario, teamStrategies, seed, noise, strategyTimeoutMs, broadPhase, cycles, debugDraw: false, strategyLog: false);
+
+    /// <summary>Builds the match, recording what the strategies draw or print when asked.</summary>
+    /// <param name="scenario">The scenario.</param>
+    /// <param name="teamStrategies">Per team (index 0, 1): a strategy that replaces the scenario's, or null.</param>
+    /// <param name="seed">Seed override, or null for the scenario's.</param>
+    /// <param name="noise">Noise override, or null for the scenario's.</param>
+    /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
+    /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
+    /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <param name="debugDraw">Whether the strategies' debug drawings are recorded (<c>run --debug-draw</c>).</param>
     /// <param name="strategyLog">Whether what the strategies print is recorded (<c>run --strategy-log</c>).</param>
-    public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false)
+    public static Match BuildRecording(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var motion = new Stepper(broadPhase);

@@ -32,7 +32,7 @@ internal sealed record MatchSettings(
     /// <summary>Builds a fresh match of these settings, ready for cycle 1.</summary>
     public Match Build()
     {
-        var match = MatchBuilder.Build(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog);
+        var match = MatchBuilder.BuildRecording(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog);
         match.Stepper.Threads = Threads;
         return match;
     }

@@ -119,7 +119,7 @@ public sealed class StrategyLogTests : IDisposable
     public void Debug_output_of_a_strategy_call_is_its_teams_and_only_its(bool isolated)
     {
         var teams = new TeamStrategy?[] { new("debug", new DebugPrinter(), isolated), null };
-        var match = MatchBuilder.Build(DefaultScenario.Load(), teams, strategyTimeoutMs: 5000, strategyLog: true);
+        var match = MatchBuilder.BuildRecording(DefaultScenario.Load(), teams, strategyTimeoutMs: 5000, strategyLog: true);
         var sink = new TraceBytes();
         using (var loop = new MatchLoop(match, 3, sink))
         {

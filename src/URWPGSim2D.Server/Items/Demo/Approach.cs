@@ -1,6 +1,7 @@
 using System;
 using URWPGSim2D.Collision.Motion;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
 namespace URWPGSim2D.Server.Items.Demo;
@@ -58,6 +59,7 @@ internal struct Approach
     /// <param name="arriveVCode">Fastest gear in the last 250 mm.</param>
     /// <param name="nearer">How far along the line the arrival point may move, mm.</param>
     /// <param name="farther">How far back the arrival point may move, mm (tried: half of it and all).</param>
+    [SkipLocalsInit] // the path buffers are read only where written; zeroing them cost more than planning
     public Decision Toward(in FishView view, in FishTrack me, Vector2 goal, float goalHeading, in Surroundings around, Vector2 avoid, float avoidRadius, int arriveVCode, float nearer = 0f, float farther = 0f)
     {
         const int leads = 4;
