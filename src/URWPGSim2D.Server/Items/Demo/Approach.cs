@@ -32,6 +32,12 @@ internal struct Approach
     // The cheapest paths checked for clearance before the least bad one is taken.
     private const int MaxChecked = 48;
 
+    // The least bad path is taken only when its margin is above this, mm.
+    private const float NearlyClear = -50f;
+
+    // Rounding allowance of the skip, mm.
+    private const float SkipCushion = 1f;
+
     // Distance from the body centre to the tail's end (without the caudal fin's tips), mm.
     private const float TailReach = 250f;
     private static readonly int[] Gears = [1, 2, 3, 4, 6, 9];
@@ -116,7 +122,7 @@ internal struct Approach
             (all[k], all[cheapest]) = (all[cheapest], all[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
-            float clear = Clear(all[k], around, avoid, avoidRadius, reach, fallbackClear);
+            float clear = Clear(all[k], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear));
             if (clear >= 0f)
             {
                 chosen = k;
@@ -128,7 +134,7 @@ internal struct Approach
             }
         }
 
-        if (chosen < 0 && fallbackClear > -50f)
+        if (chosen < 0 && fallbackClear > NearlyClear)
         {
             // Nothing keeps the full margins: the least bad, if it is nearly clear.
             chosen = fallback;
@@ -180,30 +186,45 @@ internal struct Approach
 
     // The path's smallest margin: clearance to walls and obstacles beyond WallMargin (head tip: 25 mm)
     // and to the avoided disc (centre: 100 mm, tip: 20 mm, the tail's middle and end: 60 mm — the
-    // tail swings while the fish turns), over samples past its first 80 mm; it stops early once
-    // below giveUp (the path cannot be chosen then).
+    // tail swings while the fish turns), over samples past its first 80 mm. Only the sign of a clear
+    // path's margin is used, so samples that cannot go below zero are skipped: per mm of path the
+    // centre moves 1 mm and a point an arm away up to 1 + arm ÷ radius mm, and a clearance changes at
+    // most ObstacleField.MaxSlope mm per mm moved (a distance 1 mm). A path that is not clear gets its
+    // exact margin unless that falls below giveUp: the path cannot be chosen then, and the scan stops.
     private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp)
     {
+        float fall = ObstacleField.MaxSlope * (1f + (MathF.Max(reach, TailReach) / path.Radius));
         float worst = float.PositiveInfinity;
         float length = path.Length;
+        float skipTo = float.NegativeInfinity;
         for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
         {
+            if (s <= skipTo)
+            {
+                continue;
+            }
+
             var (p, h) = path.At(s);
             Vector2 tip = p + (new Vector2(MathF.Cos(h), MathF.Sin(h)) * reach);
-            worst = MathF.Min(worst, around.Clearance(p) - WallMargin);
-            worst = MathF.Min(worst, around.Clearance(tip) - 25f);
+            float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
             if (avoidRadius > 0f)
             {
                 Vector2 tail = p - (new Vector2(MathF.Cos(h), MathF.Sin(h)) * TailReach);
-                worst = MathF.Min(worst, Vector2.Distance(p, avoid) - avoidRadius - 100f);
-                worst = MathF.Min(worst, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
-                worst = MathF.Min(worst, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
-                worst = MathF.Min(worst, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+                margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
+                margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
+                margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
+                margin = MathF.Min(margin, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
             }
 
+            worst = MathF.Min(worst, margin);
             if (worst < giveUp)
             {
                 break;
+            }
+
+            if (margin > SkipCushion)
+            {
+                skipTo = s + ((margin - SkipCushion) / fall);
             }
         }
 

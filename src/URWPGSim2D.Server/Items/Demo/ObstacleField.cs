@@ -27,6 +27,12 @@ internal sealed class ObstacleField
     /// <summary>Spacing of the clearance grid, mm.</summary>
     public const float Cell = 20f;
 
+    /// <summary>
+    /// The most <see cref="Clearance"/> changes per mm moved: √2 in the field (a bilinear blend of
+    /// distances, which change at most 1 mm a mm along each axis), 1 + √2 beyond its borders.
+    /// </summary>
+    public const float MaxSlope = 2.5f;
+
     private readonly FieldSensor _sensor = new();
     private readonly Shape[] _shapes;
     private readonly Aabb[] _boxes;

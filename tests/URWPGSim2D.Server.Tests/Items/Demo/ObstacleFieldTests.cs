@@ -64,6 +64,37 @@ public sealed class ObstacleFieldTests
     }
 
     [Fact]
+    public void TheClearanceChangesNoFasterThanItsStatedSlope()
+    {
+        // The demos skip path samples on this bound. Besides the usual field: obstacles that overlap
+        // each other and cross the border, where the signed clearance has its kinks.
+        var crossing = new ObstacleField(new MatchSnapshot(0, 0,
+        [
+            new(0, ObstacleKind.Rectangle, new Vector2(-1450f, 0f), 300f, 400f, 0.3f, 0f),
+            new(1, ObstacleKind.Round, new Vector2(-1300f, 150f), 0f, 0f, 0f, 200f),
+            new(2, ObstacleKind.Rectangle, new Vector2(600f, 980f), 800f, 120f, 0f, 0f),
+        ], Length, Width));
+        var rng = new Random(6);
+        foreach (var field in new[] { Field(), crossing })
+        {
+            float inField = 0f, anywhere = 0f;
+            for (int i = 0; i < 40000; i++)
+            {
+                Vector2 a = RandomPoint(rng, 1.1f);
+                Vector2 b = a + (new Vector2(rng.NextSingle() - 0.5f, rng.NextSingle() - 0.5f) * 160f);
+                float slope = MathF.Abs(field.Clearance(a) - field.Clearance(b)) / MathF.Max(Vector2.Distance(a, b), 1e-3f);
+                bool inside = MathF.Abs(a.X) <= Length / 2f && MathF.Abs(b.X) <= Length / 2f && MathF.Abs(a.Y) <= Width / 2f && MathF.Abs(b.Y) <= Width / 2f;
+                inField = inside ? MathF.Max(inField, slope) : inField;
+                anywhere = MathF.Max(anywhere, slope);
+            }
+
+            Assert.True(inField <= MathF.Sqrt(2f) + 0.01f, $"{inField} mm a mm in the field");
+            Assert.True(anywhere <= ObstacleField.MaxSlope, $"{anywhere} mm a mm");
+            Assert.True(inField >= 0.9f, $"the steepest change seen is only {inField}: the test samples too little");
+        }
+    }
+
+    [Fact]
     public void ASegmentIsBlockedExactlyWhenItPassesThroughAGrownBoundingBox()
     {
         var field = Field();
