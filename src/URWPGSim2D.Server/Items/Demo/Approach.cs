@@ -197,6 +197,7 @@ internal struct Approach
         float worst = float.PositiveInfinity;
         float length = path.Length;
         float skipTo = float.NegativeInfinity;
+        var corners = path.PieceStarts();
         for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
         {
             if (s <= skipTo)
@@ -204,12 +205,13 @@ internal struct Approach
                 continue;
             }
 
-            var (p, h) = path.At(s);
-            Vector2 tip = p + (new Vector2(MathF.Cos(h), MathF.Sin(h)) * reach);
+            var (p, h) = path.At(s, corners);
+            Vector2 ahead = new(MathF.Cos(h), MathF.Sin(h));
+            Vector2 tip = p + (ahead * reach);
             float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
             if (avoidRadius > 0f)
             {
-                Vector2 tail = p - (new Vector2(MathF.Cos(h), MathF.Sin(h)) * TailReach);
+                Vector2 tail = p - (ahead * TailReach);
                 margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
                 margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
                 margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);

@@ -81,6 +81,50 @@ internal readonly struct DubinsPath
         return (p, h);
     }
 
+    /// <summary>The poses where the second and the third piece begin: what <see cref="At(float)"/> works out on its way to a later piece.</summary>
+    public Corners PieceStarts()
+    {
+        Vector2 p = Start;
+        float h = Heading;
+        Advance(ref p, ref h, Turn1, Length1);
+        Vector2 second = p;
+        float secondHeading = h;
+        Advance(ref p, ref h, Turn2, Length2);
+        return new Corners(second, secondHeading, p, h);
+    }
+
+    /// <summary>
+    /// The pose at distance <paramref name="s"/> along the path, the same as <see cref="At(float)"/>
+    /// to the bit, starting from the piece's own start (<paramref name="corners"/>, from <see cref="PieceStarts"/>).
+    /// </summary>
+    public (Vector2 Position, float Heading) At(float s, in Corners corners)
+    {
+        s = Math.Clamp(s, 0f, Length);
+        Vector2 p;
+        float h;
+        float rest = s - Length1;
+        if (rest <= 0f)
+        {
+            p = Start;
+            h = Heading;
+            Advance(ref p, ref h, Turn1, MathF.Min(s, Length1));
+        }
+        else if (rest - Length2 <= 0f)
+        {
+            p = corners.Second;
+            h = corners.SecondHeading;
+            Advance(ref p, ref h, Turn2, MathF.Min(rest, Length2));
+        }
+        else
+        {
+            p = corners.Third;
+            h = corners.ThirdHeading;
+            Advance(ref p, ref h, Turn3, MathF.Min(rest - Length2, Length3));
+        }
+
+        return (p, h);
+    }
+
     /// <summary>
     /// Fills <paramref name="paths"/> (room for 8) with the candidate paths from (<paramref name="from"/>,
     /// <paramref name="fromHeading"/>) to (<paramref name="to"/>, <paramref name="toHeading"/>) at turning
@@ -199,4 +243,11 @@ internal readonly struct DubinsPath
         p = c + new Vector2((r.X * cos) - (r.Y * sin), (r.X * sin) + (r.Y * cos));
         h = Angle.Wrap(h + swept);
     }
+
+    /// <summary>The poses where the second and the third piece of a path begin.</summary>
+    /// <param name="Second">Start of the second piece, mm.</param>
+    /// <param name="SecondHeading">Heading there, rad.</param>
+    /// <param name="Third">Start of the third piece, mm.</param>
+    /// <param name="ThirdHeading">Heading there, rad.</param>
+    public readonly record struct Corners(Vector2 Second, float SecondHeading, Vector2 Third, float ThirdHeading);
 }
