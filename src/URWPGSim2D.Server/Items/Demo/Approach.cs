@@ -77,6 +77,7 @@ internal struct Approach
         float reach = (view.BodyLength * 0.5f) + view.HeadLength;
         float arriveSpeed = MathF.Max(SpeedTable.TargetSpeed(arriveVCode), 10f);
         Vector2 back = -new Vector2(MathF.Cos(goalHeading), MathF.Sin(goalHeading));
+        Vector2 fromNormal = DubinsPath.Normal(me.Heading), toNormal = DubinsPath.Normal(goalHeading);
         int count = 0;
         for (int l = 0; l < leads; l++)
         {
@@ -92,7 +93,7 @@ internal struct Approach
                 // A gear slower than the fish is now still turns at the radius of its present speed at first.
                 float speed = SpeedTable.TargetSpeed(Gears[g]);
                 float radius = MathF.Max(speed, view.Speed * 0.8f) / PlanTurnRate;
-                int n = DubinsPath.Plan(me.Position, me.Heading, point, goalHeading, radius, paths);
+                int n = DubinsPath.Plan(me.Position, me.Heading, fromNormal, point, goalHeading, toNormal, radius, paths);
                 for (int i = 0; i < n; i++)
                 {
                     int key = (((l * Gears.Length) + g) * 32) + Word(paths[i]);

@@ -7,7 +7,7 @@ namespace URWPGSim2D.Server.Items.Demo;
 /// <summary>
 /// One of the shortest ways for a body that turns no tighter than a radius to go from one pose to
 /// another (L. E. Dubins, 1957): three pieces, each a turn at the radius (+1 toward +ω, i.e. from
-/// +X toward +Z; −1 the other way) or straight (0), of the given lengths (mm). <see cref="Plan"/>
+/// +X toward +Z; −1 the other way) or straight (0), of the given lengths (mm). <see cref="Plan(Vector2, float, Vector2, float, float, Span{DubinsPath})"/>
 /// gives the candidates (turn-straight-turn four ways, turn-turn-turn two ways with the middle circle on
 /// either side).
 /// </summary>
@@ -130,22 +130,31 @@ internal readonly struct DubinsPath
     /// <paramref name="fromHeading"/>) to (<paramref name="to"/>, <paramref name="toHeading"/>) at turning
     /// radius <paramref name="radius"/>; returns how many exist.
     /// </summary>
-    public static int Plan(Vector2 from, float fromHeading, Vector2 to, float toHeading, float radius, Span<DubinsPath> paths)
+    public static int Plan(Vector2 from, float fromHeading, Vector2 to, float toHeading, float radius, Span<DubinsPath> paths) =>
+        Plan(from, fromHeading, Normal(fromHeading), to, toHeading, Normal(toHeading), radius, paths);
+
+    /// <summary>
+    /// <see cref="Plan(Vector2, float, Vector2, float, float, Span{DubinsPath})"/> with the headings'
+    /// normals given (<see cref="Normal"/>), for planning many radii or goals from the same headings.
+    /// </summary>
+    public static int Plan(Vector2 from, float fromHeading, Vector2 fromNormal, Vector2 to, float toHeading, Vector2 toNormal, float radius, Span<DubinsPath> paths)
     {
         int n = 0;
         for (int a = -1; a <= 1; a += 2)
         {
+            Vector2 startCentre = from + (a * radius * fromNormal);
             for (int b = -1; b <= 1; b += 2)
             {
-                if (TurnStraightTurn(from, fromHeading, to, toHeading, radius, a, b, out var path))
+                if (TurnStraightTurn(from, fromHeading, startCentre, toHeading, to + (b * radius * toNormal), radius, a, b, out var path))
                 {
                     paths[n++] = path;
                 }
             }
 
+            Vector2 endCentre = to + (a * radius * toNormal);
             for (int side = -1; side <= 1; side += 2)
             {
-                if (TurnTurnTurn(from, fromHeading, to, toHeading, radius, a, side, out var ccc))
+                if (TurnTurnTurn(from, fromHeading, startCentre, toHeading, endCentre, radius, a, side, out var ccc))
                 {
                     paths[n++] = ccc;
                 }
@@ -155,8 +164,11 @@ internal readonly struct DubinsPath
         return n;
     }
 
+    /// <summary>The unit vector a quarter turn toward +ω from <paramref name="heading"/>: a +1 turn's centre lies that way.</summary>
+    public static Vector2 Normal(float heading) => new(-MathF.Sin(heading), MathF.Cos(heading));
+
     // The centre of the turning circle of direction t at a pose.
-    private static Vector2 Centre(Vector2 p, float h, float r, int t) => p + (t * r * new Vector2(-MathF.Sin(h), MathF.Cos(h)));
+    private static Vector2 Centre(Vector2 p, float h, float r, int t) => p + (t * r * Normal(h));
 
     // The heading of travel at a point of the circle (centre c) turning in direction t.
     private static float TangentHeading(Vector2 point, Vector2 c, int t)
@@ -169,13 +181,17 @@ internal readonly struct DubinsPath
     private static float Sweep(float h1, float h2, int t)
     {
         float d = t * (h2 - h1);
-        d %= 2f * MathF.PI;
+        if (d <= -2f * MathF.PI || d >= 2f * MathF.PI)
+        {
+            // (a smaller sweep is its own remainder)
+            d %= 2f * MathF.PI;
+        }
+
         return d < 0f ? d + (2f * MathF.PI) : d;
     }
 
-    private static bool TurnStraightTurn(Vector2 p0, float h0, Vector2 p1, float h1, float r, int t1, int t2, out DubinsPath path)
+    private static bool TurnStraightTurn(Vector2 p0, float h0, Vector2 c1, float h1, Vector2 c2, float r, int t1, int t2, out DubinsPath path)
     {
-        Vector2 c1 = Centre(p0, h0, r, t1), c2 = Centre(p1, h1, r, t2);
         Vector2 w = c2 - c1;
         float d = w.Length();
         float heading, straight;
@@ -202,9 +218,8 @@ internal readonly struct DubinsPath
         return true;
     }
 
-    private static bool TurnTurnTurn(Vector2 p0, float h0, Vector2 p1, float h1, float r, int t, int place, out DubinsPath path)
+    private static bool TurnTurnTurn(Vector2 p0, float h0, Vector2 c1, float h1, Vector2 c2, float r, int t, int place, out DubinsPath path)
     {
-        Vector2 c1 = Centre(p0, h0, r, t), c2 = Centre(p1, h1, r, t);
         Vector2 w = c2 - c1;
         float d = w.Length();
         if (d > 4f * r || d < 1e-3f)
