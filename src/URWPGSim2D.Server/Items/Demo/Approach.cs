@@ -70,8 +70,8 @@ internal struct Approach
     {
         const int leads = 4;
         Span<float> offsets = [-nearer, 0f, farther * 0.5f, farther];
-        Span<DubinsPath> paths = stackalloc DubinsPath[8];
         Span<DubinsPath> all = stackalloc DubinsPath[8 * leads * 6];
+        Span<int> order = stackalloc int[8 * leads * 6];
         Span<float> costs = stackalloc float[8 * leads * 6];
         Span<int> keys = stackalloc int[8 * leads * 6];
         float reach = (view.BodyLength * 0.5f) + view.HeadLength;
@@ -93,16 +93,18 @@ internal struct Approach
                 // A gear slower than the fish is now still turns at the radius of its present speed at first.
                 float speed = SpeedTable.TargetSpeed(Gears[g]);
                 float radius = MathF.Max(speed, view.Speed * 0.8f) / PlanTurnRate;
-                int n = DubinsPath.Plan(me.Position, me.Heading, fromNormal, point, goalHeading, toNormal, radius, paths);
-                for (int i = 0; i < n; i++)
+                int n = DubinsPath.Plan(me.Position, me.Heading, fromNormal, point, goalHeading, toNormal, radius, all[count..]);
+                for (int i = count; i < count + n; i++)
                 {
-                    int key = (((l * Gears.Length) + g) * 32) + Word(paths[i]);
-                    float cost = Duration(paths[i], speed) + (extra / arriveSpeed);
-                    all[count] = paths[i];
-                    costs[count] = key == _key ? cost * 0.85f : paths[i].Turn1 != 0 && paths[i].Turn1 == _turn ? cost * 0.9f : cost;
-                    keys[count] = key;
-                    count++;
+                    ref readonly var candidate = ref all[i];
+                    int key = (((l * Gears.Length) + g) * 32) + Word(candidate);
+                    float cost = Duration(candidate, speed) + (extra / arriveSpeed);
+                    costs[i] = key == _key ? cost * 0.85f : candidate.Turn1 != 0 && candidate.Turn1 == _turn ? cost * 0.9f : cost;
+                    keys[i] = key;
+                    order[i] = i;
                 }
+
+                count += n;
             }
         }
 
@@ -120,10 +122,10 @@ internal struct Approach
                 }
             }
 
-            (all[k], all[cheapest]) = (all[cheapest], all[k]);
+            (order[k], order[cheapest]) = (order[cheapest], order[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
-            float clear = Clear(all[k], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear));
+            float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear));
             if (clear >= 0f)
             {
                 chosen = k;
@@ -149,10 +151,10 @@ internal struct Approach
             return new Decision(MathF.Abs(eta) > 1f ? 1 : 2, TurnCode.For(Math.Clamp(eta, -0.35f, 0.35f), view.AngularSpeed));
         }
 
+        var path = all[order[chosen]];
         _key = keys[chosen];
-        _turn = all[chosen].Turn1;
+        _turn = path.Turn1;
         int gear = Gears[(keys[chosen] / 32) % Gears.Length];
-        var path = all[chosen];
         int vcode = gear;
         bool straight = path.Turn1 == 0 ? path.Length1 > Braking(view.Speed) : path.Length1 < 20f && path.Turn2 == 0 && path.Length2 > Braking(view.Speed);
         if (straight)
