@@ -21,10 +21,10 @@ internal sealed class PoloItem(int perTeam) : CompetitionItem
     public int PerTeam { get; } = perTeam;
 
     /// <inheritdoc/>
-    public override string Slug => string.Create(CultureInfo.InvariantCulture, $"polo-{PerTeam}v{PerTeam}");
+    public override string Slug { get; } = string.Create(CultureInfo.InvariantCulture, $"polo-{perTeam}v{perTeam}");
 
     /// <inheritdoc/>
-    public override string ChineseName => string.Create(CultureInfo.InvariantCulture, $"水球{PerTeam}VS{PerTeam}");
+    public override string ChineseName { get; } = string.Create(CultureInfo.InvariantCulture, $"水球{perTeam}VS{perTeam}");
 
     /// <inheritdoc/>
     public override string Summary => PerTeam switch

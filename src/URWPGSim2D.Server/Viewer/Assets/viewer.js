@@ -550,6 +550,10 @@
   function inspect(b) {
     api.inspected = b && api.store && b.index < bodyCount(api.store, b.kind) ? { kind: b.kind, index: b.index } : null;
     $('inspect').value = api.inspected ? bodyId(api.inspected) : '';
+    // The trajectory box follows the choice at once (the rest of the panel with the next frame),
+    // so that ticking it right after choosing tracks the body just chosen.
+    $('track-body').disabled = !api.inspected;
+    $('track-body').checked = !!api.inspected && api.tracked.includes(bodyId(api.inspected));
     hudDirty = true; dirty = true;
   }
   api.inspect = id => inspect(parseBody(id));
