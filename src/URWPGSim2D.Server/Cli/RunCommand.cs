@@ -340,7 +340,9 @@ internal sealed class RunCommand : ICliCommand
         "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
         "--trace writes JSON Lines, --svg the final frame, --html a self-contained replay page (docs/viewer.md); an\n" +
         "existing trace, page or results file is replaced only with --force. --live serves the match in the browser at\n" +
-        "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
+        "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused);\n" +
+        "--strategies DIR adds a control board to the page: choose the item, its length and each team's strategy (DIR's\n" +
+        "folders, .cs and .dll files, or a built-in), start, recompile and restart, save the replay page and a PNG.\n" +
         "--debug-draw records the strategies' debug drawings (DebugDraw) in the trace and both pages; --strategy-log\n" +
         "records what they print (Console, Debug; at most 4,096 characters per team and cycle) there too.\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
