@@ -906,7 +906,6 @@
     api.control = post;
   }
 
-
   // ---- Control board (run --live --strategies DIR): GET board lists the choices; start and
   // recompile post them to /control. Every answer (lines; refused: why) is shown under the buttons.
   function connectBoard() {
@@ -994,8 +993,7 @@
 
   window.addEventListener('error', e => api.errors.push(String(e.message)));
   setup();
-  if (data.live) connectLive();
-  if (data.board) connectBoard();
+  if (data.live) { connectLive(); if (data.board) connectBoard(); }
   else { api.store = Store.fromPacked(data); setTeams(api.store); }
   updatePlayButton();
   requestAnimationFrame(frame);
