@@ -2,8 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
-using System.Net;
-using System.Net.Sockets;
 using System.Threading;
 using System.Threading.Tasks;
 using Microsoft.Playwright;
@@ -59,10 +57,7 @@ public sealed class ControlBoardPageTests(Browser browser) : IDisposable
 
     private async Task<Live> Start()
     {
-        var probe = new TcpListener(IPAddress.Loopback, 0);
-        probe.Start();
-        int port = ((IPEndPoint)probe.LocalEndpoint).Port;
-        probe.Stop();
+        int port = LiveViewTests.FreePort();
         var options = RunOptions.Parse(["--live", "--paused", "--item", "default", "--strategy-timeout", "5000", "--port", port.ToString(System.Globalization.CultureInfo.InvariantCulture), "--strategies", _folder]);
         var url = new TaskCompletionSource<string>(TaskCreationOptions.RunContinuationsAsynchronously);
         var stop = new CancellationTokenSource();

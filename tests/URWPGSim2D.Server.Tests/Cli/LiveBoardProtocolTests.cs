@@ -4,7 +4,6 @@ using System.IO;
 using System.Linq;
 using System.Net;
 using System.Net.Http;
-using System.Net.Sockets;
 using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
@@ -52,7 +51,7 @@ public sealed class LiveBoardProtocolTests : IDisposable
 
     private static async Task<Server> Start(params string[] arguments)
     {
-        var options = RunOptions.Parse(["--live", "--port", FreePort().ToString(CultureInfo.InvariantCulture), .. arguments]);
+        var options = RunOptions.Parse(["--live", "--port", LiveRunTests.FreePort().ToString(CultureInfo.InvariantCulture), .. arguments]);
         var scenario = options.Item == "default" ? DefaultScenario.Load() : ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
         var url = new TaskCompletionSource<string>(TaskCreationOptions.RunContinuationsAsynchronously);
         var output = new LiveRunTests.SignallingWriter("match over");
@@ -61,15 +60,6 @@ public sealed class LiveBoardProtocolTests : IDisposable
         var served = Task.Run(() => LiveRun.Serve(options, scenario, RunCommand.LoadTeams(options), console, stop.Token, u => url.TrySetResult(u)));
         Assert.True(await Task.WhenAny(url.Task, served, Task.Delay(Wait)) == url.Task, "the live server did not start");
         return new Server(await url.Task, stop, served, output);
-    }
-
-    private static int FreePort()
-    {
-        var probe = new TcpListener(IPAddress.Loopback, 0);
-        probe.Start();
-        int port = ((IPEndPoint)probe.LocalEndpoint).Port;
-        probe.Stop();
-        return port;
     }
 
     private async Task<(HttpStatusCode Status, string Text)> Post(Server server, string query)

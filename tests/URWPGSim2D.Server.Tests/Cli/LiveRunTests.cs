@@ -64,7 +64,7 @@ public sealed partial class LiveRunTests
         Assert.DoesNotContain("real time", MatchSummary.FormatLive(match, TimeSpan.Zero, TimeSpan.Zero).Split('\n')[0], StringComparison.Ordinal);
     }
 
-    private static int FreePort()
+    internal static int FreePort()
     {
         var probe = new TcpListener(IPAddress.Loopback, 0);
         probe.Start();
