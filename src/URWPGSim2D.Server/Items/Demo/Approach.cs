@@ -200,7 +200,7 @@ internal struct Approach
         float worst = float.PositiveInfinity;
         float length = path.Length;
         float skipTo = float.NegativeInfinity;
-        var corners = path.PieceStarts();
+        var pieces = path.Walk();
         for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
         {
             if (s <= skipTo)
@@ -208,7 +208,7 @@ internal struct Approach
                 continue;
             }
 
-            var (p, h) = path.At(s, corners);
+            var (p, h) = path.At(s, pieces);
             Vector2 ahead = new(MathF.Cos(h), MathF.Sin(h));
             Vector2 tip = p + (ahead * reach);
             float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);

@@ -25,15 +25,12 @@ internal static class Detour
             return to;
         }
 
-        var box = field.Bounds(blocking);
-        Vector2 half = ((box.Max - box.Min) * 0.5f) + new Vector2(margin + CornerOut);
-        Vector2 centre = box.Center;
         Vector2 best = to;
         float bestCost = float.PositiveInfinity;
         bool bestFree = false;
         for (int k = 0; k < 4; k++)
         {
-            Vector2 corner = centre + new Vector2((k & 1) == 0 ? -half.X : half.X, (k & 2) == 0 ? -half.Y : half.Y);
+            Vector2 corner = field.Corner(blocking, margin + CornerOut, k);
             bool free = field.Free(from, corner, margin);
             float cost = Vector2.Distance(from, corner) + Vector2.Distance(corner, to);
             if ((free && !bestFree) || (free == bestFree && cost < bestCost))

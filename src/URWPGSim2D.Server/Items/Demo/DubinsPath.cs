@@ -81,48 +81,34 @@ internal readonly struct DubinsPath
         return (p, h);
     }
 
-    /// <summary>The poses where the second and the third piece begin: what <see cref="At(float)"/> works out on its way to a later piece.</summary>
-    public Corners PieceStarts()
+    /// <summary>
+    /// Where each piece begins, with what a step along it needs (its direction when straight, its
+    /// turning centre when turning): what <see cref="At(float)"/> works out again for every point.
+    /// </summary>
+    public Pieces Walk()
     {
-        Vector2 p = Start;
-        float h = Heading;
-        Advance(ref p, ref h, Turn1, Length1);
-        Vector2 second = p;
-        float secondHeading = h;
-        Advance(ref p, ref h, Turn2, Length2);
-        return new Corners(second, secondHeading, p, h);
+        var first = Piece.From(Start, Heading, Turn1, Radius);
+        var second = Piece.From(first.Along(Turn1, Length1, Radius), Turn2, Radius);
+        var third = Piece.From(second.Along(Turn2, Length2, Radius), Turn3, Radius);
+        return new Pieces(first, second, third);
     }
 
     /// <summary>
     /// The pose at distance <paramref name="s"/> along the path, the same as <see cref="At(float)"/>
-    /// to the bit, starting from the piece's own start (<paramref name="corners"/>, from <see cref="PieceStarts"/>).
+    /// to the bit, stepping from the start of its piece (<paramref name="pieces"/>, from <see cref="Walk"/>).
     /// </summary>
-    public (Vector2 Position, float Heading) At(float s, in Corners corners)
+    public (Vector2 Position, float Heading) At(float s, in Pieces pieces)
     {
         s = Math.Clamp(s, 0f, Length);
-        Vector2 p;
-        float h;
         float rest = s - Length1;
         if (rest <= 0f)
         {
-            p = Start;
-            h = Heading;
-            Advance(ref p, ref h, Turn1, MathF.Min(s, Length1));
-        }
-        else if (rest - Length2 <= 0f)
-        {
-            p = corners.Second;
-            h = corners.SecondHeading;
-            Advance(ref p, ref h, Turn2, MathF.Min(rest, Length2));
-        }
-        else
-        {
-            p = corners.Third;
-            h = corners.ThirdHeading;
-            Advance(ref p, ref h, Turn3, MathF.Min(rest - Length2, Length3));
+            return pieces.First.Along(Turn1, MathF.Min(s, Length1), Radius);
         }
 
-        return (p, h);
+        return rest - Length2 <= 0f
+            ? pieces.Second.Along(Turn2, MathF.Min(rest, Length2), Radius)
+            : pieces.Third.Along(Turn3, MathF.Min(rest - Length2, Length3), Radius);
     }
 
     /// <summary>
@@ -240,29 +226,48 @@ internal readonly struct DubinsPath
 
     private void Advance(ref Vector2 p, ref float h, int turn, float length)
     {
-        if (length <= 0f)
+        if (length > 0f)
         {
-            return;
+            (p, h) = Piece.From(p, h, turn, Radius).Along(turn, length, Radius);
         }
-
-        if (turn == 0)
-        {
-            p += new Vector2(MathF.Cos(h), MathF.Sin(h)) * length;
-            return;
-        }
-
-        Vector2 c = Centre(p, h, Radius, turn);
-        float swept = turn * length / Radius;
-        float cos = MathF.Cos(swept), sin = MathF.Sin(swept);
-        Vector2 r = p - c;
-        p = c + new Vector2((r.X * cos) - (r.Y * sin), (r.X * sin) + (r.Y * cos));
-        h = Angle.Wrap(h + swept);
     }
 
-    /// <summary>The poses where the second and the third piece of a path begin.</summary>
-    /// <param name="Second">Start of the second piece, mm.</param>
-    /// <param name="SecondHeading">Heading there, rad.</param>
-    /// <param name="Third">Start of the third piece, mm.</param>
-    /// <param name="ThirdHeading">Heading there, rad.</param>
-    public readonly record struct Corners(Vector2 Second, float SecondHeading, Vector2 Third, float ThirdHeading);
+    /// <summary>The three pieces of a path, each from its start (<see cref="Walk"/>).</summary>
+    /// <param name="First">The first piece.</param>
+    /// <param name="Second">The second piece.</param>
+    /// <param name="Third">The third piece.</param>
+    public readonly record struct Pieces(Piece First, Piece Second, Piece Third);
+
+    /// <summary>A piece's start pose and the direction it goes (straight) or the centre it turns about.</summary>
+    /// <param name="Position">Start position, mm.</param>
+    /// <param name="Heading">Start heading, rad.</param>
+    /// <param name="Lever">The unit direction of travel when straight; the turning centre when turning.</param>
+    public readonly record struct Piece(Vector2 Position, float Heading, Vector2 Lever)
+    {
+        /// <summary>A piece starting at a pose, turning in direction <paramref name="turn"/> at <paramref name="radius"/>.</summary>
+        public static Piece From(Vector2 position, float heading, int turn, float radius) =>
+            new(position, heading, turn == 0 ? new Vector2(MathF.Cos(heading), MathF.Sin(heading)) : Centre(position, heading, radius, turn));
+
+        /// <summary>A piece starting at a pose.</summary>
+        public static Piece From((Vector2 Position, float Heading) pose, int turn, float radius) => From(pose.Position, pose.Heading, turn, radius);
+
+        /// <summary>The pose <paramref name="length"/> mm along the piece (itself for 0 or less).</summary>
+        public (Vector2 Position, float Heading) Along(int turn, float length, float radius)
+        {
+            if (length <= 0f)
+            {
+                return (Position, Heading);
+            }
+
+            if (turn == 0)
+            {
+                return (Position + (Lever * length), Heading);
+            }
+
+            float swept = turn * length / radius;
+            float cos = MathF.Cos(swept), sin = MathF.Sin(swept);
+            Vector2 r = Position - Lever;
+            return (Lever + new Vector2((r.X * cos) - (r.Y * sin), (r.X * sin) + (r.Y * cos)), Angle.Wrap(Heading + swept));
+        }
+    }
 }

@@ -88,6 +88,17 @@ internal sealed class ObstacleField
         return Lerp(top, bottom, tz) - outside;
     }
 
+    /// <summary>
+    /// Corner <paramref name="k"/> (0: −X −Z, 1: +X −Z, 2: −X +Z, 3: +X +Z) of obstacle
+    /// <paramref name="index"/>'s bounding box grown by <paramref name="grow"/> mm on every side.
+    /// </summary>
+    public Vector2 Corner(int index, float grow, int k)
+    {
+        ref readonly var box = ref _boxes[index];
+        Vector2 half = ((box.Max - box.Min) * 0.5f) + new Vector2(grow);
+        return box.Center + new Vector2((k & 1) == 0 ? -half.X : half.X, (k & 2) == 0 ? -half.Y : half.Y);
+    }
+
     /// <summary>The signed clearance at <paramref name="p"/> measured by the library, without the grid.</summary>
     public float Measure(Vector2 p)
     {

@@ -35,11 +35,9 @@ internal sealed class Waypath
         var corners = new System.Collections.Generic.List<Vector2>();
         for (int i = 0; i < field.Count; i++)
         {
-            var box = field.Bounds(i);
-            Vector2 h = ((box.Max - box.Min) * 0.5f) + new Vector2(Margin + CornerOut);
             for (int k = 0; k < 4; k++)
             {
-                Vector2 c = box.Center + new Vector2((k & 1) == 0 ? -h.X : h.X, (k & 2) == 0 ? -h.Y : h.Y);
+                Vector2 c = field.Corner(i, Margin + CornerOut, k);
                 if (MathF.Abs(c.X) <= room.X && MathF.Abs(c.Y) <= room.Y && field.FirstBlocking(c, c, Margin) < 0)
                 {
                     corners.Add(c);

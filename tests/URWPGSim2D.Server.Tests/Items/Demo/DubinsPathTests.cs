@@ -62,13 +62,13 @@ public sealed class DubinsPathTests
             int n = DubinsPath.Plan(from, Next(rng, MathF.PI), to, Next(rng, MathF.PI), 50f + (rng.NextSingle() * 400f), paths);
             foreach (var path in paths[..n])
             {
-                var corners = path.PieceStarts();
+                var pieces = path.Walk();
                 float[] boundaries = [0f, path.Length1, path.Length1 + path.Length2, path.Length, -3f, path.Length + 3f];
                 for (int k = 0; k < 40; k++)
                 {
                     float s = k < boundaries.Length ? boundaries[k] : rng.NextSingle() * path.Length;
                     var (p, h) = path.At(s);
-                    var (q, g) = path.At(s, corners);
+                    var (q, g) = path.At(s, pieces);
                     Assert.True(p == q && BitConverter.SingleToInt32Bits(h) == BitConverter.SingleToInt32Bits(g), $"case {i}: at {s} of {path.Length}: {p}, {h} against {q}, {g}");
                     piecesSeen[s <= path.Length1 ? 0 : s <= path.Length1 + path.Length2 ? 1 : 2]++;
                 }
