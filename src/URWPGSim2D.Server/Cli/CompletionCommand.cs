@@ -51,11 +51,14 @@ internal sealed class CompletionCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        if (words.Count != 1 || words[0].IsOption)
+        if (words.Count > 0 && words[0].Text.StartsWith('-'))
         {
-            throw words.Count > 0 && words[0].Text.StartsWith('-')
-                ? CliUsageException.UnknownOption(Name, words[0].Text, Syntax, Usage)
-                : new CliUsageException($"completion: expected one SHELL (bash, zsh or pwsh), got {words.Count}", Usage);
+            throw CliUsageException.UnknownOption(Name, words[0].Text, Syntax, Usage);
+        }
+
+        if (words.Count != 1)
+        {
+            throw new CliUsageException($"completion: expected one SHELL (bash, zsh or pwsh), got {words.Count}", Usage);
         }
 
         console.Out.Write(words[0].Text switch

@@ -48,6 +48,7 @@ internal static class TournamentSyntax
     private static Option<string[]> MergeOption()
     {
         var merge = CliSyntax.Repeated("--merge", "FILE", "gather these shard result files", CliCompletions.Paths);
+        merge.Arity = ArgumentArity.OneOrMore;
         merge.AllowMultipleArgumentsPerToken = true;
         return merge;
     }

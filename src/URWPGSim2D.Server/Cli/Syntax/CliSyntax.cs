@@ -50,14 +50,14 @@ internal static class CliSyntax
         return option;
     }
 
-    /// <summary>An option that takes the next word as its value and may be given again.</summary>
+    /// <summary>An option that takes the next word as its value and may be given again (each time one value).</summary>
     /// <param name="name">The option's name.</param>
     /// <param name="valueName">The value's name in usage text.</param>
     /// <param name="description">What it does, one line.</param>
     /// <param name="completions">Completions of its value, or null for none.</param>
     public static Option<string[]> Repeated(string name, string valueName, string description, Func<CompletionContext, IEnumerable<CompletionItem>>? completions = null)
     {
-        var option = new Option<string[]>(name) { Arity = ArgumentArity.OneOrMore, AllowMultipleArgumentsPerToken = false, HelpName = valueName, Description = description };
+        var option = new Option<string[]>(name) { Arity = ArgumentArity.ExactlyOne, AllowMultipleArgumentsPerToken = false, HelpName = valueName, Description = description };
         if (completions is not null)
         {
             option.CompletionSources.Add(completions);

@@ -2,7 +2,8 @@ namespace URWPGSim2D.Server.Cli.Syntax;
 
 /// <summary>
 /// The shell scripts of <c>completion</c>: each hands the command line up to the cursor to
-/// <c>urwpgsim2d "[suggest:N]" LINE</c> (<see cref="ShellCompletion"/>) and offers the answer;
+/// <c>urwpgsim2d "[suggest]" LINE</c> (<see cref="ShellCompletion"/>; the cursor is at the line's
+/// end, so no position is needed whatever the shell counts in) and offers the answer;
 /// when the program offers nothing, the shell completes file names as usual.
 /// </summary>
 internal static class CompletionScripts
@@ -18,10 +19,10 @@ internal static class CompletionScripts
             local prefix="${word:0:${#word}-${#cur}}"
             local IFS=$'\n' f
             local -a found
-            found=($(urwpgsim2d "[suggest:${#line}]" "$line" 2>/dev/null))
+            found=($(urwpgsim2d "[suggest]" "$line" 2>/dev/null))
             COMPREPLY=()
             for f in "${found[@]}"; do
-                [[ "$f" == "$word"* ]] && COMPREPLY+=("${f:${#prefix}}")
+                [[ "$f" == "$prefix"* ]] && COMPREPLY+=("${f:${#prefix}}")
             done
             if [[ ${#COMPREPLY[@]} -eq 1 && "${COMPREPLY[0]}" == */ ]]; then
                 compopt -o nospace 2>/dev/null
@@ -37,7 +38,7 @@ internal static class CompletionScripts
         _urwpgsim2d() {
             local line="${BUFFER[1,CURSOR]}"
             local -a found
-            found=("${(@f)$(urwpgsim2d "[suggest:${#line}]" "$line" 2>/dev/null)}")
+            found=("${(@f)$(urwpgsim2d "[suggest]" "$line" 2>/dev/null)}")
             found=(${found:#})
             if (( ${#found} )); then
                 compadd -Q -- "${found[@]}"
@@ -58,7 +59,7 @@ internal static class CompletionScripts
             $line = $commandAst.ToString()
             $upTo = $cursorPosition - $commandAst.Extent.StartOffset
             $line = if ($upTo -lt $line.Length) { $line.Substring(0, $upTo) } else { $line.PadRight($upTo) }
-            urwpgsim2d "[suggest:$($line.Length)]" "$line" 2>$null | ForEach-Object {
+            urwpgsim2d "[suggest]" "$line" 2>$null | ForEach-Object {
                 [System.Management.Automation.CompletionResult]::new($_, $_, 'ParameterValue', $_)
             }
         }

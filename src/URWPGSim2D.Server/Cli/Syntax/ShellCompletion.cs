@@ -1,5 +1,6 @@
 using System;
 using System.CommandLine;
+using System.CommandLine.Completions;
 using System.Globalization;
 using System.Linq;
 
@@ -75,6 +76,19 @@ internal static class ShellCompletion
         }
 
         string arguments = line[end..];
-        return [.. root.Parse(arguments, CliSyntax.Parser).GetCompletions(position - end).Select(c => c.Label).Distinct(StringComparer.Ordinal)];
+        ParseResult parse = root.Parse(arguments, CliSyntax.Parser);
+        var labels = parse.GetCompletions(position - end).Select(c => c.Label).ToList();
+        CompletionContext context = parse.GetCompletionContext();
+        string word = (context is TextCompletionContext text ? text.AtCursorPosition(position - end) : context).WordToComplete;
+        if (word.StartsWith('-'))
+        {
+            // System.CommandLine offers an option that has its value no more; an option that may be
+            // given again (--strategy, --entrant, --sbatch-arg, ...) is offered again all the same.
+            labels.AddRange(parse.CommandResult.Command.Options
+                .Where(o => o.ValueType == typeof(string[]) && o.Name.StartsWith(word, StringComparison.Ordinal))
+                .Select(o => o.Name));
+        }
+
+        return [.. labels.Distinct(StringComparer.Ordinal).Order(StringComparer.OrdinalIgnoreCase)];
     }
 }
