@@ -203,7 +203,7 @@ internal sealed class RunOptions
                 continue;
             }
 
-            if (word.Option == RunSyntax.Submit)
+            if (name == "--submit" && word.IsOption)
             {
                 o.Submit = seen.Add(name) ? true : throw UsageError("--submit given twice");
                 continue;

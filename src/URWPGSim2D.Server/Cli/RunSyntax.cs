@@ -16,9 +16,6 @@ internal static class RunSyntax
     /// <summary><c>--list-items</c>.</summary>
     public static Option<bool> ListItems { get; } = CliSyntax.Flag("--list-items", "list the competition items and stop");
 
-    /// <summary><c>--submit</c>.</summary>
-    public static Option<bool> Submit { get; } = CliSyntax.Flag("--submit", "submit the written Slurm jobs");
-
     /// <summary>The command with every option.</summary>
     public static Command Command { get; } = CliSyntax.Command(
         "run",
@@ -53,13 +50,7 @@ internal static class RunSyntax
             CliSyntax.Value("--batch", "N", "play N matches"),
             CliSyntax.Value("--shard", "I/K", "play shard I of K of the batch"),
             CliSyntax.Value("--results", "FILE", "the batch's result file", CliCompletions.Paths),
-            CliSyntax.Value("--slurm", "DIR", "write a Slurm job array for the batch", CliCompletions.Folders),
-            CliSyntax.Value("--shards", "K", "array tasks of the Slurm batch"),
-            CliSyntax.Value("--partition", "P", "the Slurm partition"),
-            CliSyntax.Value("--time", "T", "the Slurm time limit"),
-            CliSyntax.Repeated("--sbatch-arg", "ARG", "one more sbatch option"),
-            CliSyntax.Value("--slurm-setup", "FILE", "a bash file the jobs source first", CliCompletions.Paths),
-            Submit,
+            .. SlurmSyntax.Declare("DIR", "the batch"),
             Help,
         ]);
 }
