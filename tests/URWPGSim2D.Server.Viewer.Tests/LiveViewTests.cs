@@ -25,7 +25,7 @@ public sealed class LiveViewTests(Browser browser)
 
     private sealed record Live(string Url, CancellationTokenSource Stop, Task<int> Served, StringWriter Out, StringWriter Error);
 
-    private static int FreePort()
+    internal static int FreePort()
     {
         var probe = new TcpListener(IPAddress.Loopback, 0);
         probe.Start();

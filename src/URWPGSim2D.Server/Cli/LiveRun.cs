@@ -13,7 +13,8 @@ namespace URWPGSim2D.Server.Cli;
 /// match is over its summary is printed at once and the page is served on (a restart plays the
 /// match again, and its summary follows when it ends); Ctrl+C (or SIGTERM) ends the server, and a
 /// match it interrupts gets its summary then. A port that cannot be used is one line on stderr and
-/// exit code 2, before anything is played.
+/// exit code 2, before anything is played. With <c>--strategies DIR</c> the page has a control board
+/// (<see cref="LiveBoard"/>) that chooses what the next match plays.
 /// </summary>
 internal static class LiveRun
 {
@@ -51,19 +52,23 @@ internal static class LiveRun
     /// <param name="listening">Told the address once the server listens.</param>
     public static int Serve(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams, CliConsole console, CancellationToken stop, Action<string> listening)
     {
-        int cycles = options.CyclesFor(scenario);
         bool first = true;
-        Match Create()
+        MatchSettings Default()
         {
             var t = first ? teams : Reload(options, teams);
             first = false;
-            var match = MatchBuilder.Build(scenario, t, options.Seed, options.Noise, options.StrategyTimeoutMs, cycles: cycles, debugDraw: options.DebugDraw, strategyLog: options.StrategyLog);
-            match.Stepper.Threads = options.Threads ?? 1;
-            return match;
+            return RunCommand.Settings(options, scenario, t);
         }
 
+        var board = options.StrategiesFolder is null ? null : new LiveBoard(options, scenario, teams, console);
         var feed = new LiveFeed();
-        var player = new LiveMatch(Create, cycles, options.Speed, options.Paused, feed);
+        var player = new LiveMatch(board is null ? Default : board.Next, options.Speed, options.Paused, feed);
+        LiveReply Control(string action, System.Collections.Specialized.NameValueCollection query) =>
+            board?.Control(action, query, player.Start, player.Restart)
+            ?? (player.Control(action) ? LiveReply.Done
+                : board is null ? new LiveReply(400, "unknown action (pause, resume, step or restart)")
+                : LiveReply.Refused($"unknown action {Json.MessageText.Quote(action)} (pause, resume, step, restart, start or recompile)"));
+
         Match? summarised = null; // the last match whose summary is printed (on the playing thread, which is this one)
         player.Ended = ended =>
         {
@@ -72,7 +77,7 @@ internal static class LiveRun
             console.Out.Flush();
             summarised = ended;
         };
-        using var server = new LiveServer(options.Host, options.Port, feed, player.Control);
+        using var server = new LiveServer(options.Host, options.Port, feed, Control, board is null ? null : board.Json);
         try
         {
             server.Start();

@@ -61,6 +61,12 @@ internal sealed class RunCommand : ICliCommand
         OutputFile.CheckNew("--html", options.Html, options.Force);
         OutputFile.Check("--svg", options.Svg);
         OutputFile.CheckNew("--results", options.Slurm is null ? options.Results : null, options.Force); // with --slurm, FILE may be in DIR, made later (SlurmRun checks it)
+        if (options.StrategiesFolder is { } folder && !Directory.Exists(folder))
+        {
+            console.ErrorLine($"run: --strategies {MessageText.Quote(folder)}: no such folder");
+            return ExitCodes.BadInput;
+        }
+
         ScenarioDefinition scenario;
         string scene;
         try
@@ -223,27 +229,9 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
-                    if (options.RemotePorts[t] is int port && console is not null)
-                    {
-                        teams[t] = Remote(options, t, port, console);
-                        continue;
-                    }
-
-                    if (spec == TeamStrategy.DemoSpec)
-                    {
-                        teams[t] = TeamStrategy.ItemDemo;
-                        continue;
-                    }
-
-                    var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress) : null;
-                    if (prepared is not null)
-                    {
-                        HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
-                    }
-
-                    teams[t] = prepared is null
-                        ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress)
-                        : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
+                    teams[t] = options.RemotePorts[t] is int port && console is not null
+                        ? Remote(options, t, port, console)
+                        : LoadTeam(options, spec, progress);
                 }
                 catch (StrategyLoadException e)
                 {
@@ -254,6 +242,33 @@ internal sealed class RunCommand : ICliCommand
         }
 
         return teams;
+    }
+
+    /// <summary>
+    /// One team's strategy from its spec (not a remote one), as <see cref="LoadTeams"/> loads it:
+    /// <c>demo</c>, a built-in name (in process), or a user strategy readied for strategy hosts
+    /// (<c>--isolation process</c>) or loaded in process (<c>--isolation none</c>).
+    /// </summary>
+    /// <exception cref="StrategyLoadException">The strategy cannot be used, or <c>--sandbox required</c> cannot be met.</exception>
+    /// <param name="options">The options (isolation, sandbox, hosts' settings).</param>
+    /// <param name="spec">The spec.</param>
+    /// <param name="progress">Told a line when the sources start and finish compiling.</param>
+    public static TeamStrategy LoadTeam(RunOptions options, string spec, Action<string>? progress = null)
+    {
+        if (spec == TeamStrategy.DemoSpec)
+        {
+            return TeamStrategy.ItemDemo;
+        }
+
+        var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress) : null;
+        if (prepared is not null)
+        {
+            HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
+        }
+
+        return prepared is null
+            ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress)
+            : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
     }
 
     // A remote team's seat, bound now so that a port in use is an error before the match.
@@ -331,7 +346,9 @@ internal sealed class RunCommand : ICliCommand
         "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
         "--trace writes JSON Lines, --svg the final frame, --html a self-contained replay page (docs/viewer.md); an\n" +
         "existing trace, page or results file is replaced only with --force. --live serves the match in the browser at\n" +
-        "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused).\n" +
+        "http://127.0.0.1:8080/ as it is played (--port N, --host H, --speed X times real time, --paused to start paused);\n" +
+        "--strategies DIR adds a control board to the page: choose the item, its length and each team's strategy (DIR's\n" +
+        "folders, .cs and .dll files, or a built-in), start, recompile and restart, save the replay page and a PNG.\n" +
         "--debug-draw records the strategies' debug drawings (DebugDraw) in the trace and both pages; --strategy-log\n" +
         "records what they print (Console, Debug; at most 4,096 characters per team and cycle) there too.\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +

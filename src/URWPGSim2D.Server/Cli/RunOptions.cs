@@ -16,7 +16,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused] [--strategies DIR]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
 
     /// <summary>Every long option of <c>run</c>, as declared (<see cref="RunSyntax"/>).</summary>
     public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(RunSyntax.Command);
@@ -92,6 +92,9 @@ internal sealed class RunOptions
 
     /// <summary>Whether the live match waits for resume or step before its first cycle (<c>--paused</c>).</summary>
     public bool Paused { get; private set; }
+
+    /// <summary>The folder whose strategies the live view's control board offers (<c>--strategies DIR</c>), or null for a live view without a board.</summary>
+    public string? StrategiesFolder { get; private set; }
 
     /// <summary>Whether the strategies' debug drawings are recorded in the trace, the replay page and the live view (<c>--debug-draw</c>).</summary>
     public bool DebugDraw { get; private set; }
@@ -265,6 +268,7 @@ internal sealed class RunOptions
                 case "--trace": o.Trace = value; break;
                 case "--svg": o.Svg = value; break;
                 case "--html": o.Html = value; break;
+                case "--strategies": o.StrategiesFolder = value; break;
                 case "--port": o.Port = (int)Number(name, value, 1, 65535); break;
                 case "--host": o.Host = value.Length > 0 && !value.Contains('/', StringComparison.Ordinal) ? value : throw UsageError($"--host must be an address or host name, got {MessageText.Quote(value)}"); break;
                 case "--speed":
@@ -390,6 +394,11 @@ internal sealed class RunOptions
         if (!Live && (seen.Contains("--port") || seen.Contains("--host") || seen.Contains("--speed") || Paused))
         {
             throw UsageError("--port, --host, --speed and --paused belong to --live");
+        }
+
+        if (!Live && StrategiesFolder is not null)
+        {
+            throw UsageError($"--strategies {MessageText.Quote(StrategiesFolder)} belongs to --live (the control board of the live view)");
         }
 
         if (Live && (Batch is not null || Trace is not null || Svg is not null || Html is not null))

@@ -13,7 +13,9 @@ namespace URWPGSim2D.Server.Viewer;
 /// based, so it does not drift), publishing each cycle's trace line and the play status to a
 /// <see cref="LiveFeed"/>. Pause, resume, step and restart come from any thread (the viewers'
 /// buttons); a step plays exactly one cycle and leaves the match paused. Only the playing thread
-/// publishes, so a status message always follows every cycle line it counts. The cycles are played by
+/// publishes, so a status message always follows every cycle line it counts. A restart (or a start, which also
+/// plays on) builds the next match from what <c>next</c> gives then, so a control board may change
+/// the item, its length and the strategies between matches. The cycles are played by
 /// the one match loop (<see cref="MatchLoop"/>), so the match ends where <c>run</c> ends it (a tied
 /// polo match plays its extra time and penalties live too); then it tells <see cref="Ended"/> and
 /// waits (a restart plays it again) until <see cref="Run"/> is cancelled.
@@ -23,7 +25,7 @@ internal sealed class LiveMatch : ITraceSink
     private static readonly byte[] DataPrefix = "data: "u8.ToArray();
     private static readonly byte[] MessageEnd = "\n\n"u8.ToArray();
 
-    private readonly Func<Match> _create;
+    private readonly Func<MatchSettings> _next;
     private readonly LiveFeed _feed;
     private readonly object _gate = new();
     private readonly Stopwatch _busy = new();
@@ -35,23 +37,30 @@ internal sealed class LiveMatch : ITraceSink
     private bool _statusChanged;
 
     /// <summary>Creates the player; the first match is built at once.</summary>
-    /// <param name="create">Builds a fresh match (called again on restart).</param>
-    /// <param name="cycles">Cycles of a match.</param>
+    /// <param name="next">The settings of the next match (asked again on every restart or start, on the playing thread).</param>
     /// <param name="speed">Multiple of real time (1: 100 ms a cycle).</param>
     /// <param name="paused">Whether to wait for resume or step before the first cycle.</param>
     /// <param name="feed">Where cycles and status go.</param>
-    public LiveMatch(Func<Match> create, int cycles, double speed, bool paused, LiveFeed feed)
+    public LiveMatch(Func<MatchSettings> next, double speed, bool paused, LiveFeed feed)
     {
-        _create = create;
-        Cycles = cycles;
+        _next = next;
         Speed = speed;
         _paused = paused;
         _feed = feed;
-        _loop = new MatchLoop(create(), cycles, this);
+        _loop = Create();
     }
 
-    /// <summary>Cycles of a match's regular time.</summary>
-    public int Cycles { get; }
+    /// <summary>Cycles of the current match's regular time.</summary>
+    public int Cycles
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _loop.Cycles;
+            }
+        }
+    }
 
     /// <summary>Multiple of real time.</summary>
     public double Speed { get; }
@@ -101,8 +110,16 @@ internal sealed class LiveMatch : ITraceSink
         _steps++;
     });
 
-    /// <summary>Starts the match again from cycle 0 (same scenario, seed and strategies).</summary>
+    /// <summary>Starts the match again from cycle 0 (the settings <c>next</c> gives then), paused or playing as before.</summary>
     public void Restart() => Change(() => _restart = true);
+
+    /// <summary>Starts the match again from cycle 0 (the settings <c>next</c> gives then) and plays it.</summary>
+    public void Start() => Change(() =>
+    {
+        _restart = true;
+        _paused = false;
+        _steps = 0;
+    });
 
     /// <summary>Applies a viewer's control action: <c>pause</c>, <c>resume</c>, <c>step</c> or <c>restart</c>; false for anything else.</summary>
     public bool Control(string action)
@@ -167,7 +184,7 @@ internal sealed class LiveMatch : ITraceSink
 
             if (restart)
             {
-                var fresh = new MatchLoop(_create(), Cycles, this);
+                var fresh = Create();
                 MatchLoop old;
                 lock (_gate)
                 {
@@ -205,6 +222,12 @@ internal sealed class LiveMatch : ITraceSink
 
     private bool Over => _loop.IsOver;
 
+    private MatchLoop Create()
+    {
+        var settings = _next();
+        return new MatchLoop(settings.Build(), settings.Cycles, this);
+    }
+
     private void Begin()
     {
         _feed.Reset();
@@ -238,7 +261,7 @@ internal sealed class LiveMatch : ITraceSink
         lock (_gate)
         {
             status = string.Create(CultureInfo.InvariantCulture,
-                $"event: status\ndata: {{\"paused\":{(_paused ? "true" : "false")},\"speed\":{Speed:R},\"cycle\":{_loop.Match.World.Cycle},\"cycles\":{Cycles},\"over\":{(Over ? "true" : "false")}}}\n\n");
+                $"event: status\ndata: {{\"paused\":{(_paused ? "true" : "false")},\"speed\":{Speed:R},\"cycle\":{_loop.Match.World.Cycle},\"cycles\":{_loop.Cycles},\"over\":{(Over ? "true" : "false")}}}\n\n");
         }
 
         _feed.Publish(Encoding.UTF8.GetBytes(status));

@@ -12,8 +12,10 @@ namespace URWPGSim2D.Server.Viewer;
 /// The live view's web server (<see cref="HttpListener"/>, part of .NET): <c>GET /</c> is the
 /// viewer page, <c>GET /events</c> the match as Server-Sent Events (a <c>reset</c> event, then
 /// every message of the <see cref="LiveFeed"/> from the start, then each new one as it comes),
-/// <c>POST /control?action=pause|resume|step|restart</c> drives the match. Each viewer
-/// connection is served by its own task reading the feed at its own pace.
+/// <c>POST /control?action=pause|resume|step|restart</c> drives the match (with a control board also
+/// <c>start</c> and <c>recompile</c>, their settings in the query), <c>GET /board</c> is the control
+/// board's choices (JSON; 404 without a board) and <c>GET /replay.html</c> the replay page of what has
+/// been played. Each viewer connection is served by its own task reading the feed at its own pace.
 /// </summary>
 internal sealed class LiveServer : IDisposable
 {
@@ -23,7 +25,8 @@ internal sealed class LiveServer : IDisposable
 
     private readonly HttpListener _listener = new();
     private readonly LiveFeed _feed;
-    private readonly Func<string, bool> _control;
+    private readonly Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> _control;
+    private readonly Func<string>? _board;
     private readonly byte[] _page;
     private readonly CancellationTokenSource _stop = new();
     private readonly List<Task> _clients = [];
@@ -34,12 +37,14 @@ internal sealed class LiveServer : IDisposable
     /// <param name="host">Address to listen on: an IP address or host name; <c>*</c>, <c>+</c> or <c>0.0.0.0</c> for every interface.</param>
     /// <param name="port">TCP port, 1..65535.</param>
     /// <param name="feed">The messages to stream.</param>
-    /// <param name="control">Applies a control action; false for an unknown one.</param>
-    public LiveServer(string host, int port, LiveFeed feed, Func<string, bool> control)
+    /// <param name="control">Applies a control action with the request's query; its answer is the response.</param>
+    /// <param name="board">The control board's choices as JSON (asked at every <c>GET /board</c>), or null for a live view without a board.</param>
+    public LiveServer(string host, int port, LiveFeed feed, Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> control, Func<string>? board = null)
     {
         _feed = feed;
         _control = control;
-        _page = Encoding.UTF8.GetBytes(ReplayPage.Live());
+        _board = board;
+        _page = Encoding.UTF8.GetBytes(ReplayPage.Live(board is not null));
         bool any = host is "*" or "+" or "0.0.0.0";
         string name = host.Contains(':', StringComparison.Ordinal) ? $"[{host}]" : host;
         _listener.Prefixes.Add($"http://{(any ? "+" : name)}:{port}/");
@@ -166,8 +171,23 @@ internal sealed class LiveServer : IDisposable
                     await Stream(response).ConfigureAwait(false);
                     break;
                 case ("POST", "/control"):
-                    bool known = _control(request.QueryString["action"] ?? string.Empty);
-                    await Send(response, known ? 204 : 400, "text/plain", known ? [] : "unknown action (pause, resume, step or restart)"u8.ToArray()).ConfigureAwait(false);
+                    var reply = _control(request.QueryString["action"] ?? string.Empty, request.QueryString);
+                    await Send(response, reply.Status, "text/plain; charset=utf-8", Encoding.UTF8.GetBytes(reply.Text)).ConfigureAwait(false);
+                    break;
+                case ("GET", "/board") when _board is not null:
+                    await Send(response, 200, "application/json; charset=utf-8", Encoding.UTF8.GetBytes(_board())).ConfigureAwait(false);
+                    break;
+                case ("GET", "/replay.html"):
+                    if (LiveReplay.Build(_feed) is { } replay)
+                    {
+                        response.Headers["Content-Disposition"] = $"attachment; filename=\"{LiveReplay.FileName(replay.LastCycle)}\"";
+                        await Send(response, 200, "text/html; charset=utf-8", Encoding.UTF8.GetBytes(replay.Page)).ConfigureAwait(false);
+                    }
+                    else
+                    {
+                        await Send(response, 404, "text/plain", "nothing played yet"u8.ToArray()).ConfigureAwait(false);
+                    }
+
                     break;
                 case ("GET", "/favicon.ico"):
                     await Send(response, 204, "text/plain", []).ConfigureAwait(false);

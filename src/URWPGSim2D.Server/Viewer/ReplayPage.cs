@@ -7,7 +7,7 @@ namespace URWPGSim2D.Server.Viewer;
 /// <summary>
 /// The viewer page (embedded resources Viewer/Assets/viewer.html, .css, .js) with everything
 /// inline: a replay page carries the packed match (<see cref="ReplayRecorder.ToJson"/>), the live
-/// page only <c>{"live":true}</c> and follows the server's event stream.
+/// page only <c>{"live":true}</c> (and <c>"board":true</c> when the server has a control board) and follows the server's event stream.
 /// </summary>
 internal static class ReplayPage
 {
@@ -21,7 +21,8 @@ internal static class ReplayPage
     public static string Replay(string dataJson) => Fill(dataJson);
 
     /// <summary>The live page (served by the live view at <c>/</c>).</summary>
-    public static string Live() => Fill("{\"live\":true}");
+    /// <param name="board">Whether the server has a control board (<c>run --live --strategies DIR</c>).</param>
+    public static string Live(bool board = false) => Fill(board ? "{\"live\":true,\"board\":true}" : "{\"live\":true}");
 
     private static string Fill(string dataJson)
     {

@@ -64,7 +64,7 @@ public sealed partial class LiveRunTests
         Assert.DoesNotContain("real time", MatchSummary.FormatLive(match, TimeSpan.Zero, TimeSpan.Zero).Split('\n')[0], StringComparison.Ordinal);
     }
 
-    private static int FreePort()
+    internal static int FreePort()
     {
         var probe = new TcpListener(IPAddress.Loopback, 0);
         probe.Start();
@@ -77,7 +77,7 @@ public sealed partial class LiveRunTests
     private static partial Regex LiveLine();
 
     // Standard output as the server writes it, read safely from the test's thread; Seen completes once the text holds a marker.
-    private sealed class SignallingWriter(string marker) : TextWriter
+    internal sealed class SignallingWriter(string marker) : TextWriter
     {
         private readonly StringBuilder _text = new();
         private readonly TaskCompletionSource _seen = new(TaskCreationOptions.RunContinuationsAsynchronously);

@@ -21,7 +21,7 @@ public sealed class LiveMatchTests
         var item = ItemRegistry.Find("polo-1v1")!;
         var settings = new MatchSettings(item.CreateScenario(1), 300, 1);
         var feed = new LiveFeed();
-        var player = new LiveMatch(settings.Build, 300, speed: 1e9, paused: false, feed);
+        var player = new LiveMatch(() => settings, speed: 1e9, paused: false, feed);
         using var stop = new CancellationTokenSource();
         var playing = Task.Run(() => player.Run(stop.Token));
 

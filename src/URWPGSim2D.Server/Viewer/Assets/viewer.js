@@ -906,9 +906,94 @@
     api.control = post;
   }
 
+  // ---- Control board (run --live --strategies DIR): GET board lists the choices; start and
+  // recompile post them to /control. Every answer (lines; refused: why) is shown under the buttons.
+  function connectBoard() {
+    $('board').hidden = false;
+    const item = $('board-item'), length = $('board-length'), cycles = $('board-cycles'), teams = $('board-teams'), message = $('board-message');
+    const buttons = [$('board-start'), $('board-recompile'), $('board-refresh')];
+    api.boardReplies = 0;
+    const option = (select, value, text) => { const o = document.createElement('option'); o.value = value; o.textContent = text; select.appendChild(o); return o; };
+    const show = (text, bad) => { message.textContent = text; message.classList.toggle('bad', !!bad); api.boardMessage = { text, bad: !!bad }; };
+    function teamSelects(keep) {
+      const b = api.board, chosen = b.items.find(i => i.id === item.value) || b.items[0];
+      teams.textContent = '';
+      for (let t = 0; t < chosen.teams; t++) {
+        const label = document.createElement('label'), select = document.createElement('select');
+        label.append('team ' + t + ' ');
+        select.id = 'board-team' + t;
+        select.setAttribute('aria-label', 'team ' + t);
+        for (const name of b.builtIns) if (name !== 'demo' || chosen.demo) option(select, name, name === 'scene' ? (chosen.demo ? 'scene (demo)' : 'scene') : name);
+        for (const name of b.strategies) option(select, name, name);
+        const cli = b.commandLine[t];
+        if (cli && !b.builtIns.includes(cli) && !b.strategies.includes(cli)) option(select, cli, cli + ' (command line)');
+        const want = keep && keep[t] !== undefined ? keep[t] : 'scene';
+        select.value = Array.from(select.options).some(o => o.value === want) ? want : 'scene';
+        label.appendChild(select);
+        teams.appendChild(label);
+      }
+    }
+    function lengths() {
+      const b = api.board, chosen = b.items.find(i => i.id === item.value) || b.items[0], keep = length.value;
+      length.textContent = '';
+      option(length, '', 'default (' + chosen.cycles + ' cycles)');
+      for (const m of b.minutes) option(length, 'm' + m, m + ' min');
+      option(length, 'cycles', 'cycles\u2026');
+      length.value = Array.from(length.options).some(o => o.value === keep) ? keep : '';
+      cycles.hidden = length.value !== 'cycles';
+    }
+    function fill(b, first) {
+      const keepItem = first ? b.current.item : item.value;
+      const keepTeams = first ? b.current.teams : Array.from(teams.querySelectorAll('select')).map(s => s.value);
+      api.board = b;
+      item.textContent = '';
+      for (const i of b.items) option(item, i.id, i.name);
+      item.value = keepItem;
+      if (first && b.current.cycles !== null) cycles.value = b.current.cycles;
+      lengths();
+      if (first) length.value = b.current.minutes !== null ? 'm' + b.current.minutes : b.current.cycles !== null ? 'cycles' : '';
+      cycles.hidden = length.value !== 'cycles';
+      teamSelects(keepTeams);
+    }
+    const refresh = first => fetch('board').then(r => r.json()).then(b => { fill(b, first); api.boardLoads = (api.boardLoads || 0) + 1; });
+    async function send(action, params) {
+      buttons.forEach(b => { b.disabled = true; });
+      show(action === 'start' ? 'starting\u2026' : 'recompiling\u2026', false);
+      try {
+        const r = await fetch('control?' + params.toString(), { method: 'POST' });
+        const text = await r.text();
+        show(r.ok ? text + (action === 'start' ? 'started' : 'recompiled and restarted') : text, !r.ok);
+      } catch (e) {
+        show('no answer from the server (' + e.message + ')', true);
+      }
+      buttons.forEach(b => { b.disabled = false; });
+      api.boardReplies++;
+    }
+    item.addEventListener('change', () => { lengths(); teamSelects(Array.from(teams.querySelectorAll('select')).map(s => s.value)); });
+    length.addEventListener('change', () => { cycles.hidden = length.value !== 'cycles'; });
+    $('board-start').addEventListener('click', () => {
+      const p = new URLSearchParams({ action: 'start', item: item.value });
+      if (length.value === 'cycles') p.set('cycles', cycles.value);
+      else if (length.value) p.set('minutes', length.value.slice(1));
+      teams.querySelectorAll('select').forEach((s, t) => p.set('team' + t, s.value));
+      send('start', p);
+    });
+    $('board-recompile').addEventListener('click', () => send('recompile', new URLSearchParams({ action: 'recompile' })));
+    $('board-refresh').addEventListener('click', () => refresh(false));
+    $('board-save-png').addEventListener('click', () => {
+      const a = document.createElement('a'), s = api.store;
+      a.href = canvas.toDataURL('image/png');
+      a.download = 'field-cycle' + (s ? s.firstCycle + api.cycle : 0) + '.png';
+      document.body.appendChild(a);
+      a.click();
+      a.remove();
+    });
+    refresh(true);
+  }
+
   window.addEventListener('error', e => api.errors.push(String(e.message)));
   setup();
-  if (data.live) connectLive();
+  if (data.live) { connectLive(); if (data.board) connectBoard(); }
   else { api.store = Store.fromPacked(data); setTeams(api.store); }
   updatePlayButton();
   requestAnimationFrame(frame);
