@@ -47,6 +47,7 @@ internal static class RunSyntax
             CliSyntax.Value("--host", "H", "the live view's address"),
             CliSyntax.Value("--speed", "X", "live speed, times real time"),
             CliSyntax.Flag("--paused", "start the live match paused"),
+            CliSyntax.Value("--strategies", "DIR", "the folder of strategies the live view's control board offers", CliCompletions.Folders),
             CliSyntax.Value("--batch", "N", "play N matches"),
             CliSyntax.Value("--shard", "I/K", "play shard I of K of the batch"),
             CliSyntax.Value("--results", "FILE", "the batch's result file", CliCompletions.Paths),
