@@ -51,7 +51,7 @@ public sealed class LiveBoardTests : IDisposable
     private (LiveBoard Board, Counter Starts) Board(params string[] extra)
     {
         var options = RunOptions.Parse(["--live", "--strategies", _folder, .. extra]);
-        var scenario = ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
+        var scenario = options.Item == "default" ? URWPGSim2D.Server.Scenario.DefaultScenario.Load() : ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
         var console = new CliConsole(new StringReader(string.Empty), new StringWriter(), new StringWriter());
         return (new LiveBoard(options, scenario, RunCommand.LoadTeams(options), console), new Counter());
     }
@@ -176,6 +176,21 @@ public sealed class LiveBoardTests : IDisposable
         Assert.Equal(expected[1..], lines[1..]);
         Assert.Equal(1, counter.Restarts);
         Assert.Equal(["alpha-2 [alpha]", "beta [beta.cs]"], Played(board).Teams);
+    }
+
+    [Fact]
+    public void TheCommandLinesStrategyIsTheFirstChoiceAndItsTeamMayChooseItAgain()
+    {
+        string outside = Path.Combine(_folder, "alpha", "Strategy.cs"); // a spec as --strategy takes it, not a name of the board
+        var (board, counter) = Board("--item", "default", "--cycles", "10", "--strategy", "1=" + outside);
+        Assert.Equal(["chase-ball", "alpha-1 [Strategy.cs]"], Played(board).Teams);
+        var json = System.Text.Json.JsonDocument.Parse(board.Json()).RootElement;
+        Assert.Equal([null, outside, null, null], json.GetProperty("commandLine").EnumerateArray().Select(e => e.GetString()));
+        Assert.Equal(["scene", outside], json.GetProperty("current").GetProperty("teams").EnumerateArray().Select(e => e.GetString()));
+
+        Assert.Equal(400, Send(board, counter, "start", ("team0", outside)).Status); // another team's command-line spec is not offered to team 0
+        Assert.Equal(204, Send(board, counter, "start", ("item", "default"), ("team0", "idle"), ("team1", outside)).Status);
+        Assert.Equal(["idle", "alpha-1 [Strategy.cs]"], Played(board).Teams);
     }
 
     [Fact]
