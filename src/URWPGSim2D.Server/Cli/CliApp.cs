@@ -1,16 +1,19 @@
 using System;
 using System.Collections.Generic;
+using System.CommandLine;
 using System.IO;
 using System.Linq;
 using System.Text;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
-/// The command line, callable in-process: routes <c>args[0]</c> to one of its
-/// <see cref="ICliCommand"/>s, prints help, and turns every failure into one stderr line and an
-/// exit code. <c>Program.Main</c> only forwards to <see cref="Run(string[], TextReader, TextWriter, TextWriter)"/>.
+/// The command line, callable in-process: parses the arguments with System.CommandLine against
+/// the commands' declared syntax (<see cref="ICliCommand.Syntax"/>), answers shell completion
+/// (<see cref="ShellCompletion"/>), hands the chosen <see cref="ICliCommand"/> its classified words,
+/// prints help, and turns every failure into one stderr line and an exit code. <c>Program.Main</c> only forwards to <see cref="Run(string[], TextReader, TextWriter, TextWriter)"/>.
 /// </summary>
 internal sealed class CliApp
 {
@@ -20,7 +23,7 @@ internal sealed class CliApp
     private readonly ICliCommand[] _commands;
 
     /// <summary>Creates a command line over the given commands.</summary>
-    /// <param name="commands">The commands, in the order <c>--help</c> lists them; at least one.</param>
+    /// <param name="commands">The commands, in the order <c>--help</c> lists them; at least one; each in one command line only.</param>
     public CliApp(IEnumerable<ICliCommand> commands)
     {
         _commands = [.. commands];
@@ -28,7 +31,18 @@ internal sealed class CliApp
         {
             throw new ArgumentException("at least one command is needed", nameof(commands));
         }
+
+        Root = new RootCommand("The URWPGSim2D match server.");
+        Root.Options.Clear(); // no --version; --help is answered before parsing
+        Root.Options.Add(CliSyntax.Help());
+        foreach (var command in _commands)
+        {
+            Root.Subcommands.Add(command.Syntax);
+        }
     }
+
+    /// <summary>The declared syntax of the whole program: every command's options and arguments.</summary>
+    public RootCommand Root { get; }
 
     /// <summary>Every command of the program, in the order <c>--help</c> lists them. Register new commands here.</summary>
     public static IReadOnlyList<ICliCommand> DefaultCommands { get; } =
@@ -43,7 +57,11 @@ internal sealed class CliApp
         new TournamentCommand(),
         new HostCommand(),
         new ConnectCommand(),
+        new CompletionCommand(),
     ];
+
+    /// <summary>The program's command line: <see cref="DefaultCommands"/>.</summary>
+    public static CliApp Default { get; } = new(DefaultCommands);
 
     /// <summary>The one-line synopsis of the whole program, used in usage errors.</summary>
     public string Synopsis =>
@@ -56,12 +74,19 @@ internal sealed class CliApp
     /// <param name="stderr">Standard error; usage text or a single error line.</param>
     /// <returns>The exit code: 0 success, 1 internal error, 2 bad input or arguments.</returns>
     public static int Run(string[] args, TextReader stdin, TextWriter stdout, TextWriter stderr) =>
-        new CliApp(DefaultCommands).Run(args, new CliConsole(stdin, stdout, stderr));
+        Default.Run(args, new CliConsole(stdin, stdout, stderr));
 
     /// <summary>True for the arguments that ask for help: <c>--help</c> and <c>-h</c>.</summary>
     /// <param name="argument">One argument.</param>
     /// <returns>Whether it asks for help.</returns>
     public static bool IsHelp(string argument) => argument is "--help" or "-h";
+
+    /// <summary>The words of one command's arguments, parsed against its declared syntax.</summary>
+    /// <param name="command">The command's name.</param>
+    /// <param name="arguments">The arguments after it.</param>
+    /// <returns>The classified words.</returns>
+    public IReadOnlyList<CommandLineWord> Words(string command, ReadOnlySpan<string> arguments) =>
+        CommandLineWords.Of(Root.Parse([command, .. arguments], CliSyntax.Parser));
 
     /// <summary>Runs a command line.</summary>
     /// <param name="args">The arguments after the program name.</param>
@@ -84,8 +109,14 @@ internal sealed class CliApp
                 return ExitCodes.Success;
             }
 
-            ICliCommand command = Array.Find(_commands, c => c.Name == args[0]) ?? throw UnknownCommand(args[0]);
-            return command.Run(args.AsSpan(1), console);
+            if (ShellCompletion.IsRequest(args))
+            {
+                return ShellCompletion.Answer(Root, args, console);
+            }
+
+            ParseResult parse = Root.Parse(args, CliSyntax.Parser);
+            ICliCommand command = Array.Find(_commands, c => c.Syntax == parse.CommandResult.Command) ?? throw UnknownCommand(args[0]);
+            return command.Run(CommandLineWords.Of(parse), console);
         }
         catch (CliUsageException ex)
         {
@@ -152,6 +183,6 @@ internal sealed class CliApp
             return ExitCodes.BadInput;
         }
 
-        return run.Run(ReadOnlySpan<string>.Empty, console);
+        return run.Run([], console);
     }
 }

@@ -1,7 +1,6 @@
 using System;
-using System.Collections.Generic;
-using System.Linq;
-using System.Text.RegularExpressions;
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
@@ -11,7 +10,7 @@ namespace URWPGSim2D.Server.Cli;
 /// reported as the single stderr line <c>MESSAGE. Usage: SYNOPSIS</c>, exit code 2; a typo with
 /// a near name is the shorter line <c>MESSAGE; did you mean NAME?</c>.
 /// </summary>
-internal sealed partial class CliUsageException : Exception
+internal sealed class CliUsageException : Exception
 {
     /// <summary>Creates the error.</summary>
     /// <param name="message">What is wrong with the arguments, one line.</param>
@@ -29,25 +28,20 @@ internal sealed partial class CliUsageException : Exception
     public string Line => Usage is null ? Message : $"{Message}. Usage: {Usage}";
 
     /// <summary>
-    /// An unknown option of <paramref name="command"/>: with the nearest option of
-    /// <paramref name="usage"/> (<see cref="Suggestion"/>), <c>COMMAND: unknown option "X"; did you
-    /// mean --Y?</c>; without one, the message and the usage.
+    /// An unknown option of <paramref name="command"/>: with the nearest of the options its
+    /// <paramref name="syntax"/> declares (<see cref="Suggestion"/>), <c>COMMAND: unknown option
+    /// "X"; did you mean --Y?</c>; without one, the message and the usage.
     /// </summary>
     /// <param name="command">The command's name, e.g. <c>run</c>.</param>
     /// <param name="option">The option as given.</param>
-    /// <param name="usage">The command's usage, which names every option it takes.</param>
-    public static CliUsageException UnknownOption(string command, string option, string usage)
+    /// <param name="syntax">The command's declared syntax, the source of the option names.</param>
+    /// <param name="usage">The command's usage.</param>
+    public static CliUsageException UnknownOption(string command, string option, Command syntax, string usage)
     {
+        ArgumentNullException.ThrowIfNull(syntax);
         string message = $"{command}: unknown option {MessageText.Quote(option)}";
-        return Suggestion.Nearest(option, OptionsOf(usage)) is { } near
+        return Suggestion.Nearest(option, CliSyntax.LongNames(syntax)) is { } near
             ? new CliUsageException($"{message}; did you mean {near}?", null)
             : new CliUsageException(message, usage);
     }
-
-    /// <summary>The options a usage text names (every <c>--word</c>), and <c>--help</c>.</summary>
-    public static IReadOnlyList<string> OptionsOf(string usage) =>
-        [.. OptionNames().Matches(usage).Select(m => m.Value).Append("--help").Distinct(StringComparer.Ordinal)];
-
-    [GeneratedRegex("--[a-z0-9][a-z0-9-]*")]
-    private static partial Regex OptionNames();
 }

@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
 using System.Text.Json;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
@@ -27,18 +30,23 @@ internal sealed class CollideCommand : ICliCommand
     /// <inheritdoc />
     public string Summary => "Test pairs of shapes from a JSON file for collision; results as JSON on stdout.";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    /// <inheritdoc />
+    public Command Syntax { get; } = CliSyntax.Command("collide", "pairs of shapes (JSON), - for stdin", FileArgument.Declare("pairs of shapes (JSON), - for stdin"), HelpOption);
+
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 
     /// <inheritdoc />
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(HelpText());
             return ExitCodes.Success;
         }
 
-        string file = FileArgument.Parse(Name, arguments, Usage);
+        string file = FileArgument.Parse(Name, words, Syntax, Usage);
         string text = InputText.Read(file, console.In);
         var pairs = ReadPairs(text);
         var contacts = new FishContact[pairs.Length];

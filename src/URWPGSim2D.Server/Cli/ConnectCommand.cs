@@ -1,9 +1,12 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.Net.Sockets;
 using System.Threading;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Json;
 
@@ -33,9 +36,22 @@ internal sealed class ConnectCommand : ICliCommand
     public string Summary => "Play one team's strategy for a server that waits for it (run --strategy TEAM=remote:PORT; docs/protocol.md).";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public Command Syntax { get; } = CliSyntax.Command(
+        "connect",
+        "Play one team's strategy for a server that waits for it.",
+        CliSyntax.Positional("HOST:PORT SPEC", "the server's address and the strategy", CliCompletions.Strategies),
+        TokenOption,
+        WaitOption,
+        HelpOption);
+
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+    private static readonly Option<string> TokenOption = CliSyntax.Value("--token", "T", "the token the server was given (--remote-token)");
+    private static readonly Option<string> WaitOption = CliSyntax.Value("--wait", "SECONDS", "keep trying to reach the server this long");
+
+    /// <inheritdoc/>
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(
                 $"Usage: {CliApp.ProgramName} {Synopsis}\n\n" +
@@ -48,7 +64,7 @@ internal sealed class ConnectCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        var (host, port, spec, token, wait) = Parse(arguments);
+        var (host, port, spec, token, wait) = Parse(words);
         IStrategy strategy;
         try
         {
@@ -126,22 +142,17 @@ internal sealed class ConnectCommand : ICliCommand
         }
     }
 
-    private (string Host, int Port, string Spec, string? Token, int Wait) Parse(ReadOnlySpan<string> arguments)
+    private (string Host, int Port, string Spec, string? Token, int Wait) Parse(IReadOnlyList<CommandLineWord> words)
     {
         string? address = null, spec = null, token = null;
         int? wait = null;
-        for (int i = 0; i < arguments.Length; i++)
+        foreach (var word in words)
         {
-            string a = arguments[i];
-            if (a is "--token" or "--wait")
+            string a = word.Text;
+            if (word.Option == TokenOption || word.Option == WaitOption)
             {
-                if (i + 1 >= arguments.Length)
-                {
-                    throw Usage($"{a} needs a value");
-                }
-
-                string value = arguments[++i];
-                if (a == "--token")
+                string value = word.Value ?? throw Usage($"{a} needs a value");
+                if (word.Option == TokenOption)
                 {
                     token = token is null ? value : throw Usage("--token given twice");
                     if (value.Length == 0 || value.Length > ProtocolLimits.TextChars)
@@ -157,7 +168,7 @@ internal sealed class ConnectCommand : ICliCommand
             }
             else if (a.StartsWith('-'))
             {
-                throw CliUsageException.UnknownOption("connect", a, $"{CliApp.ProgramName} {Synopsis}");
+                throw CliUsageException.UnknownOption("connect", a, Syntax, $"{CliApp.ProgramName} {Synopsis}");
             }
             else if (address is null)
             {

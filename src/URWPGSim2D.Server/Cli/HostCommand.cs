@@ -1,5 +1,8 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Cli;
@@ -31,9 +34,14 @@ internal sealed class HostCommand : ICliCommand
     public string Summary => "Play one team's strategy for 'run' over standard input/output (the strategy host; docs/protocol.md).";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public Command Syntax { get; } = CliSyntax.Command("host", "Play one team's strategy over standard input/output.", CliSyntax.Positional("SPEC", "the strategy", CliCompletions.Strategies), HelpOption);
+
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    /// <inheritdoc/>
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(
                 $"Usage: {CliApp.ProgramName} host SPEC\n\n" +
@@ -44,12 +52,12 @@ internal sealed class HostCommand : ICliCommand
             return ExitCodes.Success;
         }
 
-        if (arguments.Length >= 1 && arguments[0].StartsWith('-'))
+        if (words.Count >= 1 && words[0].Text.StartsWith('-'))
         {
-            throw CliUsageException.UnknownOption("host", arguments[0], $"{CliApp.ProgramName} {Synopsis}");
+            throw CliUsageException.UnknownOption("host", words[0].Text, Syntax, $"{CliApp.ProgramName} {Synopsis}");
         }
 
-        if (arguments.Length != 1)
+        if (words.Count != 1)
         {
             throw new CliUsageException("host needs exactly one SPEC", $"{CliApp.ProgramName} {Synopsis}");
         }
@@ -62,7 +70,7 @@ internal sealed class HostCommand : ICliCommand
         IStrategy strategy;
         try
         {
-            strategy = StrategyResolver.Load(arguments[0]);
+            strategy = StrategyResolver.Load(words[0].Text);
         }
         catch (StrategyLoadException e)
         {

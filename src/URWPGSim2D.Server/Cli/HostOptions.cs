@@ -1,5 +1,7 @@
 using System;
+using System.CommandLine;
 using System.Globalization;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Json;
 
@@ -13,6 +15,14 @@ internal static class HostOptions
 {
     /// <summary>The options in a usage line.</summary>
     public const string Usage = "[--isolation process|none] [--sandbox auto|required|off] [--strategy-memory MB]";
+
+    /// <summary>The options' declarations, new for each command that takes them.</summary>
+    public static Option[] Declare() =>
+    [
+        CliSyntax.Value("--isolation", "process|none", "where user strategies run", CliCompletions.Fixed("process", "none")),
+        CliSyntax.Value("--sandbox", "auto|required|off", "whether strategy hosts run in the sandbox", CliCompletions.Fixed("auto", "required", "off")),
+        CliSyntax.Value("--strategy-memory", "MB", "a strategy host's heap limit"),
+    ];
 
     /// <summary>Whether <paramref name="name"/> is one of these options.</summary>
     public static bool Is(string name) => name is "--isolation" or "--sandbox" or "--strategy-memory";

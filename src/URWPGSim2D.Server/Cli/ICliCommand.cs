@@ -1,10 +1,12 @@
-using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
-/// One sub-command of the program (<c>collide</c>, later <c>shapes</c>, <c>render</c>, <c>run</c>).
+/// One sub-command of the program (<c>run</c>, <c>collide</c>, <c>tournament</c>, ...).
 /// A command lives in its own file and is registered once, in <see cref="CliApp"/>.
 /// </summary>
 internal interface ICliCommand
@@ -19,11 +21,17 @@ internal interface ICliCommand
     string Summary { get; }
 
     /// <summary>
+    /// The command's options and arguments, declared once (<see cref="CliSyntax"/>): what the parser
+    /// recognises, what "did you mean" hints and shell completion offer.
+    /// </summary>
+    Command Syntax { get; }
+
+    /// <summary>
     /// Runs the command. Bad arguments throw <see cref="CliUsageException"/>, bad input throws
     /// <see cref="InputException"/>; in both cases nothing may have been written to stdout.
     /// </summary>
-    /// <param name="arguments">The arguments after the command name.</param>
+    /// <param name="words">The words after the command name, as the parser classified them against <see cref="Syntax"/>.</param>
     /// <param name="console">The streams to use.</param>
     /// <returns>The exit code (see <see cref="ExitCodes"/>).</returns>
-    int Run(ReadOnlySpan<string> arguments, CliConsole console);
+    int Run(IReadOnlyList<CommandLineWord> words, CliConsole console);
 }

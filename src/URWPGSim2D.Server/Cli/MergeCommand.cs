@@ -1,8 +1,10 @@
 using System;
 using System.Collections.Generic;
+using System.CommandLine;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
@@ -17,6 +19,13 @@ internal sealed class MergeCommand : ICliCommand
 {
     private const string Usage = "merge [--out FILE [--force]] FILE...";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+    private static readonly Option<string> OutOption = CliSyntax.Value("--out", "FILE", "the merged result file to write", CliCompletions.Paths);
+    private static readonly Option<bool> ForceOption = CliSyntax.Flag("--force", "replace an existing --out file");
+
+    /// <inheritdoc/>
+    public Command Syntax { get; } = CliSyntax.Command("merge", "Combine the result files of a sharded batch.", OutOption, ForceOption, FileArgument.Declare("a shard's result file"), HelpOption);
+
     /// <inheritdoc/>
     public string Name => "merge";
 
@@ -27,40 +36,39 @@ internal sealed class MergeCommand : ICliCommand
     public string Summary => "Combine the result files of a sharded batch (run --batch --shard --results) and print the aggregate.";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
         string? output = null;
         bool force = false;
         var files = new List<string>();
-        for (int i = 0; i < arguments.Length; i++)
+        foreach (var word in words)
         {
-            string a = arguments[i];
-            if (CliApp.IsHelp(a))
+            if (word.Option == HelpOption)
             {
                 console.Out.Write($"Usage: {CliApp.ProgramName} {Usage}\n\n{Summary}\nFormat and cluster recipes: docs/batch.md.\n");
                 return ExitCodes.Success;
             }
 
-            if (a == "--out")
+            if (word.Option == OutOption)
             {
-                if (output is not null || i + 1 >= arguments.Length)
+                if (output is not null || word.Value is null)
                 {
                     throw UsageError(output is null ? "--out needs a value" : "--out given twice");
                 }
 
-                output = arguments[++i];
+                output = word.Value;
             }
-            else if (a == "--force")
+            else if (word.Option == ForceOption)
             {
                 force = !force ? true : throw UsageError("--force given twice");
             }
-            else if (a.StartsWith("--", StringComparison.Ordinal))
+            else if (word.Text.StartsWith("--", StringComparison.Ordinal))
             {
-                throw CliUsageException.UnknownOption("merge", a, CliApp.ProgramName + " " + Usage);
+                throw CliUsageException.UnknownOption("merge", word.Text, Syntax, CliApp.ProgramName + " " + Usage);
             }
             else
             {
-                files.Add(a);
+                files.Add(word.Text);
             }
         }
 

@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -18,18 +21,23 @@ internal sealed class QueryCommand : ICliCommand
     /// <inheritdoc />
     public string Summary => "Distances, ray casts, shape casts and box overlaps over shapes from a JSON file.";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    /// <inheritdoc />
+    public Command Syntax { get; } = CliSyntax.Command("query", "shapes and queries (JSON), - for stdin", FileArgument.Declare("shapes and queries (JSON), - for stdin"), HelpOption);
+
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 
     /// <inheritdoc />
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(HelpText());
             return ExitCodes.Success;
         }
 
-        string file = FileArgument.Parse(Name, arguments, Usage);
+        string file = FileArgument.Parse(Name, words, Syntax, Usage);
         string text = InputText.Read(file, console.In);
         var (shapes, queries) = QueryInput.Read(text);
         console.Out.Write(QueryAnswers.Answer(shapes, queries));

@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Generic;
+using System.CommandLine;
 using System.IO;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 
@@ -23,18 +25,24 @@ internal sealed class RenderCommand : ICliCommand
     /// <inheritdoc />
     public string Summary => "Draw shapes or pairs (fish trees, outer circles, MTV, normal, action point) as an SVG file.";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+    private static readonly Option<string> SvgOption = CliSyntax.Value("--svg", "OUT", "the SVG file to write (- for stdout)", CliCompletions.Paths);
+
+    /// <inheritdoc />
+    public Command Syntax { get; } = CliSyntax.Command("render", "Draw shapes or pairs as SVG.", FileArgument.Declare("shapes or pairs (JSON), - for stdin"), SvgOption, HelpOption);
+
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 
     /// <inheritdoc />
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(HelpText());
             return ExitCodes.Success;
         }
 
-        var (file, output) = ParseArguments(arguments);
+        var (file, output) = ParseArguments(words);
         string text = InputText.Read(file, console.In);
         string svg = RenderInputKind.IsPairs(text) ? RenderPairs(text) : RenderShapes(text);
         if (output == InputText.StandardInput)
@@ -84,30 +92,29 @@ internal sealed class RenderCommand : ICliCommand
         return ShapeFigure.Render(items, contacts);
     }
 
-    private (string File, string Output) ParseArguments(ReadOnlySpan<string> arguments)
+    private (string File, string Output) ParseArguments(IReadOnlyList<CommandLineWord> words)
     {
         string? file = null, output = null;
         int files = 0;
-        for (int i = 0; i < arguments.Length; i++)
+        foreach (var word in words)
         {
-            string argument = arguments[i];
-            if (argument == "--svg")
+            if (word.Option == SvgOption)
             {
                 if (output is not null)
                 {
                     throw new CliUsageException("render: --svg given twice", Usage);
                 }
 
-                if (i + 1 >= arguments.Length || arguments[i + 1].Length == 0)
+                if (word.Value is null || word.Value.Length == 0)
                 {
                     throw new CliUsageException("render: --svg needs a file name (- for stdout)", Usage);
                 }
 
-                output = arguments[++i];
+                output = word.Value;
                 continue;
             }
 
-            file = FileArgument.Check(Name, argument, Usage);
+            file = FileArgument.Check(Name, word.Text, Syntax, Usage);
             files++;
         }
 

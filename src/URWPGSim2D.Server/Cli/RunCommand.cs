@@ -1,15 +1,18 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Security.Cryptography;
 using System.Text;
+using URWPGSim2D.Server.Cli.Syntax;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Trace;
 using URWPGSim2D.Server.Viewer;
 
@@ -36,9 +39,12 @@ internal sealed class RunCommand : ICliCommand
     public string Summary => "Play a match (default: the competition item ball-grab, 10 minutes) and print a summary.";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public Command Syntax => RunSyntax.Command;
+
+    /// <inheritdoc/>
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        var options = RunOptions.Parse(arguments);
+        var options = RunOptions.Parse(words);
         if (options.Help)
         {
             console.Out.Write(HelpText());

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
@@ -17,8 +18,8 @@ internal sealed class RunOptions
     /// <summary>The command's full usage.</summary>
     public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused] [--strategies DIR]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
 
-    /// <summary>Every option of <c>run</c>: those <see cref="Usage"/> names.</summary>
-    public static IReadOnlyList<string> KnownOptions { get; } = CliUsageException.OptionsOf(Usage);
+    /// <summary>Every long option of <c>run</c>, as declared (<see cref="RunSyntax"/>).</summary>
+    public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(RunSyntax.Command);
 
     /// <summary>Largest batch.</summary>
     public const int MaximumBatch = 100_000_000;
@@ -172,37 +173,43 @@ internal sealed class RunOptions
     public int CyclesFor(global::URWPGSim2D.Server.Scenario.ScenarioDefinition scenario) => Cycles ?? (Minutes * 600) ?? scenario.Cycles;
 
     /// <summary>Parses the arguments after "run".</summary>
-    public static RunOptions Parse(ReadOnlySpan<string> args)
+    public static RunOptions Parse(ReadOnlySpan<string> args) => Parse(CliApp.Default.Words("run", args));
+
+    /// <summary>Parses the words after "run", as the parser classified them (<see cref="RunSyntax"/>).</summary>
+    public static RunOptions Parse(IReadOnlyList<CommandLineWord> words)
     {
+        ArgumentNullException.ThrowIfNull(words);
         var o = new RunOptions();
         var seen = new HashSet<string>(StringComparer.Ordinal);
-        var slurmOwn = new HashSet<int>(); // indices of the --slurm options and their values
-        for (int i = 0; i < args.Length; i++)
+        var passedOn = new List<string>(2 * words.Count);
+        foreach (var word in words)
         {
-            string name = args[i];
-            if (name is "--help" or "-h")
+            string name = word.Name;
+            if (word.Option == RunSyntax.Help)
             {
                 o.Help = true;
                 continue;
             }
 
-            if (name == "--list-items")
+            if (!IsSlurmOwn(name))
+            {
+                passedOn.Add(word.Text);
+                if (word.Value is not null)
+                {
+                    passedOn.Add(word.Value);
+                }
+            }
+
+            if (word.Option == RunSyntax.ListItems)
             {
                 o.ListItems = true;
                 continue;
             }
 
-            if (name == "--submit")
+            if (name == "--submit" && word.IsOption)
             {
                 o.Submit = seen.Add(name) ? true : throw UsageError("--submit given twice");
-                slurmOwn.Add(i);
                 continue;
-            }
-
-            if (name is "--slurm" or "--shards" or "--partition" or "--time" or "--results" or "--sbatch-arg" or "--slurm-setup")
-            {
-                slurmOwn.Add(i);
-                slurmOwn.Add(i + 1);
             }
 
             if (!name.StartsWith("--", StringComparison.Ordinal))
@@ -225,17 +232,12 @@ internal sealed class RunOptions
                 continue;
             }
 
-            if (!KnownOptions.Contains(name))
+            if (!word.IsOption)
             {
-                throw CliUsageException.UnknownOption("run", name, CliApp.ProgramName + " " + Usage);
+                throw CliUsageException.UnknownOption("run", name, RunSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
 
-            if (i + 1 >= args.Length)
-            {
-                throw UsageError($"{name} needs a value");
-            }
-
-            string value = args[++i];
+            string value = word.Value ?? throw UsageError($"{name} needs a value");
             if (name is not ("--strategy" or "--remote-token" or "--sbatch-arg") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
@@ -300,16 +302,7 @@ internal sealed class RunOptions
                     break;
                 case "--remote-token": o.ParseToken(value, seen); break;
                 default:
-                    throw CliUsageException.UnknownOption("run", name, CliApp.ProgramName + " " + Usage);
-            }
-        }
-
-        var passedOn = new List<string>(args.Length);
-        for (int i = 0; i < args.Length; i++)
-        {
-            if (!slurmOwn.Contains(i) && args[i] is not ("--help" or "-h"))
-            {
-                passedOn.Add(args[i]);
+                    throw CliUsageException.UnknownOption("run", name, RunSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
         }
 
@@ -317,6 +310,10 @@ internal sealed class RunOptions
         o.Check(seen);
         return o;
     }
+
+    // The options of --slurm itself, which the Slurm tasks do not pass on.
+    private static bool IsSlurmOwn(string name) =>
+        name is "--slurm" or "--shards" or "--partition" or "--time" or "--results" or "--sbatch-arg" or "--slurm-setup" or "--submit";
 
     /// <summary>What <c>--strategy TEAM=</c> starts with for a remote team.</summary>
     public const string RemotePrefix = "remote:";

@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
 using System.Text.Json;
 using URWPGSim2D.Server.Json;
 
@@ -21,18 +24,23 @@ internal sealed class ShapesCommand : ICliCommand
     /// <inheritdoc />
     public string Summary => "Write the exact collision pieces (polygons, circles, fish leaves and tree) of shapes as JSON.";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    /// <inheritdoc />
+    public Command Syntax { get; } = CliSyntax.Command("shapes", "shapes (JSON), - for stdin", FileArgument.Declare("shapes (JSON), - for stdin"), HelpOption);
+
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 
     /// <inheritdoc />
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        if (arguments.Length == 1 && CliApp.IsHelp(arguments[0]))
+        if (words.Count == 1 && words[0].Option == HelpOption)
         {
             console.Out.Write(HelpText());
             return ExitCodes.Success;
         }
 
-        string file = FileArgument.Parse(Name, arguments, Usage);
+        string file = FileArgument.Parse(Name, words, Syntax, Usage);
         var shapes = ShapesInput.Read(InputText.Read(file, console.In));
         var pieces = Array.ConvertAll(shapes, ShapePiecesDto.From);
         console.Out.Write(JsonSerializer.Serialize(pieces, OutputJsonContext.Default.ShapePiecesDtoArray) + "\n");

@@ -1,11 +1,13 @@
 using System;
 using System.Collections.Generic;
+using System.CommandLine;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tournament;
 
@@ -29,9 +31,12 @@ internal sealed class TournamentCommand : ICliCommand
     public string Summary => "Rank strategies: every entrant against every other over N seeds, ratings with 95 % intervals, report page.";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public Command Syntax => TournamentSyntax.Command;
+
+    /// <inheritdoc/>
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        var o = TournamentOptions.Parse(arguments);
+        var o = TournamentOptions.Parse(words);
         if (o.Help)
         {
             console.Out.Write(HelpText());

@@ -4,6 +4,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Hosting;
@@ -60,7 +61,7 @@ internal sealed class TournamentOptions
     public string Out { get; private set; } = null!;
 
     /// <summary>Every option of <c>tournament</c>: those <see cref="Usage"/> names.</summary>
-    public static IReadOnlyList<string> KnownOptions { get; } = CliUsageException.OptionsOf(Usage);
+    public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(TournamentSyntax.Command);
 
     /// <summary>The Slurm jobs' folder, or null.</summary>
     public string? Slurm { get; private set; }
@@ -102,30 +103,51 @@ internal sealed class TournamentOptions
     public bool Help { get; private set; }
 
     /// <summary>Parses the arguments after <c>tournament</c>.</summary>
-    public static TournamentOptions Parse(ReadOnlySpan<string> args)
+    public static TournamentOptions Parse(ReadOnlySpan<string> args) => Parse(CliApp.Default.Words("tournament", args));
+
+    /// <summary>Parses the words after <c>tournament</c>, as the parser classified them (<see cref="TournamentSyntax"/>).</summary>
+    public static TournamentOptions Parse(IReadOnlyList<CommandLineWord> words)
     {
+        ArgumentNullException.ThrowIfNull(words);
         var o = new TournamentOptions();
         var seen = new HashSet<string>(StringComparer.Ordinal);
         var passedOn = new List<string>();
-        for (int i = 0; i < args.Length; i++)
+        for (int i = 0; i < words.Count; i++)
         {
-            string name = args[i];
-            if (CliApp.IsHelp(name))
+            var word = words[i];
+            string name = word.Name;
+            if (word.Option == TournamentSyntax.Help)
             {
                 o.Help = true;
                 return o;
             }
 
-            if (name == "--merge")
+            if (word.Option == TournamentSyntax.Merge)
             {
                 if (!seen.Add(name))
                 {
                     throw UsageError("--merge given twice");
                 }
 
-                for (i++; i < args.Length; i++)
+                // Every word after --merge is a result file, as written.
+                var files = new List<string>();
+                if (word.Value is not null)
                 {
-                    o.Merge.Add(args[i].Length > 0 ? args[i] : throw UsageError("--merge needs result files, got \"\""));
+                    files.Add(word.Value);
+                }
+
+                foreach (var rest in words.Skip(i + 1))
+                {
+                    files.Add(rest.Text);
+                    if (rest.Value is not null)
+                    {
+                        files.Add(rest.Value);
+                    }
+                }
+
+                foreach (string file in files)
+                {
+                    o.Merge.Add(file.Length > 0 ? file : throw UsageError("--merge needs result files, got \"\""));
                 }
 
                 if (o.Merge.Count == 0)
@@ -158,17 +180,12 @@ internal sealed class TournamentOptions
                 throw UsageError($"unexpected argument {MessageText.Quote(name)}");
             }
 
-            if (!KnownOptions.Contains(name))
+            if (!word.IsOption)
             {
-                throw CliUsageException.UnknownOption("tournament", name, CliApp.ProgramName + " " + Usage);
+                throw CliUsageException.UnknownOption("tournament", name, TournamentSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
 
-            if (i + 1 >= args.Length)
-            {
-                throw UsageError($"{name} needs a value");
-            }
-
-            string value = args[++i];
+            string value = word.Value ?? throw UsageError($"{name} needs a value");
             if (name is not ("--entrant" or "--sbatch-arg") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
@@ -204,7 +221,7 @@ internal sealed class TournamentOptions
                 case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
-                default: throw CliUsageException.UnknownOption("tournament", name, CliApp.ProgramName + " " + Usage);
+                default: throw CliUsageException.UnknownOption("tournament", name, TournamentSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
         }
 

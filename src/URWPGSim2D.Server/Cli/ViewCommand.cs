@@ -1,6 +1,9 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
 using System.IO;
 using System.Text;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Viewer;
@@ -17,6 +20,13 @@ internal sealed class ViewCommand : ICliCommand
 {
     private const string Usage = "view TRACE.jsonl --html FILE [--force]";
 
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+    private static readonly Option<string> HtmlOption = CliSyntax.Value("--html", "FILE", "the replay page to write", CliCompletions.Paths);
+    private static readonly Option<bool> ForceOption = CliSyntax.Flag("--force", "replace an existing --html file");
+
+    /// <inheritdoc/>
+    public Command Syntax { get; } = CliSyntax.Command("view", "Build the replay page of a match from its trace.", CliSyntax.Positional("TRACE", "the match's trace (run --trace)", CliCompletions.Paths), HtmlOption, ForceOption, HelpOption);
+
     /// <inheritdoc/>
     public string Name => "view";
 
@@ -27,35 +37,35 @@ internal sealed class ViewCommand : ICliCommand
     public string Summary => "Build the self-contained replay page (HTML) of a match from its trace (run --trace).";
 
     /// <inheritdoc/>
-    public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
         string? trace = null, html = null;
         bool force = false;
-        for (int i = 0; i < arguments.Length; i++)
+        foreach (var word in words)
         {
-            string a = arguments[i];
-            if (CliApp.IsHelp(a))
+            string a = word.Text;
+            if (word.Option == HelpOption)
             {
                 console.Out.Write($"Usage: {CliApp.ProgramName} {Usage}\n\n{Summary}\nThe page plays the match in any browser, offline: docs/viewer.md.\n");
                 return ExitCodes.Success;
             }
 
-            if (a == "--html")
+            if (word.Option == HtmlOption)
             {
-                if (html is not null || i + 1 >= arguments.Length)
+                if (html is not null || word.Value is null)
                 {
                     throw UsageError(html is null ? "--html needs a value" : "--html given twice");
                 }
 
-                html = arguments[++i];
+                html = word.Value;
             }
-            else if (a == "--force")
+            else if (word.Option == ForceOption)
             {
                 force = !force ? true : throw UsageError("--force given twice");
             }
             else if (a.StartsWith("--", StringComparison.Ordinal) && a != "-")
             {
-                throw CliUsageException.UnknownOption("view", a, CliApp.ProgramName + " " + Usage);
+                throw CliUsageException.UnknownOption("view", a, Syntax, CliApp.ProgramName + " " + Usage);
             }
             else if (trace is null)
             {

@@ -1,6 +1,10 @@
 using System;
+using System.Collections.Generic;
+using System.CommandLine;
 using System.IO;
+using System.Linq;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using Xunit;
 
@@ -9,7 +13,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect; --help for details)";
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, completion; --help for details)";
     private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
 
     [Theory]
@@ -179,9 +183,13 @@ public sealed class CliAppTests
 
         public string Summary => "A test double.";
 
-        public int Run(ReadOnlySpan<string> arguments, CliConsole console)
+        public Command Syntax => _syntax ??= CliSyntax.Command(NameValue, "A test double.", CliSyntax.Positional("ARG", "anything"));
+
+        private Command? _syntax;
+
+        public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
         {
-            Received = arguments.ToArray();
+            Received = [.. words.Select(w => w.Text)];
             if (Failure is not null)
             {
                 throw Failure;

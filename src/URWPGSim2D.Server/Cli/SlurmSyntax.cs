@@ -1,0 +1,26 @@
+using System.CommandLine;
+using URWPGSim2D.Server.Cli.Syntax;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// The declared options of a Slurm job array, the same for <c>run --batch</c> and
+/// <c>tournament</c> (docs/batch.md, "On a Slurm cluster"): <c>--slurm</c>, <c>--shards</c>,
+/// <c>--partition</c>, <c>--time</c>, <c>--sbatch-arg</c>, <c>--slurm-setup</c>, <c>--submit</c>.
+/// </summary>
+internal static class SlurmSyntax
+{
+    /// <summary>The options' declarations, new for each command that takes them, in usage order.</summary>
+    /// <param name="folder">The name of <c>--slurm</c>'s folder in the command's usage, e.g. <c>DIR</c>.</param>
+    /// <param name="what">What the jobs play, e.g. <c>the batch</c>.</param>
+    public static Option[] Declare(string folder, string what) =>
+    [
+        CliSyntax.Value("--slurm", folder, $"write a Slurm job array for {what}", CliCompletions.Folders),
+        CliSyntax.Value("--shards", "K", "array tasks of the Slurm jobs"),
+        CliSyntax.Value("--partition", "P", "the Slurm partition"),
+        CliSyntax.Value("--time", "T", "the Slurm time limit"),
+        CliSyntax.Repeated("--sbatch-arg", "ARG", "one more sbatch option"),
+        CliSyntax.Value("--slurm-setup", "FILE", "a bash file the jobs source first", CliCompletions.Paths),
+        CliSyntax.Flag("--submit", "submit the written Slurm jobs"),
+    ];
+}
