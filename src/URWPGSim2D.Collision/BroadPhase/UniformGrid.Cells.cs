@@ -72,10 +72,11 @@ internal sealed partial class UniformGrid
         _originY = lo.Y;
         _inverse = 1.0 / CellSize;
         _fit = CellSize * FitFraction;
-        int cells = _columns * _rows;
-        if (_cellStart.Length < cells + 1)
+        // Room for the most cells this many proxies can have (the budget, never less than the cells),
+        // so that bodies spreading out later (a larger layout, as many proxies) grow nothing.
+        if (_cellStart.Length < budget + 1)
         {
-            int size = Math.Max(cells + 1, _cellStart.Length * 2);
+            int size = (int)Math.Max(budget + 1, _cellStart.Length * 2L);
             _cellStart = new int[size];
             _movedHead = new int[size];
             _movedHeadsDirty = size;
