@@ -61,29 +61,11 @@ internal readonly struct DubinsPath
     public float Turning => ((Turn1 != 0 ? Length1 : 0f) + (Turn2 != 0 ? Length2 : 0f) + (Turn3 != 0 ? Length3 : 0f)) / Radius;
 
     /// <summary>The pose at distance <paramref name="s"/> along the path (clamped to its ends).</summary>
-    public (Vector2 Position, float Heading) At(float s)
-    {
-        Vector2 p = Start;
-        float h = Heading;
-        s = Math.Clamp(s, 0f, Length);
-        Advance(ref p, ref h, Turn1, MathF.Min(s, Length1));
-        s -= Length1;
-        if (s > 0f)
-        {
-            Advance(ref p, ref h, Turn2, MathF.Min(s, Length2));
-            s -= Length2;
-            if (s > 0f)
-            {
-                Advance(ref p, ref h, Turn3, MathF.Min(s, Length3));
-            }
-        }
-
-        return (p, h);
-    }
+    public (Vector2 Position, float Heading) At(float s) => At(s, Walk());
 
     /// <summary>
     /// Where each piece begins, with what a step along it needs (its direction when straight, its
-    /// turning centre when turning): what <see cref="At(float)"/> works out again for every point.
+    /// turning centre when turning), for asking many poses of one path.
     /// </summary>
     public Pieces Walk()
     {
@@ -94,8 +76,8 @@ internal readonly struct DubinsPath
     }
 
     /// <summary>
-    /// The pose at distance <paramref name="s"/> along the path, the same as <see cref="At(float)"/>
-    /// to the bit, stepping from the start of its piece (<paramref name="pieces"/>, from <see cref="Walk"/>).
+    /// The pose at distance <paramref name="s"/> along the path (clamped to its ends), stepping from
+    /// the start of its piece (<paramref name="pieces"/>, from <see cref="Walk"/>).
     /// </summary>
     public (Vector2 Position, float Heading) At(float s, in Pieces pieces)
     {
@@ -222,14 +204,6 @@ internal readonly struct DubinsPath
         float a2 = TangentHeading((c3 + c2) * 0.5f, c2, t);
         path = new DubinsPath(p0, h0, r, t, Sweep(h0, a1, t) * r, -t, Sweep(a1, a2, -t) * r, t, Sweep(a2, h1, t) * r);
         return true;
-    }
-
-    private void Advance(ref Vector2 p, ref float h, int turn, float length)
-    {
-        if (length > 0f)
-        {
-            (p, h) = Piece.From(p, h, turn, Radius).Along(turn, length, Radius);
-        }
     }
 
     /// <summary>The three pieces of a path, each from its start (<see cref="Walk"/>).</summary>
