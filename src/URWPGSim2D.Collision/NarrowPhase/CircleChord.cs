@@ -64,9 +64,12 @@ internal static class CircleChord
         return lo <= hi ? 0.5f * (lo + hi) : Math.Clamp(exit, -r, r);
     }
 
-    /// <summary>A greatest −s/d with its zero's sign made positive, so the order of a reduction cannot show.</summary>
+    /// <summary>
+    /// A greatest −s/d with its zero's sign made positive, so the order of a reduction cannot
+    /// show: adding +0 keeps every other value and turns −0 into +0, without a branch.
+    /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
-    public static float Unsigned(float lo) => lo != 0f ? lo : 0f;
+    public static float Unsigned(float lo) => lo + 0f;
 
     // s = n·(c − v) with the lanes' operations: the two products, then their sum.
     [MethodImpl(MethodImplOptions.AggressiveInlining)]

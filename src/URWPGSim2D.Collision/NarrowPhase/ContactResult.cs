@@ -38,6 +38,32 @@ internal static class ContactResult
         return Unsafe.BitCast<Fields, CollisionDetectionResult>(fields);
     }
 
+    /// <summary>
+    /// <see cref="Plane"/> for a normal and a point already laid out as the world's x, 0, z, 0
+    /// (the two zero lanes +0): no shuffle to spread them, three instructions fewer.
+    /// </summary>
+    /// <param name="normal">The unit normal: x, +0, z, +0.</param>
+    /// <param name="depth">The depth along the normal.</param>
+    /// <param name="point">The action point: x, +0, z, +0.</param>
+    /// <returns>The intersecting result.</returns>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    public static CollisionDetectionResult World(Vector128<float> normal, float depth, Vector128<float> point)
+    {
+        if (!Direct || !Sse41.IsSupported)
+        {
+            return CollisionDetectionResult.FromPlane(new Vector2(normal.ToScalar(), normal.GetElement(2)), depth, new Vector2(point.ToScalar(), point.GetElement(2)));
+        }
+
+        // mtv.x ? mtv.z ? moved up a lane, then true and 0 blended into lanes 0 and 2 (a product
+        // 0·depth can be −0: the blend, unlike an or, does not keep its sign).
+        var mtv = Sse2.ShiftLeftLogical128BitLane((normal * depth).AsByte(), 4).AsSingle();              // 0 mtv.x ? mtv.z
+        Fields fields;
+        fields.A = Sse41.Blend(mtv, Vector128.Create(1, 0, 0, 0).AsSingle(), 0b0101);                     // true mtv.x 0 mtv.z
+        fields.B = Sse41.Insert(normal, point, 0b00_11_0000);                                             // n.x 0 n.z point.x
+        fields.C = Sse2.ShiftRightLogical128BitLane(point.AsByte(), 4).AsDouble().ToScalar();            // 0 point.z
+        return Unsafe.BitCast<Fields, CollisionDetectionResult>(fields);
+    }
+
     // The result's bytes: (intersect, mtv.x, 0, mtv.z), (normal.x, 0, normal.z, point.x), (0, point.z).
     [StructLayout(LayoutKind.Explicit, Size = 40)]
     private struct Fields

@@ -1,4 +1,6 @@
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.Shapes;
@@ -8,6 +10,7 @@ namespace URWPGSim2D.Collision.Shapes;
 /// (the URWPGSim2D paper calls it a "sphere"). Also serves as the outer bounding circle of
 /// every other shape.
 /// </summary>
+[StructLayout(LayoutKind.Sequential)] // Center's x and z, then Radius: three floats in a row (see Floats)
 public readonly struct Circle
 {
     /// <summary>Creates a circle, validating its numbers.</summary>
@@ -51,6 +54,14 @@ public readonly struct Circle
     /// <param name="offset">Translation in mm.</param>
     /// <returns>The translated circle.</returns>
     public Circle Translated(Vector2 offset) => new(Center + offset, Radius, true);
+
+    /// <summary>
+    /// The circle's three floats in place: the centre's x, its z, then the radius (the struct's
+    /// sequential layout), so that a vector kernel broadcasts each straight from memory.
+    /// </summary>
+    /// <param name="circle">The circle, read in place.</param>
+    /// <returns>A reference to the centre's x; the z and the radius follow it.</returns>
+    internal static ref float Floats(in Circle circle) => ref Unsafe.As<Circle, float>(ref Unsafe.AsRef(in circle));
 
     /// <summary>A bounding circle built by the library; a radius of 0 (a point) is allowed here.</summary>
     internal static Circle Bounding(Vector2 center, float radius) => new(center, radius, true);
