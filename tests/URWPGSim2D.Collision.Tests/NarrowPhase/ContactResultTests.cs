@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.NarrowPhase;
 using Xunit;
 
@@ -26,6 +27,28 @@ public sealed class ContactResultTests
             Assert.Equal(Bits(expected.NormalAxis), Bits(actual.NormalAxis));
             Assert.Equal(Bits(expected.ActionPoint), Bits(actual.ActionPoint));
             Assert.Equal(expected, actual);
+        }
+    }
+
+    [Fact]
+    public void WritesTheSameResultFromWorldLaidOutVectorsBitForBit()
+    {
+        // The normal and the point as x, +0, z, +0; any depth, negative ones included (whose
+        // product with the normal's zero lanes is −0: the MTV's y must still be +0).
+        var rng = new Random(95);
+        float[] specials = [0f, -0f, 1f, -1f, 25000f, -25000f, 1e-30f];
+        for (int trial = 0; trial < 5000; trial++)
+        {
+            float Pick() => rng.Next(4) == 0 ? specials[rng.Next(specials.Length)] : (float)((rng.NextDouble() - 0.5) * 50000);
+            var normal = new Vector2(Pick(), Pick());
+            float depth = Pick();
+            var point = new Vector2(Pick(), Pick());
+            var expected = CollisionDetectionResult.FromPlane(normal, depth, point);
+            var actual = ContactResult.World(Vector128.Create(normal.X, 0f, normal.Y, 0f), depth, Vector128.Create(point.X, 0f, point.Y, 0f));
+            Assert.True(actual.Intersect);
+            Assert.Equal(Bits(expected.MinimumTranslationVector), Bits(actual.MinimumTranslationVector));
+            Assert.Equal(Bits(expected.NormalAxis), Bits(actual.NormalAxis));
+            Assert.Equal(Bits(expected.ActionPoint), Bits(actual.ActionPoint));
         }
     }
 

@@ -235,31 +235,12 @@ public sealed class PairKernelPathTests
         }
     }
 
-    private static void AssertSame(in CollisionDetectionResult expected, in CollisionDetectionResult actual)
-    {
-        Assert.Equal(expected.Intersect, actual.Intersect);
-        AssertSame(expected.MinimumTranslationVector, actual.MinimumTranslationVector, "MTV");
-        AssertSame(expected.NormalAxis, actual.NormalAxis, "normal");
-        AssertSame(expected.ActionPoint, actual.ActionPoint, "action point");
-    }
+    private static void AssertSame(in CollisionDetectionResult expected, in CollisionDetectionResult actual) => BitExact.AssertSame(expected, actual);
 
     private static void AssertSame(in ContactDepth expected, in ContactDepth actual)
     {
-        AssertSame(new Vector3(expected.Normal, expected.Depth), new Vector3(actual.Normal, actual.Depth), "normal and depth");
+        BitExact.AssertSame(new Vector3(expected.Normal, expected.Depth), new Vector3(actual.Normal, actual.Depth), "normal and depth");
         Assert.Equal((expected.FaceA, expected.FaceB), (actual.FaceA, actual.FaceB));
-        AssertSame(new Vector3(expected.SeparationA, expected.SeparationB, 0f), new Vector3(actual.SeparationA, actual.SeparationB, 0f), "separations");
+        BitExact.AssertSame(new Vector3(expected.SeparationA, expected.SeparationB, 0f), new Vector3(actual.SeparationA, actual.SeparationB, 0f), "separations");
     }
-
-    private static void AssertSame(Vector3 expected, Vector3 actual, string what)
-    {
-        if (Bits(expected) != Bits(actual))
-        {
-            throw new XunitException($"{what}: expected {Hex(expected)}, got {Hex(actual)}");
-        }
-    }
-
-    private static (int, int, int) Bits(Vector3 v) =>
-        (BitConverter.SingleToInt32Bits(v.X), BitConverter.SingleToInt32Bits(v.Y), BitConverter.SingleToInt32Bits(v.Z));
-
-    private static string Hex(Vector3 v) => $"{v} [{Bits(v).Item1:X8} {Bits(v).Item2:X8} {Bits(v).Item3:X8}]";
 }

@@ -29,6 +29,17 @@ public sealed class CircleTests
         ArgumentAssert.Throws("radius", () => _ = new Circle(Vector2.Zero, radius), "finite", shown);
 
     [Fact]
+    public void ItsFloatsLieCentreThenRadius()
+    {
+        // The vector kernels broadcast the centre and the radius straight from the circle.
+        var c = new Circle(new(-24999.5f, 3.25f), 0.001f);
+        ref float f = ref Circle.Floats(c);
+        Assert.Equal(c.Center.X, f);
+        Assert.Equal(c.Center.Y, System.Runtime.CompilerServices.Unsafe.Add(ref f, 1));
+        Assert.Equal(c.Radius, System.Runtime.CompilerServices.Unsafe.Add(ref f, 2));
+    }
+
+    [Fact]
     public void ValidCircleKeepsItsNumbers()
     {
         var c = new Circle(new(-24999.5f, 3), 0.001f);
