@@ -208,8 +208,7 @@ internal struct Approach
                 continue;
             }
 
-            var (p, h) = path.At(s, pieces);
-            Vector2 ahead = new(MathF.Cos(h), MathF.Sin(h));
+            var (p, ahead) = path.Facing(s, pieces);
             Vector2 tip = p + (ahead * reach);
             float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
             if (avoidRadius > 0f)

@@ -94,6 +94,25 @@ internal readonly struct DubinsPath
     }
 
     /// <summary>
+    /// The position at distance <paramref name="s"/> along the path and the unit vector of its
+    /// heading there: <see cref="At(float, in Pieces)"/> with the heading's cosine and sine, which a
+    /// straight piece already holds (its <see cref="Piece.Lever"/>, the same bits).
+    /// </summary>
+    public (Vector2 Position, Vector2 Ahead) Facing(float s, in Pieces pieces)
+    {
+        s = Math.Clamp(s, 0f, Length);
+        float rest = s - Length1;
+        int turn = rest <= 0f ? Turn1 : rest - Length2 <= 0f ? Turn2 : Turn3;
+        var (position, heading) = At(s, pieces);
+        if (turn == 0)
+        {
+            return (position, (rest <= 0f ? pieces.First : rest - Length2 <= 0f ? pieces.Second : pieces.Third).Lever);
+        }
+
+        return (position, new Vector2(MathF.Cos(heading), MathF.Sin(heading)));
+    }
+
+    /// <summary>
     /// Fills <paramref name="paths"/> (room for 8) with the candidate paths from (<paramref name="from"/>,
     /// <paramref name="fromHeading"/>) to (<paramref name="to"/>, <paramref name="toHeading"/>) at turning
     /// radius <paramref name="radius"/>; returns how many exist.
