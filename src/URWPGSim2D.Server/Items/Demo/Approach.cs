@@ -40,6 +40,9 @@ internal struct Approach
 
     // Distance from the body centre to the tail's end (without the caudal fin's tips), mm.
     private const float TailReach = 250f;
+
+    // First-piece samples remembered per gear and turn direction (see Clear).
+    private const int Remembered = 8;
     private static readonly int[] Gears = [1, 2, 3, 4, 6, 9];
 
     // The last choice: lead, gear and word of the path.
@@ -74,6 +77,8 @@ internal struct Approach
         Span<int> order = stackalloc int[8 * leads * 6];
         Span<float> costs = stackalloc float[8 * leads * 6];
         Span<int> keys = stackalloc int[8 * leads * 6];
+        Span<float> firstPiece = stackalloc float[Gears.Length * 2 * Remembered];
+        firstPiece.Fill(float.NaN);
         float reach = (view.BodyLength * 0.5f) + view.HeadLength;
         float arriveSpeed = MathF.Max(SpeedTable.TargetSpeed(arriveVCode), 10f);
         Vector2 back = -new Vector2(MathF.Cos(goalHeading), MathF.Sin(goalHeading));
@@ -125,7 +130,9 @@ internal struct Approach
             (order[k], order[cheapest]) = (order[cheapest], order[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
-            float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear));
+            int gearIndex = (keys[k] / 32) % Gears.Length;
+            var margins = firstPiece.Slice(gearIndex * 2 * Remembered, 2 * Remembered);
+            float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear), margins);
             if (clear >= 0f)
             {
                 chosen = k;
@@ -194,30 +201,44 @@ internal struct Approach
     // centre moves 1 mm and a point an arm away up to 1 + arm ÷ radius mm, and a clearance changes at
     // most ObstacleField.MaxSlope mm per mm moved (a distance 1 mm). A path that is not clear gets its
     // exact margin unless that falls below giveUp: the path cannot be chosen then, and the scan stops.
-    private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp)
+    // Every candidate of one gear starts at the fish with the same radius, so those whose first turn
+    // goes the same way share their first piece: its samples' margins (80, 120, ... mm along) are
+    // kept in firstPiece (NaN: not yet measured; the turn's two directions one after the other) and
+    // measured once a plan.
+    private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp, Span<float> firstPiece)
     {
         float fall = ObstacleField.MaxSlope * (1f + (MathF.Max(reach, TailReach) / path.Radius));
         float worst = float.PositiveInfinity;
         float length = path.Length;
         float skipTo = float.NegativeInfinity;
-        var pieces = path.Walk();
-        for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
+        // The later pieces are worked out only when a sample reaches them (most scans stop early).
+        var pieces = path.WalkFirst();
+        bool walked = false;
+        var remembered = firstPiece.Slice(path.Turn1 > 0 ? Remembered : 0, Remembered);
+        int k = 0;
+        for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample, k++)
         {
             if (s <= skipTo)
             {
                 continue;
             }
 
-            var (p, ahead) = path.Facing(s, pieces);
-            Vector2 tip = p + (ahead * reach);
-            float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
-            if (avoidRadius > 0f)
+            // The first piece's k-th sample when the samples start at 80 mm.
+            bool shared = k < Remembered && length >= 80f && s - path.Length1 <= 0f;
+            float margin = shared ? remembered[k] : float.NaN;
+            if (float.IsNaN(margin))
             {
-                Vector2 tail = p - (ahead * TailReach);
-                margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
-                margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
-                margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
-                margin = MathF.Min(margin, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+                if (!walked && s - path.Length1 > 0f)
+                {
+                    pieces = path.Walk();
+                    walked = true;
+                }
+
+                margin = Margin(path, pieces, s, around, avoid, avoidRadius, reach);
+                if (shared)
+                {
+                    remembered[k] = margin;
+                }
             }
 
             worst = MathF.Min(worst, margin);
@@ -233,6 +254,24 @@ internal struct Approach
         }
 
         return worst;
+    }
+
+    // The smallest margin of the fish's pose s mm along the path (see Clear).
+    private static float Margin(in DubinsPath path, in DubinsPath.Pieces pieces, float s, in Surroundings around, Vector2 avoid, float avoidRadius, float reach)
+    {
+        var (p, ahead) = path.Facing(s, pieces);
+        Vector2 tip = p + (ahead * reach);
+        float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
+        if (avoidRadius > 0f)
+        {
+            Vector2 tail = p - (ahead * TailReach);
+            margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
+            margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
+            margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
+            margin = MathF.Min(margin, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+        }
+
+        return margin;
     }
 
     // The time a path takes: turns at the plan's rate, straight pieces at the straight gear when they

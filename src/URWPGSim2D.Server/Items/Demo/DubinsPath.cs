@@ -76,6 +76,12 @@ internal readonly struct DubinsPath
     }
 
     /// <summary>
+    /// <see cref="Walk"/>'s first piece alone (the other two default): enough for the poses up to
+    /// <see cref="Length1"/> along the path.
+    /// </summary>
+    public Pieces WalkFirst() => new(Piece.From(Start, Heading, Turn1, Radius), default, default);
+
+    /// <summary>
     /// The pose at distance <paramref name="s"/> along the path (clamped to its ends), stepping from
     /// the start of its piece (<paramref name="pieces"/>, from <see cref="Walk"/>).
     /// </summary>

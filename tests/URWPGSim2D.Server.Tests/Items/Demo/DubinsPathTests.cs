@@ -82,6 +82,7 @@ public sealed class DubinsPathTests
             foreach (var path in paths[..n])
             {
                 var pieces = path.Walk();
+                Assert.Equal(pieces.First, path.WalkFirst().First);
                 for (float s = -10f; s <= path.Length + 10f; s += 7.3f)
                 {
                     var (p, h) = path.At(s, pieces);
