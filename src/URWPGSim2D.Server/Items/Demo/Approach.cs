@@ -1,6 +1,8 @@
 using System;
 using URWPGSim2D.Collision.Motion;
 using System.Numerics;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
@@ -118,15 +120,7 @@ internal struct Approach
         float fallbackClear = float.NegativeInfinity;
         for (int k = 0; k < Math.Min(count, MaxChecked) && chosen < 0; k++)
         {
-            int cheapest = k;
-            for (int j = k + 1; j < count; j++)
-            {
-                if (costs[j] < costs[cheapest])
-                {
-                    cheapest = j;
-                }
-            }
-
+            int cheapest = k + FirstOfLeast(costs[k..count]);
             (order[k], order[cheapest]) = (order[cheapest], order[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
@@ -254,6 +248,57 @@ internal struct Approach
         }
 
         return worst;
+    }
+
+    /// <summary>
+    /// The index of the first of the smallest of <paramref name="values"/> (not NaN, at least one):
+    /// what a scan keeping the first strictly smaller value finds, the least found eight at a time.
+    /// </summary>
+    internal static int FirstOfLeast(ReadOnlySpan<float> values)
+    {
+        int width = Vector256<float>.Count;
+        if (!Vector256.IsHardwareAccelerated || values.Length < 2 * width)
+        {
+            int first = 0;
+            for (int j = 1; j < values.Length; j++)
+            {
+                first = values[j] < values[first] ? j : first;
+            }
+
+            return first;
+        }
+
+        // The least, eight lanes at a time (the last load overlaps the one before it).
+        ref float start = ref MemoryMarshal.GetReference(values);
+        nuint last = (nuint)(values.Length - width);
+        var lanes = Vector256.LoadUnsafe(ref start);
+        for (nuint i = (nuint)width; i < last; i += (nuint)width)
+        {
+            lanes = Vector256.Min(lanes, Vector256.LoadUnsafe(ref start, i));
+        }
+
+        lanes = Vector256.Min(lanes, Vector256.LoadUnsafe(ref start, last));
+        float least = lanes[0];
+        for (int lane = 1; lane < width; lane++)
+        {
+            least = lanes[lane] < least ? lanes[lane] : least;
+        }
+
+        // Then the first lane equal to it (−0 equals +0, as for the scan).
+        var wanted = Vector256.Create(least);
+        for (nuint i = 0; ; i = i + (nuint)width > last ? last : i + (nuint)width)
+        {
+            uint hits = Vector256.Equals(Vector256.LoadUnsafe(ref start, i), wanted).ExtractMostSignificantBits();
+            if (hits != 0)
+            {
+                return (int)i + BitOperations.TrailingZeroCount(hits);
+            }
+
+            if (i == last)
+            {
+                return 0; // only for a NaN, which a cost never is
+            }
+        }
     }
 
     // The smallest margin of the fish's pose s mm along the path (see Clear).
