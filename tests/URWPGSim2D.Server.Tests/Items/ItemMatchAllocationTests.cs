@@ -1,6 +1,4 @@
 using System;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
@@ -24,20 +22,8 @@ public sealed class ItemMatchAllocationTests
     private const int First = 300, End = 1000;
     private const ulong Seed = 1;
 
-    /// <summary>Every item's slug.</summary>
-    public static TheoryData<string> Items()
-    {
-        var data = new TheoryData<string>();
-        foreach (var item in ItemRegistry.All)
-        {
-            data.Add(item.Slug);
-        }
-
-        return data;
-    }
-
     [Theory]
-    [MemberData(nameof(Items))]
+    [MemberData(nameof(ItemMatches.Slugs), MemberType = typeof(ItemMatches))]
     public void AnItemsDemoMatchAllocatesNothingAfterWarmUp(string slug)
     {
         var match = ItemMatches.Item(slug, Seed);
