@@ -18,9 +18,8 @@ internal sealed class Separation(World world)
     private const int MaxSearchSteps = 24;
     private readonly FishContact[] _contacts = new FishContact[8 * 8]; // every leaf pair of two fish
 
-    // Two fish's leaves laid out at their poses now, for the summed direction (the motion world
-    // keeps its own models where its stepping needs them; these are scratch, rebuilt per use).
-    private readonly FishModel?[] _posed = new FishModel?[2];
+    // Two fish's leaves laid out at their poses now, for the summed direction.
+    private readonly ScratchFishModels _posed = new(world.Fish);
 
     /// <summary>Moves A and B of <paramref name="pair"/> apart; the first move is the contact's own MTV.</summary>
     public void Apply(in CandidatePair pair, in Contact hit, float shareA, float shareB)
@@ -52,9 +51,9 @@ internal sealed class Separation(World world)
     {
         int n = pair.Kind switch
         {
-            PairKind.FishFish => FishCollision.DetectAll(Posed(0, world.Fish[pair.A]), Posed(1, world.Fish[pair.B]), _contacts),
-            PairKind.FishBall => FishCollision.DetectAll(Posed(0, world.Fish[pair.A]), world.Balls[pair.B].Shape, _contacts),
-            PairKind.FishStatic => FishStatic(Posed(0, world.Fish[pair.A]), world.Statics[pair.B]),
+            PairKind.FishFish => FishCollision.DetectAll(_posed.Posed(0, pair.A), _posed.Posed(1, pair.B), _contacts),
+            PairKind.FishBall => FishCollision.DetectAll(_posed.Posed(0, pair.A), world.Balls[pair.B].Shape, _contacts),
+            PairKind.FishStatic => FishStatic(_posed.Posed(0, pair.A), world.Statics[pair.B]),
             _ => 0,
         };
         Vector2 sum = Vector2.Zero;
@@ -64,20 +63,6 @@ internal sealed class Separation(World world)
         }
 
         return sum.LengthSquared() > 1e-12f ? Vector2.Normalize(sum) : fallback;
-    }
-
-    // Scratch model `slot` at the fish's pose and joints now (a new one only for a fish of another size).
-    private FishModel Posed(int slot, FishState fish)
-    {
-        FishPose pose = fish.Pose;
-        FishModel? model = _posed[slot];
-        if (model is null || model.Size != fish.Size)
-        {
-            return _posed[slot] = new FishModel(fish.Size, pose);
-        }
-
-        model.SetPose(pose);
-        return model;
     }
 
     private int FishStatic(FishModel fish, StaticBody body)

@@ -7,6 +7,7 @@ using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
+using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Tests.OldStrategies;
 using Xunit;
@@ -51,19 +52,8 @@ public sealed class OldDllTests : IDisposable
         Assert.Equal(fromSource.World.Fish[0].Position, fromDll.World.Fish[0].Position);
     }
 
-    public static TheoryData<string> ItemSlugs()
-    {
-        var data = new TheoryData<string>();
-        foreach (var item in ItemRegistry.All)
-        {
-            data.Add(item.Slug);
-        }
-
-        return data;
-    }
-
     [Theory]
-    [MemberData(nameof(ItemSlugs))]
+    [MemberData(nameof(ItemMatches.Slugs), MemberType = typeof(ItemMatches))]
     public void AnOldDllPlaysEveryItemForEveryTeamWithoutAFault(string item)
     {
         string dll = Write("OldDribbler.dll", Dribbler.Value);

@@ -1,6 +1,7 @@
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
+using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 
@@ -20,6 +21,18 @@ internal static class ItemMatches
     {
         var item = ItemRegistry.Find(slug)!;
         return MatchBuilder.Build(item.CreateScenario(seed), seed: seed, cycles: cycles);
+    }
+
+    /// <summary>Every item's slug, in listing order (theory data).</summary>
+    public static TheoryData<string> Slugs()
+    {
+        var data = new TheoryData<string>();
+        foreach (var item in ItemRegistry.All)
+        {
+            data.Add(item.Slug);
+        }
+
+        return data;
     }
 
     /// <summary>Plays until the item ends or <paramref name="cycles"/> cycles are played.</summary>

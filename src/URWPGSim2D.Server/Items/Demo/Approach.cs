@@ -1,6 +1,8 @@
 using System;
 using URWPGSim2D.Collision.Motion;
 using System.Numerics;
+using System.Runtime.InteropServices;
+using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;
 using URWPGSim2D.Server.Simulation.Kinematics;
 
@@ -40,6 +42,9 @@ internal struct Approach
 
     // Distance from the body centre to the tail's end (without the caudal fin's tips), mm.
     private const float TailReach = 250f;
+
+    // First-piece samples remembered per gear and turn direction (see Clear).
+    private const int Remembered = 8;
     private static readonly int[] Gears = [1, 2, 3, 4, 6, 9];
 
     // The last choice: lead, gear and word of the path.
@@ -74,6 +79,8 @@ internal struct Approach
         Span<int> order = stackalloc int[8 * leads * 6];
         Span<float> costs = stackalloc float[8 * leads * 6];
         Span<int> keys = stackalloc int[8 * leads * 6];
+        Span<float> firstPiece = stackalloc float[Gears.Length * 2 * Remembered];
+        firstPiece.Fill(float.NaN);
         float reach = (view.BodyLength * 0.5f) + view.HeadLength;
         float arriveSpeed = MathF.Max(SpeedTable.TargetSpeed(arriveVCode), 10f);
         Vector2 back = -new Vector2(MathF.Cos(goalHeading), MathF.Sin(goalHeading));
@@ -113,19 +120,13 @@ internal struct Approach
         float fallbackClear = float.NegativeInfinity;
         for (int k = 0; k < Math.Min(count, MaxChecked) && chosen < 0; k++)
         {
-            int cheapest = k;
-            for (int j = k + 1; j < count; j++)
-            {
-                if (costs[j] < costs[cheapest])
-                {
-                    cheapest = j;
-                }
-            }
-
+            int cheapest = k + FirstOfLeast(costs[k..count]);
             (order[k], order[cheapest]) = (order[cheapest], order[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
-            float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear));
+            int gearIndex = (keys[k] / 32) % Gears.Length;
+            var margins = firstPiece.Slice(gearIndex * 2 * Remembered, 2 * Remembered);
+            float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear), margins);
             if (clear >= 0f)
             {
                 chosen = k;
@@ -194,31 +195,44 @@ internal struct Approach
     // centre moves 1 mm and a point an arm away up to 1 + arm ÷ radius mm, and a clearance changes at
     // most ObstacleField.MaxSlope mm per mm moved (a distance 1 mm). A path that is not clear gets its
     // exact margin unless that falls below giveUp: the path cannot be chosen then, and the scan stops.
-    private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp)
+    // Every candidate of one gear starts at the fish with the same radius, so those whose first turn
+    // goes the same way share their first piece: its samples' margins (80, 120, ... mm along) are
+    // kept in firstPiece (NaN: not yet measured; the turn's two directions one after the other) and
+    // measured once a plan.
+    private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp, Span<float> firstPiece)
     {
         float fall = ObstacleField.MaxSlope * (1f + (MathF.Max(reach, TailReach) / path.Radius));
         float worst = float.PositiveInfinity;
         float length = path.Length;
         float skipTo = float.NegativeInfinity;
-        var pieces = path.Walk();
-        for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample)
+        // The later pieces are worked out only when a sample reaches them (most scans stop early).
+        var pieces = path.WalkFirst();
+        bool walked = false;
+        var remembered = firstPiece.Slice(path.Turn1 > 0 ? Remembered : 0, Remembered);
+        int k = 0;
+        for (float s = MathF.Min(80f, length); s <= length + 0.01f; s += Sample, k++)
         {
             if (s <= skipTo)
             {
                 continue;
             }
 
-            var (p, h) = path.At(s, pieces);
-            Vector2 ahead = new(MathF.Cos(h), MathF.Sin(h));
-            Vector2 tip = p + (ahead * reach);
-            float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
-            if (avoidRadius > 0f)
+            // The first piece's k-th sample when the samples start at 80 mm.
+            bool shared = k < Remembered && length >= 80f && s - path.Length1 <= 0f;
+            float margin = shared ? remembered[k] : float.NaN;
+            if (float.IsNaN(margin))
             {
-                Vector2 tail = p - (ahead * TailReach);
-                margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
-                margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
-                margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
-                margin = MathF.Min(margin, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+                if (!walked && s - path.Length1 > 0f)
+                {
+                    pieces = path.Walk();
+                    walked = true;
+                }
+
+                margin = Margin(path, pieces, s, around, avoid, avoidRadius, reach);
+                if (shared)
+                {
+                    remembered[k] = margin;
+                }
             }
 
             worst = MathF.Min(worst, margin);
@@ -234,6 +248,75 @@ internal struct Approach
         }
 
         return worst;
+    }
+
+    /// <summary>
+    /// The index of the first of the smallest of <paramref name="values"/> (not NaN, at least one):
+    /// what a scan keeping the first strictly smaller value finds, the least found eight at a time.
+    /// </summary>
+    internal static int FirstOfLeast(ReadOnlySpan<float> values)
+    {
+        int width = Vector256<float>.Count;
+        if (!Vector256.IsHardwareAccelerated || values.Length < 2 * width)
+        {
+            int first = 0;
+            for (int j = 1; j < values.Length; j++)
+            {
+                first = values[j] < values[first] ? j : first;
+            }
+
+            return first;
+        }
+
+        // The least, eight lanes at a time (the last load overlaps the one before it).
+        ref float start = ref MemoryMarshal.GetReference(values);
+        nuint last = (nuint)(values.Length - width);
+        var lanes = Vector256.LoadUnsafe(ref start);
+        for (nuint i = (nuint)width; i < last; i += (nuint)width)
+        {
+            lanes = Vector256.Min(lanes, Vector256.LoadUnsafe(ref start, i));
+        }
+
+        lanes = Vector256.Min(lanes, Vector256.LoadUnsafe(ref start, last));
+        float least = lanes[0];
+        for (int lane = 1; lane < width; lane++)
+        {
+            least = lanes[lane] < least ? lanes[lane] : least;
+        }
+
+        // Then the first lane equal to it (−0 equals +0, as for the scan).
+        var wanted = Vector256.Create(least);
+        for (nuint i = 0; ; i = i + (nuint)width > last ? last : i + (nuint)width)
+        {
+            uint hits = Vector256.Equals(Vector256.LoadUnsafe(ref start, i), wanted).ExtractMostSignificantBits();
+            if (hits != 0)
+            {
+                return (int)i + BitOperations.TrailingZeroCount(hits);
+            }
+
+            if (i == last)
+            {
+                return 0; // only for a NaN, which a cost never is
+            }
+        }
+    }
+
+    // The smallest margin of the fish's pose s mm along the path (see Clear).
+    private static float Margin(in DubinsPath path, in DubinsPath.Pieces pieces, float s, in Surroundings around, Vector2 avoid, float avoidRadius, float reach)
+    {
+        var (p, ahead) = path.Facing(s, pieces);
+        Vector2 tip = p + (ahead * reach);
+        float margin = MathF.Min(around.Clearance(p) - WallMargin, around.Clearance(tip) - 25f);
+        if (avoidRadius > 0f)
+        {
+            Vector2 tail = p - (ahead * TailReach);
+            margin = MathF.Min(margin, Vector2.Distance(p, avoid) - avoidRadius - 100f);
+            margin = MathF.Min(margin, Vector2.Distance(tip, avoid) - avoidRadius - 20f);
+            margin = MathF.Min(margin, Vector2.Distance((p + tail) * 0.5f, avoid) - avoidRadius - 60f);
+            margin = MathF.Min(margin, Vector2.Distance(tail, avoid) - avoidRadius - 60f);
+        }
+
+        return margin;
     }
 
     // The time a path takes: turns at the plan's rate, straight pieces at the straight gear when they

@@ -76,6 +76,12 @@ internal readonly struct DubinsPath
     }
 
     /// <summary>
+    /// <see cref="Walk"/>'s first piece alone (the other two default): enough for the poses up to
+    /// <see cref="Length1"/> along the path.
+    /// </summary>
+    public Pieces WalkFirst() => new(Piece.From(Start, Heading, Turn1, Radius), default, default);
+
+    /// <summary>
     /// The pose at distance <paramref name="s"/> along the path (clamped to its ends), stepping from
     /// the start of its piece (<paramref name="pieces"/>, from <see cref="Walk"/>).
     /// </summary>
@@ -91,6 +97,25 @@ internal readonly struct DubinsPath
         return rest - Length2 <= 0f
             ? pieces.Second.Along(Turn2, MathF.Min(rest, Length2), Radius)
             : pieces.Third.Along(Turn3, MathF.Min(rest - Length2, Length3), Radius);
+    }
+
+    /// <summary>
+    /// The position at distance <paramref name="s"/> along the path and the unit vector of its
+    /// heading there: <see cref="At(float, in Pieces)"/> with the heading's cosine and sine, which a
+    /// straight piece already holds (its <see cref="Piece.Lever"/>, the same bits).
+    /// </summary>
+    public (Vector2 Position, Vector2 Ahead) Facing(float s, in Pieces pieces)
+    {
+        s = Math.Clamp(s, 0f, Length);
+        float rest = s - Length1;
+        int turn = rest <= 0f ? Turn1 : rest - Length2 <= 0f ? Turn2 : Turn3;
+        var (position, heading) = At(s, pieces);
+        if (turn == 0)
+        {
+            return (position, (rest <= 0f ? pieces.First : rest - Length2 <= 0f ? pieces.Second : pieces.Third).Lever);
+        }
+
+        return (position, new Vector2(MathF.Cos(heading), MathF.Sin(heading)));
     }
 
     /// <summary>

@@ -79,7 +79,7 @@ internal sealed class ObstacleField
     public float Clearance(Vector2 p)
     {
         Vector2 inside = Vector2.Clamp(p, -_half, _half);
-        float outside = Vector2.Distance(p, inside);
+        float outside = inside == p ? 0f : Vector2.Distance(p, inside);
         float fx = (inside.X + _half.X) / Cell, fz = (inside.Y + _half.Y) / Cell;
         int i = Math.Min((int)fx, _columns - 2), j = Math.Min((int)fz, _rows - 2);
         float tx = fx - i, tz = fz - j;

@@ -69,6 +69,35 @@ public sealed class DubinsPathTests
         Assert.Equal(-1, l.Turn1);
     }
 
+    [Fact]
+    public void FacingIsThePoseWithItsHeadingsCosineAndSineToTheBit()
+    {
+        var rng = new Random(37);
+        Span<DubinsPath> paths = stackalloc DubinsPath[8];
+        int straight = 0;
+        for (int i = 0; i < 300; i++)
+        {
+            Vector2 from = new(Next(rng, 1500f), Next(rng, 1000f)), to = new(Next(rng, 1500f), Next(rng, 1000f));
+            int n = DubinsPath.Plan(from, Next(rng, MathF.PI), to, Next(rng, MathF.PI), 50f + (rng.NextSingle() * 400f), paths);
+            foreach (var path in paths[..n])
+            {
+                var pieces = path.Walk();
+                Assert.Equal(pieces.First, path.WalkFirst().First);
+                for (float s = -10f; s <= path.Length + 10f; s += 7.3f)
+                {
+                    var (p, h) = path.At(s, pieces);
+                    var (q, ahead) = path.Facing(s, pieces);
+                    Assert.Equal(p, q);
+                    Assert.Equal(MathF.Cos(h), ahead.X);
+                    Assert.Equal(MathF.Sin(h), ahead.Y);
+                    straight += path.Turn2 == 0 && s > path.Length1 && s < path.Length1 + path.Length2 ? 1 : 0;
+                }
+            }
+        }
+
+        Assert.True(straight > 1000, $"only {straight} samples on straight middle pieces");
+    }
+
     private static DubinsPath Shortest(Span<DubinsPath> paths, Vector2 from, float h0, Vector2 to, float h1, float r)
     {
         int n = DubinsPath.Plan(from, h0, to, h1, r, paths);
