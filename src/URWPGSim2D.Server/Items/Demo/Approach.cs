@@ -124,8 +124,7 @@ internal struct Approach
             (order[k], order[cheapest]) = (order[cheapest], order[k]);
             (costs[k], costs[cheapest]) = (costs[cheapest], costs[k]);
             (keys[k], keys[cheapest]) = (keys[cheapest], keys[k]);
-            int gearIndex = (keys[k] / 32) % Gears.Length;
-            var margins = firstPiece.Slice(gearIndex * 2 * Remembered, 2 * Remembered);
+            var margins = firstPiece.Slice(GearOf(keys[k]) * 2 * Remembered, 2 * Remembered);
             float clear = Clear(all[order[k]], around, avoid, avoidRadius, reach, MathF.Max(fallbackClear, NearlyClear), margins);
             if (clear >= 0f)
             {
@@ -155,7 +154,7 @@ internal struct Approach
         var path = all[order[chosen]];
         _key = keys[chosen];
         _turn = path.Turn1;
-        int gear = Gears[(keys[chosen] / 32) % Gears.Length];
+        int gear = Gears[GearOf(keys[chosen])];
         int vcode = gear;
         bool straight = path.Turn1 == 0 ? path.Length1 > Braking(view.Speed) : path.Length1 < 20f && path.Turn2 == 0 && path.Length2 > Braking(view.Speed);
         if (straight)
@@ -198,7 +197,7 @@ internal struct Approach
     // Every candidate of one gear starts at the fish with the same radius, so those whose first turn
     // goes the same way share their first piece: its samples' margins (80, 120, ... mm along) are
     // kept in firstPiece (NaN: not yet measured; the turn's two directions one after the other) and
-    // measured once a plan.
+    // measured once a plan. A path that starts straight (none of Plan's does) keeps nothing.
     private static float Clear(in DubinsPath path, in Surroundings around, Vector2 avoid, float avoidRadius, float reach, float giveUp, Span<float> firstPiece)
     {
         float fall = ObstacleField.MaxSlope * (1f + (MathF.Max(reach, TailReach) / path.Radius));
@@ -218,7 +217,7 @@ internal struct Approach
             }
 
             // The first piece's k-th sample when the samples start at 80 mm.
-            bool shared = k < Remembered && length >= 80f && s - path.Length1 <= 0f;
+            bool shared = k < Remembered && length >= 80f && path.Turn1 != 0 && s - path.Length1 <= 0f;
             float margin = shared ? remembered[k] : float.NaN;
             if (float.IsNaN(margin))
             {
@@ -331,6 +330,9 @@ internal struct Approach
 
     // About how far a fish at speed v goes before it has slowed to a turning speed (a tenth less per cycle: ~1.5 s).
     private static float Braking(float speed) => speed * 1.0f;
+
+    // The index in Gears of a candidate's key ((lead × gears + gear) × 32 + word).
+    private static int GearOf(int key) => (key / 32) % Gears.Length;
 
     private static int Word(in DubinsPath p) => ((p.Turn1 + 1) * 9) + ((p.Turn2 + 1) * 3) + (p.Turn3 + 1);
 }

@@ -87,16 +87,8 @@ internal readonly struct DubinsPath
     /// </summary>
     public (Vector2 Position, float Heading) At(float s, in Pieces pieces)
     {
-        s = Math.Clamp(s, 0f, Length);
-        float rest = s - Length1;
-        if (rest <= 0f)
-        {
-            return pieces.First.Along(Turn1, MathF.Min(s, Length1), Radius);
-        }
-
-        return rest - Length2 <= 0f
-            ? pieces.Second.Along(Turn2, MathF.Min(rest, Length2), Radius)
-            : pieces.Third.Along(Turn3, MathF.Min(rest - Length2, Length3), Radius);
+        Piece piece = Locate(s, pieces, out int turn, out float along);
+        return piece.Along(turn, along, Radius);
     }
 
     /// <summary>
@@ -106,16 +98,31 @@ internal readonly struct DubinsPath
     /// </summary>
     public (Vector2 Position, Vector2 Ahead) Facing(float s, in Pieces pieces)
     {
+        Piece piece = Locate(s, pieces, out int turn, out float along);
+        var (position, heading) = piece.Along(turn, along, Radius);
+        return (position, turn == 0 ? piece.Lever : new Vector2(MathF.Cos(heading), MathF.Sin(heading)));
+    }
+
+    // The piece that distance s along the path (clamped to its ends) falls on, its turn and how far
+    // along it s lies.
+    private Piece Locate(float s, in Pieces pieces, out int turn, out float along)
+    {
         s = Math.Clamp(s, 0f, Length);
         float rest = s - Length1;
-        int turn = rest <= 0f ? Turn1 : rest - Length2 <= 0f ? Turn2 : Turn3;
-        var (position, heading) = At(s, pieces);
-        if (turn == 0)
+        if (rest <= 0f)
         {
-            return (position, (rest <= 0f ? pieces.First : rest - Length2 <= 0f ? pieces.Second : pieces.Third).Lever);
+            (turn, along) = (Turn1, MathF.Min(s, Length1));
+            return pieces.First;
         }
 
-        return (position, new Vector2(MathF.Cos(heading), MathF.Sin(heading)));
+        if (rest - Length2 <= 0f)
+        {
+            (turn, along) = (Turn2, MathF.Min(rest, Length2));
+            return pieces.Second;
+        }
+
+        (turn, along) = (Turn3, MathF.Min(rest - Length2, Length3));
+        return pieces.Third;
     }
 
     /// <summary>
