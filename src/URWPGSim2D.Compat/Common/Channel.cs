@@ -31,6 +31,40 @@ public class Channel : RectangularStatic
         DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
     }
 
+    /// <summary>Creates a named channel with separate border and fill colours.</summary>
+    /// <param name="strName">Name.</param>
+    /// <param name="positionMm">Centre, mm.</param>
+    /// <param name="colorBorder">Border colour.</param>
+    /// <param name="colorFilled">Fill colour.</param>
+    /// <param name="lengthMm">Length, mm.</param>
+    /// <param name="widthMm">Width, mm.</param>
+    /// <param name="directionDeg">Direction, degrees.</param>
+    public Channel(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int lengthMm, int widthMm, float directionDeg)
+        : this(strName, positionMm, colorBorder, colorFilled, 0, lengthMm, widthMm, directionDeg)
+    {
+    }
+
+    /// <summary>Creates a named channel with separate border and fill colours and a border width.</summary>
+    /// <param name="strName">Name.</param>
+    /// <param name="positionMm">Centre, mm.</param>
+    /// <param name="colorBorder">Border colour.</param>
+    /// <param name="colorFilled">Fill colour.</param>
+    /// <param name="borderWithPix">Border width, px.</param>
+    /// <param name="lengthMm">Length, mm.</param>
+    /// <param name="widthMm">Width, mm.</param>
+    /// <param name="directionDeg">Direction, degrees.</param>
+    public Channel(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWithPix, int lengthMm, int widthMm, float directionDeg)
+    {
+        Name = strName;
+        PositionMm = positionMm;
+        ColorBorder = colorBorder;
+        ColorFilled = colorFilled;
+        BorderWidthPix = borderWithPix;
+        LengthMm = lengthMm;
+        WidthMm = widthMm;
+        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
+    }
+
     /// <summary>Name.</summary>
     public string Name = string.Empty;
 

@@ -10,7 +10,7 @@ namespace URWPGSim2D.Common;
 /// every cycle, so a strategy may change it freely.
 /// </summary>
 [Serializable]
-public class Mission : ICloneable
+public partial class Mission : ICloneable
 {
     /// <summary>Creates the original's default mission parameters (1 versus 1, 10 minutes, 100 ms cycles).</summary>
     public Mission()

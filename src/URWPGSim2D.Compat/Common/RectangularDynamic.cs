@@ -18,6 +18,43 @@ public class RectangularDynamic : ICloneable
         }
     }
 
+    /// <summary>
+    /// Creates a named moving rectangle (the original's constructor, which also allows deletion and starts the cycle
+    /// counter <see cref="TimesCouter"/> at <paramref name="circleTimes"/>). Unlike the original's, it also makes the four
+    /// corner entries, so <see cref="CalculateCollisionDetectionParas"/> can be called on it.
+    /// </summary>
+    /// <param name="strName">Name.</param>
+    /// <param name="positionMm">Centre, mm.</param>
+    /// <param name="colorBorder">Border colour.</param>
+    /// <param name="colorFilled">Fill colour.</param>
+    /// <param name="borderWithPix">Border width, px.</param>
+    /// <param name="lengthMm">Length, mm.</param>
+    /// <param name="widthMm">Width, mm.</param>
+    /// <param name="directionDeg">Direction of the length, degrees.</param>
+    /// <param name="velocityMmPs">Speed, mm/s.</param>
+    /// <param name="velocityDirectionRad">Direction of motion, rad.</param>
+    /// <param name="angularVelocityRadPs">Angular speed, rad/s.</param>
+    /// <param name="circleTimes">Cycles in one back-and-forth loop.</param>
+    public RectangularDynamic(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWithPix, int lengthMm, int widthMm,
+        float directionDeg, float velocityMmPs, float velocityDirectionRad, float angularVelocityRadPs, int circleTimes)
+        : this()
+    {
+        Name = strName;
+        PositionMm = positionMm;
+        ColorBorder = colorBorder;
+        ColorFilled = colorFilled;
+        BorderWidthPix = borderWithPix;
+        LengthMm = lengthMm;
+        WidthMm = widthMm;
+        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
+        IsDeletionAllowed = true;
+        VelocityMmPs = velocityMmPs;
+        VelocityDirectionRad = velocityDirectionRad;
+        AngularVelocityRadPs = angularVelocityRadPs;
+        CircleTimes = circleTimes;
+        TimesCouter = circleTimes;
+    }
+
     /// <summary>Name.</summary>
     public string Name = string.Empty;
 
@@ -89,6 +126,31 @@ public class RectangularDynamic : ICloneable
 
     /// <summary>Corners, mm (zeros in a strategy's copy).</summary>
     public List<Xna.Vector3> PolygonVertices = new(4);
+
+    /// <summary>Sets the original's defaults: 100 × 100 mm, direction 0, no border.</summary>
+    public void SetRectangularDynamic()
+    {
+        LengthMm = 100;
+        WidthMm = 100;
+        DirectionRad = 0f;
+        BorderWidthPix = 0;
+    }
+
+    /// <summary>
+    /// Computes <see cref="CircumcircleRadiusMm"/> (whole mm) and the four corners <see cref="PolygonVertices"/> from the
+    /// centre, length, width and <see cref="DirectionRad"/>, as <see cref="RectangularStatic.CalculateCollisionDetectionParas"/> does.
+    /// </summary>
+    public void CalculateCollisionDetectionParas()
+    {
+        CircumcircleRadiusMm = (int)Math.Sqrt((LengthMm * LengthMm) + (WidthMm * WidthMm)) / 2;
+        float sin = MathF.Sin(DirectionRad), cos = MathF.Cos(DirectionRad);
+        float hl = LengthMm / 2f, hw = WidthMm / 2f;
+        float x = PositionMm.X, z = PositionMm.Z;
+        PolygonVertices[0] = new(x - (hl * cos) + (hw * sin), 0f, z - (hl * sin) - (hw * cos));
+        PolygonVertices[1] = new(x + (hl * cos) + (hw * sin), 0f, z + (hl * sin) - (hw * cos));
+        PolygonVertices[2] = new(x + (hl * cos) - (hw * sin), 0f, z + (hl * sin) + (hw * cos));
+        PolygonVertices[3] = new(x - (hl * cos) - (hw * sin), 0f, z - (hl * sin) + (hw * cos));
+    }
 
     /// <summary>A copy of size, direction, border and centre.</summary>
     /// <returns>A new <see cref="RectangularDynamic"/>.</returns>

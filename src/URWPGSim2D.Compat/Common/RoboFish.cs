@@ -13,7 +13,7 @@ namespace URWPGSim2D.Common;
 /// as in the original's copy for strategies.
 /// </summary>
 [Serializable]
-public class RoboFish : ICloneable
+public partial class RoboFish : ICloneable
 {
     /// <summary>Creates a fish of the reference size at the origin, heading +X.</summary>
     public RoboFish()

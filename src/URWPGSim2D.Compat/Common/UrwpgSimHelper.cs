@@ -4,7 +4,7 @@ using Xna = Microsoft.Xna.Framework;
 namespace URWPGSim2D.Common;
 
 /// <summary>The original's small helpers: extremes with their index, and frame transformations.</summary>
-public static class UrwpgSimHelper
+public static partial class UrwpgSimHelper
 {
     /// <summary>Largest of four values and its index (the first on ties).</summary>
     /// <param name="value1">Value 0.</param>

@@ -165,19 +165,20 @@ internal sealed class MissionBuilder
             model.SetPose(pose);
         }
 
-        Outline(fish, f, model);
+        Outline(fish, f.Position, f.Heading, f.BodyLength, f.Width, f.HeadLength, model);
         return fish;
     }
 
-    // Fills the vertex lists from the fish model: the body in the original's order, the other leaves as the model holds them.
-    private static void Outline(RoboFish fish, in FishView f, FishModel model)
+    // Fills the vertex lists from the fish model (posed at position, heading): the body in the original's order, the
+    // other leaves as the model holds them. Also RoboFish.CalculateFishPostion's outline.
+    internal static void Outline(RoboFish fish, Vector2 position, float heading, float bodyLength, float width, float headLength, FishModel model)
     {
-        var (sin, cos) = MathF.SinCos(f.Heading);
+        var (sin, cos) = MathF.SinCos(heading);
         Vector2 u = new(cos, sin), left = new(sin, -cos);
-        float hl = 0.5f * f.BodyLength, hw = 0.5f * f.Width;
-        Vector2 p = f.Position;
+        float hl = 0.5f * bodyLength, hw = 0.5f * width;
+        Vector2 p = position;
         Vector2 headLeft = p + (u * hl) + (left * hw), headRight = p + (u * hl) - (left * hw);
-        Vector2 tip = p + (u * (hl + f.HeadLength));
+        Vector2 tip = p + (u * (hl + headLength));
         fish.BodyPolygonVertices[0] = Xna.Vector3.FromXZ(headLeft);
         fish.BodyPolygonVertices[1] = Xna.Vector3.FromXZ(tip);
         fish.BodyPolygonVertices[2] = Xna.Vector3.FromXZ(headRight);

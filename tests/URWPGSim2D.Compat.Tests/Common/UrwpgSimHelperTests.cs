@@ -5,6 +5,7 @@ using XnaFramework = Microsoft.Xna.Framework;
 namespace URWPGSim2D.Compat.Tests.Common;
 
 /// <summary>The original's small helpers and data types.</summary>
+[Collection(FieldCollection.Name)]
 public sealed class UrwpgSimHelperTests
 {
     [Fact]

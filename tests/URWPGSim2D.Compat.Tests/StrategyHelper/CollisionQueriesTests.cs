@@ -11,6 +11,7 @@ using XnaVector3 = Microsoft.Xna.Framework.Vector3;
 namespace URWPGSim2D.Compat.Tests.StrategyHelper;
 
 /// <summary><see cref="CollisionQueries"/> answers exactly as the SDK's <see cref="FieldSensor"/> on the snapshot the mission was built from.</summary>
+[Collection(Common.FieldCollection.Name)]
 public sealed class CollisionQueriesTests
 {
     [Fact]
