@@ -22,7 +22,7 @@ internal static class CompileCause
     private static readonly string[] OriginalNamespaces = ["URWPGSim2D", "Microsoft.Xna"];
 
     /// <summary>Names of the original that exist only for its user interface or remoting and are not provided.</summary>
-    private static readonly string[] OriginalOnly = ["MyMission", "IDssSerializable"];
+    private static readonly string[] OriginalOnly = ["IMission", "IDssSerializable"];
 
     /// <summary>Namespaces of Windows and user-interface APIs that do not exist here (Windows Forms, the original's DSS runtime).</summary>
     private static readonly string[] WindowsNamespaces = ["System.Windows.Forms", "Microsoft.Dss", "Microsoft.Ccr"];

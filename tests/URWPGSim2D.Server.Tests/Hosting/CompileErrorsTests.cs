@@ -72,8 +72,8 @@ public sealed partial class CompileErrorsTests : IDisposable
     }
 
     [Theory]
-    [InlineData("URWPGSim2D.Common.MyMission m = null;", "URWPGSim2D.Common.MyMission is a part of the original's API this simulator does not provide (CS0234)")]
-    [InlineData("MyMission m = null;", "MyMission is a part of the original's API this simulator does not provide (CS0246)")]
+    [InlineData("URWPGSim2D.Common.IMission m = null;", "URWPGSim2D.Common.IMission is a part of the original's API this simulator does not provide (CS0234)")]
+    [InlineData("IMission m = null;", "IMission is a part of the original's API this simulator does not provide (CS0246)")]
     [InlineData("int n = System.Math.NoSuchHelper();", null)]
     [InlineData("System.Windows.Forms.MessageBox.Show(\"hi\");", "System.Windows.Forms is a Windows or user-interface API, not available here (CS0234)")]
     [InlineData("MessageBox.Show(\"hi\");", "MessageBox is a Windows or user-interface API, not available here (CS0103)")]
