@@ -33,19 +33,19 @@ internal static class OldStrategyCompiler
 
     private static readonly Lazy<References> Stubs = new(() => Build(null));
 
-    private static readonly Lazy<References> StubsWithMatrix = new(() => Build(
-        "namespace Microsoft.Xna.Framework { public struct Matrix { public static Matrix Identity { get { throw null; } } } }"));
+    private static readonly Lazy<References> StubsWithVector4 = new(() => Build(
+        "namespace Microsoft.Xna.Framework { public struct Vector4 { public static Vector4 One { get { throw null; } } } }"));
 
     /// <summary>Compiles <paramref name="sources"/> into an old-style strategy DLL image.</summary>
     public static byte[] Compile(string assemblyName, Platform platform, params string[] sources) =>
         Compile(Stubs.Value, assemblyName, platform, sources);
 
     /// <summary>
-    /// Compiles against stand-ins in which XNA also has <c>Matrix</c> (which the compatibility assembly
+    /// Compiles against stand-ins in which XNA also has <c>Vector4</c> (which the compatibility assembly
     /// does not provide), as a DLL using more of XNA than the original's API would be.
     /// </summary>
-    public static byte[] CompileWithXnaMatrix(string assemblyName, params string[] sources) =>
-        Compile(StubsWithMatrix.Value, assemblyName, Platform.X86, sources);
+    public static byte[] CompileWithXnaVector4(string assemblyName, params string[] sources) =>
+        Compile(StubsWithVector4.Value, assemblyName, Platform.X86, sources);
 
     private static byte[] Compile(References references, string assemblyName, Platform platform, string[] sources)
     {

@@ -132,8 +132,8 @@ public sealed class OldDllTests : IDisposable
     [Fact]
     public void AnOldDllUsingApiTheCompatibilityAssemblyLacksIsRefusedNamingIt()
     {
-        const string UsesMatrix = "namespace Uses { public class Matrices { public object Make() { return Microsoft.Xna.Framework.Matrix.Identity; } } }";
-        AssertRefusedAsDocumented(OldStrategyCompiler.CompileWithXnaMatrix("OldMatrix", OldStrategySources.Dribbler, UsesMatrix));
+        const string UsesVector4 = "namespace Uses { public class Vectors { public object Make() { return Microsoft.Xna.Framework.Vector4.One; } } }";
+        AssertRefusedAsDocumented(OldStrategyCompiler.CompileWithXnaVector4("OldVector4", OldStrategySources.Dribbler, UsesVector4));
     }
 
     // Runs the image as teams/red/Strategy.dll: exit 2, nothing written, one line of stderr that
