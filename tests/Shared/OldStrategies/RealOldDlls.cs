@@ -76,7 +76,7 @@ internal static class RealOldDlls
 /// <param name="File">Its file name in <see cref="RealOldDlls.Folder"/>.</param>
 /// <param name="Item">The item it was written for (its slug).</param>
 /// <param name="TeamName">What its <c>GetTeamName</c> returns, where known.</param>
-/// <param name="Idle">Whether its decisions are always zero (it plays as <c>idle</c> does).</param>
+/// <param name="Idle">Whether every decision it returns is all zero (speed code 0, turn code 0).</param>
 internal sealed record RealOldDll(string File, string Item, string? TeamName, bool Idle)
 {
     /// <inheritdoc/>
