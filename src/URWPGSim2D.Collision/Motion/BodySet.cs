@@ -27,6 +27,16 @@ internal sealed class BodySet(int movers)
         }
     }
 
+    /// <summary>Adds the moving bodies of a pair (no effect for those present).</summary>
+    public void AddPair(in PlannedPair pair)
+    {
+        Add(pair.MoverA);
+        if (pair.MoverB >= 0)
+        {
+            Add(pair.MoverB);
+        }
+    }
+
     /// <summary>Empties the set.</summary>
     public void Clear()
     {

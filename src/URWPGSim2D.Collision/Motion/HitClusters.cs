@@ -48,7 +48,7 @@ internal sealed class HitClusters
         for (int i = 0; i < count; i++)
         {
             Slot[i] = slots[i];
-            Generation[i] = table.Generation[slots[i]];
+            Generation[i] = table.Generation(slots[i]);
             Value[i] = values[i];
             Label[i] = i;
         }
@@ -82,7 +82,7 @@ internal sealed class HitClusters
 
         for (int i = 0; i < Count; i++)
         {
-            Movers(_table!.Pair[Slot[i]], out int a, out int b);
+            Movers(_table!.Pair(Slot[i]), out int a, out int b);
             Join(i, a);
             if (b >= 0)
             {
@@ -93,7 +93,7 @@ internal sealed class HitClusters
         for (int i = 0; i < Count; i++)
         {
             Label[i] = DisjointSets.Root(Label, i);
-            Forget(_table!.Pair[Slot[i]]);
+            Forget(_table!.Pair(Slot[i]));
         }
 
         _clusters = 0;

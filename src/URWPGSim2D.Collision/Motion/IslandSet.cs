@@ -53,9 +53,9 @@ internal sealed class IslandSet
 
         for (int slot = 0; slot < table.Used; slot++)
         {
-            if (table.Alive[slot] && table.Pair[slot].MoverB >= 0)
+            if (table.IsAlive(slot) && table.Pair(slot).MoverB >= 0)
             {
-                DisjointSets.Union(_parent, table.Pair[slot].MoverA, table.Pair[slot].MoverB);
+                DisjointSets.Union(_parent, table.Pair(slot).MoverA, table.Pair(slot).MoverB);
             }
         }
 
@@ -81,15 +81,15 @@ internal sealed class IslandSet
         int n = table.Used;
         if (_pairSlot.Length < n)
         {
-            _pairSlot = new int[Math.Max(n, table.Pair.Length)];
+            _pairSlot = new int[Math.Max(n, table.Capacity)];
         }
 
         Array.Clear(_pairStart, 0, Count + 1);
         for (int slot = 0; slot < n; slot++)
         {
-            if (table.Alive[slot])
+            if (table.IsAlive(slot))
             {
-                _pairStart[IslandOf[table.Pair[slot].MoverA] + 1]++;
+                _pairStart[IslandOf[table.Pair(slot).MoverA] + 1]++;
             }
         }
 
@@ -101,9 +101,9 @@ internal sealed class IslandSet
         // Each pair goes to its island's next free position; the starts then move back by one island.
         for (int slot = 0; slot < n; slot++)
         {
-            if (table.Alive[slot])
+            if (table.IsAlive(slot))
             {
-                _pairSlot[_pairStart[IslandOf[table.Pair[slot].MoverA]]++] = slot;
+                _pairSlot[_pairStart[IslandOf[table.Pair(slot).MoverA]]++] = slot;
             }
         }
 

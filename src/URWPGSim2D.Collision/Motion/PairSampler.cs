@@ -64,7 +64,7 @@ internal sealed class PairSampler
         for (int node = first; node >= 0; node = Queue.Next(node))
         {
             int slot = Queue.SlotOf(node);
-            if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
+            if (table.IsCurrent(slot, Queue.GenerationOf(node)))
             {
                 AddDue(slot);
             }
@@ -87,11 +87,11 @@ internal sealed class PairSampler
         for (int node = first; node >= 0; node = Queue.Next(node))
         {
             int slot = Queue.SlotOf(node);
-            if (stopped[islandOf[table.Pair[slot].MoverA]])
+            if (stopped[islandOf[table.Pair(slot).MoverA]])
             {
                 parked.Add(tick, slot, Queue.GenerationOf(node));
             }
-            else if (table.Alive[slot] && table.Generation[slot] == Queue.GenerationOf(node))
+            else if (table.IsCurrent(slot, Queue.GenerationOf(node)))
             {
                 AddDue(slot);
             }
@@ -126,25 +126,25 @@ internal sealed class PairSampler
     /// <summary>
     /// Tests every due pair at the time: a pair whose bounds are apart is not tested exactly and waits
     /// until it could touch; apart pairs are scheduled again, overlapping ones are added to the hits
-    /// (unless <paramref name="owner"/> leaves them to the end of the step: a wedged body's).
+    /// (unless <paramref name="wedging"/> leaves them to the end of the step: a wedged body's).
     /// </summary>
-    public void SampleDue(double time, PairTable table, List<Body> bodies, float seconds, Stepper? owner)
+    public void SampleDue(double time, PairTable table, List<Body> bodies, float seconds, Settling? wedging)
     {
         for (int i = 0; i < _dueCount; i++)
         {
-            MovePair(bodies, table.Pair[_due[i]], time, seconds);
+            MovePair(bodies, table.Pair(_due[i]), time, seconds);
         }
 
         for (int i = 0; i < _dueCount; i++)
         {
             int slot = _due[i];
-            PlannedPair pair = table.Pair[slot];
+            ref readonly PlannedPair pair = ref table.Pair(slot);
             Body a = bodies[pair.A], b = bodies[pair.B];
             float gap = PairTest.Gap(a, b);
             Hit hit = gap > 0f ? default : Memo.Detect(a, b);
             if (hit.Depth > MotionTolerances.ContactSlop)
             {
-                if (owner is null || !owner.Deferred(pair, slot, time))
+                if (wedging is null || !wedging.Deferred(pair, slot, time))
                 {
                     AddHit(slot, hit);
                 }
@@ -152,8 +152,7 @@ internal sealed class PairSampler
                 continue;
             }
 
-            table.LastFree[slot] = time;
-            table.ApartAtLastFree[slot] = true;
+            table.MarkFree(slot, time);
             if (time < 1.0)
             {
                 Schedule(table, slot, time, gap);
@@ -171,10 +170,10 @@ internal sealed class PairSampler
     /// </summary>
     public void Schedule(PairTable table, int slot, double time, float gap)
     {
-        double next = Grid(time) + table.Interval[slot];
+        double next = Grid(time) + table.Interval(slot);
         if (gap > 0f)
         {
-            float rate = table.Rate[slot];
+            float rate = table.Rate(slot);
             double touch = rate > 0f ? time + (gap / rate) : double.PositiveInfinity;
             if (touch >= 1.0)
             {
@@ -184,7 +183,7 @@ internal sealed class PairSampler
             next = Math.Max(next, Math.Floor(touch * Ticks) / Ticks);
         }
 
-        Queue.Push(Math.Min(next, 1.0), slot, table.Generation[slot]);
+        Queue.Push(Math.Min(next, 1.0), slot, table.Generation(slot));
     }
 
     /// <summary>Adds a hit of the current sample.</summary>

@@ -5,7 +5,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// The candidate pairs of the current step, in reusable slots: the pair, its relative travel rate,
 /// its sampling interval, the last time it was seen apart, and a generation stamp that changes
-/// when the slot is freed (so stale queue entries are ignored). Each mover
+/// when the slot is freed (so stale queue entries are ignored). The slots' data is private: the
+/// pair schedule (<see cref="PairSchedule"/>) owns the table and the other stages read and write a
+/// slot through its methods. Each mover
 /// keeps a doubly linked list of its pairs, so that all pairs of a mover are found
 /// and removed in time proportional to their number. Slots are reused in a fixed order, so the
 /// same events give the same slots. Storage grows by doubling, never shrinks.
@@ -38,29 +40,63 @@ internal sealed class PairTable
         Clear();
     }
 
-    /// <summary>The pair in each slot.</summary>
-    public PlannedPair[] Pair { get; private set; } = new PlannedPair[64];
+    private PlannedPair[] _pair = new PlannedPair[64];
+    private float[] _rate = new float[64];
+    private double[] _interval = new double[64];
+    private double[] _lastFree = new double[64];
+    private bool[] _apartAtLastFree = new bool[64];
+    private int[] _generation = new int[64];
+    private int[] _visited = new int[64];
+    private bool[] _alive = new bool[64];
 
-    /// <summary>Most the two bodies move relative to each other over a whole step, mm.</summary>
-    public float[] Rate { get; private set; } = new float[64];
+    /// <summary>The pair in a slot.</summary>
+    public ref readonly PlannedPair Pair(int slot) => ref _pair[slot];
 
-    /// <summary>Sampling interval, a fraction of the step (a power of two: 1, 1/2, … 1/<see cref="TickQueue.Ticks"/>).</summary>
-    public double[] Interval { get; private set; } = new double[64];
+    /// <summary>Most the two bodies of a slot's pair move relative to each other over a whole step, mm.</summary>
+    public float Rate(int slot) => _rate[slot];
 
-    /// <summary>Last time (fraction of the step) the pair was planned or sampled apart.</summary>
-    public double[] LastFree { get; private set; } = new double[64];
+    /// <summary>A slot's sampling interval, a fraction of the step (a power of two: 1, 1/2, … 1/<see cref="TickQueue.Ticks"/>).</summary>
+    public double Interval(int slot) => _interval[slot];
 
-    /// <summary>Whether the pair was seen apart at <see cref="LastFree"/> (a pair planned while its bounds overlap was not).</summary>
-    public bool[] ApartAtLastFree { get; private set; } = new bool[64];
+    /// <summary>Last time (fraction of the step) a slot's pair was planned or sampled apart.</summary>
+    public double LastFree(int slot) => _lastFree[slot];
 
-    /// <summary>Changes each time the slot is freed.</summary>
-    public int[] Generation { get; private set; } = new int[64];
+    /// <summary>Whether a slot's pair was seen apart at <see cref="LastFree"/> (a pair planned while its bounds overlap was not).</summary>
+    public bool ApartAtLastFree(int slot) => _apartAtLastFree[slot];
 
-    /// <summary>A mark per slot for passes over the pairs of several movers (see <see cref="NextStamp"/>).</summary>
-    public int[] Stamp { get; private set; } = new int[64];
+    /// <summary>A slot's generation: it changes each time the slot is freed.</summary>
+    public int Generation(int slot) => _generation[slot];
 
-    /// <summary>Whether the slot holds a pair.</summary>
-    public bool[] Alive { get; private set; } = new bool[64];
+    /// <summary>Whether a slot holds a pair.</summary>
+    public bool IsAlive(int slot) => _alive[slot];
+
+    /// <summary>Whether a slot still holds the pair it held at <paramref name="generation"/> (a queue entry or a held hit is not stale).</summary>
+    public bool IsCurrent(int slot, int generation) => _alive[slot] && _generation[slot] == generation;
+
+    /// <summary>Records whether a slot's pair was apart at its last free time.</summary>
+    public void SetApartAtLastFree(int slot, bool apart) => _apartAtLastFree[slot] = apart;
+
+    /// <summary>A slot's pair was sampled apart at <paramref name="time"/>.</summary>
+    public void MarkFree(int slot, double time)
+    {
+        _lastFree[slot] = time;
+        _apartAtLastFree[slot] = true;
+    }
+
+    /// <summary>Marks a slot visited by a pass that took <paramref name="stamp"/> from <see cref="NextStamp"/>; false when it already was.</summary>
+    public bool Visit(int slot, int stamp)
+    {
+        if (_visited[slot] == stamp)
+        {
+            return false;
+        }
+
+        _visited[slot] = stamp;
+        return true;
+    }
+
+    /// <summary>Slots the storage holds now (it grows by doubling).</summary>
+    public int Capacity => _pair.Length;
 
     /// <summary>Slots ever used since the last <see cref="Clear"/> (alive or free).</summary>
     public int Used => _used;
@@ -70,7 +106,7 @@ internal sealed class PairTable
     {
         if (++_stamp == int.MaxValue)
         {
-            Array.Clear(Stamp);
+            Array.Clear(_visited);
             _stamp = 1;
         }
 
@@ -81,18 +117,23 @@ internal sealed class PairTable
     public void Clear()
     {
         Array.Fill(_moverHead, None);
-        Array.Clear(Alive, 0, _used);
+        Array.Clear(_alive, 0, _used);
         _used = 0;
         _freeCount = 0;
     }
 
-    /// <summary>Stores a pair (its movers link it to their lists); returns its slot.</summary>
-    public int Add(in PlannedPair pair, float rate)
+    /// <summary>
+    /// Stores a pair (its movers link it to their lists) with its sampling interval, planned at
+    /// <paramref name="plannedAt"/> (its last free time until sampled); returns its slot.
+    /// </summary>
+    public int Add(in PlannedPair pair, float rate, double interval, double plannedAt)
     {
         int slot = _freeCount > 0 ? _free[--_freeCount] : Grow();
-        Pair[slot] = pair;
-        Rate[slot] = rate;
-        Alive[slot] = true;
+        _pair[slot] = pair;
+        _rate[slot] = rate;
+        _alive[slot] = true;
+        _interval[slot] = interval;
+        _lastFree[slot] = plannedAt;
         _moverA[slot] = pair.MoverA;
         _moverB[slot] = pair.MoverB;
         Link(2 * slot, pair.MoverA);
@@ -127,8 +168,8 @@ internal sealed class PairTable
             Unlink((2 * slot) + 1, _moverB[slot]);
         }
 
-        Alive[slot] = false;
-        Generation[slot]++;
+        _alive[slot] = false;
+        _generation[slot]++;
         if (_freeCount == _free.Length)
         {
             Array.Resize(ref _free, _free.Length * 2);
@@ -171,7 +212,7 @@ internal sealed class PairTable
     /// <summary>Makes room for at least <paramref name="slots"/> pairs (so a step does not grow the storage).</summary>
     public void Reserve(int slots)
     {
-        while (Pair.Length < slots)
+        while (_pair.Length < slots)
         {
             GrowStorage();
         }
@@ -184,7 +225,7 @@ internal sealed class PairTable
 
     private int Grow()
     {
-        if (_used == Pair.Length)
+        if (_used == _pair.Length)
         {
             GrowStorage();
         }
@@ -194,15 +235,15 @@ internal sealed class PairTable
 
     private void GrowStorage()
     {
-        int size = Pair.Length * 2;
-        Pair = Resized(Pair, size);
-        Rate = Resized(Rate, size);
-        Interval = Resized(Interval, size);
-        LastFree = Resized(LastFree, size);
-        ApartAtLastFree = Resized(ApartAtLastFree, size);
-        Generation = Resized(Generation, size);
-        Alive = Resized(Alive, size);
-        Stamp = Resized(Stamp, size);
+        int size = _pair.Length * 2;
+        _pair = Resized(_pair, size);
+        _rate = Resized(_rate, size);
+        _interval = Resized(_interval, size);
+        _lastFree = Resized(_lastFree, size);
+        _apartAtLastFree = Resized(_apartAtLastFree, size);
+        _generation = Resized(_generation, size);
+        _alive = Resized(_alive, size);
+        _visited = Resized(_visited, size);
         _moverA = Resized(_moverA, size);
         _moverB = Resized(_moverB, size);
         _edgeNext = Resized(_edgeNext, 2 * size);

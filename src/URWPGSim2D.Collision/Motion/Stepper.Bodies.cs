@@ -8,10 +8,15 @@ using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Motion;
 
-/// <content>The bodies: adding them, reading and changing their state, testing a pair now.</content>
+/// <content>
+/// The bodies, which the world owns: adding them, reading and changing their state, testing a pair
+/// now. During a step the world also keeps the bodies a response has changed since they were last
+/// committed (<see cref="ChangedBodies"/>), in the order they were first changed.
+/// </content>
 public sealed partial class Stepper
 {
     private readonly List<Body> _bodies = [];
+    private BodySet _changed = new(0);
     private bool _loaded;
     private bool _stepping;
 
@@ -258,17 +263,26 @@ public sealed partial class Stepper
             throw new ArgumentException($"a body cannot be tested against itself (body {bodyA})", nameof(bodyB));
         }
 
-        return new Contact(bodyA, bodyB, _sampler.Memo.Detect(a, b), Time);
+        return new Contact(bodyA, bodyB, _schedule.Sampler.Memo.Detect(a, b), Time);
     }
 
     internal Body BodyAt(int id) => _bodies[id];
+
+    /// <summary>The movers (by slot) a response changed since the stages last took them, in the order first changed.</summary>
+    internal ReadOnlySpan<int> ChangedBodies => _changed.Items;
+
+    /// <summary>Forgets the changed movers (a stage has taken them).</summary>
+    internal void ClearChanged() => _changed.Clear();
+
+    /// <summary>Counts a mover as changed (a stage moved it itself: a rejected move at the end of a step).</summary>
+    internal void MarkChanged(int slot) => _changed.Add(slot);
 
     // Before its state changes in a handler, a body is placed at the handler's time and marked for re-planning.
     private void Touch(Body b)
     {
         if (_stepping && !_changed.Marks[b.Slot])
         {
-            b.MoveTo(Time, _planner.Seconds);
+            b.MoveTo(Time, _schedule.Seconds);
             _changed.Add(b.Slot);
         }
     }
@@ -286,7 +300,8 @@ public sealed partial class Stepper
         }
     }
 
-    private static void Remember(Body b)
+    /// <summary>A body's pose and joints now become where a rejected move of the next step goes back to.</summary>
+    internal static void Remember(Body b)
     {
         b.StartPosition = b.Position;
         b.StartHeading = b.Heading;
@@ -374,24 +389,12 @@ public sealed partial class Stepper
             }
         }
 
-        _planner.Load([.. movers], [.. statics], walls);
-        _table.Resize(movers.Count);
-
-        // Room for a busy step up front, so that a crowd does not find a new largest step now and then.
         int m = movers.Count;
-        int pairs = (8 * m) + 64;
-        _table.Reserve(pairs);
-        _sampler.Reserve(m);
-        LoadIslands(m, pairs);
-        _pending = new int[(2 * m) + 16];
-        _clusters.Reserve((2 * m) + 64, m);
-        _collector.Reserve((8 * m) + 256);
-        _involved = new BodySet(movers.Count);
-        _touched = new BodySet(movers.Count);
-        _changed = new BodySet(movers.Count);
-        _spare = new BodySet(movers.Count);
-        _dirty = new BodySet(movers.Count);
-        _deferred = new BodySet(movers.Count);
+        _schedule.Load([.. movers], [.. statics], walls);
+        _islands.Load(m, PairSchedule.ReservedPairs(m));
+        _events.Load(m);
+        _settling.Load(m);
+        _changed = new BodySet(m);
         _loaded = true;
     }
 }

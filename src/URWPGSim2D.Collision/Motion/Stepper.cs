@@ -18,8 +18,14 @@ namespace URWPGSim2D.Collision.Motion;
 /// <remarks>See docs/motion.md for the algorithm and a worked example.</remarks>
 public sealed partial class Stepper
 {
-    private readonly SweepPlanner _planner;
-    private readonly PairTable _table = new(0);
+    // The stages of a step, each owning its data: the candidate pairs and when each is sampled,
+    // the first samples island by island, contact events (time of first contact, response,
+    // relaxation), and the end of the step (settling, wedged bodies, rejected moves). The world
+    // itself owns the bodies and the bodies a response changed.
+    private readonly PairSchedule _schedule;
+    private readonly IslandSampling _islands;
+    private readonly ContactEvents _events;
+    private readonly Settling _settling;
     private IContactHandler? _handler;
 
     /// <summary>Creates an empty stepper.</summary>
@@ -35,21 +41,23 @@ public sealed partial class Stepper
     internal Stepper(IBroadPhase broadPhase)
     {
         ArgumentNullException.ThrowIfNull(broadPhase);
-        _planner = new SweepPlanner(broadPhase);
-        _scheduler = new Scheduler(this);
+        _schedule = new PairSchedule(broadPhase, _bodies);
+        _settling = new Settling(this, _schedule, _bodies);
+        _events = new ContactEvents(this, _schedule, _settling, _bodies);
+        _islands = new IslandSampling(_schedule, _bodies);
     }
 
     /// <summary>The time within the current step (a fraction 0 … 1 of its duration): during a handler call, the contact's time.</summary>
-    public double Time { get; private set; }
+    public double Time { get; internal set; }
 
     /// <summary>Distinct sample times of the last step.</summary>
     public int SubSteps { get; private set; }
 
     /// <summary>Contact events (times of first contact) of the last step.</summary>
-    public int Events { get; private set; }
+    public int Events => _events.Count;
 
     /// <summary>Bodies whose move was rejected in the last step (see <see cref="IContactHandler.OnMoveRejected"/>).</summary>
-    public int RejectedMoves { get; private set; }
+    public int RejectedMoves => _settling.RejectedMoves;
 
     /// <summary>Deepest overlap of any pair (walls included) at the end of the last step, mm.</summary>
     public float LeftoverOverlap { get; private set; }
@@ -65,25 +73,154 @@ public sealed partial class Stepper
     public void Step(float seconds, IContactHandler handler)
     {
         Begin(seconds, handler);
-        SampleIslands();
-        for (double time; (time = NextTime()) >= 0.0;)
+        _islands.SampleFirst();
+        PairSampler sampler = _schedule.Sampler;
+        PairTable table = _schedule.Table;
+        for (double time; (time = _islands.NextTime()) >= 0.0;)
         {
-            int due = _sampler.TakeDue(time, _table);
-            _sampler.HitCount = 0;
-            if (TakeHeld(time) + due > 0)
+            int due = sampler.TakeDue(time, table);
+            sampler.HitCount = 0;
+            if (_islands.TakeHeld(time) + due > 0)
             {
-                _sampler.MarkSampled(time);
-                _sampler.SampleDue(time, _table, _bodies, seconds, this);
-                HandleHits(time);
+                sampler.MarkSampled(time);
+                sampler.SampleDue(time, table, _bodies, seconds, _settling);
+                _events.HandleHits(time);
             }
         }
 
-        SubSteps = _sampler.SampledTicks();
+        SubSteps = sampler.SampledTicks();
         MoveAllTo(1.0);
-        float deepest = MathF.Max(_sampler.DeepestAtEnd, SettleTouched());
-        LeftoverOverlap = RejectOverlapping(deepest);
+        float deepest = MathF.Max(sampler.DeepestAtEnd, _settling.SettleTouched());
+        LeftoverOverlap = _settling.RejectOverlapping(deepest);
         End();
     }
+
+    /// <summary>
+    /// Resolves overlaps left by jumps between steps (bodies placed with <see cref="SetPose"/>):
+    /// every pair of moving bodies that overlaps now goes to <paramref name="handler"/>, a few passes
+    /// over, without motion; a body still inside another one afterwards has its move rejected.
+    /// </summary>
+    /// <param name="handler">The contact response.</param>
+    /// <exception cref="ArgumentNullException"><paramref name="handler"/> is null.</exception>
+    /// <exception cref="ArgumentException">A step is running.</exception>
+    public void Settle(IContactHandler handler)
+    {
+        ArgumentNullException.ThrowIfNull(handler);
+        if (_stepping)
+        {
+            throw new ArgumentException("Settle cannot be called while a step runs", nameof(handler));
+        }
+
+        EnsureLoaded();
+        _handler = handler;
+        _stepping = true;
+        Time = 0.0;
+        LeftoverOverlap = _settling.SettleAll();
+        _stepping = false;
+        foreach (Body body in _schedule.Planner.MoverBodies)
+        {
+            Remember(body);
+        }
+
+        _handler = null;
+    }
+
+    /// <summary>Deepest overlap among all pairs of bodies now (no motion), mm.</summary>
+    /// <returns>The depth, 0 when nothing overlaps.</returns>
+    public float MeasureOverlap()
+    {
+        EnsureLoaded();
+        return _settling.MeasureOverlap();
+    }
+
+    /// <summary>
+    /// Rejects a moving body's move in the current step, from a handler (a response that finds the
+    /// body wedged): it goes back to where it began the step (its pose and joints at the end of the
+    /// previous step, or where it was last placed between steps), at rest (own velocity and drift
+    /// zero), and <see cref="IContactHandler.OnMoveRejected"/> is called, as for a move the stepper
+    /// rejects itself. While <see cref="Settle"/> runs after a step, the move rejected is that
+    /// step's. The body stays there for the rest of the step unless moved again.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <exception cref="ArgumentException">The body does not move, or no step (or <see cref="Settle"/>) is running.</exception>
+    public void RejectMove(int body)
+    {
+        Body b = Moving(body, null, nameof(body));
+        if (!_stepping)
+        {
+            throw new ArgumentException($"body {body}: a move can be rejected only from a handler, while a step or Settle runs", nameof(body));
+        }
+
+        Touch(b);
+        _settling.RejectToStepStart(b);
+    }
+
+    /// <summary>
+    /// Fewest moving bodies for which the islands are spread over <see cref="Threads"/> (2,048 by
+    /// default): smaller worlds use the calling thread alone, with the same result (at 1,000 bodies
+    /// two threads measured no faster). Lower it to spread small worlds too.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is less than 1.</exception>
+    public int MinimumMoversForThreads
+    {
+        get => _islands.MinimumMoversForThreads;
+        set
+        {
+            if (value < 1)
+            {
+                throw new ArgumentException($"minimumMoversForThreads must be at least 1, got {value}", nameof(value));
+            }
+
+            _islands.MinimumMoversForThreads = value;
+        }
+    }
+
+    /// <summary>
+    /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
+    /// are sampled on up to this many threads up to their first contact. The contacts, poses and
+    /// counts are the same whatever the number; a world of fewer than 2,048 moving bodies uses the
+    /// calling thread alone. Threads are created once, on first need, and shared by all steppers.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is below 1 or above 1024, or a step is running.</exception>
+    public int Threads
+    {
+        get => _islands.Threads;
+        set
+        {
+            if (value < 1 || value > 1024)
+            {
+                throw new ArgumentException($"threads must be 1 to 1024, got {value}", nameof(value));
+            }
+
+            if (_stepping)
+            {
+                throw new ArgumentException("threads cannot change while a step runs", nameof(value));
+            }
+
+            _islands.Threads = value;
+        }
+    }
+
+    /// <summary>Chunks of islands the last step ran at once (1: the calling thread alone).</summary>
+    public int Chunks => _islands.Chunks;
+
+    /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
+    internal long WorkerAllocatedBytes => _islands.WorkerAllocatedBytes;
+
+    /// <summary>Number of islands of the last step, or −1 when it did not need them (one thread and no hit before the event loop; tests).</summary>
+    internal int IslandCount => _islands.IslandCount;
+
+    /// <summary>The island of a moving body in the last step, or −1 when it did not need them (tests).</summary>
+    internal int IslandOf(int body) => _islands.IslandOfMover(_bodies[body].Slot);
+
+    /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
+    internal Disc SweptCircleOf(int body) => _schedule.Planner.SweptCircle(_bodies[body].Slot);
+
+    /// <summary>The response to one contact, from the handler.</summary>
+    internal void Report(in Contact contact) => _handler!.OnContact(this, contact);
+
+    /// <summary>Tells the handler a body's move was rejected.</summary>
+    internal void ReportRejected(int body) => _handler!.OnMoveRejected(this, body);
 
     // Every body starts the step at its current state; every pair is planned from time 0.
     private void Begin(float seconds, IContactHandler handler)
@@ -96,13 +233,12 @@ public sealed partial class Stepper
         ArgumentNullException.ThrowIfNull(handler);
         EnsureLoaded();
         _handler = handler;
-        _planner.Seconds = seconds;
         SubSteps = 0;
-        Events = 0;
-        RejectedMoves = 0;
+        _events.BeginStep();
+        _settling.BeginStep();
         Time = 0.0;
         _stepping = true;
-        foreach (Body body in _planner.MoverBodies)
+        foreach (Body body in _schedule.Planner.MoverBodies)
         {
             body.Rebase(0.0);
             body.KeepStepStart();
@@ -111,13 +247,20 @@ public sealed partial class Stepper
             body.LastEventTime = -1.0;
         }
 
-        _table.Clear();
-        _sampler.BeginStep();
-        _touched.Clear();
-        _deferred.Clear();
-        _scheduler.Settling = false;
-        _recorder ??= new Recorder(this);
-        _planner.PlanAll(0.0, _recorder);
+        _schedule.Begin(seconds);
+    }
+
+    // Every mover moved to a time of the step and committed there.
+    private void MoveAllTo(double time)
+    {
+        float seconds = _schedule.Seconds;
+        foreach (Body body in _schedule.Planner.MoverBodies)
+        {
+            body.MoveTo(time, seconds);
+            body.Rebase(time);
+        }
+
+        Time = time;
     }
 
     // The step's end state becomes the state a rejected move of the next step goes back to.
@@ -125,7 +268,7 @@ public sealed partial class Stepper
     {
         _stepping = false;
         Time = 0.0;
-        foreach (Body body in _planner.MoverBodies)
+        foreach (Body body in _schedule.Planner.MoverBodies)
         {
             body.Rebase(0.0);
             Remember(body);

@@ -1,40 +1,29 @@
 using System;
+using System.Collections.Generic;
 using System.Threading;
 
 namespace URWPGSim2D.Collision.Motion;
 
-/// <content>
-/// Islands: the movers fall into islands that cannot meet within the step as planned (see
-/// <see cref="IslandSet"/>). Each island is sampled on its own, on one of <see cref="Threads"/>
-/// threads, up to its first hit: until a contact response changes a motion nothing one island does
-/// concerns another. Its remaining queue entries and that first sample's hits are then handed to
-/// the event loop, which carries on over the whole world (a response may send a body anywhere).
-/// Islands are merged in island order, so the contacts do not depend on the number of threads.
-/// On one thread every island is sampled at once in one queue, with the same result (see
-/// <c>SampleIslandsTogether</c>): nothing is grouped, copied back or, until a hit needs them, built.
-/// </content>
-public sealed partial class Stepper
+/// <summary>
+/// The stage that samples a step's first contacts island by island. The movers fall into islands
+/// that cannot meet within the step as planned (see <see cref="IslandSet"/>). Each island is
+/// sampled on its own, on one of <see cref="Threads"/> threads, up to its first hit: until a
+/// contact response changes a motion nothing one island does concerns another. Its remaining
+/// queue entries and that first sample's hits are then handed to the event loop, which carries on
+/// over the whole world (a response may send a body anywhere). Islands are merged in island order,
+/// so the contacts do not depend on the number of threads. On one thread every island is sampled
+/// at once in one queue, with the same result (see <c>SampleIslandsTogether</c>): nothing is
+/// grouped, copied back or, until a hit needs them, built. The stage owns the islands, the workers
+/// and the hits held for the event loop.
+/// </summary>
+internal sealed class IslandSampling
 {
-    /// <summary>
-    /// Fewest moving bodies for which the islands are spread over <see cref="Threads"/> (2,048 by
-    /// default): smaller worlds use the calling thread alone, with the same result (at 1,000 bodies
-    /// two threads measured no faster). Lower it to spread small worlds too.
-    /// </summary>
-    /// <exception cref="ArgumentException">The value is less than 1.</exception>
-    public int MinimumMoversForThreads
-    {
-        get => _minimumMoversForThreads;
-        set
-        {
-            if (value < 1)
-            {
-                throw new ArgumentException($"minimumMoversForThreads must be at least 1, got {value}", nameof(value));
-            }
+    private const int Ticks = TickQueue.Ticks;
 
-            _minimumMoversForThreads = value;
-        }
-    }
-
+    private readonly PairSchedule _schedule;
+    private readonly PairTable _table;
+    private readonly PairSampler _sampler;
+    private readonly List<Body> _bodies;
     private readonly IslandSet _islands = new();
     private readonly HeldHits _heldByIsland = new();
     private readonly HeldHits _held = new();
@@ -45,54 +34,38 @@ public sealed partial class Stepper
     private IslandWorker[] _workers = [];
     private int[] _chunkStart = new int[2];
     private IslandRunner? _runner;
-    private Recorder? _recorder;
-    private int _threads = 1;
-    private int _minimumMoversForThreads = 2048;
     private int _nextHeld;
     private bool _islandsBuilt;
 
-    /// <summary>
-    /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
-    /// are sampled on up to this many threads up to their first contact. The contacts, poses and
-    /// counts are the same whatever the number; a world of fewer than 2,048 moving bodies uses the
-    /// calling thread alone. Threads are created once, on first need, and shared by all steppers.
-    /// </summary>
-    /// <exception cref="ArgumentException">The value is below 1 or above 1024, or a step is running.</exception>
-    public int Threads
+    /// <summary>Creates the stage over the pair schedule and the world's bodies (by id).</summary>
+    public IslandSampling(PairSchedule schedule, List<Body> bodies)
     {
-        get => _threads;
-        set
-        {
-            if (value < 1 || value > 1024)
-            {
-                throw new ArgumentException($"threads must be 1 to 1024, got {value}", nameof(value));
-            }
-
-            if (_stepping)
-            {
-                throw new ArgumentException("threads cannot change while a step runs", nameof(value));
-            }
-
-            _threads = value;
-        }
+        _schedule = schedule;
+        _table = schedule.Table;
+        _sampler = schedule.Sampler;
+        _bodies = bodies;
     }
+
+    /// <summary>Threads a step may use (checked by the world).</summary>
+    public int Threads { get; set; } = 1;
+
+    /// <summary>Fewest moving bodies for which the islands are spread over <see cref="Threads"/> (checked by the world).</summary>
+    public int MinimumMoversForThreads { get; set; } = 2048;
 
     /// <summary>Chunks of islands the last step ran at once (1: the calling thread alone).</summary>
     public int Chunks { get; private set; }
 
-    /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
-    internal long WorkerAllocatedBytes => _runner?.Allocated ?? 0L;
+    /// <summary>Bytes the island workers' threads allocated while they ran this stage's chunks (tests).</summary>
+    public long WorkerAllocatedBytes => _runner?.Allocated ?? 0L;
 
     /// <summary>Number of islands of the last step, or −1 when it did not need them (one thread and no hit before the event loop; tests).</summary>
-    internal int IslandCount => _islandsBuilt ? _islands.Count : -1;
+    public int IslandCount => _islandsBuilt ? _islands.Count : -1;
 
-    /// <summary>The island of a moving body in the last step, or −1 when it did not need them (tests).</summary>
-    internal int IslandOf(int body) => _islandsBuilt ? _islands.IslandOf[_bodies[body].Slot] : -1;
+    /// <summary>The island of a mover in the last step, or −1 when it did not need them (tests).</summary>
+    public int IslandOfMover(int slot) => _islandsBuilt ? _islands.IslandOf[slot] : -1;
 
-    /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
-    internal Disc SweptCircleOf(int body) => _planner.SweptCircle(_bodies[body].Slot);
-
-    private void LoadIslands(int movers, int pairs)
+    /// <summary>Sizes the storage for a world of <paramref name="movers"/> movers and up to <paramref name="pairs"/> planned pairs.</summary>
+    public void Load(int movers, int pairs)
     {
         _islands.Load(movers, pairs);
         _heldByIsland.Reserve((2 * movers) + 64);
@@ -107,16 +80,15 @@ public sealed partial class Stepper
         }
     }
 
-    // After the first plan (pairs recorded, not yet sampled): islands found, each sampled up to its
-    // first hit, the results handed to the event loop.
-    private void SampleIslands()
+    /// <summary>After the first plan (pairs recorded, not yet sampled): islands found, each sampled up to its first hit, the results handed to the event loop.</summary>
+    public void SampleFirst()
     {
         _islandsBuilt = false;
         int wanted = 1;
-        if (_threads > 1 && _planner.Movers >= MinimumMoversForThreads)
+        if (Threads > 1 && _schedule.Planner.Movers >= MinimumMoversForThreads)
         {
             BuildIslands();
-            wanted = Math.Min(_threads, Math.Max(1, _islands.Count));
+            wanted = Math.Min(Threads, Math.Max(1, _islands.Count));
         }
 
         EnsureWorkers(wanted);
@@ -166,10 +138,10 @@ public sealed partial class Stepper
     private void SampleIslandsTogether(PairSampler sampler)
     {
         sampler.BeginStep();
-        float seconds = _planner.Seconds;
+        float seconds = _schedule.Seconds;
         for (int slot = 0; slot < _table.Used; slot++)
         {
-            if (_table.Alive[slot])
+            if (_table.IsAlive(slot))
             {
                 ScheduleFirst(sampler, slot, seconds);
             }
@@ -213,9 +185,10 @@ public sealed partial class Stepper
     // A planned pair's first sample, scheduled from the start of the step by its gap there.
     private void ScheduleFirst(PairSampler sampler, int slot, float seconds)
     {
-        PairSampler.MovePair(_bodies, _table.Pair[slot], 0.0, seconds);
-        float gap = PairTest.Gap(_bodies[_table.Pair[slot].A], _bodies[_table.Pair[slot].B]);
-        _table.ApartAtLastFree[slot] = gap > 0f;
+        ref readonly PlannedPair pair = ref _table.Pair(slot);
+        PairSampler.MovePair(_bodies, pair, 0.0, seconds);
+        float gap = PairTest.Gap(_bodies[pair.A], _bodies[pair.B]);
+        _table.SetApartAtLastFree(slot, gap > 0f);
         sampler.Schedule(_table, slot, 0.0, gap);
     }
 
@@ -246,7 +219,7 @@ public sealed partial class Stepper
         {
             int h = _order[i];
             int slot = sampler.HitSlots[h];
-            _held.Add(tick, slot, _table.Generation[slot], sampler.HitValues[h]);
+            _held.Add(tick, slot, _table.Generation(slot), sampler.HitValues[h]);
             _stopped[IslandOfSlot(slot)] = true;
         }
     }
@@ -300,7 +273,7 @@ public sealed partial class Stepper
         }
     }
 
-    private int IslandOfSlot(int slot) => _islands.IslandOf[_table.Pair[slot].MoverA];
+    private int IslandOfSlot(int slot) => _islands.IslandOf[_table.Pair(slot).MoverA];
 
     private void EnsureWorkers(int count)
     {
@@ -314,7 +287,7 @@ public sealed partial class Stepper
         for (int w = old; w < count; w++)
         {
             _workers[w] = new IslandWorker();
-            _workers[w].Reserve(_planner.Movers);
+            _workers[w].Reserve(_schedule.Planner.Movers);
         }
     }
 
@@ -327,7 +300,7 @@ public sealed partial class Stepper
         worker.Handoff.Clear();
         worker.Held.Clear();
         ReadOnlySpan<int> start = _islands.PairStart, slots = _islands.PairSlot;
-        float seconds = _planner.Seconds;
+        float seconds = _schedule.Seconds;
         for (int island = _chunkStart[chunk]; island < _chunkStart[chunk + 1]; island++)
         {
             // The pairs' first samples, scheduled from the start of the step in slot (plan) order.
@@ -351,7 +324,7 @@ public sealed partial class Stepper
                     for (int h = 0; h < sampler.HitCount; h++)
                     {
                         int slot = sampler.HitSlots[h];
-                        worker.Held.Add(tick, slot, _table.Generation[slot], sampler.HitValues[h]);
+                        worker.Held.Add(tick, slot, _table.Generation(slot), sampler.HitValues[h]);
                     }
 
                     sampler.Queue.DrainInto(worker.Handoff);
@@ -361,8 +334,8 @@ public sealed partial class Stepper
         }
     }
 
-    // The earliest time with queue entries or held hits, or −1.
-    private double NextTime()
+    /// <summary>The earliest time with queue entries (the event loop's) or held hits, or −1.</summary>
+    public double NextTime()
     {
         double queued = _sampler.Queue.NextTime();
         if (_nextHeld == _held.Count)
@@ -374,17 +347,17 @@ public sealed partial class Stepper
         return queued < 0.0 ? held : Math.Min(queued, held);
     }
 
-    // The held hits of a time whose pairs were not planned again since, placed at the time; returns their number.
-    private int TakeHeld(double time)
+    /// <summary>The held hits of a time whose pairs were not planned again since, placed at the time and added to the event loop's hits; returns their number.</summary>
+    public int TakeHeld(double time)
     {
         int tick = (int)(time * Ticks);
         int count = 0;
         for (; _nextHeld < _held.Count && _held.Tick[_nextHeld] == tick; _nextHeld++)
         {
             int slot = _held.Slot[_nextHeld];
-            if (_table.Alive[slot] && _table.Generation[slot] == _held.Generation[_nextHeld])
+            if (_table.IsCurrent(slot, _held.Generation[_nextHeld]))
             {
-                MovePair(_table.Pair[slot], time);
+                _schedule.MovePair(_table.Pair(slot), time);
                 _sampler.AddHit(slot, _held.Value[_nextHeld]);
                 count++;
             }
@@ -393,18 +366,7 @@ public sealed partial class Stepper
         return count;
     }
 
-    // The first plan of a step: each pair is stored with its sampling interval; the islands schedule their pairs' samples.
-    private sealed class Recorder(Stepper owner) : IPairSink
-    {
-        public void Add(in PlannedPair pair, float rate)
-        {
-            int slot = owner._table.Add(pair, rate);
-            owner._table.Interval[slot] = Scheduler.Interval(pair.Limit, rate);
-            owner._table.LastFree[slot] = 0.0;
-        }
-    }
-
-    private sealed class IslandRunner(Stepper owner) : IslandPool.IChunkWork
+    private sealed class IslandRunner(IslandSampling owner) : IslandPool.IChunkWork
     {
         private long _allocated;
 

@@ -1,42 +1,53 @@
 using System;
+using System.Collections.Generic;
 using System.Numerics;
 
 namespace URWPGSim2D.Collision.Motion;
 
-/// <content>
+/// <summary>
 /// The time of first contact of an event (the one time-of-impact search of the library; the
 /// pair-level <see cref="TimeOfImpact"/> runs it on a world of two bodies): between the last time
 /// all the event's pairs were apart and the sample that found them overlapping, a false-position
 /// guess from the deepest hit's closing rate, then bisection until nothing involved moves more
-/// than <see cref="MotionTolerances.TimeOfImpactTolerance"/> inside the bracket.
-/// </content>
-public sealed partial class Stepper
+/// than <see cref="MotionTolerances.TimeOfImpactTolerance"/> inside the bracket. The event's hits
+/// are the event loop's sampler's; its bodies are the ones <see cref="Search"/> is given. Holds no
+/// state of its own between calls.
+/// </summary>
+internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodies)
 {
     // Rounds of the false-position estimate of the time of first contact before bisection takes over.
     private const int GuessRounds = 3;
 
-    // False-position estimate of a hit's time of first contact (its last free time when unknown).
-    private double EstimatedContact(int slot, in Hit hit, double found)
+    private readonly PairTable _table = schedule.Table;
+    private readonly PairSampler _sampler = schedule.Sampler;
+
+    /// <summary>False-position estimate of a hit's time of first contact (its last free time when unknown).</summary>
+    public double Estimate(int slot, in Hit hit, double found)
     {
-        float closing = ClosingRate(_table.Pair[slot], hit);
-        double guess = closing > 0f ? found - (hit.Depth / closing) : _table.LastFree[slot];
-        return Math.Clamp(guess, _table.LastFree[slot], found);
+        float closing = ClosingRate(_table.Pair(slot), hit);
+        double guess = closing > 0f ? found - (hit.Depth / closing) : _table.LastFree(slot);
+        return Math.Clamp(guess, _table.LastFree(slot), found);
     }
 
-    // Between the last time all hits were apart and the sample that found them (checked first
-    // unless the hits are known to be apart then): a false-position guess, then bisection until
-    // nothing involved moves more than the tolerance inside the bracket.
-    private double FirstContact(double free, double hit, bool knownApart)
+    /// <summary>
+    /// The time of first contact of the event loop's current hits, whose moving bodies are
+    /// <paramref name="involved"/>: between the last time all hits were apart,
+    /// <paramref name="free"/>, and the sample that found them, <paramref name="hit"/> (checked
+    /// first unless the hits are known to be apart then), a false-position guess, then bisection
+    /// until nothing involved moves more than the tolerance inside the bracket. The bodies are left
+    /// at some time of the bracket.
+    /// </summary>
+    public double Search(double free, double hit, bool knownApart, BodySet involved)
     {
         float rate = 0f;
         for (int i = 0; i < _sampler.HitCount; i++)
         {
-            rate = MathF.Max(rate, _table.Rate[_sampler.HitSlots[i]]);
+            rate = MathF.Max(rate, _table.Rate(_sampler.HitSlots[i]));
         }
 
         if (!knownApart)
         {
-            MoveInvolved(free);
+            MoveInvolved(free, involved);
             if (AnyHitIntersects())
             {
                 return free;
@@ -47,12 +58,12 @@ public sealed partial class Stepper
         double hi = hit;
         if ((hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance)
         {
-            Guess(ref lo, ref hi, rate);
+            Guess(ref lo, ref hi, rate, involved);
         }
         for (int iteration = 0; iteration < 48 && (hi - lo) * rate > MotionTolerances.TimeOfImpactTolerance; iteration++)
         {
             double mid = 0.5 * (lo + hi);
-            MoveInvolved(mid);
+            MoveInvolved(mid, involved);
             if (AnyHitIntersects())
             {
                 hi = mid;
@@ -70,7 +81,7 @@ public sealed partial class Stepper
     // probe there (exact for translation). While the probe still overlaps, the same estimate from
     // its own depth moves hi on (a few rounds: turning bodies close at a changing rate); once a
     // probe is apart, one more just after it brackets the contact tightly.
-    private void Guess(ref double lo, ref double hi, float rate)
+    private void Guess(ref double lo, ref double hi, float rate, BodySet involved)
     {
         int deepest = 0;
         for (int i = 1; i < _sampler.HitCount; i++)
@@ -82,7 +93,7 @@ public sealed partial class Stepper
         Hit hit = _sampler.HitValues[deepest];
         for (int round = 0; round < GuessRounds; round++)
         {
-            float closing = ClosingRate(_table.Pair[slot], hit);
+            float closing = ClosingRate(_table.Pair(slot), hit);
             if (!(closing > 0f) || rate <= 0f)
             {
                 return;
@@ -94,7 +105,7 @@ public sealed partial class Stepper
                 return;
             }
 
-            MoveInvolved(guess);
+            MoveInvolved(guess, involved);
             if (DeepestHitNow(out slot, out hit))
             {
                 hi = guess;
@@ -110,7 +121,7 @@ public sealed partial class Stepper
             double next = lo + (0.5 * MotionTolerances.TimeOfImpactTolerance / rate);
             if (next < hi)
             {
-                MoveInvolved(next);
+                MoveInvolved(next, involved);
                 if (AnyHitIntersects())
                 {
                     hi = next;
@@ -132,8 +143,8 @@ public sealed partial class Stepper
         deepest = default;
         for (int i = 0; i < _sampler.HitCount; i++)
         {
-            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
-            Hit hit = _sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]);
+            ref readonly PlannedPair pair = ref _table.Pair(_sampler.HitSlots[i]);
+            Hit hit = _sampler.Memo.DetectIfNear(bodies[pair.A], bodies[pair.B]);
             if (hit.Depth > MotionTolerances.ContactSlop && hit.Depth > deepest.Depth)
             {
                 slot = _sampler.HitSlots[i];
@@ -148,8 +159,8 @@ public sealed partial class Stepper
     {
         for (int i = 0; i < _sampler.HitCount; i++)
         {
-            PlannedPair pair = _table.Pair[_sampler.HitSlots[i]];
-            if (_sampler.Memo.DetectIfNear(_bodies[pair.A], _bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
+            ref readonly PlannedPair pair = ref _table.Pair(_sampler.HitSlots[i]);
+            if (_sampler.Memo.DetectIfNear(bodies[pair.A], bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
             {
                 return true;
             }
@@ -161,14 +172,24 @@ public sealed partial class Stepper
     // How fast the two bodies close along the hit's normal at its action point, mm per whole step (positive when approaching).
     private float ClosingRate(in PlannedPair pair, in Hit hit)
     {
-        Vector2 a = PointVelocity(_bodies[pair.A], hit.Point);
-        Vector2 b = pair.MoverB >= 0 ? PointVelocity(_bodies[pair.B], hit.Point) : Vector2.Zero;
-        return -Vector2.Dot(a - b, hit.Normal) * _planner.Seconds;
+        Vector2 a = PointVelocity(bodies[pair.A], hit.Point);
+        Vector2 b = pair.MoverB >= 0 ? PointVelocity(bodies[pair.B], hit.Point) : Vector2.Zero;
+        return -Vector2.Dot(a - b, hit.Normal) * schedule.Seconds;
     }
 
     private static Vector2 PointVelocity(Body body, Vector2 point)
     {
         Vector2 r = point - body.Position;
         return body.Velocity + (body.AngularVelocity * new Vector2(-r.Y, r.X));
+    }
+
+    // The event's bodies placed at a time of the step.
+    private void MoveInvolved(double time, BodySet involved)
+    {
+        float seconds = schedule.Seconds;
+        foreach (int m in involved.Items)
+        {
+            schedule.Planner.MoverBodies[m].MoveTo(time, seconds);
+        }
     }
 }
