@@ -264,6 +264,23 @@ public class Field : ICloneable
     /// <returns>Display point, px.</returns>
     public Xna.Vector3 MmToPix(Xna.Vector3 vector3) => new(MmToPixX((int)vector3.X), 0f, MmToPixZ((int)vector3.Z));
 
+    /// <summary>
+    /// A field rectangle given by its top-left corner and size in mm as a display rectangle: the corner through
+    /// <see cref="MmToPixX"/>/<see cref="MmToPixZ"/>, the size scaled the same way (display only).
+    /// </summary>
+    /// <param name="xMm">Left X, mm.</param>
+    /// <param name="zMm">Top Z, mm.</param>
+    /// <param name="widthMm">Width along X, mm.</param>
+    /// <param name="heightMm">Height along Z, mm.</param>
+    /// <returns>The display rectangle, px.</returns>
+    public Rectangle MmToPix(int xMm, int zMm, int widthMm, int heightMm) =>
+        new(MmToPixX(xMm), MmToPixZ(zMm), MmToPixX(widthMm) - FieldCenterXPix, MmToPixZ(heightMm) - FieldCenterZPix);
+
+    /// <summary>A field rectangle in mm (X right, Z down) as a display rectangle (display only).</summary>
+    /// <param name="rectMm">The rectangle, mm.</param>
+    /// <returns>The display rectangle, px.</returns>
+    public Rectangle MmToPix(Rectangle rectMm) => MmToPix(rectMm.Left, rectMm.Top, rectMm.Width, rectMm.Height);
+
     /// <summary>A display point as a field point (X, Z) in mm.</summary>
     /// <param name="pointPix">Display point, px.</param>
     /// <returns>(X, Z), mm.</returns>

@@ -168,7 +168,7 @@ internal static class FrameworkStubs
         }
         """;
 
-    /// <summary>System.Drawing 2.0.0.0 (the colours and points of the original's API).</summary>
+    /// <summary>System.Drawing 2.0.0.0 (the colours, points and rectangles of the original's API).</summary>
     public const string SystemDrawing = """
         [assembly: System.Reflection.AssemblyVersion("2.0.0.0")]
         namespace System.Drawing
@@ -181,6 +181,10 @@ internal static class FrameworkStubs
                 public static Color Red { get { return default(Color); } }
                 public static Color Blue { get { return default(Color); } }
                 public static Color FromArgb(int red, int green, int blue) { return default(Color); }
+            }
+            public struct Rectangle
+            {
+                public int Left { get { return 0; } }
             }
             public struct Point
             {

@@ -42,7 +42,7 @@ internal static class OriginalApiStubs
 
     private static readonly HashSet<Type> Framework =
     [
-        typeof(System.Collections.Hashtable), typeof(System.Drawing.Color), typeof(System.Drawing.Point),
+        typeof(System.Collections.Hashtable), typeof(System.Drawing.Color), typeof(System.Drawing.Point), typeof(System.Drawing.Rectangle),
         typeof(List<>), typeof(ICloneable), typeof(MarshalByRefObject),
     ];
 

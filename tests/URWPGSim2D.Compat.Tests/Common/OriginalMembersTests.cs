@@ -258,6 +258,17 @@ public sealed class OriginalMembersTests
         Assert.Equal((3, -XnaFramework.MathHelper.PiOver2), (c2.BorderWidthPix, c2.DirectionRad));
     }
 
+    [Fact]
+    public void FieldRectanglesScaleToTheDisplayLikeItsPoints()
+    {
+        var f = Field.Instance();
+        var whole = f.MmToPix(f.LeftMm, f.TopMm, f.FieldLengthXMm, f.FieldLengthZMm);
+        Assert.Equal((f.MmToPixX(f.LeftMm), f.MmToPixZ(f.TopMm)), (whole.X, whole.Y));
+        Assert.Equal((f.FieldLengthXPix, f.FieldLengthZPix), (whole.Width, whole.Height));
+        Assert.Equal(whole, f.MmToPix(new Rectangle(f.LeftMm, f.TopMm, f.FieldLengthXMm, f.FieldLengthZMm)));
+        Assert.Equal(new Rectangle(f.FieldCenterXPix, f.FieldCenterZPix, 0, 0), f.MmToPix(0, 0, 0, 0));
+    }
+
     private static void AssertClose(XnaFramework.Vector3 expected, XnaFramework.Vector3 actual)
     {
         Assert.Equal(expected.X, actual.X, 3);
