@@ -244,6 +244,32 @@ public sealed partial class Stepper
         Commit(b);
     }
 
+    /// <summary>
+    /// Counts a moving body as changed by the current response without changing it. After a
+    /// response the bodies it changed are committed at the contact's time and planned again in the
+    /// order they were first changed or involved, and contacts found together afterwards are
+    /// handled in that order: a response that involves its bodies first, in the order it will move
+    /// them, makes that order explicit. Between steps it does nothing.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public void Involve(int body)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Touch(b);
+        Commit(b);
+    }
+
+    /// <summary>
+    /// Whether a moving body's move was rejected (<see cref="IContactHandler.OnMoveRejected"/>) in
+    /// the current or last step, or by a <see cref="Settle"/> since: the body went back to where it
+    /// began the step, at rest. Cleared for every body when a step begins.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>True when the move was rejected.</returns>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public bool WasRejected(int body) => Moving(body, null, nameof(body)).Rejected;
+
     /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The id is out of range.</exception>
