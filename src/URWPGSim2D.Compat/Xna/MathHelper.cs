@@ -111,4 +111,38 @@ public static class MathHelper
         float t = Clamp(amount, 0f, 1f);
         return Lerp(value1, value2, t * t * (3f - (2f * t)));
     }
+
+    /// <summary>Catmull-Rom spline through four values: the curve passes through <paramref name="value2"/> at 0 and <paramref name="value3"/> at 1.</summary>
+    /// <param name="value1">The value before the segment.</param>
+    /// <param name="value2">Value at 0.</param>
+    /// <param name="value3">Value at 1.</param>
+    /// <param name="value4">The value after the segment.</param>
+    /// <param name="amount">Position on the segment (not clamped).</param>
+    /// <returns>½·(2v2 + (v3 − v1)t + (2v1 − 5v2 + 4v3 − v4)t² + (3v2 − v1 − 3v3 + v4)t³).</returns>
+    public static float CatmullRom(float value1, float value2, float value3, float value4, float amount)
+    {
+        float t2 = amount * amount;
+        float t3 = t2 * amount;
+        return 0.5f * ((2f * value2)
+            + ((value3 - value1) * amount)
+            + (((2f * value1) - (5f * value2) + (4f * value3) - value4) * t2)
+            + (((3f * value2) - value1 - (3f * value3) + value4) * t3));
+    }
+
+    /// <summary>Cubic Hermite spline from a value and tangent at 0 to a value and tangent at 1.</summary>
+    /// <param name="value1">Value at 0.</param>
+    /// <param name="tangent1">Slope at 0.</param>
+    /// <param name="value2">Value at 1.</param>
+    /// <param name="tangent2">Slope at 1.</param>
+    /// <param name="amount">Position (not clamped).</param>
+    /// <returns>(2t³ − 3t² + 1)v1 + (3t² − 2t³)v2 + (t³ − 2t² + t)s1 + (t³ − t²)s2.</returns>
+    public static float Hermite(float value1, float tangent1, float value2, float tangent2, float amount)
+    {
+        float t2 = amount * amount;
+        float t3 = t2 * amount;
+        return (((2f * t3) - (3f * t2) + 1f) * value1)
+            + (((3f * t2) - (2f * t3)) * value2)
+            + ((t3 - (2f * t2) + amount) * tangent1)
+            + ((t3 - t2) * tangent2);
+    }
 }

@@ -5,7 +5,7 @@ namespace Microsoft.Xna.Framework;
 
 /// <summary>The XNA two-component vector: a mutable struct with public fields, as strategies use it.</summary>
 [Serializable]
-public struct Vector2 : IEquatable<Vector2>
+public partial struct Vector2 : IEquatable<Vector2>
 {
     /// <summary>The X component.</summary>
     public float X;

@@ -9,7 +9,7 @@ namespace Microsoft.Xna.Framework;
 /// (X, 0, Z) in mm. Converts implicitly to and from <see cref="System.Numerics.Vector3"/>.
 /// </summary>
 [Serializable]
-public struct Vector3 : IEquatable<Vector3>
+public partial struct Vector3 : IEquatable<Vector3>
 {
     /// <summary>The X component.</summary>
     public float X;
@@ -189,8 +189,9 @@ public struct Vector3 : IEquatable<Vector3>
     /// <param name="value1">The vector.</param>
     /// <param name="min">Lower bounds.</param>
     /// <param name="max">Upper bounds.</param>
-    /// <returns>Each component limited to its range.</returns>
-    public static Vector3 Clamp(Vector3 value1, Vector3 min, Vector3 max) => Min(Max(value1, min), max);
+    /// <returns>Each component limited to its range, as <see cref="MathHelper.Clamp"/> (the lower bound wins if the bounds cross, as in XNA).</returns>
+    public static Vector3 Clamp(Vector3 value1, Vector3 min, Vector3 max) =>
+        new(MathHelper.Clamp(value1.X, min.X, max.X), MathHelper.Clamp(value1.Y, min.Y, max.Y), MathHelper.Clamp(value1.Z, min.Z, max.Z));
 
     /// <summary>Reflection of a direction off a surface with the given unit normal.</summary>
     /// <param name="vector">Incoming direction.</param>

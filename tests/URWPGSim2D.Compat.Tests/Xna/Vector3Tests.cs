@@ -72,4 +72,88 @@ public sealed class Vector3Tests
 
     [Fact]
     public void TextIsXnasForm() => Assert.Equal("{X:1 Y:-2.5 Z:3}", new Vector3(1f, -2.5f, 3f).ToString());
+
+    [Fact]
+    public void SplinesWorkComponentByComponent()
+    {
+        var a = new Vector3(1f, 0f, -1f);
+        var b = new Vector3(0f, 1f, 0f);
+        var c = new Vector3(1f, 2f, 1f);
+        var d = new Vector3(4f, 3f, 4f);
+        // x and z sample t² at −1, 0, 1, 2 (z shifted by −2 at the ends: not a quadratic, checked against MathHelper); y samples a line.
+        var mid = Vector3.CatmullRom(a, b, c, d, 0.5f);
+        Assert.Equal(0.25f, mid.X, 6);
+        Assert.Equal(1.5f, mid.Y, 6);
+        Assert.Equal(MathHelper.CatmullRom(-1f, 0f, 1f, 4f, 0.5f), mid.Z);
+        Vector3.CatmullRom(ref a, ref b, ref c, ref d, 0.5f, out var viaRef);
+        Assert.Equal(mid, viaRef);
+
+        // t³ on X (tangents 0 and 3), a line on Y, a constant on Z.
+        var h = Vector3.Hermite(new Vector3(0f, 1f, 5f), new Vector3(0f, 2f, 0f), new Vector3(1f, 3f, 5f), new Vector3(3f, 2f, 0f), 0.5f);
+        Assert.Equal(0.125f, h.X, 6);
+        Assert.Equal(2f, h.Y, 6);
+        Assert.Equal(5f, h.Z, 6);
+
+        Assert.Equal(new Vector3(2f, 2.5f, 1f), Vector3.Barycentric(new Vector3(1f, 2f, 0f), new Vector3(3f, 4f, 2f), new Vector3(1f, 0f, 0f), 0.5f, 0.25f));
+        var smooth = Vector3.SmoothStep(Vector3.Zero, new Vector3(10f, -10f, 2f), 0.25f);
+        Assert.Equal(new Vector3(1.5625f, -1.5625f, 0.3125f), smooth);
+        Assert.Equal(new Vector3(10f, -10f, 2f), Vector3.SmoothStep(Vector3.Zero, new Vector3(10f, -10f, 2f), 2f));
+    }
+
+    [Fact]
+    public void ClampLetsTheLowerBoundWinWhenTheBoundsCrossAsXnaDoes()
+    {
+        Assert.Equal(new Vector3(0f, 5f, 3f), Vector3.Clamp(new Vector3(-1f, 9f, 3f), Vector3.Zero, new Vector3(5f)));
+        Assert.Equal(new Vector3(3f), Vector3.Clamp(new Vector3(5f), new Vector3(3f), new Vector3(1f)));
+        Assert.Equal(MathHelper.Clamp(5f, 3f, 1f), Vector3.Clamp(new Vector3(5f), new Vector3(3f), new Vector3(1f)).X);
+    }
+
+    [Fact]
+    public void RefOverloadsGiveWhatSystemNumericsGives()
+    {
+        var a = new Vector3(1.5f, -2f, 3f);
+        var b = new Vector3(-4f, 0.5f, 2f);
+        var lo = new Vector3(-1f);
+        var hi = new Vector3(2f);
+        System.Numerics.Vector3 na = a, nb = b;
+        Vector3.Add(ref a, ref b, out var r);
+        Assert.Equal((Vector3)(na + nb), r);
+        Vector3.Subtract(ref a, ref b, out r);
+        Assert.Equal((Vector3)(na - nb), r);
+        Vector3.Multiply(ref a, ref b, out r);
+        Assert.Equal((Vector3)(na * nb), r);
+        Vector3.Multiply(ref a, 2.5f, out r);
+        Assert.Equal((Vector3)(na * 2.5f), r);
+        Vector3.Divide(ref a, ref b, out r);
+        Assert.Equal((Vector3)(na / nb), r);
+        Vector3.Divide(ref a, 4f, out r);
+        Assert.Equal((Vector3)(na / 4f), r);
+        Vector3.Negate(ref a, out r);
+        Assert.Equal((Vector3)(-na), r);
+        Vector3.Min(ref a, ref b, out r);
+        Assert.Equal((Vector3)System.Numerics.Vector3.Min(na, nb), r);
+        Vector3.Max(ref a, ref b, out r);
+        Assert.Equal((Vector3)System.Numerics.Vector3.Max(na, nb), r);
+        Vector3.Clamp(ref a, ref lo, ref hi, out r);
+        Assert.Equal((Vector3)System.Numerics.Vector3.Clamp(na, lo, hi), r);
+        var n = Vector3.Normalize(new Vector3(1f, 2f, 2f));
+        Vector3.Reflect(ref a, ref n, out r);
+        AssertClose(System.Numerics.Vector3.Reflect(na, n), r);
+        Vector3.Lerp(ref a, ref b, 0.3f, out r);
+        AssertClose(System.Numerics.Vector3.Lerp(na, nb, 0.3f), r);
+        var c = Vector3.UnitZ;
+        Vector3.Barycentric(ref a, ref b, ref c, 0.2f, 0.3f, out r);
+        Assert.Equal(Vector3.Barycentric(a, b, c, 0.2f, 0.3f), r);
+        Vector3.Hermite(ref a, ref b, ref c, ref n, 0.4f, out r);
+        Assert.Equal(Vector3.Hermite(a, b, c, n, 0.4f), r);
+        Vector3.SmoothStep(ref a, ref b, 0.4f, out r);
+        Assert.Equal(Vector3.SmoothStep(a, b, 0.4f), r);
+    }
+
+    private static void AssertClose(System.Numerics.Vector3 expected, Vector3 actual)
+    {
+        Assert.Equal(expected.X, actual.X, 5);
+        Assert.Equal(expected.Y, actual.Y, 5);
+        Assert.Equal(expected.Z, actual.Z, 5);
+    }
 }
