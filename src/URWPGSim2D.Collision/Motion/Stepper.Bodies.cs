@@ -16,6 +16,7 @@ namespace URWPGSim2D.Collision.Motion;
 public sealed partial class Stepper
 {
     private readonly List<Body> _bodies = [];
+    private readonly LeafContacts _leaves = new();
     private BodySet _changed = new(0);
     private bool _loaded;
     private bool _stepping;
@@ -292,6 +293,38 @@ public sealed partial class Stepper
         return new Contact(bodyA, bodyB, _schedule.Sampler.Memo.Detect(a, b), Time);
     }
 
+    /// <summary>
+    /// Every leaf contact of a fish with another body at their poses now (for a handler that
+    /// separates a fish, a compound and non-convex body, along all its overlapping parts): the
+    /// fish's leaves (body and fins, tail segments) each tested against the other body's shape or
+    /// leaves, written into <paramref name="contacts"/> as
+    /// <see cref="FishCollision.DetectAll(FishModel, FishModel, Span{FishContact})"/> writes them
+    /// for models laid out at the two poses. The MTVs move the fish. The world's own models are not
+    /// touched; nothing is allocated.
+    /// </summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <param name="body">The other body: a fish, a circle or a static body (not the walls or a moving polygon).</param>
+    /// <param name="contacts">Where to write the contacts: <see cref="FishCollision.MaxContactsWithFish"/> always suffice.</param>
+    /// <returns>The number of contacts written.</returns>
+    /// <exception cref="ArgumentException">A body is out of range, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
+    public int DetectLeaves(int fish, int body, Span<FishContact> contacts)
+    {
+        Body a = Moving(fish, BodyKind.Fish, nameof(fish));
+        if ((uint)body >= (uint)_bodies.Count)
+        {
+            throw new ArgumentException($"body {body} does not exist (the stepper has {_bodies.Count})", nameof(body));
+        }
+
+        Body b = _bodies[body];
+        if (b == a || b.Kind is BodyKind.Walls or BodyKind.Polygon)
+        {
+            throw new ArgumentException($"body {body} is {(b == a ? "the fish itself" : "a " + b.Kind + " body")}: leaf contacts are found with another fish, a circle or a static body", nameof(body));
+        }
+
+        EnsureLoaded();
+        return _leaves.Detect(a, b, contacts);
+    }
+
     internal Body BodyAt(int id) => _bodies[id];
 
     /// <summary>The movers (by slot) a response changed since the stages last took them, in the order first changed.</summary>
@@ -421,6 +454,7 @@ public sealed partial class Stepper
         _events.Load(m);
         _settling.Load(m);
         _changed = new BodySet(m);
+        _leaves.Load(_schedule.Planner.MoverBodies);
         _loaded = true;
     }
 }
