@@ -9,12 +9,13 @@ namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
 /// The options of where user strategies run, the same for <c>run</c> and <c>tournament</c>:
-/// <c>--isolation process|none</c>, <c>--sandbox auto|required|off</c>, <c>--strategy-memory MB</c>.
+/// <c>--isolation process|none</c>, <c>--sandbox auto|required|off</c>, <c>--strategy-memory MB</c>,
+/// <c>--strategy-scratch MB</c>, <c>--strategy-processes N</c>.
 /// </summary>
 internal static class HostOptions
 {
     /// <summary>The options in a usage line.</summary>
-    public const string Usage = "[--isolation process|none] [--sandbox auto|required|off] [--strategy-memory MB]";
+    public const string Usage = "[--isolation process|none] [--sandbox auto|required|off] [--strategy-memory MB] [--strategy-scratch MB] [--strategy-processes N]";
 
     /// <summary>The options' declarations, new for each command that takes them.</summary>
     public static Option[] Declare() =>
@@ -22,10 +23,12 @@ internal static class HostOptions
         CliSyntax.Value("--isolation", "process|none", "where user strategies run", CliCompletions.Fixed("process", "none")),
         CliSyntax.Value("--sandbox", "auto|required|off", "whether strategy hosts run in the sandbox", CliCompletions.Fixed("auto", "required", "off")),
         CliSyntax.Value("--strategy-memory", "MB", "a strategy host's heap limit"),
+        CliSyntax.Value("--strategy-scratch", "MB", "size of a sandboxed host's scratch folder and /tmp"),
+        CliSyntax.Value("--strategy-processes", "N", "most processes and threads of a host's sandbox"),
     ];
 
     /// <summary>Whether <paramref name="name"/> is one of these options.</summary>
-    public static bool Is(string name) => name is "--isolation" or "--sandbox" or "--strategy-memory";
+    public static bool Is(string name) => name is "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes";
 
     /// <summary><paramref name="settings"/> with the option <paramref name="name"/> set to <paramref name="value"/>.</summary>
     /// <param name="settings">The settings so far.</param>
@@ -59,6 +62,18 @@ internal static class HostOptions
                 ? mb
                 : throw error($"--strategy-memory must be an integer {MinimumMemoryMb}..{MaximumMemoryMb}, got {MessageText.Quote(value)}"),
         },
+        "--strategy-scratch" => settings with
+        {
+            ScratchMb = int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int mb) && mb >= 1 && mb <= MaximumScratchMb
+                ? mb
+                : throw error($"--strategy-scratch must be an integer 1..{MaximumScratchMb}, got {MessageText.Quote(value)}"),
+        },
+        "--strategy-processes" => settings with
+        {
+            Processes = int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n >= MinimumProcesses && n <= MaximumProcesses
+                ? n
+                : throw error($"--strategy-processes must be an integer {MinimumProcesses}..{MaximumProcesses}, got {MessageText.Quote(value)}"),
+        },
         _ => throw new ArgumentException($"not a hosting option: {name}", nameof(name)),
     };
 
@@ -67,4 +82,13 @@ internal static class HostOptions
 
     /// <summary>Most <c>--strategy-memory</c>, MiB (1 TiB).</summary>
     public const int MaximumMemoryMb = 1_048_576;
+
+    /// <summary>Most <c>--strategy-scratch</c>, MiB (64 GiB).</summary>
+    public const int MaximumScratchMb = 65_536;
+
+    /// <summary>Least <c>--strategy-processes</c>: the runtime of a host needs about 20 threads.</summary>
+    public const int MinimumProcesses = 32;
+
+    /// <summary>Most <c>--strategy-processes</c>.</summary>
+    public const int MaximumProcesses = 65_536;
 }

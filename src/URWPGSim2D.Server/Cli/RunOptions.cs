@@ -278,7 +278,7 @@ internal sealed class RunOptions
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
-                case "--isolation" or "--sandbox" or "--strategy-memory": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
+                case "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--noise":
                     o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {MessageText.Quote(value)}") };
                     break;

@@ -210,7 +210,7 @@ internal sealed class TournamentOptions
                     break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 1, 1_000_000); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
-                case "--isolation" or "--sandbox" or "--strategy-memory": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
+                case "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--out": o.Out = value.Length > 0 ? value : throw UsageError("--out needs a folder, got \"\""); break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Runtime.InteropServices;
+using System.Text;
 using System.Threading;
 
 namespace URWPGSim2D.Server.Hosting;
@@ -11,39 +12,32 @@ namespace URWPGSim2D.Server.Hosting;
 /// One strategy host process (<c>host SPEC</c> of this program) with its pipes: sandboxed by
 /// bubblewrap when asked and available, with an empty environment but for what .NET needs, its GC
 /// heap limited, CPU time and core dumps limited by <c>prlimit</c>, and its scratch folder as working
-/// directory. A watchdog kills it when an answer takes longer than the server allows. What it
-/// writes to standard error is kept (its last lines) for the fault report.
+/// directory; where cgroups allow, in a control group of its own (<see cref="SandboxCgroup"/>) that
+/// limits the memory and the processes of its whole sandbox and ends all of them with it. A watchdog
+/// kills it when an answer takes longer than the server allows. What it writes to standard error is
+/// kept (its last lines) for the fault report.
 /// </summary>
 internal sealed class HostProcess : IStrategyLink
 {
     private const int TailLines = 4;
+    private const int LineLimit = 300;
     private readonly Process _process;
+    private readonly SandboxCgroup? _cgroup;
     private readonly Queue<string> _tail = new();
+    private readonly Thread _errors;
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
 
-    private HostProcess(Process process, string scratch, bool sandboxed)
+    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed)
     {
         _process = process;
+        _cgroup = cgroup;
         Scratch = scratch;
         Sandboxed = sandboxed;
         HostWatchdog.Watch(this);
-        _process.ErrorDataReceived += (_, e) =>
-        {
-            if (e.Data is { } line)
-            {
-                lock (_tail)
-                {
-                    _tail.Enqueue(line.Length > 300 ? line[..300] : line);
-                    if (_tail.Count > TailLines)
-                    {
-                        _tail.Dequeue();
-                    }
-                }
-            }
-        };
-        _process.BeginErrorReadLine();
+        _errors = new Thread(ReadErrors) { IsBackground = true, Name = "strategy host stderr" };
+        _errors.Start();
     }
 
     /// <summary>The stream to the host (its standard input).</summary>
@@ -65,10 +59,11 @@ internal sealed class HostProcess : IStrategyLink
     /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
     /// <param name="readOnly">Files and folders of the strategy the host may read.</param>
     /// <param name="sandbox">Whether to use bubblewrap (the caller has checked it works).</param>
-    /// <param name="memoryMb">GC heap hard limit, MiB.</param>
+    /// <param name="settings">The heap limit, the size of scratch and /tmp, the process limit.</param>
     /// <param name="cpuSeconds">CPU time limit of the whole host, s.</param>
-    public static HostProcess Start(string loadSpec, IEnumerable<string> readOnly, bool sandbox, int memoryMb, int cpuSeconds)
+    public static HostProcess Start(string loadSpec, IEnumerable<string> readOnly, bool sandbox, HostSettings settings, int cpuSeconds)
     {
+        int memoryMb = settings.MemoryMb;
         string scratch = RunFolder.NewScratch();
         string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
         string dotnetRoot = DotnetRoot();
@@ -89,11 +84,17 @@ internal sealed class HostProcess : IStrategyLink
         };
 
         var command = new List<string>();
+        var cgroup = HostCgroup.Create(settings);
+        if (cgroup is not null)
+        {
+            command.AddRange(cgroup.Wrapper());
+        }
+
         if (sandbox)
         {
             var paths = new List<string>(readOnly) { dotnetRoot, Path.GetDirectoryName(server)! };
             command.Add(Sandbox.Bwrap);
-            command.AddRange(Sandbox.Arguments(paths, scratch, environment));
+            command.AddRange(Sandbox.Arguments(paths, scratch, environment, (long)settings.ScratchMb * 1024 * 1024));
         }
 
         if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
@@ -121,8 +122,19 @@ internal sealed class HostProcess : IStrategyLink
             start.Environment[pair.Key] = pair.Value;
         }
 
-        var process = Process.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
-        return new HostProcess(process, scratch, sandbox);
+        Process process;
+        try
+        {
+            process = Process.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
+        }
+        catch
+        {
+            cgroup?.Dispose();
+            RunFolder.Delete(scratch);
+            throw;
+        }
+
+        return new HostProcess(process, cgroup, scratch, sandbox);
     }
 
     /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
@@ -158,13 +170,19 @@ internal sealed class HostProcess : IStrategyLink
         {
             how = "it stopped answering";
         }
+        else if (_cgroup is not null && _cgroup.OutOfMemory())
+        {
+            how = $"out of memory: its sandbox reached its limit of {_cgroup.MemoryBytes / (1024 * 1024)} MiB, killed";
+        }
         else
         {
             int code = _process.ExitCode;
             how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
         }
 
-        _process.WaitForExit(); // drain the rest of standard error
+        _cgroup?.KillAll(); // whatever the host left running in its sandbox
+
+        _errors.Join(2000); // the rest of standard error
         string tail;
         lock (_tail)
         {
@@ -190,6 +208,8 @@ internal sealed class HostProcess : IStrategyLink
         {
             // already gone
         }
+
+        _cgroup?.KillAll();
     }
 
     /// <inheritdoc/>
@@ -203,7 +223,62 @@ internal sealed class HostProcess : IStrategyLink
 
         _process.WaitForExit(5000);
         _process.Dispose();
+        _cgroup?.Dispose(); // every process of the sandbox ends with the host
         RunFolder.Delete(Scratch);
+    }
+
+    // Keeps the last lines of the host's standard error, each cut to LineLimit characters, reading
+    // in blocks: however much the host writes, with or without line breaks, this holds a few lines.
+    private void ReadErrors()
+    {
+        var stream = _process.StandardError.BaseStream;
+        var buffer = new byte[4096];
+        var line = new StringBuilder(LineLimit);
+        var decoder = new UTF8Encoding(false).GetDecoder();
+        var chars = new char[buffer.Length + 4];
+        try
+        {
+            int read;
+            while ((read = stream.Read(buffer, 0, buffer.Length)) > 0)
+            {
+                int count = decoder.GetChars(buffer, 0, read, chars, 0);
+                for (int i = 0; i < count; i++)
+                {
+                    char c = chars[i];
+                    if (c == '\n')
+                    {
+                        Keep(line);
+                    }
+                    else if (c != '\r' && line.Length < LineLimit)
+                    {
+                        line.Append(c);
+                    }
+                }
+            }
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException)
+        {
+            // the host has gone
+        }
+
+        if (line.Length > 0)
+        {
+            Keep(line);
+        }
+    }
+
+    private void Keep(StringBuilder line)
+    {
+        lock (_tail)
+        {
+            _tail.Enqueue(line.ToString());
+            if (_tail.Count > TailLines)
+            {
+                _tail.Dequeue();
+            }
+        }
+
+        line.Clear();
     }
 
     private static string DotnetRoot()

@@ -27,7 +27,7 @@ internal static class HostedStrategy
 
         // CPU time of the whole host: every cycle at its deadline, and a minute for the start.
         long cpu = 60 + ((long)Math.Max(cycles, 1) * assignment.DeadlineMs / 1000 * 2);
-        var process = HostProcess.Start(strategy.LoadSpec, strategy.ReadOnly, HostSandbox.Use(settings.Sandbox), settings.MemoryMb, (int)Math.Min(cpu, int.MaxValue));
+        var process = HostProcess.Start(strategy.LoadSpec, strategy.ReadOnly, HostSandbox.Use(settings.Sandbox), settings, (int)Math.Min(cpu, int.MaxValue));
         return new StrategyConnection(process, assignment, AnswerLimit(assignment.DeadlineMs), StartLimit, token: null, log: null, peer: "the host");
     }
 }

@@ -9,9 +9,11 @@ namespace URWPGSim2D.Server.Hosting;
 /// The bubblewrap sandbox of a strategy host on Linux: new user (as nobody), PID, network, IPC, UTS
 /// and cgroup namespaces; a root file system that holds only the system's libraries (<c>/usr</c>,
 /// read-only), the .NET runtime and the server's program files (read-only), the strategy's own files
-/// (read-only), a private <c>/tmp</c>, <c>/proc</c> of its own PID namespace, a minimal <c>/dev</c> and
-/// the host's scratch folder (read-write, its working directory); an empty environment but for
-/// the variables the host needs. Whether bubblewrap works here is found out once, by running it.
+/// (read-only), <c>/proc</c> of its own PID namespace, a minimal <c>/dev</c>, and a private <c>/tmp</c>,
+/// <c>/dev/shm</c> and scratch folder (its working directory) on size-limited tmpfs, so nothing it
+/// writes reaches the machine's disk; an empty environment but for the variables the host needs.
+/// Its processes die with the host (the host's bubblewrap is the PID namespace's init) and with the
+/// server (<c>--die-with-parent</c>). Whether bubblewrap works here is found out once, by running it.
 /// </summary>
 internal static class Sandbox
 {
@@ -25,15 +27,17 @@ internal static class Sandbox
 
     /// <summary>
     /// The bubblewrap arguments (before the command) for a host that may read <paramref name="readOnly"/>
-    /// and write <paramref name="scratch"/>, with <paramref name="environment"/> as its whole environment.
+    /// and write <paramref name="scratch"/> (a tmpfs of <paramref name="scratchBytes"/> there, as /tmp and
+    /// /dev/shm), with <paramref name="environment"/> as its whole environment.
     /// </summary>
-    public static List<string> Arguments(IEnumerable<string> readOnly, string scratch, IReadOnlyDictionary<string, string> environment)
+    public static List<string> Arguments(IEnumerable<string> readOnly, string scratch, IReadOnlyDictionary<string, string> environment, long scratchBytes)
     {
+        string size = scratchBytes.ToString(System.Globalization.CultureInfo.InvariantCulture);
         var a = new List<string>
         {
-            "--unshare-all", "--uid", "65534", "--gid", "65534", "--new-session",
+            "--unshare-all", "--uid", "65534", "--gid", "65534", "--new-session", "--die-with-parent",
             "--ro-bind", "/usr", "/usr",
-            "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp",
+            "--proc", "/proc", "--dev", "/dev", "--size", size, "--tmpfs", "/dev/shm", "--size", size, "--tmpfs", "/tmp",
         };
         foreach (string top in new[] { "/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32" })
         {
@@ -58,7 +62,7 @@ internal static class Sandbox
             }
         }
 
-        a.AddRange(["--bind", scratch, scratch, "--chdir", scratch, "--clearenv"]);
+        a.AddRange(["--size", size, "--perms", "0700", "--tmpfs", scratch, "--chdir", scratch, "--clearenv"]);
         foreach (var pair in environment)
         {
             a.AddRange(["--setenv", pair.Key, pair.Value]);
@@ -76,7 +80,7 @@ internal static class Sandbox
         }
 
         var start = new ProcessStartInfo(Bwrap) { RedirectStandardError = true, RedirectStandardOutput = true, UseShellExecute = false };
-        foreach (string arg in Arguments([], "/tmp", new Dictionary<string, string>()))
+        foreach (string arg in Arguments([], "/tmp/urwpgsim2d-probe", new Dictionary<string, string>(), 1 << 20))
         {
             start.ArgumentList.Add(arg);
         }

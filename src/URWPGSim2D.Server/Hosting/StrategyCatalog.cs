@@ -39,7 +39,7 @@ internal static class StrategyCatalog
                     continue;
                 }
 
-                if (StrategyCompiler.SourceFiles(dir).Count > 0)
+                if (HasSources(dir))
                 {
                     names.Add(name + "/");
                 }
@@ -67,4 +67,17 @@ internal static class StrategyCatalog
 
     private static bool IsStrategyFile(string name) => !name.StartsWith('.')
         && (name.EndsWith(".cs", StringComparison.OrdinalIgnoreCase) || name.EndsWith(".dll", StringComparison.OrdinalIgnoreCase));
+
+    // Whether a folder holds sources; one the loader refuses (a symbolic link in it) is offered, to say why when chosen.
+    private static bool HasSources(string dir)
+    {
+        try
+        {
+            return StrategyCompiler.SourceFiles(dir).Count > 0;
+        }
+        catch (StrategyLoadException)
+        {
+            return true;
+        }
+    }
 }

@@ -36,20 +36,45 @@ internal static class StrategyCompiler
             return files;
         }
 
-        foreach (string file in Directory.EnumerateFiles(spec, "*.cs", SearchOption.AllDirectories))
+        Collect(spec, spec, files);
+        files.Sort(StringComparer.Ordinal);
+        return files;
+    }
+
+    // The .cs files under folder (bin/ and obj/ at the top skipped); a symbolic link that could lead
+    // to sources (a .cs file or a folder) is refused: only regular files inside the folder are read.
+    private static void Collect(string spec, string folder, List<string> files)
+    {
+        var options = new EnumerationOptions { RecurseSubdirectories = false, AttributesToSkip = 0, IgnoreInaccessible = false };
+        foreach (string entry in Directory.EnumerateFileSystemEntries(folder, "*", options))
         {
-            string relative = Path.GetRelativePath(spec, file);
-            string first = relative.Split(Path.DirectorySeparatorChar)[0];
-            if (first is "bin" or "obj")
+            string relative = Path.GetRelativePath(spec, entry);
+            if (relative is "bin" or "obj")
             {
                 continue;
             }
 
-            files.Add(Path.Combine(spec, relative));
-        }
+            var info = new FileInfo(entry);
+            bool source = entry.EndsWith(".cs", OperatingSystem.IsLinux() ? StringComparison.Ordinal : StringComparison.OrdinalIgnoreCase);
+            if (info.LinkTarget is not null)
+            {
+                if (source || Directory.Exists(entry))
+                {
+                    throw new StrategyLoadException($"{Path.Combine(spec, relative)} is a symbolic link: only regular files inside the strategy's folder are read");
+                }
 
-        files.Sort(StringComparer.Ordinal);
-        return files;
+                continue;
+            }
+
+            if (info.Attributes.HasFlag(FileAttributes.Directory))
+            {
+                Collect(spec, entry, files);
+            }
+            else if (source)
+            {
+                files.Add(Path.Combine(spec, relative));
+            }
+        }
     }
 
     /// <summary>Compiles the files into an assembly image.</summary>

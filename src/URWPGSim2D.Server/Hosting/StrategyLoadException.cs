@@ -1,11 +1,14 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// A user strategy could not be loaded. The message is one line for the command line; compile
 /// errors add one <see cref="Details"/> line each (<c>file(line,col): error CSnnnn: message</c>).
+/// Both hold text a strategy controls (its files' names, its sources, its messages): control and
+/// escape characters in them are escaped, so each is one harmless line on a terminal.
 /// </summary>
 internal class StrategyLoadException : Exception
 {
@@ -13,9 +16,9 @@ internal class StrategyLoadException : Exception
     /// <param name="message">What went wrong, one line.</param>
     /// <param name="details">Further lines (compile errors), or none.</param>
     public StrategyLoadException(string message, IReadOnlyList<string>? details = null)
-        : base(message)
+        : base(Json.MessageText.Escape(message))
     {
-        Details = details ?? [];
+        Details = details is null ? [] : details.Select(Json.MessageText.Escape).ToArray();
     }
 
     /// <summary>Lines printed after the message, one per compile error.</summary>

@@ -107,6 +107,7 @@ internal sealed class StrategySlot
     /// <summary>Counts a fault of <paramref name="kind"/> in <paramref name="cycle"/> (1-based) and remembers it for the summary and the trace.</summary>
     public void Charge(int cycle, FaultKind kind, string message)
     {
+        message = Json.MessageText.Escape(message); // the strategy's own text: no control or escape character reaches a terminal
         switch (kind)
         {
             case FaultKind.Exception: Exceptions++; break;

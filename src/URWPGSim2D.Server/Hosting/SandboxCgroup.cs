@@ -1,0 +1,368 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Runtime.InteropServices;
+using System.Threading;
+
+namespace URWPGSim2D.Server.Hosting;
+
+/// <summary>
+/// The control group of one strategy host (Linux): every process the host starts is in it, so the
+/// whole sandbox is limited as one (its memory, heap and native and its RAM-backed files; the number
+/// of its processes and threads) and ended as one, however its processes hide (<c>setsid</c>, double
+/// forks, a fork bomb). Works with cgroups v1 (the <c>memory</c> and <c>pids</c> hierarchies) and v2
+/// (one hierarchy with both controllers), through their files. The host is put into the group by a
+/// <c>/bin/sh</c> wrapper before it starts (<see cref="Wrapper"/>), so not even its first child is
+/// outside. Where no such group can be made (no cgroups, no permission, not Linux) <see cref="Unavailable"/>
+/// says why and hosts run without these limits.
+/// </summary>
+internal sealed partial class SandboxCgroup : IDisposable
+{
+    private static readonly Lazy<Layout?> Found = new(Find);
+    private static readonly Lazy<string?> Problem = new(Probe);
+    private static int _next;
+    private readonly string[] _folders;
+    private readonly Layout _layout;
+    private int _disposed;
+
+    private SandboxCgroup(Layout layout, string[] folders, long memoryBytes)
+    {
+        _layout = layout;
+        _folders = folders;
+        MemoryBytes = memoryBytes;
+    }
+
+    /// <summary>Why no group can be made here, or null when it can.</summary>
+    public static string? Unavailable => Problem.Value;
+
+    /// <summary>The group's memory limit, bytes.</summary>
+    public long MemoryBytes { get; }
+
+    /// <summary>
+    /// A new group limited to <paramref name="memoryBytes"/> of memory and <paramref name="tasks"/>
+    /// processes and threads, or null (and why) when none can be made.
+    /// </summary>
+    public static SandboxCgroup? Create(long memoryBytes, int tasks, out string? problem)
+    {
+        problem = Unavailable;
+        if (problem is not null || Found.Value is not { } layout)
+        {
+            problem ??= "no cgroup hierarchy with the memory and pids controllers";
+            return null;
+        }
+
+        string name = "urwpgsim2d-" + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-" + Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture);
+        var made = new List<string>();
+        try
+        {
+            foreach (string parent in layout.Parents)
+            {
+                string folder = Path.Combine(parent, name);
+                Directory.CreateDirectory(folder);
+                made.Add(folder);
+            }
+
+            var group = new SandboxCgroup(layout, [.. made], memoryBytes);
+            string memory = memoryBytes.ToString(CultureInfo.InvariantCulture);
+            string count = tasks.ToString(CultureInfo.InvariantCulture);
+            if (layout.V2)
+            {
+                File.WriteAllText(Path.Combine(made[0], "memory.max"), memory);
+                TryWrite(Path.Combine(made[0], "memory.swap.max"), "0");
+                File.WriteAllText(Path.Combine(made[0], "pids.max"), count);
+            }
+            else
+            {
+                File.WriteAllText(Path.Combine(made[0], "memory.limit_in_bytes"), memory);
+                TryWrite(Path.Combine(made[0], "memory.memsw.limit_in_bytes"), memory); // no swap beyond it
+                File.WriteAllText(Path.Combine(made[1], "pids.max"), count);
+            }
+
+            return group;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            foreach (string folder in made)
+            {
+                TryRemove(folder);
+            }
+
+            problem = "cannot make a cgroup: " + e.Message;
+            return null;
+        }
+    }
+
+    /// <summary>
+    /// The command that joins this group and then runs the rest of the command line in it (its
+    /// process, and everything that process starts, is in the group from its first instruction).
+    /// </summary>
+    public IEnumerable<string> Wrapper()
+    {
+        yield return "/bin/sh";
+        yield return "-c";
+        yield return "for f in \"$@\"; do [ \"$f\" = -- ] && break; echo $$ > \"$f\" || exit 125; shift; done; shift; exec \"$@\"";
+        yield return "urwpgsim2d-host";
+        foreach (string folder in _folders)
+        {
+            yield return Path.Combine(folder, "cgroup.procs");
+        }
+
+        yield return "--";
+    }
+
+    /// <summary>Whether the kernel killed a process of the group for want of memory.</summary>
+    public bool OutOfMemory()
+    {
+        string file = Path.Combine(_folders[0], _layout.V2 ? "memory.events" : "memory.oom_control");
+        try
+        {
+            foreach (string line in File.ReadLines(file))
+            {
+                if (line.StartsWith("oom_kill ", StringComparison.Ordinal) && long.TryParse(line.AsSpan(9), NumberStyles.None, CultureInfo.InvariantCulture, out long kills) && kills > 0)
+                {
+                    return true;
+                }
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // gone or unreadable: not known to be out of memory
+        }
+
+        return false;
+    }
+
+    /// <summary>The processes of the group now.</summary>
+    public List<int> Processes()
+    {
+        var pids = new List<int>();
+        foreach (string folder in _folders)
+        {
+            try
+            {
+                foreach (string line in File.ReadLines(Path.Combine(folder, "cgroup.procs")))
+                {
+                    if (int.TryParse(line, NumberStyles.None, CultureInfo.InvariantCulture, out int pid) && !pids.Contains(pid))
+                    {
+                        pids.Add(pid);
+                    }
+                }
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // removed already
+            }
+        }
+
+        return pids;
+    }
+
+    /// <summary>Ends every process of the group (a fork bomb included: the pids limit bounds it) and waits until none is left, at most about 5 s.</summary>
+    public void KillAll()
+    {
+        if (_layout.V2 && TryWrite(Path.Combine(_folders[0], "cgroup.kill"), "1"))
+        {
+            WaitEmpty(200);
+            return;
+        }
+
+        // SIGKILL whatever is listed until nothing is: a process forked meanwhile is listed next round.
+        for (int round = 0; round < 1000; round++)
+        {
+            var pids = Processes();
+            if (pids.Count == 0)
+            {
+                return;
+            }
+
+            foreach (int pid in pids)
+            {
+                _ = Kill(pid, 9);
+            }
+
+            Thread.Sleep(round < 10 ? 1 : 5);
+        }
+    }
+
+    /// <summary>Ends every process of the group and removes the group.</summary>
+    public void Dispose()
+    {
+        if (Interlocked.Exchange(ref _disposed, 1) != 0)
+        {
+            return;
+        }
+
+        KillAll();
+        foreach (string folder in _folders)
+        {
+            // A killed process leaves the group when the kernel has finished with it: a few tries.
+            for (int attempt = 0; attempt < 100 && !TryRemove(folder); attempt++)
+            {
+                Thread.Sleep(10);
+            }
+        }
+    }
+
+    private void WaitEmpty(int rounds)
+    {
+        for (int i = 0; i < rounds && Processes().Count > 0; i++)
+        {
+            Thread.Sleep(5);
+        }
+    }
+
+    private static bool TryWrite(string file, string text)
+    {
+        try
+        {
+            File.WriteAllText(file, text);
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
+    }
+
+    private static bool TryRemove(string folder)
+    {
+        try
+        {
+            if (Directory.Exists(folder))
+            {
+                Directory.Delete(folder); // a cgroup's files go with it: not recursive
+            }
+
+            return true;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
+        }
+    }
+
+    private static string? Probe()
+    {
+        if (!OperatingSystem.IsLinux())
+        {
+            return "cgroups are Linux only";
+        }
+
+        if (Found.Value is null)
+        {
+            return "no cgroup hierarchy with the memory and pids controllers";
+        }
+
+        // Make (and remove) one group: the permission to do so is the question.
+        string name = "urwpgsim2d-" + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-probe";
+        foreach (string parent in Found.Value.Parents)
+        {
+            string folder = Path.Combine(parent, name);
+            try
+            {
+                Directory.CreateDirectory(folder);
+                bool limits = File.Exists(Path.Combine(folder, "cgroup.procs")) && (File.Exists(Path.Combine(folder, "memory.max")) || File.Exists(Path.Combine(folder, "memory.limit_in_bytes")) || File.Exists(Path.Combine(folder, "pids.max")));
+                TryRemove(folder);
+                if (!limits)
+                {
+                    return $"the cgroup {parent} gives its children no memory or pids limits";
+                }
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                return $"cannot make a cgroup in {parent} ({e.Message})";
+            }
+        }
+
+        return null;
+    }
+
+    // Where this process's groups are: from /proc/self/mounts and /proc/self/cgroup.
+    private static Layout? Find()
+    {
+        if (!OperatingSystem.IsLinux())
+        {
+            return null;
+        }
+
+        try
+        {
+            var own = new Dictionary<string, string>(StringComparer.Ordinal); // controller (or "" for v2) -> own path
+            foreach (string line in File.ReadLines("/proc/self/cgroup"))
+            {
+                string[] parts = line.Split(':', 3);
+                if (parts.Length == 3)
+                {
+                    foreach (string controller in parts[1].Split(','))
+                    {
+                        own[controller] = parts[2];
+                    }
+                }
+            }
+
+            string? memoryMount = null, pidsMount = null, unified = null;
+            foreach (string line in File.ReadLines("/proc/self/mounts"))
+            {
+                string[] fields = line.Split(' ');
+                if (fields.Length < 4)
+                {
+                    continue;
+                }
+
+                if (fields[2] == "cgroup2")
+                {
+                    unified ??= fields[1];
+                }
+                else if (fields[2] == "cgroup")
+                {
+                    string[] options = fields[3].Split(',');
+                    if (Array.IndexOf(options, "memory") >= 0)
+                    {
+                        memoryMount ??= fields[1];
+                    }
+
+                    if (Array.IndexOf(options, "pids") >= 0)
+                    {
+                        pidsMount ??= fields[1];
+                    }
+                }
+            }
+
+            if (memoryMount is not null && pidsMount is not null && own.TryGetValue("memory", out string? memoryPath) && own.TryGetValue("pids", out string? pidsPath))
+            {
+                return new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath)]);
+            }
+
+            if (unified is not null && own.TryGetValue(string.Empty, out string? path))
+            {
+                string controllers = File.ReadAllText(Path.Combine(unified, "cgroup.controllers"));
+                if (!controllers.Contains("memory", StringComparison.Ordinal) || !controllers.Contains("pids", StringComparison.Ordinal))
+                {
+                    return null;
+                }
+
+                // v2 allows no processes in a group whose children have controllers: a group of its
+                // own next to this process's, enabled in the parent; the root is exempt.
+                string parent = Under(unified, path == "/" ? "/" : Path.GetDirectoryName(path) ?? "/");
+                TryWrite(Path.Combine(parent, "cgroup.subtree_control"), "+memory +pids");
+                string[] enabled = File.ReadAllText(Path.Combine(parent, "cgroup.subtree_control")).Split(' ', StringSplitOptions.TrimEntries);
+                return Array.IndexOf(enabled, "memory") >= 0 && Array.IndexOf(enabled, "pids") >= 0 ? new Layout(true, [parent]) : null;
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // no cgroups here
+        }
+
+        return null;
+    }
+
+    private static string Under(string mount, string path) => Path.TrimEndingDirectorySeparator(mount + (path == "/" ? string.Empty : path));
+
+    [LibraryImport("libc", EntryPoint = "kill", SetLastError = true)]
+    private static partial int Kill(int pid, int signal);
+
+    /// <summary>v1: the memory group's parent and the pids group's parent; v2: the one parent.</summary>
+    private sealed record Layout(bool V2, string[] Parents);
+}
