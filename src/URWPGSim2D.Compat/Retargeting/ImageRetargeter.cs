@@ -11,7 +11,9 @@ namespace URWPGSim2D.Compat.Retargeting;
 /// compatibility assembly instead, those assembly references are dropped, and the 32BITREQUIRED and
 /// strong-name-signed flags are cleared (an IL-only image runs in any process; the rewritten image is not
 /// signed). Everything else — the IL, its other references (<c>mscorlib 2.0.0.0</c> and the framework's
-/// assemblies resolve to this runtime's own), resources — is kept.
+/// assemblies resolve to this runtime's own), resources — is kept as it was: the image is read lazily,
+/// so attribute blobs and method bodies are copied untouched, and where Mono.Cecil must look into a
+/// referenced assembly, <see cref="RuntimeAssemblyResolver"/> answers from the running runtime.
 /// </summary>
 internal static class ImageRetargeter
 {
@@ -24,12 +26,15 @@ internal static class ImageRetargeter
         try
         {
             using var input = new MemoryStream(image, writable: false);
+            using var resolver = new RuntimeAssemblyResolver();
             using var module = ModuleDefinition.ReadModule(input, new ReaderParameters
             {
-                ReadingMode = ReadingMode.Immediate,
+                // Deferred: what is not changed (attribute blobs, method bodies) is copied as it was,
+                // so nothing needs another assembly's contents unless Cecil must decode it.
+                ReadingMode = ReadingMode.Deferred,
                 ReadSymbols = false,
                 InMemory = true,
-                AssemblyResolver = new NoAssemblyResolver(),
+                AssemblyResolver = resolver,
             });
             Rescope(module);
             module.Attributes &= ~(ModuleAttributes.Required32Bit | ModuleAttributes.Preferred32Bit | ModuleAttributes.StrongNameSigned);
@@ -73,23 +78,18 @@ internal static class ImageRetargeter
             }
         }
 
+        // A type the old assembly forwarded to one of the original's assemblies now lives in the compatibility assembly.
+        foreach (var exported in module.ExportedTypes)
+        {
+            if (exported.Scope is AssemblyNameReference scope && originals.Contains(scope))
+            {
+                exported.Scope = compat;
+            }
+        }
+
         foreach (var reference in originals)
         {
             module.AssemblyReferences.Remove(reference);
-        }
-    }
-
-    /// <summary>Retargeting never needs another assembly's contents; asking for one is a malformed image.</summary>
-    private sealed class NoAssemblyResolver : IAssemblyResolver
-    {
-        public AssemblyDefinition Resolve(AssemblyNameReference name) =>
-            throw new AssemblyResolutionException(name);
-
-        public AssemblyDefinition Resolve(AssemblyNameReference name, ReaderParameters parameters) =>
-            throw new AssemblyResolutionException(name);
-
-        public void Dispose()
-        {
         }
     }
 }

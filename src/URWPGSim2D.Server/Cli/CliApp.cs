@@ -57,6 +57,7 @@ internal sealed class CliApp
         new TournamentCommand(),
         new HostCommand(),
         new ConnectCommand(),
+        new InspectDllCommand(),
         new CompletionCommand(),
     ];
 

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Concurrent;
 using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
 using System.IO;
@@ -22,6 +23,9 @@ namespace URWPGSim2D.Server.Hosting;
 internal static class StrategyResolver
 {
     private const string Justification = "User strategies are loaded at run time from their own files; the server is never trimmed.";
+
+    // The retargeted image of an old DLL written for hosts, by the SHA-256 of the DLL's bytes.
+    private static readonly ConcurrentDictionary<string, string> RetargetedFiles = new(StringComparer.Ordinal);
 
     /// <summary>The names accepted as built-in strategies.</summary>
     public static IReadOnlyList<string> BuiltInNames { get; } = ["idle", "chase-ball"];
@@ -98,6 +102,19 @@ internal static class StrategyResolver
         finally
         {
             check.Unload();
+        }
+
+        // A DLL built for the original: hosts load its retargeted image, written once per content to the run's folder.
+        var loadable = Compat.Retargeting.OriginalAssemblyLoader.Read(full);
+        if (loadable.Retargeted is { } retargeted)
+        {
+            string file = RetargetedFiles.GetOrAdd(loadable.Sha256, _ =>
+            {
+                string written = Path.Combine(RunFolder.NewStrategyFolder(), Path.GetFileName(full));
+                File.WriteAllBytes(written, retargeted);
+                return written;
+            });
+            return new PreparedStrategy(file + suffix, [Path.GetDirectoryName(file)!, Path.GetDirectoryName(full)!]);
         }
 
         return new PreparedStrategy(full + suffix, [Path.GetDirectoryName(full)!]);

@@ -142,6 +142,14 @@ internal static class FrameworkStubs
                 }
             }
         }
+        namespace System.IO
+        {
+            public static class File
+            {
+                public static void AppendAllText(string path, string contents) { }
+                public static string ReadAllText(string path) { return null; }
+            }
+        }
         namespace System.Reflection
         {
             [System.AttributeUsage(System.AttributeTargets.Class)]

@@ -36,6 +36,11 @@ internal static class OldStrategyCompiler
     private static readonly Lazy<References> StubsWithMatrix = new(() => Build(
         "namespace Microsoft.Xna.Framework { public struct Matrix { public static Matrix Identity { get { throw null; } } } }"));
 
+    private static readonly Lazy<References> StubsWithWindowsForms = new(() => Build(null, """
+        [assembly: System.Reflection.AssemblyVersion("2.0.0.0")]
+        namespace System.Windows.Forms { public static class MessageBox { public static int Show(string text) { return 0; } } }
+        """));
+
     /// <summary>Compiles <paramref name="sources"/> into an old-style strategy DLL image.</summary>
     public static byte[] Compile(string assemblyName, Platform platform, params string[] sources) =>
         Compile(Stubs.Value, assemblyName, platform, sources);
@@ -46,6 +51,13 @@ internal static class OldStrategyCompiler
     /// </summary>
     public static byte[] CompileWithXnaMatrix(string assemblyName, params string[] sources) =>
         Compile(StubsWithMatrix.Value, assemblyName, Platform.X86, sources);
+
+    /// <summary>
+    /// Compiles against stand-ins that also have .NET Framework 2.0's <c>System.Windows.Forms</c> (with
+    /// <c>MessageBox.Show</c>), which this runtime does not have, as a DLL that shows a message box.
+    /// </summary>
+    public static byte[] CompileWithWindowsForms(string assemblyName, params string[] sources) =>
+        Compile(StubsWithWindowsForms.Value, assemblyName, Platform.X86, sources);
 
     private static byte[] Compile(References references, string assemblyName, Platform platform, string[] sources)
     {
@@ -68,12 +80,17 @@ internal static class OldStrategyCompiler
         return path;
     }
 
-    private static References Build(string? extraXna)
+    private static References Build(string? extraXna, string? windowsForms = null)
     {
         var all = new List<MetadataReference>();
         var tokens = new Dictionary<string, string>();
         all.Add(Stub("mscorlib", FrameworkStubs.Mscorlib, [], "b77a5c561934e089", tokens));
         all.Add(Stub("System.Drawing", FrameworkStubs.SystemDrawing, all, "b03f5f7f11d50a3a", tokens));
+        if (windowsForms is not null)
+        {
+            all.Add(Stub("System.Windows.Forms", windowsForms, all, "b77a5c561934e089", tokens));
+        }
+
         foreach (var (assembly, _) in OriginalApiStubs.Assemblies)
         {
             all.Add(Stub(assembly, OriginalApiStubs.Source(assembly) + (assembly == "Microsoft.Xna.Framework" ? extraXna : null), all, assembly.StartsWith("Microsoft", StringComparison.Ordinal) ? XnaToken : OriginalToken, tokens));

@@ -13,7 +13,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, completion; --help for details)";
+    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, inspect-dll, completion; --help for details)";
     private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
 
     [Theory]

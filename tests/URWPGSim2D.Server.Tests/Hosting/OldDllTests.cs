@@ -106,6 +106,50 @@ public sealed class OldDllTests : IDisposable
         Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
     }
 
+    [Theory]
+    [InlineData("process")]
+    [InlineData("none")]
+    public void AnOldDllWritesAndReadsFilesInItsWorkingDirectory(string isolation)
+    {
+        // Appends a line a cycle to a file named relatively and reads it back: an exception (a fault) if the
+        // file does not hold every line written so far. In a host the working directory is its scratch folder.
+        const string Notes = """
+            using URWPGSim2D.Common;
+            using URWPGSim2D.StrategyLoader;
+            namespace URWPGSim2D.Strategy
+            {
+                public class Strategy : System.MarshalByRefObject, IStrategy
+                {
+                    private Decision[] decisions;
+                    private string written = "";
+                    public string GetTeamName() { return "Note taker"; }
+                    public Decision[] GetDecision(Mission mission, int teamId)
+                    {
+                        if (decisions == null) { decisions = new Decision[mission.CommonPara.FishCntPerTeam]; }
+                        System.IO.File.AppendAllText("notes.txt", "x");
+                        written = written + "x";
+                        if (System.IO.File.ReadAllText("notes.txt") != written) { throw new System.InvalidOperationException("notes lost"); }
+                        return decisions;
+                    }
+                }
+            }
+            """;
+        string dll = Write("OldNotes.dll", OldStrategyCompiler.Compile("OldNotes", Platform.X86, Notes));
+        string before = Environment.CurrentDirectory;
+        Environment.CurrentDirectory = _folder;
+        try
+        {
+            var run = CliRun.Of(string.Empty, "run", "--cycles", "30", "--strategy", "0=" + dll, "--isolation", isolation);
+            Assert.True(run.ExitCode == 0, run.Stderr);
+            Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
+            Assert.Equal(isolation == "none", File.Exists(Path.Combine(_folder, "notes.txt")));
+        }
+        finally
+        {
+            Environment.CurrentDirectory = before;
+        }
+    }
+
     [Fact]
     public void AnOldDllsFaultsAreCountedLikeAnyStrategys()
     {
@@ -134,6 +178,13 @@ public sealed class OldDllTests : IDisposable
     {
         const string UsesMatrix = "namespace Uses { public class Matrices { public object Make() { return Microsoft.Xna.Framework.Matrix.Identity; } } }";
         AssertRefusedAsDocumented(OldStrategyCompiler.CompileWithXnaMatrix("OldMatrix", OldStrategySources.Dribbler, UsesMatrix));
+    }
+
+    [Fact]
+    public void AnOldDllUsingWhatThisRuntimeLacksIsRefusedNamingIt()
+    {
+        const string ShowsABox = "namespace Uses { public class Boxes { public int Show() { return System.Windows.Forms.MessageBox.Show(\"hello\"); } } }";
+        AssertRefusedAsDocumented(OldStrategyCompiler.CompileWithWindowsForms("OldBoxes", OldStrategySources.Dribbler, ShowsABox));
     }
 
     // Runs the image as teams/red/Strategy.dll: exit 2, nothing written, one line of stderr that

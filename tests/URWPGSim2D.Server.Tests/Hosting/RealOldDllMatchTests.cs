@@ -1,0 +1,101 @@
+using System;
+using System.IO;
+using System.Linq;
+using URWPGSim2D.Server.Tests.Cli;
+using URWPGSim2D.Tests.OldStrategies;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests.Hosting;
+
+/// <summary>
+/// The real DLLs built for the original (<see cref="RealOldDlls"/>, read from ../shared/olddll) each play a
+/// whole match of their item as team 0 against the item's demo, in a strategy host and in the server's
+/// process (<c>--isolation none</c>), with no fault, under the team name their code returns; and they steer:
+/// a DLL whose decisions are all zero plays exactly the match a source returning all-zero decisions plays, and the others do not.
+/// Original-API strategies run in this test process with <c>--isolation none</c>, so these tests run alone
+/// (<see cref="InProcessStaticsCollection"/>).
+/// </summary>
+[Collection(InProcessStaticsCollection.Name)]
+public sealed class RealOldDllMatchTests
+{
+    public static TheoryData<string, string> Runs()
+    {
+        var data = new TheoryData<string, string>();
+        foreach (var dll in RealOldDlls.All())
+        {
+            data.Add(dll.File, "process");
+            data.Add(dll.File, "none");
+        }
+
+        return data;
+    }
+
+    [Theory]
+    [MemberData(nameof(Runs))]
+    public void EachRealOldDllPlaysAWholeMatchOfItsItemWithoutAFault(string file, string isolation)
+    {
+        var dll = RealOldDlls.All().Single(d => d.File == file);
+        var run = Play(dll, "0=" + RealOldDlls.PathOf(file), isolation);
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
+        Assert.Contains("end: match over", run.Stdout, StringComparison.Ordinal);
+        if (dll.TeamName is { } name)
+        {
+            Assert.Contains($"team 0 ({name} [{file}])", run.Stdout, StringComparison.Ordinal);
+        }
+
+        // The same match with team 0 played by a source that returns all-zero decisions: the same contacts
+        // and sub-steps exactly when the DLL's decisions are all zero too.
+        string folder = Path.Combine(Path.GetTempPath(), "urwpg-zero-" + Guid.NewGuid().ToString("N"));
+        Directory.CreateDirectory(folder);
+        try
+        {
+            string zero = Path.Combine(folder, "Zero.cs");
+            File.WriteAllText(zero, ZeroDecisions);
+            var still = Play(dll, "0=" + zero, "none");
+            Assert.True(still.ExitCode == 0, still.Stderr);
+            string Contacts(CliRun r) => Line(r.Stdout, "contacts:") + "\n" + Line(r.Stdout, "sub-steps:");
+            if (dll.Idle)
+            {
+                Assert.Equal(Contacts(still), Contacts(run));
+            }
+            else
+            {
+                Assert.NotEqual(Contacts(still), Contacts(run));
+            }
+        }
+        finally
+        {
+            Directory.Delete(folder, recursive: true);
+        }
+    }
+
+    private const string ZeroDecisions = """
+        using URWPGSim2D.Common;
+        using URWPGSim2D.StrategyLoader;
+
+        namespace URWPGSim2D.Strategy
+        {
+            public class Strategy : System.MarshalByRefObject, IStrategy
+            {
+                private Decision[] decisions;
+
+                public string GetTeamName() { return "zero"; }
+
+                public Decision[] GetDecision(Mission mission, int teamId)
+                {
+                    if (decisions == null) { decisions = new Decision[mission.CommonPara.FishCntPerTeam]; }
+                    return decisions;
+                }
+            }
+        }
+        """;
+
+    // Ball-grab entries are played for ten minutes (one of them acts only in the first 30 s of a ten-minute
+    // match, as it reads RemainingCycles); the others for one minute, a whole match of their item too.
+    private static CliRun Play(RealOldDll dll, string strategy, string isolation) =>
+        CliRun.Of(string.Empty, "run", "--item", dll.Item, "--minutes", dll.Item == "ball-grab" ? "10" : "1", "--strategy", strategy, "--isolation", isolation);
+
+    private static string Line(string stdout, string start) =>
+        stdout.Split('\n').Single(l => l.StartsWith(start, StringComparison.Ordinal));
+}
