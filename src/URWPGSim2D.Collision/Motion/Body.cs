@@ -185,6 +185,9 @@ internal sealed class Body
     /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
     public bool Collides = true;
 
+    /// <summary>Whether the body's move was rejected since the current or last step began.</summary>
+    public bool Rejected;
+
     /// <summary>A moving circle.</summary>
     public static Body Circle(int id, float radius, Vector2 position) =>
         new(BodyKind.Circle, id) { Radius = radius, Position = position, Thickness = 2f * radius };

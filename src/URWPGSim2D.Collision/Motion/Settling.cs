@@ -257,6 +257,7 @@ internal sealed class Settling
     private void MoveBack(Body body, Vector2 position, float heading, float joint1, float joint2, float joint3, bool stamp)
     {
         RejectedMoves++;
+        body.Rejected = true;
         body.Position = position;
         body.Heading = heading;
         if (stamp || body.Joint1 != joint1 || body.Joint2 != joint2 || body.Joint3 != joint3)

@@ -16,6 +16,7 @@ namespace URWPGSim2D.Collision.Motion;
 public sealed partial class Stepper
 {
     private readonly List<Body> _bodies = [];
+    private readonly LeafContacts _leaves = new();
     private BodySet _changed = new(0);
     private bool _loaded;
     private bool _stepping;
@@ -244,6 +245,32 @@ public sealed partial class Stepper
         Commit(b);
     }
 
+    /// <summary>
+    /// Counts a moving body as changed by the current response without changing it. After a
+    /// response the bodies it changed are committed at the contact's time and planned again in the
+    /// order they were first changed or involved, and contacts found together afterwards are
+    /// handled in that order: a response that involves its bodies first, in the order it will move
+    /// them, makes that order explicit. Between steps it does nothing.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public void Involve(int body)
+    {
+        Body b = Moving(body, null, nameof(body));
+        Touch(b);
+        Commit(b);
+    }
+
+    /// <summary>
+    /// Whether a moving body's move was rejected (<see cref="IContactHandler.OnMoveRejected"/>) in
+    /// the current or last step, or by a <see cref="Settle"/> since: the body went back to where it
+    /// began the step, at rest. Cleared for every body when a step begins.
+    /// </summary>
+    /// <param name="body">The body's id.</param>
+    /// <returns>True when the move was rejected.</returns>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public bool WasRejected(int body) => Moving(body, null, nameof(body)).Rejected;
+
     /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The id is out of range.</exception>
@@ -264,6 +291,38 @@ public sealed partial class Stepper
         }
 
         return new Contact(bodyA, bodyB, _schedule.Sampler.Memo.Detect(a, b), Time);
+    }
+
+    /// <summary>
+    /// Every leaf contact of a fish with another body at their poses now (for a handler that
+    /// separates a fish, a compound and non-convex body, along all its overlapping parts): the
+    /// fish's leaves (body and fins, tail segments) each tested against the other body's shape or
+    /// leaves, written into <paramref name="contacts"/> as
+    /// <see cref="FishCollision.DetectAll(FishModel, FishModel, Span{FishContact})"/> writes them
+    /// for models laid out at the two poses. The MTVs move the fish. The world's own models are not
+    /// touched; nothing is allocated.
+    /// </summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <param name="body">The other body: a fish, a circle or a static body (not the walls or a moving polygon).</param>
+    /// <param name="contacts">Where to write the contacts: <see cref="FishCollision.MaxContactsWithFish"/> always suffice.</param>
+    /// <returns>The number of contacts written.</returns>
+    /// <exception cref="ArgumentException">A body is out of range, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
+    public int DetectLeaves(int fish, int body, Span<FishContact> contacts)
+    {
+        Body a = Moving(fish, BodyKind.Fish, nameof(fish));
+        if ((uint)body >= (uint)_bodies.Count)
+        {
+            throw new ArgumentException($"body {body} does not exist (the stepper has {_bodies.Count})", nameof(body));
+        }
+
+        Body b = _bodies[body];
+        if (b == a || b.Kind is BodyKind.Walls or BodyKind.Polygon)
+        {
+            throw new ArgumentException($"body {body} is {(b == a ? "the fish itself" : "a " + b.Kind + " body")}: leaf contacts are found with another fish, a circle or a static body", nameof(body));
+        }
+
+        EnsureLoaded();
+        return _leaves.Detect(a, b, contacts);
     }
 
     internal Body BodyAt(int id) => _bodies[id];
@@ -395,6 +454,7 @@ public sealed partial class Stepper
         _events.Load(m);
         _settling.Load(m);
         _changed = new BodySet(m);
+        _leaves.Load(_schedule.Planner.MoverBodies);
         _loaded = true;
     }
 }

@@ -245,6 +245,7 @@ public sealed partial class Stepper
             body.Events = 0;
             body.EventsInPlace = 0;
             body.LastEventTime = -1.0;
+            body.Rejected = false;
         }
 
         _schedule.Begin(seconds);

@@ -33,7 +33,8 @@ internal static class RetargetedReferenceCheck
 
         var parts = new List<string>();
         var compat = missing.FindAll(m => m.InCompatibilityAssembly);
-        var framework = missing.FindAll(m => !m.InCompatibilityAssembly);
+        var framework = missing.FindAll(m => !m.InCompatibilityAssembly && IsFramework(m.Assembly));
+        var others = missing.FindAll(m => !m.InCompatibilityAssembly && !IsFramework(m.Assembly));
         if (compat.Count > 0)
         {
             parts.Add("parts of the original's API that the compatibility assembly does not provide: " + List(compat));
@@ -42,6 +43,19 @@ internal static class RetargetedReferenceCheck
         if (framework.Count > 0)
         {
             parts.Add("parts of .NET Framework that this runtime does not have: " + List(framework));
+        }
+
+        if (others.Count > 0)
+        {
+            var names = new List<string>();
+            foreach (var m in others)
+            {
+                if (!names.Contains(m.Assembly))
+                {
+                    names.Add(m.Assembly);
+                }
+            }
+            parts.Add($"assemblies that are not here ({string.Join(", ", names)}): " + List(others));
         }
 
         throw new FileLoadException("it uses " + string.Join("; and ", parts));
@@ -123,6 +137,12 @@ internal static class RetargetedReferenceCheck
             missing.Add(new MissingReference(name, scope == OriginalReferences.Compat.Name, scope));
         }
     }
+
+    // The framework's assembly names: mscorlib, System.*, Microsoft.* (other than XNA, which the compatibility assembly provides), WindowsBase, PresentationCore/Framework.
+    private static bool IsFramework(string assembly) =>
+        assembly is "mscorlib" or "System" or "WindowsBase" or "PresentationCore" or "PresentationFramework" or "netstandard"
+        || assembly.StartsWith("System.", StringComparison.Ordinal)
+        || assembly.StartsWith("Microsoft.", StringComparison.Ordinal);
 
     private static string List(List<MissingReference> missing)
     {

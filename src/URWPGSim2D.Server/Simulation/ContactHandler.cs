@@ -26,43 +26,38 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     /// <inheritdoc/>
     public void OnMoveRejected(Stepper stepper, int body)
     {
-        // The motion world put the body back and stopped it (velocity and noise drift zero); a
-        // fish holds still, immovable in contacts, for the rest of the cycle.
-        if (body < world.Fish.Length)
-        {
-            world.Fish[body].Frozen = true;
-        }
+        // The motion world put the body back and stopped it (velocity and noise drift zero) and
+        // remembers it (FishState.MoveRejected): a fish holds still, immovable in contacts, for
+        // the rest of the cycle. Nothing to keep here.
     }
 
-    // The stepper re-plans the bodies a response changes in the order it first changes them, and
-    // simultaneous contacts come in that order: the body the separation moves first is taken
-    // first (A, unless A is a frozen fish that its partner alone is pushed away from), then the other.
+    // The stepper re-plans the bodies a response changes in the order it first changes or involves
+    // them, and simultaneous contacts come in that order: the body the separation moves first is
+    // involved first (A, unless A is a fish whose move was rejected, which its partner alone is
+    // pushed away from), then the other.
     private void TakeInOrder(Stepper stepper, in CandidatePair pair, int a, int b)
     {
         bool aStays = pair.Kind switch
         {
-            PairKind.FishBall => world.Fish[pair.A].Frozen,
-            PairKind.FishFish => world.Fish[pair.A].Frozen && !world.Fish[pair.B].Frozen,
+            PairKind.FishBall => world.Fish[pair.A].MoveRejected,
+            PairKind.FishFish => world.Fish[pair.A].MoveRejected && !world.Fish[pair.B].MoveRejected,
             _ => false,
         };
         bool bMoves = b < world.Fish.Length + world.Balls.Length;
         if (aStays && bMoves)
         {
-            Take(stepper, b);
-            Take(stepper, a);
+            stepper.Involve(b);
+            stepper.Involve(a);
         }
         else
         {
-            Take(stepper, a);
+            stepper.Involve(a);
             if (bMoves)
             {
-                Take(stepper, b);
+                stepper.Involve(b);
             }
         }
     }
-
-    // Marks a body as changed by this contact (its motion unchanged).
-    private static void Take(Stepper stepper, int body) => stepper.SetVelocity(body, stepper.VelocityOf(body), stepper.AngularVelocityOf(body));
 
     // A leaf index for the contact record, −1 for "not a fish".
     private static sbyte Part(FishPart? part) => part.HasValue ? (sbyte)part.Value : (sbyte)-1;

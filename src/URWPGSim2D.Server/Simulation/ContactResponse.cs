@@ -92,7 +92,7 @@ internal sealed class ContactResponse
         FishState fish = _world.Fish[pair.A];
         BallState ball = _world.Balls[pair.B];
         bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
-        float ballShare = fish.Frozen ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
+        float ballShare = fish.MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
         _separation.Apply(pair, hit, 1f - ballShare, ballShare);
         Count(fish, hit);
 
@@ -116,7 +116,7 @@ internal sealed class ContactResponse
 
         float common = vb + (ballShare * (vf - vb));
         ball.Velocity += (common - vb) * n;
-        if (!fish.Frozen)
+        if (!fish.MoveRejected)
         {
             fish.Velocity += (common - vf) * n;
         }
@@ -126,7 +126,7 @@ internal sealed class ContactResponse
     {
         FishState a = _world.Fish[pair.A];
         FishState b = _world.Fish[pair.B];
-        float shareA = a.Frozen == b.Frozen ? 0.5f : a.Frozen ? 0f : 1f;
+        float shareA = a.MoveRejected == b.MoveRejected ? 0.5f : a.MoveRejected ? 0f : 1f;
         _separation.Apply(pair, hit, shareA, 1f - shareA);
         Count(a, hit);
         Count(b, hit);
@@ -143,11 +143,11 @@ internal sealed class ContactResponse
 
         float reach = 2f * PhysicsConstants.RestitutionReach;
         float e = PhysicsConstants.FishFishRestitution * (1f - ((AxisDistanceFromHead(a, hit.Point) + AxisDistanceFromHead(b, hit.Point)) / reach));
-        // A frozen fish is immovable: the other one takes its normal speed.
-        float afterA = a.Frozen ? va : b.Frozen ? vb : Impulse.Exchange(va, PhysicsConstants.FishMass, vb, PhysicsConstants.FishMass, e);
-        float afterB = b.Frozen ? vb : a.Frozen ? va : Impulse.Exchange(vb, PhysicsConstants.FishMass, va, PhysicsConstants.FishMass, e);
+        // A fish whose move was rejected is immovable: the other one takes its normal speed.
+        float afterA = a.MoveRejected ? va : b.MoveRejected ? vb : Impulse.Exchange(va, PhysicsConstants.FishMass, vb, PhysicsConstants.FishMass, e);
+        float afterB = b.MoveRejected ? vb : a.MoveRejected ? va : Impulse.Exchange(vb, PhysicsConstants.FishMass, va, PhysicsConstants.FishMass, e);
         bool first = FirstContact(a, FishKey | pair.B);
-        if (!a.Frozen)
+        if (!a.MoveRejected)
         {
             a.Velocity += (afterA - va) * n;
             if (first)
@@ -156,7 +156,7 @@ internal sealed class ContactResponse
             }
         }
 
-        if (!b.Frozen)
+        if (!b.MoveRejected)
         {
             b.Velocity += (afterB - vb) * n;
             if (first)
@@ -175,7 +175,7 @@ internal sealed class ContactResponse
         Vector2 n = hit.Normal;
         Vector2 lever = hit.Point - fish.Position;
         float vn = NormalSpeed(fish, lever, n);
-        if (vn < 0f && !fish.Frozen)
+        if (vn < 0f && !fish.MoveRejected)
         {
             float after = border ? 0f : PhysicsConstants.FishObstacleFactor * (1f - (AxisDistanceFromHead(fish, hit.Point) / PhysicsConstants.RestitutionReach)) * vn;
             fish.Velocity += (after - vn) * n;
@@ -228,10 +228,10 @@ internal sealed class ContactResponse
         Vector2.Dot(Impulse.PointVelocity(fish.Velocity, fish.AngularVelocity, lever), n);
 
     // The heading increment of a fish that takes `impulse` at `lever`: a pose change at the contact
-    // time, never a change of its angular speed. A wedged (frozen) fish does not turn.
+    // time, never a change of its angular speed. A wedged fish (its move rejected) does not turn.
     private static void Turn(FishState fish, Vector2 lever, Vector2 impulse)
     {
-        if (fish.Frozen)
+        if (fish.MoveRejected)
         {
             return;
         }
@@ -275,11 +275,11 @@ internal sealed class ContactResponse
     }
 
     // A fish that keeps needing deep corrections in one cycle is wedged: the motion world rejects its
-    // move for this cycle (and the handler marks it frozen). Corrections at a refined time of first
-    // contact are no deeper than the tolerance and not counted.
+    // move for this cycle (and remembers it: FishState.MoveRejected). Corrections at a refined time
+    // of first contact are no deeper than the tolerance and not counted.
     private void Count(FishState fish, in Contact hit)
     {
-        if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.Frozen)
+        if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.MoveRejected)
         {
             _world.Motion.RejectMove(fish.Handle);
         }

@@ -129,9 +129,10 @@ internal sealed class FishState
     /// <summary>
     /// True when this cycle's move was rejected (by the motion world, or by the response through
     /// <see cref="Stepper.RejectMove"/>): the fish is back where it started the cycle and holds still
-    /// (it counts as immovable in contacts) for the rest of the cycle.
+    /// (it counts as immovable in contacts) for the rest of the cycle. The motion world's
+    /// <see cref="Stepper.WasRejected"/>, read through the fish's handle.
     /// </summary>
-    public bool Frozen;
+    public bool MoveRejected => _motion.WasRejected(Handle);
 
     /// <summary>
     /// True while a competition item keeps this fish out of play (frozen or caught, parked where the
@@ -177,6 +178,5 @@ internal sealed class FishState
     public void BeginCycle()
     {
         Corrections = 0;
-        Frozen = false;
     }
 }

@@ -16,10 +16,7 @@ namespace URWPGSim2D.Server.Simulation;
 internal sealed class Separation(World world)
 {
     private const int MaxSearchSteps = 24;
-    private readonly FishContact[] _contacts = new FishContact[8 * 8]; // every leaf pair of two fish
-
-    // Two fish's leaves laid out at their poses now, for the summed direction.
-    private readonly ScratchFishModels _posed = new(world.Fish);
+    private readonly FishContact[] _contacts = new FishContact[FishCollision.MaxContactsWithFish]; // every leaf pair of two fish
 
     /// <summary>Moves A and B of <paramref name="pair"/> apart; the first move is the contact's own MTV.</summary>
     public void Apply(in CandidatePair pair, in Contact hit, float shareA, float shareB)
@@ -49,13 +46,7 @@ internal sealed class Separation(World world)
 
     private Vector2 CombinedDirection(in CandidatePair pair, Vector2 fallback)
     {
-        int n = pair.Kind switch
-        {
-            PairKind.FishFish => FishCollision.DetectAll(_posed.Posed(0, pair.A), _posed.Posed(1, pair.B), _contacts),
-            PairKind.FishBall => FishCollision.DetectAll(_posed.Posed(0, pair.A), world.Balls[pair.B].Shape, _contacts),
-            PairKind.FishStatic => FishStatic(_posed.Posed(0, pair.A), world.Statics[pair.B]),
-            _ => 0,
-        };
+        int n = pair.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic ? world.DetectLeaves(pair, _contacts) : 0;
         Vector2 sum = Vector2.Zero;
         for (int i = 0; i < n; i++)
         {
@@ -63,30 +54,6 @@ internal sealed class Separation(World world)
         }
 
         return sum.LengthSquared() > 1e-12f ? Vector2.Normalize(sum) : fallback;
-    }
-
-    private int FishStatic(FishModel fish, StaticBody body)
-    {
-        switch (body.Kind)
-        {
-            case ShapeKind.Circle:
-            {
-                Circle c = body.Circle;
-                return FishCollision.DetectAll(fish, c, _contacts);
-            }
-
-            case ShapeKind.Polygon:
-            {
-                ConvexPolygon p = body.Polygon;
-                return FishCollision.DetectAll(fish, p, _contacts);
-            }
-
-            default:
-            {
-                Aabb b = body.Box;
-                return FishCollision.DetectAll(fish, b, _contacts);
-            }
-        }
     }
 
     // Least s (to 0.05 mm) with the pair apart after moving A by s·stepA and B by s·stepB.

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
@@ -93,6 +94,9 @@ internal sealed class World
 
     /// <summary>The contact of a pair at the bodies' poses now (MTV moves A).</summary>
     public Contact Detect(in CandidatePair pair) => Motion.Detect(HandleOfA(pair), HandleOfB(pair));
+
+    /// <summary>Every leaf contact of a pair whose A is a fish (with a fish, a ball or a static body) at the bodies' poses now; the MTVs move the fish.</summary>
+    public int DetectLeaves(in CandidatePair pair, Span<FishContact> contacts) => Motion.DetectLeaves(HandleOfA(pair), HandleOfB(pair), contacts);
 
     /// <summary>The world's pair of a contact the motion world reports.</summary>
     public CandidatePair PairOf(in Contact contact)

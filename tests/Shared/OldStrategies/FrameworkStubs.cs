@@ -59,7 +59,11 @@ internal static class FrameworkStubs
             public abstract class Array { public int Length { get { return 0; } } }
             public abstract class Delegate { }
             public abstract class MulticastDelegate : Delegate { }
-            public abstract class Type { public static Type GetTypeFromHandle(RuntimeTypeHandle handle) { return null; } }
+            public abstract class Type
+            {
+                public static Type GetTypeFromHandle(RuntimeTypeHandle handle) { return null; }
+                public abstract System.Reflection.Assembly Assembly { get; }
+            }
             public abstract class Attribute { }
             public enum AttributeTargets { Assembly = 1, Class = 4, Struct = 8, Enum = 16, Method = 64, Field = 256, Interface = 1024, All = 32767 }
             [AttributeUsage(AttributeTargets.Class)]
@@ -150,8 +154,17 @@ internal static class FrameworkStubs
                 public static string ReadAllText(string path) { return null; }
             }
         }
+        namespace System.Resources
+        {
+            public class ResourceManager
+            {
+                public ResourceManager(string baseName, System.Reflection.Assembly assembly) { }
+                public virtual string GetString(string name) { return null; }
+            }
+        }
         namespace System.Reflection
         {
+            public abstract class Assembly { }
             [System.AttributeUsage(System.AttributeTargets.Class)]
             public sealed class DefaultMemberAttribute : System.Attribute { public DefaultMemberAttribute(string memberName) { } }
             [System.AttributeUsage(System.AttributeTargets.Assembly)]

@@ -36,10 +36,7 @@ internal static class OldStrategyCompiler
     private static readonly Lazy<References> StubsWithMatrix = new(() => Build(
         "namespace Microsoft.Xna.Framework { public struct Matrix { public static Matrix Identity { get { throw null; } } } }"));
 
-    private static readonly Lazy<References> StubsWithWindowsForms = new(() => Build(null, """
-        [assembly: System.Reflection.AssemblyVersion("2.0.0.0")]
-        namespace System.Windows.Forms { public static class MessageBox { public static int Show(string text) { return 0; } } }
-        """));
+    private static readonly System.Collections.Concurrent.ConcurrentDictionary<string, Lazy<References>> StubsWithExtra = new();
 
     /// <summary>Compiles <paramref name="sources"/> into an old-style strategy DLL image.</summary>
     public static byte[] Compile(string assemblyName, Platform platform, params string[] sources) =>
@@ -57,16 +54,30 @@ internal static class OldStrategyCompiler
     /// <c>MessageBox.Show</c>), which this runtime does not have, as a DLL that shows a message box.
     /// </summary>
     public static byte[] CompileWithWindowsForms(string assemblyName, params string[] sources) =>
-        Compile(StubsWithWindowsForms.Value, assemblyName, Platform.X86, sources);
+        CompileWithExtraAssembly("System.Windows.Forms", "b77a5c561934e089", """
+            [assembly: System.Reflection.AssemblyVersion("2.0.0.0")]
+            namespace System.Windows.Forms { public static class MessageBox { public static int Show(string text) { return 0; } } }
+            """, assemblyName, sources);
 
-    private static byte[] Compile(References references, string assemblyName, Platform platform, string[] sources)
+    /// <summary>
+    /// Compiles against the stand-ins and one more assembly, <paramref name="extraName"/> (public key token
+    /// <paramref name="token"/>), made of <paramref name="extraSource"/>: a DLL referencing an assembly that is not here.
+    /// </summary>
+    public static byte[] CompileWithExtraAssembly(string extraName, string token, string extraSource, string assemblyName, params string[] sources) =>
+        Compile(StubsWithExtra.GetOrAdd(extraName + "|" + extraSource, _ => new Lazy<References>(() => Build(null, (extraName, extraSource, token)))).Value, assemblyName, Platform.X86, sources);
+
+    /// <summary>Compiles <paramref name="sources"/> into an old-style strategy DLL image holding the manifest resources <paramref name="resources"/>.</summary>
+    public static byte[] CompileWithResources(string assemblyName, IReadOnlyList<(string Name, byte[] Data)> resources, params string[] sources) =>
+        Compile(Stubs.Value, assemblyName, Platform.X86, sources, resources);
+
+    private static byte[] Compile(References references, string assemblyName, Platform platform, string[] sources, IReadOnlyList<(string Name, byte[] Data)>? resources = null)
     {
         var compilation = CSharpCompilation.Create(
             assemblyName,
             sources.Select(s => CSharpSyntaxTree.ParseText(s, new CSharpParseOptions(LanguageVersion.CSharp3))),
             references.All,
             new CSharpCompilationOptions(OutputKind.DynamicallyLinkedLibrary, platform: platform, optimizationLevel: OptimizationLevel.Release));
-        byte[] image = Emit(compilation, null);
+        byte[] image = Emit(compilation, null, resources);
         return SetTokens(image, references.Tokens);
     }
 
@@ -80,15 +91,15 @@ internal static class OldStrategyCompiler
         return path;
     }
 
-    private static References Build(string? extraXna, string? windowsForms = null)
+    private static References Build(string? extraXna, (string Name, string Source, string Token)? extra = null)
     {
         var all = new List<MetadataReference>();
         var tokens = new Dictionary<string, string>();
         all.Add(Stub("mscorlib", FrameworkStubs.Mscorlib, [], "b77a5c561934e089", tokens));
         all.Add(Stub("System.Drawing", FrameworkStubs.SystemDrawing, all, "b03f5f7f11d50a3a", tokens));
-        if (windowsForms is not null)
+        if (extra is { } more)
         {
-            all.Add(Stub("System.Windows.Forms", windowsForms, all, "b77a5c561934e089", tokens));
+            all.Add(Stub(more.Name, more.Source, all, more.Token, tokens));
         }
 
         foreach (var (assembly, _) in OriginalApiStubs.Assemblies)
@@ -112,10 +123,11 @@ internal static class OldStrategyCompiler
         return MetadataReference.CreateFromImage(Emit(compilation, references.Count == 0 ? "v2.0.50727" : null));
     }
 
-    private static byte[] Emit(CSharpCompilation compilation, string? runtimeVersion)
+    private static byte[] Emit(CSharpCompilation compilation, string? runtimeVersion, IReadOnlyList<(string Name, byte[] Data)>? resources = null)
     {
         using var stream = new MemoryStream();
-        var result = compilation.Emit(stream, options: new EmitOptions(runtimeMetadataVersion: runtimeVersion));
+        var manifest = resources?.Select(r => new ResourceDescription(r.Name, () => new MemoryStream(r.Data), isPublic: true));
+        var result = compilation.Emit(stream, manifestResources: manifest, options: new EmitOptions(runtimeMetadataVersion: runtimeVersion));
         if (!result.Success)
         {
             throw new InvalidOperationException($"{compilation.AssemblyName}: " + string.Join("\n", result.Diagnostics.Where(d => d.Severity == DiagnosticSeverity.Error).Take(20)));

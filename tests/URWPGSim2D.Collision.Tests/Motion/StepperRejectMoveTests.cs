@@ -74,6 +74,76 @@ public sealed class StepperRejectMoveTests
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.RejectMove(7)).ParamName);
     }
 
+    [Fact]
+    public void WasRejectedTellsTheMoveRejectedInTheLastStepUntilTheNextBegins()
+    {
+        var stepper = new Stepper();
+        stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(1250f, 0f), 0.3f, 0.1f, -0.1f, 0.2f));
+        int ball = stepper.AddCircle(50f, new Vector2(-1000f, 0f));
+        stepper.SetVelocity(fish, new Vector2(3000f, 0f), 1f);
+        Assert.False(stepper.WasRejected(fish));
+
+        stepper.Step(0.1f, new RejectOnContact(fish));
+        Assert.True(stepper.WasRejected(fish));
+        Assert.False(stepper.WasRejected(ball));
+
+        // Still so between steps (a Settle after the step sees it); the next step begins without it.
+        Assert.True(stepper.WasRejected(fish));
+        stepper.Step(0.1f, new RejectOnContact(-1));
+        Assert.False(stepper.WasRejected(fish));
+    }
+
+    [Fact]
+    public void WasRejectedIsTrueExactlyForTheBodiesTheHandlerHeardOf()
+    {
+        // Balls in a box under a response that leaves 2 mm of every overlap: the stepper rejects
+        // the moves of bodies left inside others at the end of a step. WasRejected must name the
+        // same bodies as OnMoveRejected, step after step.
+        var stepper = new Stepper();
+        stepper.AddWalls(new Field(1000f, 800f, goalBlocks: false));
+        var random = new Random(40);
+        var balls = new List<int>();
+        for (int i = 0; i < 12; i++)
+        {
+            int id = stepper.AddCircle(40f, new Vector2(-400f + (i % 4 * 260f), -250f + (i / 4 * 250f)));
+            stepper.SetVelocity(id, new Vector2((float)(random.NextDouble() - 0.5) * 6000f, (float)(random.NextDouble() - 0.5) * 6000f));
+            balls.Add(id);
+        }
+
+        int rejectedSteps = 0;
+        for (int step = 0; step < 40; step++)
+        {
+            var handler = new RecordingHandler(leaveOverlap: 2f);
+            stepper.Step(0.1f, handler);
+            var heard = new HashSet<int>(handler.Rejected);
+            foreach (int id in balls)
+            {
+                Assert.True(heard.Contains(id) == stepper.WasRejected(id), $"step {step}: ball {id} heard {heard.Contains(id)}, WasRejected {stepper.WasRejected(id)}");
+            }
+
+            rejectedSteps += heard.Count > 0 ? 1 : 0;
+            foreach (int id in balls)
+            {
+                if (stepper.VelocityOf(id) == Vector2.Zero)
+                {
+                    stepper.SetVelocity(id, new Vector2((float)(random.NextDouble() - 0.5) * 6000f, (float)(random.NextDouble() - 0.5) * 6000f));
+                }
+            }
+        }
+
+        Assert.True(rejectedSteps > 0, "no step rejected a move: the scene does not test WasRejected");
+    }
+
+    [Fact]
+    public void WasRejectedOfABodyThatDoesNotMoveIsRefusedByName()
+    {
+        var stepper = new Stepper();
+        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.WasRejected(walls)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.WasRejected(5)).ParamName);
+    }
+
     // Rejects the move of one body at its first contact (none when the body is −1); records what the stepper reports.
     private sealed class RejectOnContact(int body) : IContactHandler
     {

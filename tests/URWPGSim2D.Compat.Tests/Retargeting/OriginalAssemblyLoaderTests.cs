@@ -190,6 +190,74 @@ public sealed class OriginalAssemblyLoaderTests
     }
 
     [Fact]
+    public void ADllReferencingAnAssemblyThatIsNotHereIsRefusedNamingTheAssembly()
+    {
+        const string UsesMatch = "namespace Uses { public class Scores { public int Get() { return URWPGSim2D.Match.Polo.Score(); } } }";
+        const string Match = """
+            [assembly: System.Reflection.AssemblyVersion("1.2.123.20110")]
+            namespace URWPGSim2D.Match { public static class Polo { public static int Score() { return 0; } } }
+            """;
+        byte[] image = OldStrategyCompiler.CompileWithExtraAssembly("URWPGSim2D.Match", OldStrategyCompiler.OriginalToken, Match, "OldScores", OldStrategySources.Dribbler, UsesMatch);
+        string path = OldStrategyCompiler.WriteTemporary("OldScores.dll", image);
+        var context = Context();
+        try
+        {
+            var e = Assert.Throws<FileLoadException>(() => OriginalAssemblyLoader.Load(context, path));
+            Assert.Equal("it uses assemblies that are not here (URWPGSim2D.Match): URWPGSim2D.Match.Polo, URWPGSim2D.Match.Polo.Score", e.Message);
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
+    public void AnOldDllReadsItsOwnResources()
+    {
+        // A .resources blob as .NET Framework 2.0 wrote it: its header names mscorlib 2.0.0.0's reader and set.
+        using var written = new MemoryStream();
+        using (var writer = new System.Resources.ResourceWriter(written))
+        {
+            writer.AddResource("TeamName", "红队 from resources");
+        }
+
+        byte[] blob = written.ToArray();
+        byte[] now = System.Text.Encoding.ASCII.GetBytes("Version=4.0.0.0");
+        byte[] then = System.Text.Encoding.ASCII.GetBytes("Version=2.0.0.0");
+        int replaced = 0;
+        for (int i = blob.AsSpan().IndexOf(now); i >= 0; i = blob.AsSpan().IndexOf(now))
+        {
+            then.CopyTo(blob, i);
+            replaced++;
+        }
+
+        Assert.True(replaced >= 1, "the header names the reader's assembly version");
+        const string Named = """
+            namespace URWPGSim2D.Strategy
+            {
+                public class Strategy : System.MarshalByRefObject, URWPGSim2D.StrategyLoader.IStrategy
+                {
+                    public string GetTeamName() { return new System.Resources.ResourceManager("OldRes.Strings", typeof(Strategy).Assembly).GetString("TeamName"); }
+                    public URWPGSim2D.Common.Decision[] GetDecision(URWPGSim2D.Common.Mission mission, int teamId) { return null; }
+                }
+            }
+            """;
+        string path = OldStrategyCompiler.WriteTemporary("OldRes.dll", OldStrategyCompiler.CompileWithResources("OldRes", [("OldRes.Strings.resources", blob)], Named));
+        var context = Context();
+        try
+        {
+            var type = OriginalAssemblyLoader.Load(context, path).GetType("URWPGSim2D.Strategy.Strategy")!;
+            Assert.Equal("红队 from resources", ((StrategyLoader.IStrategy)Activator.CreateInstance(type)!).GetTeamName());
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
+    [Fact]
     public void AnAssemblyBuiltForThisRuntimeLoadsFromItsFileUnchanged()
     {
         string path = typeof(OriginalAssemblyLoaderTests).Assembly.Location;

@@ -91,6 +91,20 @@ public sealed class RealOldDllMatchTests
         }
         """;
 
+    [Fact]
+    public void AnEntryPlayedInAnItemItWasNotWrittenForFaultsAndTheMatchCompletes()
+    {
+        // The push-ball-via-channel entry filed under the double-fish race reads a second fish of its team and
+        // a ball there: each call throws, each is charged to its team, and the race is played to its end.
+        var run = CliRun.Of(string.Empty, "run", "--item", "double-fish-race-via-holes", "--minutes", "1", "--strategy", "0=" + RealOldDlls.PathOf(RealOldDlls.Known[2].File));
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        Assert.Contains("end: match over", run.Stdout, StringComparison.Ordinal);
+        string faults = run.Stdout[run.Stdout.IndexOf("strategy faults:", StringComparison.Ordinal)..];
+        int cycles = int.Parse(run.Stdout[7..run.Stdout.IndexOf(" cycles", StringComparison.Ordinal)], System.Globalization.CultureInfo.InvariantCulture);
+        Assert.Contains($"{cycles} exceptions, 0 timeouts, 0 bad answers", faults, StringComparison.Ordinal);
+        Assert.Contains("ArgumentOutOfRangeException", faults, StringComparison.Ordinal);
+    }
+
     // Ball-grab entries are played for ten minutes (one of them acts only in the first 30 s of a ten-minute
     // match, as it reads RemainingCycles); the others for one minute, a whole match of their item too.
     private static CliRun Play(RealOldDll dll, string strategy, string isolation) =>
