@@ -86,9 +86,11 @@ class FishEnv(_Base):
 
     Observation (floats, in this order): for every fish x/1000, y/1000 (mm -> m), cos and sin of
     its heading, speed/1000; for every ball x/1000, y/1000, vx/1000, vy/1000; then the match's
-    time fraction. Action: 2 integers 0..15 per fish of the team (vcode, tcode), flat.
-    Reward: (own score - other score) now minus the same one step before. terminated: the match
-    ended (its cycles were played, or the item decided it); truncated: options["max_steps"] reached.
+    time fraction (cycle / cycles, at most 1). Action: 2 integers 0..15 per fish of the team
+    (vcode, tcode), flat. Reward: (own score - other score) now minus the same one step before.
+    terminated: the match ended within its cycles (they were played, or the item decided it);
+    truncated: `cycles` steps were played and the item plays on (a tie that goes to extra time or
+    penalties), or options["max_steps"] was reached. An episode is never longer than `cycles` steps.
     """
 
     metadata = {"render_modes": []}
@@ -150,7 +152,8 @@ class FishEnv(_Base):
         difference = self._score(self._snapshot.goals)
         reward = float(difference - self._difference)
         self._difference = difference
-        truncated = self._max_steps is not None and self._steps >= self._max_steps
+        # The match's own length is the episode's: an item that plays on past it (extra time) is cut there.
+        truncated = self._steps >= self.cycles or (self._max_steps is not None and self._steps >= self._max_steps)
         observation, info = self._observation(), self._info()
         if truncated:
             self.close()
@@ -245,7 +248,7 @@ class FishEnv(_Base):
             values += [f.position[0] / 1000, f.position[1] / 1000, math.cos(f.heading), math.sin(f.heading), f.speed / 1000]
         for b in s.balls:
             values += [b.position[0] / 1000, b.position[1] / 1000, b.velocity[0] / 1000, b.velocity[1] / 1000]
-        values.append(s.cycle / max(self.cycles, 1))
+        values.append(min(s.cycle / max(self.cycles, 1), 1.0))
         self._last_observation = _np.asarray(values, dtype=_np.float32) if _np is not None else values
         return self._last_observation
 
