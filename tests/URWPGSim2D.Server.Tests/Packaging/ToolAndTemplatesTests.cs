@@ -67,4 +67,37 @@ public sealed class ToolAndTemplatesTests
         Assert.Contains("dotnet tool install -g URWPGSim2D.Server", readme, System.StringComparison.Ordinal);
         Assert.Contains("dotnet new install URWPGSim2D.Templates", readme, System.StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void EveryPackageTakesItsVersionFromOnePlace()
+    {
+        // version.props names the release; the libraries and the tool (PackageMetadata.props) and the
+        // templates import it, and no project writes a version of its own.
+        var release = XDocument.Load(Repository.PathOf("version.props")).Descendants("UrwpgReleaseVersion").Single().Value;
+        Assert.Matches(@"^\d+\.\d+\.\d+$", release);
+        Assert.NotEqual("1.0.0", release); // every earlier pack was 1.0.0: a tool installed from one must see this as newer
+        foreach (string file in new[] { "src/PackageMetadata.props", "templates/URWPGSim2D.Templates.csproj" })
+        {
+            var project = XDocument.Load(Repository.PathOf(file));
+            Assert.Contains(project.Descendants("Import"), i => i.Attribute("Project")!.Value.EndsWith("version.props", System.StringComparison.Ordinal));
+            Assert.Equal("$(UrwpgReleaseVersion)", project.Descendants("Version").Single().Value);
+        }
+
+        var versioned = Directory.EnumerateFiles(Repository.PathOf("src"), "*.*proj*", SearchOption.AllDirectories)
+            .Concat(Directory.EnumerateFiles(Repository.PathOf("src"), "*.props", SearchOption.AllDirectories))
+            .Where(f => !f.Contains($"{Path.DirectorySeparatorChar}obj{Path.DirectorySeparatorChar}", System.StringComparison.Ordinal))
+            .Where(f => XDocument.Load(f).Descendants("Version").Any(v => v.Value != "$(UrwpgReleaseVersion)"));
+        Assert.Empty(versioned);
+        Assert.Contains($"--version {release}", File.ReadAllText(Repository.PathOf("docs/packaging.md")), System.StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void TheReadmesFeedIsIgnoredAndTheToolsFolderIsOnThePath()
+    {
+        // The README packs into feed/ inside the clone: git must not offer the packages for a commit.
+        Assert.Contains("/feed/", File.ReadAllLines(Repository.PathOf(".gitignore")));
+        string readme = File.ReadAllText(Repository.PathOf("README.md"));
+        Assert.Contains("export PATH=\"$PATH:$HOME/.dotnet/tools\"", readme, System.StringComparison.Ordinal);
+        Assert.Contains("dotnet tool update -g URWPGSim2D.Server", readme, System.StringComparison.Ordinal);
+    }
 }
