@@ -185,6 +185,9 @@ internal sealed class Body
     /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
     public bool Collides = true;
 
+    /// <summary>The caller's tag (see <see cref="Stepper.TagOf"/>).</summary>
+    public int Tag;
+
     /// <summary>Whether the body's move was rejected since the current or last step began.</summary>
     public bool Rejected;
 

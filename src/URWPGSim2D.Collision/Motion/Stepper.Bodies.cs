@@ -271,6 +271,22 @@ public sealed partial class Stepper
     /// <exception cref="ArgumentException">The body does not move.</exception>
     public bool WasRejected(int body) => Moving(body, null, nameof(body)).Rejected;
 
+    /// <summary>
+    /// The caller's tag of a body: a number the caller chooses (0 until set) to find its own record
+    /// of the body from a contact (a game's kind of body and its index, say) without decoding the
+    /// body's id. The stepper never reads it.
+    /// </summary>
+    /// <param name="body">The body's id (any body: moving, static or the walls).</param>
+    /// <returns>The tag.</returns>
+    /// <exception cref="ArgumentException">The body does not exist.</exception>
+    public int TagOf(int body) => Existing(body, nameof(body)).Tag;
+
+    /// <summary>Sets the caller's tag of a body (see <see cref="TagOf"/>); allowed at any time, it changes nothing of the motion.</summary>
+    /// <param name="body">The body's id (any body: moving, static or the walls).</param>
+    /// <param name="tag">The tag.</param>
+    /// <exception cref="ArgumentException">The body does not exist.</exception>
+    public void SetTag(int body, int tag) => Existing(body, nameof(body)).Tag = tag;
+
     /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The id is out of range.</exception>
@@ -310,12 +326,7 @@ public sealed partial class Stepper
     public int DetectLeaves(int fish, int body, Span<FishContact> contacts)
     {
         Body a = Moving(fish, BodyKind.Fish, nameof(fish));
-        if ((uint)body >= (uint)_bodies.Count)
-        {
-            throw new ArgumentException($"body {body} does not exist (the stepper has {_bodies.Count})", nameof(body));
-        }
-
-        Body b = _bodies[body];
+        Body b = Existing(body, nameof(body));
         if (b == a || b.Kind is BodyKind.Walls or BodyKind.Polygon)
         {
             throw new ArgumentException($"body {body} is {(b == a ? "the fish itself" : "a " + b.Kind + " body")}: leaf contacts are found with another fish, a circle or a static body", nameof(body));
@@ -390,6 +401,16 @@ public sealed partial class Stepper
         if ((uint)id >= (uint)_bodies.Count)
         {
             throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", nameof(id));
+        }
+
+        return _bodies[id];
+    }
+
+    private Body Existing(int id, string name)
+    {
+        if ((uint)id >= (uint)_bodies.Count)
+        {
+            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", name);
         }
 
         return _bodies[id];

@@ -21,6 +21,7 @@ internal sealed class BallState
         Radius = radius;
         StartPosition = position;
         Handle = motion.AddCircle(radius, position);
+        motion.SetTag(Handle, BodyTag.Ball(index));
         Velocity = velocity;
     }
 

@@ -43,7 +43,7 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
             PairKind.FishFish => world.Fish[pair.A].MoveRejected && !world.Fish[pair.B].MoveRejected,
             _ => false,
         };
-        bool bMoves = b < world.Fish.Length + world.Balls.Length;
+        bool bMoves = pair.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.BallBall;
         if (aStays && bMoves)
         {
             stepper.Involve(b);

@@ -28,6 +28,7 @@ internal sealed class FishState
         Team = team;
         Size = size;
         Handle = motion.AddFish(size, new FishPose(position, Angle.Wrap(heading), 0f, 0f, 0f));
+        motion.SetTag(Handle, BodyTag.Fish(index));
         Decision = Decision.Stop;
         Turn.Reset(0f, TurnTable.Rates);
         Speed.Reset(0f, SpeedTable.Speeds);

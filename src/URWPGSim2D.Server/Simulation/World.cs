@@ -10,13 +10,15 @@ namespace URWPGSim2D.Server.Simulation;
 /// <summary>
 /// The pool and everything in it: the field (walls, goal blocks), fish, balls and obstacles, plus
 /// the match clock (the score is the match's rules'). The bodies themselves live in the motion world (<see cref="Motion"/>,
-/// the collision library's <see cref="Stepper"/>): fish, then balls (its moving bodies), then
-/// obstacles and goal blocks (static), then the walls; the fish and balls here hold the game state
-/// and their body's handle. Arrays are fixed for the whole match; iteration is always by index.
+/// the collision library's <see cref="Stepper"/>), each tagged with what it is and its index here
+/// (<see cref="BodyTag"/>); the fish and balls here hold the game state and their body's handle.
+/// Arrays are fixed for the whole match; iteration is always by index.
 /// </summary>
 internal sealed class World
 {
-    /// <summary>Creates the world over a motion world that already holds its fish and balls (in index order); adds the static bodies and the walls.</summary>
+    private readonly int[] _staticHandles;
+
+    /// <summary>Creates the world over a motion world that already holds its fish and balls (each tagged by its state); adds the static bodies and the walls, tagged likewise.</summary>
     public World(Stepper motion, Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
     {
         Motion = motion;
@@ -25,29 +27,22 @@ internal sealed class World
         Balls = balls;
         Obstacles = obstacles;
         Statics = statics;
-        for (int i = 0; i < fish.Length; i++)
+        _staticHandles = new int[statics.Length];
+        for (int i = 0; i < statics.Length; i++)
         {
-            Expect(fish[i].Handle, i, "fish");
-        }
-
-        for (int i = 0; i < balls.Length; i++)
-        {
-            Expect(balls[i].Handle, fish.Length + i, "ball");
-        }
-
-        Expect(motion.BodyCount, fish.Length + balls.Length, "moving bodies");
-        foreach (var s in statics)
-        {
+            StaticBody s = statics[i];
             Shape shape = s.Kind switch
             {
                 ShapeKind.Circle => s.Circle,
                 ShapeKind.Polygon => s.Polygon,
                 _ => s.Box,
             };
-            motion.AddStatic(shape);
+            _staticHandles[i] = motion.AddStatic(shape);
+            motion.SetTag(_staticHandles[i], BodyTag.Static(i));
         }
 
         WallsHandle = motion.AddWalls(field);
+        motion.SetTag(WallsHandle, BodyTag.Walls);
     }
 
     /// <summary>The motion world: every body's pose, joints, shape and in-cycle motion.</summary>
@@ -98,23 +93,23 @@ internal sealed class World
     /// <summary>Every leaf contact of a pair whose A is a fish (with a fish, a ball or a static body) at the bodies' poses now; the MTVs move the fish.</summary>
     public int DetectLeaves(in CandidatePair pair, Span<FishContact> contacts) => Motion.DetectLeaves(HandleOfA(pair), HandleOfB(pair), contacts);
 
-    /// <summary>The world's pair of a contact the motion world reports.</summary>
+    /// <summary>The world's pair of a contact the motion world reports, found from the bodies' tags.</summary>
     public CandidatePair PairOf(in Contact contact)
     {
-        int fish = Fish.Length, balls = Balls.Length;
-        int a = contact.BodyA, b = contact.BodyB;
-        if (a < fish)
+        int tagA = Motion.TagOf(contact.BodyA), tagB = Motion.TagOf(contact.BodyB);
+        int a = BodyTag.IndexOf(tagA), b = BodyTag.IndexOf(tagB);
+        PairKind kind = (BodyTag.RoleOf(tagA), BodyTag.RoleOf(tagB)) switch
         {
-            return b < fish ? new CandidatePair(PairKind.FishFish, a, b, 0f)
-                : b < fish + balls ? new CandidatePair(PairKind.FishBall, a, b - fish, 0f)
-                : b == WallsHandle ? new CandidatePair(PairKind.FishWall, a, 0, 0f)
-                : new CandidatePair(PairKind.FishStatic, a, b - fish - balls, 0f);
-        }
-
-        int ball = a - fish;
-        return b < fish + balls ? new CandidatePair(PairKind.BallBall, ball, b - fish, 0f)
-            : b == WallsHandle ? new CandidatePair(PairKind.BallWall, ball, 0, 0f)
-            : new CandidatePair(PairKind.BallStatic, ball, b - fish - balls, 0f);
+            (BodyRole.Fish, BodyRole.Fish) => PairKind.FishFish,
+            (BodyRole.Fish, BodyRole.Ball) => PairKind.FishBall,
+            (BodyRole.Fish, BodyRole.Static) => PairKind.FishStatic,
+            (BodyRole.Fish, BodyRole.Walls) => PairKind.FishWall,
+            (BodyRole.Ball, BodyRole.Ball) => PairKind.BallBall,
+            (BodyRole.Ball, BodyRole.Static) => PairKind.BallStatic,
+            (BodyRole.Ball, BodyRole.Walls) => PairKind.BallWall,
+            _ => throw new InvalidOperationException($"the motion world reported a contact of bodies {contact.BodyA} and {contact.BodyB} tagged {tagA} and {tagB}, not a pair of the match"),
+        };
+        return new CandidatePair(kind, a, b, 0f);
     }
 
     private int HandleOfA(in CandidatePair p) => p.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic or PairKind.FishWall ? Fish[p.A].Handle : Balls[p.A].Handle;
@@ -123,15 +118,7 @@ internal sealed class World
     {
         PairKind.FishFish => Fish[p.B].Handle,
         PairKind.FishBall or PairKind.BallBall => Balls[p.B].Handle,
-        PairKind.FishStatic or PairKind.BallStatic => Fish.Length + Balls.Length + p.B,
+        PairKind.FishStatic or PairKind.BallStatic => _staticHandles[p.B],
         _ => WallsHandle,
     };
-
-    private static void Expect(int actual, int expected, string what)
-    {
-        if (actual != expected)
-        {
-            throw new ArgumentException($"the motion world's {what} must come first and in index order: expected handle {expected}, got {actual}");
-        }
-    }
 }

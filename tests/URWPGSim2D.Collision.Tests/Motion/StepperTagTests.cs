@@ -1,0 +1,76 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Collision.Pool;
+using Xunit;
+
+namespace URWPGSim2D.Collision.Tests.Motion;
+
+/// <summary><see cref="Stepper.SetTag"/> and <see cref="Stepper.TagOf"/>: the caller's number for each body, kept and never read.</summary>
+public sealed class StepperTagTests
+{
+    [Fact]
+    public void EveryKindOfBodyKeepsItsTagAndContactsCarryTheTaggedBodies()
+    {
+        var stepper = new Stepper();
+        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        int block = stepper.AddStatic(new URWPGSim2D.Collision.Shapes.Circle(new Vector2(400f, 0f), 60f));
+        int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f));
+        int ball = stepper.AddCircle(58f, new Vector2(0f, 0f));
+        Assert.Equal(0, stepper.TagOf(ball));
+
+        // Tags unrelated to the ids, set before and between steps.
+        var tags = new Dictionary<int, int> { [walls] = -7, [block] = 1 << 30, [fish] = 12345, [ball] = int.MinValue };
+        foreach ((int body, int tag) in tags)
+        {
+            stepper.SetTag(body, tag);
+        }
+
+        stepper.SetVelocity(ball, new Vector2(6000f, 0f));
+        stepper.SetVelocity(fish, new Vector2(-3000f, 0f));
+        var handler = new TagRecorder();
+        for (int step = 0; step < 10; step++)
+        {
+            stepper.Step(0.1f, handler);
+        }
+
+        Assert.True(handler.Seen.Count >= 2, "too few contacts: the scene does not test the tags");
+        foreach ((int body, int tag) in handler.Seen)
+        {
+            Assert.Equal(tags[body], tag);
+        }
+
+        foreach ((int body, int tag) in tags)
+        {
+            Assert.Equal(tag, stepper.TagOf(body));
+        }
+    }
+
+    [Fact]
+    public void ABodyThatDoesNotExistIsRefusedByName()
+    {
+        var stepper = new Stepper();
+        stepper.AddCircle(10f, Vector2.Zero);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.TagOf(1)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.SetTag(-1, 3)).ParamName);
+    }
+
+    // Records the tag of each contact's bodies as the handler sees them, and bounces the bodies apart.
+    private sealed class TagRecorder : IContactHandler
+    {
+        private readonly RecordingHandler _inner = new(restitution: 1f);
+
+        public List<(int Body, int Tag)> Seen { get; } = [];
+
+        public void OnContact(Stepper stepper, in Contact contact)
+        {
+            Seen.Add((contact.BodyA, stepper.TagOf(contact.BodyA)));
+            Seen.Add((contact.BodyB, stepper.TagOf(contact.BodyB)));
+            _inner.OnContact(stepper, contact);
+        }
+
+        public void OnMoveRejected(Stepper stepper, int body) => _inner.OnMoveRejected(stepper, body);
+    }
+}
