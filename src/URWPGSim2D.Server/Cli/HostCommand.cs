@@ -78,7 +78,8 @@ internal sealed class HostCommand : ICliCommand
             return e is StrategyCreationException ? NotCreated : Unusable;
         }
 
-        var client = new StrategyClient(fromServer, toServer);
+        // A host runs one strategy: the CPU time of all its threads counts against the deadline.
+        var client = new StrategyClient(fromServer, toServer, () => new ThreadTimeClock(wholeProcess: true));
         try
         {
             return client.Play(strategy, token: null) == StrategyClient.Ending.Ended ? ExitCodes.Success : Disconnected;

@@ -179,7 +179,8 @@ internal sealed class TournamentCommand : ICliCommand
                     TournamentFile.WriteRecord(append, record);
                     append.Flush();
                 }
-                else
+
+                if (failure is not null)
                 {
                     failures.Add(string.Create(CultureInfo.InvariantCulture, $"match {m.Index}: {failure}"));
                 }
@@ -219,7 +220,7 @@ internal sealed class TournamentCommand : ICliCommand
 
         if (failures.Count > 0)
         {
-            console.ErrorLine($"tournament: {failures.Count} matches failed inside the server and have no result; run the same command again to play them");
+            console.ErrorLine($"tournament: {failures.Count} matches failed inside the server; each is recorded as a forfeit of the team at fault");
             return ExitCodes.InternalError;
         }
 

@@ -46,10 +46,24 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             end[t] = goals[t];
         }
 
+        // Every slot is stopped, whatever one of them throws; the first failure is then put on its team.
+        TeamFaultException? failure = null;
         foreach (var slot in Slots)
         {
-            slot.Runner?.Stop();
-            slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
+            try
+            {
+                slot.Runner?.Stop();
+                slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                failure ??= new TeamFaultException(slot.Team, e);
+            }
+        }
+
+        if (failure is not null)
+        {
+            throw failure;
         }
     }
 
@@ -154,7 +168,20 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     // until a client connects again.
     private void Hosted(StrategySlot slot, IConnectedStrategy hosted, MatchSnapshot snapshot, int cycle)
     {
-        switch (hosted.Decide(snapshot, slot.Scratch, out string? message))
+        ConnectionOutcome outcome;
+        string? message;
+        try
+        {
+            outcome = hosted.Decide(snapshot, slot.Scratch, out message);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // The server failed talking to this host: the team's host is given up, the match goes on.
+            slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: the server failed with it: {e.GetType().Name}: {e.Message}");
+            return;
+        }
+
+        switch (outcome)
         {
             case ConnectionOutcome.Decided:
                 slot.Scratch.CopyTo(slot.Decisions, 0);

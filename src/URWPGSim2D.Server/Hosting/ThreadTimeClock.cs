@@ -15,10 +15,23 @@ namespace URWPGSim2D.Server.Hosting;
 internal sealed partial class ThreadTimeClock : StrategyClock
 {
     private const int ThreadCpuClockFailed = int.MinValue;
+    private const int ProcessCpuClock = 2; // CLOCK_PROCESS_CPUTIME_ID: every thread of the process
+    private readonly bool _wholeProcess;
 
     private readonly Stopwatch _wall = new();
     private int _clockId = ThreadCpuClockFailed;
     private long _startNs;
+
+    /// <summary>A clock of the strategy's own thread (a strategy in the server's process, or on a remote team's machine).</summary>
+    public ThreadTimeClock()
+    {
+    }
+
+    /// <summary>
+    /// A clock of the strategy's thread, or with <paramref name="wholeProcess"/> of every thread of this
+    /// process (a strategy host, which runs one strategy: threads it starts count against its deadline too).
+    /// </summary>
+    public ThreadTimeClock(bool wholeProcess) => _wholeProcess = wholeProcess;
 
     /// <summary>Wall time after which an unfinished call is given up whatever its CPU time: ten deadlines, at least one second.</summary>
     /// <param name="deadline">The per-call deadline.</param>
@@ -27,7 +40,11 @@ internal sealed partial class ThreadTimeClock : StrategyClock
     /// <inheritdoc/>
     public override void CallStarting()
     {
-        if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux())
+        if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux() && _wholeProcess)
+        {
+            _clockId = ProcessCpuClock;
+        }
+        else if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux())
         {
             try
             {

@@ -73,6 +73,11 @@ internal static class TournamentFile
             }
 
             w.WriteEndArray();
+            if (r.Failed)
+            {
+                w.WriteBoolean("failed", true);
+            }
+
             w.WriteEndObject();
         });
     }
@@ -217,7 +222,8 @@ internal static class TournamentFile
                 throw new ResultFileException("a forfeit needs as many reasons as forfeiting teams, at least one");
             }
 
-            return new TournamentRecord(Field(e, "index").GetInt32(), Field(e, "seed").GetUInt64(), names, null, forfeits, reasons);
+            bool failed = e.TryGetProperty("failed", out var f) && f.GetBoolean();
+            return new TournamentRecord(Field(e, "index").GetInt32(), Field(e, "seed").GetUInt64(), names, null, forfeits, reasons, failed);
         }
 
         var result = ResultFile.ReadResult(e);

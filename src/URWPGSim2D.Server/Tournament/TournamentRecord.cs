@@ -13,7 +13,8 @@ namespace URWPGSim2D.Server.Tournament;
 /// <param name="Result">The match's result, or null for a forfeit.</param>
 /// <param name="Forfeits">For a forfeit, the teams whose entrant could not be loaded (empty for a played match).</param>
 /// <param name="Reasons">For a forfeit, per forfeiting team (as <paramref name="Forfeits"/>), the one-line reason its entrant could not be loaded.</param>
-internal sealed record TournamentRecord(int Index, ulong Seed, IReadOnlyList<string> Entrants, MatchResult? Result, IReadOnlyList<int> Forfeits, IReadOnlyList<string> Reasons)
+/// <param name="Failed">For a forfeit, true when the match failed inside the server (the teams at fault forfeit; a re-run keeps the record instead of failing again).</param>
+internal sealed record TournamentRecord(int Index, ulong Seed, IReadOnlyList<string> Entrants, MatchResult? Result, IReadOnlyList<int> Forfeits, IReadOnlyList<string> Reasons, bool Failed = false)
 {
     /// <summary>Whether the match was forfeited rather than played.</summary>
     public bool IsForfeit => Result is null;

@@ -86,9 +86,14 @@ internal static class TournamentResume
         return true;
     }
 
-    /// <summary>Whether a fitting record still stands: a played match always, a forfeit while its entrants still cannot be loaded.</summary>
+    /// <summary>Whether a fitting record still stands: a played match and a match that failed inside the server always, a forfeit while its entrants still cannot be loaded.</summary>
     public static bool Stands(TournamentRecord r, TournamentSchedule schedule, IReadOnlyList<string?> errors)
     {
+        if (r.Failed)
+        {
+            return true; // the match failed inside the server: playing it again would fail again
+        }
+
         foreach (int team in r.Forfeits)
         {
             if (errors[schedule.Matches[r.Index].Sides[team]] is null)

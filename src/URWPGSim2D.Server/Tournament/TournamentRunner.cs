@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using System.Threading;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
@@ -13,7 +14,8 @@ namespace URWPGSim2D.Server.Tournament;
 /// <paramref name="Entrants"/> (user strategies in fresh strategy hosts under <c>--isolation process</c>),
 /// so their faults are charged to their teams and the match is played. A match with an entrant that
 /// could not be loaded is not played: it becomes a forfeit record. A match that fails inside the server is
-/// reported and left without a record (a re-run plays it again); the others go on.
+/// reported and recorded as a forfeit of the team at fault (<see cref="Failed"/>), which a re-run keeps;
+/// the others go on.
 /// </summary>
 /// <param name="Item">The item.</param>
 /// <param name="Header">The tournament.</param>
@@ -21,7 +23,7 @@ namespace URWPGSim2D.Server.Tournament;
 /// <param name="ReplayPage">Where match J's replay page goes, or null for no replays.</param>
 internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Header, EntrantLoader Entrants, Func<int, string>? ReplayPage)
 {
-    /// <summary>Plays the matches; <paramref name="finished"/> is called (under a lock) as each ends, with its record or, when it failed, null and the failure.</summary>
+    /// <summary>Plays the matches; <paramref name="finished"/> is called (under a lock) as each ends, with its record and, when it failed inside the server, the failure.</summary>
     /// <param name="matches">The matches to play.</param>
     /// <param name="threads">Matches at once, ≥ 1.</param>
     /// <param name="finished">Called once per match in the order they finish.</param>
@@ -36,7 +38,7 @@ internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader H
             while ((position = Interlocked.Increment(ref next)) < matches.Count)
             {
                 var match = matches[position];
-                TournamentRecord? record = null;
+                TournamentRecord? record;
                 string? failure = null;
                 try
                 {
@@ -44,7 +46,8 @@ internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader H
                 }
                 catch (Exception e) when (e is not OutOfMemoryException)
                 {
-                    failure = StandingsText.Line($"{e.GetType().Name}: {e.Message}");
+                    record = Failed(match, e);
+                    failure = record.Reasons[0];
                 }
 
                 lock (gate)
@@ -66,6 +69,36 @@ internal sealed record TournamentRunner(CompetitionItem Item, TournamentHeader H
         {
             thread.Join();
         }
+    }
+
+    /// <summary>
+    /// The record of a match that failed inside the server: a forfeit of the team the failure was
+    /// put on (<see cref="TeamFaultException"/>), else of every team of the match, with the reason.
+    /// </summary>
+    public TournamentRecord Failed(ScheduledMatch match, Exception e)
+    {
+        var names = new string[match.Sides.Count];
+        for (int side = 0; side < names.Length; side++)
+        {
+            names[side] = Header.Entrants[match.Sides[side]].Name;
+        }
+
+        string why = StandingsText.Line(e is TeamFaultException t ? $"the match failed inside the server: {t.InnerException!.GetType().Name}: {t.InnerException.Message}" : $"the match failed inside the server: {e.GetType().Name}: {e.Message}");
+        var teams = new List<int>();
+        for (int side = 0; side < match.Sides.Count; side++)
+        {
+            if (e is not TeamFaultException f || f.Team == side)
+            {
+                teams.Add(side);
+            }
+        }
+
+        if (teams.Count == 0)
+        {
+            teams.AddRange(Enumerable.Range(0, match.Sides.Count));
+        }
+
+        return new TournamentRecord(match.Index, match.Seed, names, null, teams, teams.ConvertAll(_ => why), Failed: true);
     }
 
     /// <summary>The record of one match: played, or forfeited by the entrants that cannot be loaded.</summary>
