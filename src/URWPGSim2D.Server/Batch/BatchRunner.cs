@@ -9,7 +9,8 @@ namespace URWPGSim2D.Server.Batch;
 /// Plays the matches of one shard of a batch on several threads. Match j (the shard's matches are
 /// j = I, I + K, I + 2K, … below N) is built with seed FirstSeed + j and played alone by one thread,
 /// so its result depends only on j: not on the thread count, the order the threads finish in, or
-/// the shard. Results are reported in match order as soon as every earlier one is done.
+/// the shard. Results are reported in match order as soon as every earlier one is done. A match that
+/// fails inside the server has a line all the same, with the reason (<see cref="MatchResult.Failed"/>).
 /// </summary>
 internal static class BatchRunner
 {
@@ -38,7 +39,17 @@ internal static class BatchRunner
                 {
                     int index = header.ShardIndex + (position * header.ShardCount);
                     ulong seed = header.FirstSeed + (ulong)index;
-                    Volatile.Write(ref results[position], Play(build(seed), index, seed, header.Cycles));
+                    MatchResult result;
+                    try
+                    {
+                        result = Play(build(seed), index, seed, header.Cycles);
+                    }
+                    catch (Exception e) when (e is not OutOfMemoryException and not Hosting.StrategyLoadException)
+                    {
+                        result = MatchResult.FailedMatch(index, seed, e); // every match has its line
+                    }
+
+                    Volatile.Write(ref results[position], result);
                     lock (gate)
                     {
                         while (reported < count && results[reported] is { } done)

@@ -15,8 +15,9 @@ internal static class BatchSummary
     private static readonly CultureInfo C = CultureInfo.InvariantCulture;
 
     /// <summary>The line of one match.</summary>
-    public static string Line(MatchResult r) =>
-        string.Create(C, $"match {r.Index} (seed {r.Seed}): {Result(r)}, contacts {r.TotalContacts}, contact events {r.Events}, sub-steps {r.SubSteps}, overlap {r.LeftoverOverlap:0.000} mm, faults {r.StrategyFaults}\n");
+    public static string Line(MatchResult r) => r.Failed is { } why
+        ? string.Create(C, $"match {r.Index} (seed {r.Seed}): failed inside the server: {why}\n")
+        : string.Create(C, $"match {r.Index} (seed {r.Seed}): {Result(r)}, contacts {r.TotalContacts}, contact events {r.Events}, sub-steps {r.SubSteps}, overlap {r.LeftoverOverlap:0.000} mm, faults {r.StrategyFaults}\n");
 
     // The score and who won by which rule: "score 1-1, team 0 won by earlier first score";
     // "score 0-0, none: tie"; without an item, the goals.

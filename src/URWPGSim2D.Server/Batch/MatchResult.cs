@@ -25,11 +25,18 @@ namespace URWPGSim2D.Server.Batch;
 /// <param name="Winner">The item's winning team, or −1 (a draw, no winner, or no item).</param>
 /// <param name="Rule">The rule that decided the item's result (null without an item).</param>
 /// <param name="Faults">Per team, the faults of each strategy that faulted (null or empty: none).</param>
+/// <param name="Failed">Why the match failed inside the server (its other fields are then zero), or null.</param>
 internal sealed record MatchResult(
     int Index, ulong Seed, int Cycles, int Goals0, int Goals1, long[] Contacts, long SubSteps,
     int MostSubSteps, long Events, float LeftoverOverlap, int LeftoverCycle, int StrategyFaults,
-    string? Item = null, int[]? Scores = null, int Winner = -1, string? Rule = null, TeamFaults[]? Faults = null)
+    string? Item = null, int[]? Scores = null, int Winner = -1, string? Rule = null, TeamFaults[]? Faults = null,
+    string? Failed = null)
 {
+    /// <summary>The line of a match that failed inside the server: nothing played, the reason kept.</summary>
+    public static MatchResult FailedMatch(int index, ulong seed, Exception e) =>
+        new(index, seed, 0, 0, 0, new long[ContactNames.Length], 0, 0, 0, 0f, 0, 0,
+            Failed: Json.MessageText.Escape($"{e.GetType().Name}: {e.Message}"));
+
     /// <summary>Contact kinds as the result file and the summaries name them.</summary>
     public static readonly string[] ContactNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];
 

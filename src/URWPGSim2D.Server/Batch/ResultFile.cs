@@ -164,6 +164,11 @@ internal static class ResultFile
             w.WriteString("rule", r.Rule);
         }
 
+        if (r.Failed is not null)
+        {
+            w.WriteString("failed", r.Failed); // compatible addition: present only for a match that failed inside the server
+        }
+
         extra?.Invoke(w);
         w.WriteEndObject();
     }
@@ -246,6 +251,11 @@ internal static class ResultFile
             }
 
             result = result with { Item = item.GetString(), Scores = scores, Winner = Field(e, "winner").GetInt32(), Rule = Field(e, "rule").GetString() };
+        }
+
+        if (e.TryGetProperty("failed", out var failed))
+        {
+            result = result with { Failed = failed.GetString() };
         }
 
         return result;

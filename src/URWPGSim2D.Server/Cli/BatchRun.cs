@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
 using System.IO;
+using System.Linq;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Scenario;
 
@@ -70,6 +71,13 @@ internal static class BatchRun
         double simulated = results.Length * cycles * 0.1;
         console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {results.Length / seconds:0.00} matches/s, {simulated / seconds:0}x real time\n"));
         RunCommand.Wrote(console, options.Results, string.Create(CultureInfo.InvariantCulture, $"the results of {results.Length} matches"));
+        int failed = results.Count(r => r.Failed is not null);
+        if (failed > 0)
+        {
+            console.ErrorLine(string.Create(CultureInfo.InvariantCulture, $"run: {failed} matches failed inside the server; each has its line with \"failed\" and the reason"));
+            return ExitCodes.InternalError;
+        }
+
         return ExitCodes.Success;
     }
 

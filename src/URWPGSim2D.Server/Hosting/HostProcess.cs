@@ -200,6 +200,14 @@ internal sealed class HostProcess : IStrategyLink
             _killedByWatchdog = true;
         }
 
+        if (_cgroup is not null)
+        {
+            // Every process of the sandbox at once, the host's bubblewrap included, and wait until they have
+            // ended (its PID namespace's init ends last, after all the others).
+            _cgroup.KillAll();
+            return;
+        }
+
         try
         {
             _process.Kill(entireProcessTree: true);
@@ -208,8 +216,6 @@ internal sealed class HostProcess : IStrategyLink
         {
             // already gone
         }
-
-        _cgroup?.KillAll();
     }
 
     /// <inheritdoc/>

@@ -161,27 +161,50 @@ internal sealed partial class SandboxCgroup : IDisposable
     /// <summary>Ends every process of the group (a fork bomb included: the pids limit bounds it) and waits until none is left, at most about 5 s.</summary>
     public void KillAll()
     {
-        if (_layout.V2 && TryWrite(Path.Combine(_folders[0], "cgroup.kill"), "1"))
-        {
-            WaitEmpty(200);
-            return;
-        }
+        var killed = new HashSet<int>(Processes());
+        bool all = _layout.V2 && TryWrite(Path.Combine(_folders[0], "cgroup.kill"), "1");
 
         // SIGKILL whatever is listed until nothing is: a process forked meanwhile is listed next round.
-        for (int round = 0; round < 1000; round++)
+        for (int round = 0; round < 1000 && !all; round++)
         {
             var pids = Processes();
             if (pids.Count == 0)
             {
-                return;
+                break;
             }
 
             foreach (int pid in pids)
             {
                 _ = Kill(pid, 9);
+                killed.Add(pid);
             }
 
             Thread.Sleep(round < 10 ? 1 : 5);
+        }
+
+        // A process leaves the group as it starts to exit: wait until each has finished (at most about 2 s).
+        for (int round = 0; round < 400 && killed.Count > 0; round++)
+        {
+            killed.RemoveWhere(pid => !Exiting(pid));
+            if (killed.Count > 0)
+            {
+                Thread.Sleep(5);
+            }
+        }
+    }
+
+    // Whether the process is still on its way out (not yet a zombie, not gone).
+    private static bool Exiting(int pid)
+    {
+        try
+        {
+            string stat = File.ReadAllText("/proc/" + pid.ToString(CultureInfo.InvariantCulture) + "/stat");
+            int after = stat.LastIndexOf(')') + 2;
+            return after < stat.Length && stat[after] is not ('Z' or 'X');
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return false;
         }
     }
 
@@ -201,14 +224,6 @@ internal sealed partial class SandboxCgroup : IDisposable
             {
                 Thread.Sleep(10);
             }
-        }
-    }
-
-    private void WaitEmpty(int rounds)
-    {
-        for (int i = 0; i < rounds && Processes().Count > 0; i++)
-        {
-            Thread.Sleep(5);
         }
     }
 
