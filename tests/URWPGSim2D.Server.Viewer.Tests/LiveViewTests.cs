@@ -327,6 +327,47 @@ public sealed class LiveViewTests(Browser browser)
         Assert.Equal(0, await Stop(live));
     }
 
+    [Fact]
+    public async Task OnAServerOthersCanReachAPageWithoutTheControlTokenOnlyWatches()
+    {
+        var live = await Start("--host", "0.0.0.0", "--speed", "20");
+        string banner = live.Out.ToString();
+        for (var waited = Stopwatch.StartNew(); !banner.Contains("only watch)", StringComparison.Ordinal) && waited.ElapsedMilliseconds < Wait; banner = live.Out.ToString())
+        {
+            await Task.Delay(20); // the control line follows the first banner line at once
+        }
+
+        int at = banner.IndexOf("control: ", StringComparison.Ordinal);
+        Assert.True(at >= 0, banner);
+        string control = banner[(at + "control: ".Length)..].Split(' ')[0];
+        string home = control[..control.IndexOf('?', StringComparison.Ordinal)];
+
+        // Opened as a student would (no token): the match plays on, the buttons are gone, the status says so.
+        var (watcher, watcherErrors) = await browser.NewPageAsync();
+        await watcher.GotoAsync(home);
+        await watcher.WaitForFunctionAsync("() => window.urwpg && urwpg.store && urwpg.serverStatus && urwpg.viewOnly === true", null, new() { Timeout = Wait });
+        Assert.False(await watcher.IsVisibleAsync("#server-step"));
+        Assert.False(await watcher.IsVisibleAsync("#server-restart"));
+        await watcher.WaitForFunctionAsync("() => document.getElementById('live-status').textContent.endsWith('view only')", null, new() { Timeout = Wait });
+        Assert.Equal(403, await watcher.EvaluateAsync<int>("() => fetch('control?action=step', { method: 'POST' }).then(r => r.status)"));
+
+        // Opened with the control link: the buttons are there and steer.
+        var (teacher, teacherErrors) = await browser.NewPageAsync();
+        await teacher.GotoAsync(control);
+        await teacher.WaitForFunctionAsync("() => window.urwpg && urwpg.store && urwpg.serverStatus && urwpg.viewOnly === false", null, new() { Timeout = Wait });
+        await PausedAt(teacher, 0);
+        Assert.True(await teacher.IsVisibleAsync("#server-step"));
+        await teacher.ClickAsync("#server-step");
+        await PausedAt(teacher, 1);
+        await PausedAt(watcher, 1);
+
+        NoErrors(watcherErrors.Where(e => !e.Contains("403", StringComparison.Ordinal)).ToList());
+        NoErrors(teacherErrors);
+        await watcher.Context.CloseAsync();
+        await teacher.Context.CloseAsync();
+        Assert.Equal(0, await Stop(live));
+    }
+
     // The same JSON values (numbers compared as numbers: the browser and .NET may print one differently).
     private static bool SameJson(System.Text.Json.JsonElement a, System.Text.Json.JsonElement b) => a.ValueKind == b.ValueKind && a.ValueKind switch
     {

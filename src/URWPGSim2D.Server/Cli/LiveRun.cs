@@ -14,7 +14,10 @@ namespace URWPGSim2D.Server.Cli;
 /// match again, and its summary follows when it ends); Ctrl+C (or SIGTERM) ends the server, and a
 /// match it interrupts gets its summary then. A port that cannot be used is one line on stderr and
 /// exit code 2, before anything is played. With <c>--strategies DIR</c> the page has a control board
-/// (<see cref="LiveBoard"/>) that chooses what the next match plays.
+/// (<see cref="LiveBoard"/>) that chooses what the next match plays. On an address other machines
+/// can reach (<c>--host</c> other than loopback) the page only watches unless it holds the control
+/// token printed at start (the <c>control:</c> link), and the banner names the addresses viewers
+/// open (every address of this machine for <c>--host 0.0.0.0</c>).
 /// </summary>
 internal static class LiveRun
 {
@@ -77,7 +80,8 @@ internal static class LiveRun
             console.Out.Flush();
             summarised = ended;
         };
-        using var server = new LiveServer(options.Host, options.Port, feed, Control, board is null ? null : board.Json);
+        string? token = IsLoopback(options.Host) ? null : Convert.ToHexStringLower(System.Security.Cryptography.RandomNumberGenerator.GetBytes(16));
+        using var server = new LiveServer(options.Host, options.Port, feed, Control, board is null ? null : board.Json, token);
         try
         {
             server.Start();
@@ -89,7 +93,23 @@ internal static class LiveRun
             return ExitCodes.BadInput;
         }
 
-        listening(server.Url);
+        if (token is null)
+        {
+            listening(server.Url);
+        }
+        else
+        {
+            var addresses = ViewerAddresses(options.Host, options.Port, server.Url);
+            listening(addresses[0]);
+            for (int i = 1; i < addresses.Count; i++)
+            {
+                console.Out.WriteLine($"live view also: {addresses[i]}");
+            }
+
+            string home = options.Host is "*" or "+" or "0.0.0.0" ? $"http://127.0.0.1:{options.Port}/" : server.Url;
+            console.Out.WriteLine($"control: {home}?token={token} (this link alone can pause, restart and start matches: keep it to yourself; the addresses above only watch)");
+        }
+
         console.Out.Flush();
         player.Run(stop);
         server.Stop();
@@ -101,6 +121,55 @@ internal static class LiveRun
         }
 
         return ExitCodes.Success;
+    }
+
+    /// <summary>Whether a <c>--host</c> value is this machine alone (no other machine can reach it).</summary>
+    /// <param name="host">The value.</param>
+    public static bool IsLoopback(string host) =>
+        host.Equals("localhost", StringComparison.OrdinalIgnoreCase)
+        || (System.Net.IPAddress.TryParse(host.Trim('[', ']'), out var address) && System.Net.IPAddress.IsLoopback(address));
+
+    // The addresses viewers on other machines open: for every interface (0.0.0.0), each IPv4 address of
+    // an interface that is up, or the machine's name when it has none; else the address listened on.
+    private static System.Collections.Generic.List<string> ViewerAddresses(string host, int port, string url)
+    {
+        var addresses = new System.Collections.Generic.List<string>();
+        if (host is not ("*" or "+" or "0.0.0.0"))
+        {
+            addresses.Add(url);
+            return addresses;
+        }
+
+        try
+        {
+            foreach (var network in System.Net.NetworkInformation.NetworkInterface.GetAllNetworkInterfaces())
+            {
+                if (network.OperationalStatus != System.Net.NetworkInformation.OperationalStatus.Up
+                    || network.NetworkInterfaceType == System.Net.NetworkInformation.NetworkInterfaceType.Loopback)
+                {
+                    continue;
+                }
+
+                foreach (var unicast in network.GetIPProperties().UnicastAddresses)
+                {
+                    if (unicast.Address.AddressFamily == System.Net.Sockets.AddressFamily.InterNetwork && !System.Net.IPAddress.IsLoopback(unicast.Address))
+                    {
+                        addresses.Add($"http://{unicast.Address}:{port}/");
+                    }
+                }
+            }
+        }
+        catch (System.Net.NetworkInformation.NetworkInformationException)
+        {
+            // No interfaces to list: the machine's name below.
+        }
+
+        if (addresses.Count == 0)
+        {
+            addresses.Add($"http://{System.Net.Dns.GetHostName()}:{port}/");
+        }
+
+        return addresses;
     }
 
     // A restart plays with freshly loaded strategies (their state starts over too).

@@ -16,6 +16,9 @@ namespace URWPGSim2D.Server.Viewer;
 /// <c>start</c> and <c>recompile</c>, their settings in the query), <c>GET /board</c> is the control
 /// board's choices (JSON; 404 without a board) and <c>GET /replay.html</c> the replay page of what has
 /// been played. Each viewer connection is served by its own task reading the feed at its own pace.
+/// With a control token (a server that others can reach), <c>POST /control</c> needs it as the query's
+/// <c>token</c> (403 without it: those viewers only watch), and <c>GET /access</c> tells a page whether
+/// its token controls (<c>{"control":true|false}</c>).
 /// </summary>
 internal sealed class LiveServer : IDisposable
 {
@@ -27,6 +30,7 @@ internal sealed class LiveServer : IDisposable
     private readonly LiveFeed _feed;
     private readonly Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> _control;
     private readonly Func<string>? _board;
+    private readonly byte[]? _controlToken;
     private readonly byte[] _page;
     private readonly CancellationTokenSource _stop = new();
     private readonly List<Task> _clients = [];
@@ -39,11 +43,13 @@ internal sealed class LiveServer : IDisposable
     /// <param name="feed">The messages to stream.</param>
     /// <param name="control">Applies a control action with the request's query; its answer is the response.</param>
     /// <param name="board">The control board's choices as JSON (asked at every <c>GET /board</c>), or null for a live view without a board.</param>
-    public LiveServer(string host, int port, LiveFeed feed, Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> control, Func<string>? board = null)
+    /// <param name="controlToken">The token a viewer must send to control the match, or null when every viewer may (a loopback server).</param>
+    public LiveServer(string host, int port, LiveFeed feed, Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> control, Func<string>? board = null, string? controlToken = null)
     {
         _feed = feed;
         _control = control;
         _board = board;
+        _controlToken = controlToken is null ? null : Encoding.UTF8.GetBytes(controlToken);
         _page = Encoding.UTF8.GetBytes(ReplayPage.Live(board is not null));
         bool any = host is "*" or "+" or "0.0.0.0";
         string name = host.Contains(':', StringComparison.Ordinal) ? $"[{host}]" : host;
@@ -170,9 +176,17 @@ internal sealed class LiveServer : IDisposable
                 case ("GET", "/events"):
                     await Stream(response).ConfigureAwait(false);
                     break;
+                case ("POST", "/control") when !MayControl(request):
+                    await Send(response, 403, "text/plain; charset=utf-8", "view only: controlling this match needs the control token the server printed when it started"u8.ToArray()).ConfigureAwait(false);
+                    break;
                 case ("POST", "/control"):
-                    var reply = _control(request.QueryString["action"] ?? string.Empty, request.QueryString);
+                    var query = new System.Collections.Specialized.NameValueCollection(request.QueryString);
+                    query.Remove("token");
+                    var reply = _control(query["action"] ?? string.Empty, query);
                     await Send(response, reply.Status, "text/plain; charset=utf-8", Encoding.UTF8.GetBytes(reply.Text)).ConfigureAwait(false);
+                    break;
+                case ("GET", "/access"):
+                    await Send(response, 200, "application/json; charset=utf-8", MayControl(request) ? "{\"control\":true}"u8.ToArray() : "{\"control\":false}"u8.ToArray()).ConfigureAwait(false);
                     break;
                 case ("GET", "/board") when _board is not null:
                     await Send(response, 200, "application/json; charset=utf-8", Encoding.UTF8.GetBytes(_board())).ConfigureAwait(false);
@@ -212,6 +226,12 @@ internal sealed class LiveServer : IDisposable
             }
         }
     }
+
+    // Every viewer of a server without a token; else one whose query carries the token (compared in constant time).
+    private bool MayControl(HttpListenerRequest request) =>
+        _controlToken is null
+        || (request.QueryString["token"] is { } given
+            && System.Security.Cryptography.CryptographicOperations.FixedTimeEquals(Encoding.UTF8.GetBytes(given), _controlToken));
 
     private static async Task Send(HttpListenerResponse response, int status, string type, byte[] body)
     {

@@ -889,7 +889,7 @@
       const st = JSON.parse(e.data);
       api.serverStatus = st;
       hudDirty = true;
-      status.textContent = st.over ? 'match over' : st.paused ? 'match paused' : 'live \u00b7 ' + st.speed + '\u00d7';
+      status.textContent = (st.over ? 'match over' : st.paused ? 'match paused' : 'live \u00b7 ' + st.speed + '\u00d7') + (api.viewOnly ? ' \u00b7 view only' : '');
       $('server-pause').textContent = st.paused ? 'resume match' : 'pause match';
     });
     source.onmessage = e => {
@@ -902,7 +902,16 @@
       dirty = true;
     };
     source.onerror = () => { status.textContent = 'disconnected (reconnecting)'; };
-    const post = action => fetch('control?action=' + action, { method: 'POST' });
+    // A server others can reach lets only the holder of its control token (the page's ?token=) steer.
+    const token = new URLSearchParams(location.search).get('token');
+    api.withToken = params => { if (token) params.set('token', token); return params; };
+    const post = action => fetch('control?' + api.withToken(new URLSearchParams({ action })).toString(), { method: 'POST' });
+    api.viewOnly = false;
+    fetch('access?' + api.withToken(new URLSearchParams()).toString()).then(r => r.json()).then(a => {
+      api.viewOnly = !a.control;
+      for (const id of ['server-pause', 'server-step', 'server-restart', 'board-start', 'board-recompile']) $(id).hidden = api.viewOnly;
+      if (api.viewOnly) status.textContent += ' \u00b7 view only';
+    });
     $('server-pause').addEventListener('click', () => post(api.serverStatus && api.serverStatus.paused ? 'resume' : 'pause'));
     $('server-step').addEventListener('click', () => post('step'));
     $('server-restart').addEventListener('click', () => post('restart'));
@@ -964,7 +973,7 @@
       buttons.forEach(b => { b.disabled = true; });
       show(action === 'start' ? 'starting\u2026' : 'recompiling\u2026', false);
       try {
-        const r = await fetch('control?' + params.toString(), { method: 'POST' });
+        const r = await fetch('control?' + api.withToken(params).toString(), { method: 'POST' });
         const text = await r.text();
         show(r.ok ? text + (action === 'start' ? 'started' : 'recompiled and restarted') : text, !r.ok);
       } catch (e) {
