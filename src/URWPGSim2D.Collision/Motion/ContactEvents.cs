@@ -9,8 +9,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// (<see cref="FirstContactSearch"/>), the handler's response, then relaxation: the bodies the
 /// response changed are committed at the contact time and planned again; pairs that overlap right
 /// away (a ball squeezed between two fish) are responded to at once, a few passes over, before the
-/// rest is sampled as usual. The stage owns the clusters, the event's bodies, the pairs pending a
-/// response and the count of events.
+/// rest is sampled as usual. The stage owns the clusters, the event's hits and bodies, the pairs
+/// pending a response and the count of events; the sample's hits it reads from the event loop's
+/// sampler and leaves there.
 /// </summary>
 internal sealed class ContactEvents
 {
@@ -23,6 +24,7 @@ internal sealed class ContactEvents
     private readonly FirstContactSearch _search;
     private readonly Replanner _replanner;
     private readonly HitClusters _clusters = new();
+    private readonly EventHits _hits = new();
     private BodySet _involved = new(0);
     private BodySet _dirty = new(0);
     private int[] _pending = new int[16];
@@ -37,7 +39,7 @@ internal sealed class ContactEvents
         _sampler = schedule.Sampler;
         _settling = settling;
         _bodies = bodies;
-        _search = new FirstContactSearch(schedule, bodies);
+        _search = new FirstContactSearch(schedule, bodies, _hits);
         _replanner = new Replanner(this);
     }
 
@@ -49,6 +51,7 @@ internal sealed class ContactEvents
     {
         _pending = new int[(2 * movers) + 16];
         _clusters.Reserve((2 * movers) + 64, movers);
+        _hits.Reserve((2 * movers) + 64);
         _involved = new BodySet(movers);
         _dirty = new BodySet(movers);
     }
@@ -84,17 +87,17 @@ internal sealed class ContactEvents
         _clusters.Cluster();
         foreach (int cluster in _clusters.ClustersByTime())
         {
-            _sampler.HitCount = 0;
+            _hits.Clear();
             for (int i = 0; i < count; i++)
             {
                 int slot = _clusters.Slot[i];
                 if (_clusters.Label[i] == cluster && _table.IsCurrent(slot, _clusters.Generation[i]))
                 {
-                    _sampler.AddHit(slot, _clusters.Value[i]);
+                    _hits.Add(slot, _clusters.Value[i]);
                 }
             }
 
-            if (_sampler.HitCount > 0)
+            if (_hits.Count > 0)
             {
                 HandleEvent(found);
             }
@@ -108,19 +111,19 @@ internal sealed class ContactEvents
         _involved.Clear();
         double lo = found;
         float deepest = 0f;
-        for (int i = 0; i < _sampler.HitCount; i++)
+        for (int i = 0; i < _hits.Count; i++)
         {
-            int slot = _sampler.HitSlots[i];
+            int slot = _hits.Slot[i];
             lo = Math.Min(lo, _table.LastFree(slot));
-            deepest = MathF.Max(deepest, _sampler.HitValues[i].Depth);
+            deepest = MathF.Max(deepest, _hits.Value[i].Depth);
             _involved.AddPair(_table.Pair(slot));
         }
 
         // Each hit sampled apart was apart at its last sample; all were apart at lo if they share it.
         bool apartAtLo = true;
-        for (int i = 0; i < _sampler.HitCount; i++)
+        foreach (int slot in _hits.Slot)
         {
-            apartAtLo &= _table.LastFree(_sampler.HitSlots[i]) == lo && _table.ApartAtLastFree(_sampler.HitSlots[i]);
+            apartAtLo &= _table.LastFree(slot) == lo && _table.ApartAtLastFree(slot);
         }
 
         bool refine = deepest > MotionTolerances.TimeOfImpactTolerance;
@@ -147,9 +150,9 @@ internal sealed class ContactEvents
         }
 
         _world.ClearChanged();
-        for (int i = 0; i < _sampler.HitCount; i++)
+        foreach (int slot in _hits.Slot)
         {
-            Respond(_table.Pair(_sampler.HitSlots[i]));
+            Respond(_table.Pair(slot));
         }
 
         Relax();

@@ -10,10 +10,10 @@ namespace URWPGSim2D.Collision.Motion;
 /// all the event's pairs were apart and the sample that found them overlapping, a false-position
 /// guess from the deepest hit's closing rate, then bisection until nothing involved moves more
 /// than <see cref="MotionTolerances.TimeOfImpactTolerance"/> inside the bracket. The event's hits
-/// are the event loop's sampler's; its bodies are the ones <see cref="Search"/> is given. Holds no
-/// state of its own between calls.
+/// and bodies are the ones the contact events give it (<paramref name="hits"/>, and the bodies
+/// <see cref="Search"/> is given). Holds no state of its own between calls.
 /// </summary>
-internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodies)
+internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodies, EventHits hits)
 {
     // Rounds of the false-position estimate of the time of first contact before bisection takes over.
     private const int GuessRounds = 3;
@@ -30,7 +30,7 @@ internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodie
     }
 
     /// <summary>
-    /// The time of first contact of the event loop's current hits, whose moving bodies are
+    /// The time of first contact of the event's hits, whose moving bodies are
     /// <paramref name="involved"/>: between the last time all hits were apart,
     /// <paramref name="free"/>, and the sample that found them, <paramref name="hit"/> (checked
     /// first unless the hits are known to be apart then), a false-position guess, then bisection
@@ -40,9 +40,9 @@ internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodie
     public double Search(double free, double hit, bool knownApart, BodySet involved)
     {
         float rate = 0f;
-        for (int i = 0; i < _sampler.HitCount; i++)
+        foreach (int slot in hits.Slot)
         {
-            rate = MathF.Max(rate, _table.Rate(_sampler.HitSlots[i]));
+            rate = MathF.Max(rate, _table.Rate(slot));
         }
 
         if (!knownApart)
@@ -84,13 +84,14 @@ internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodie
     private void Guess(ref double lo, ref double hi, float rate, BodySet involved)
     {
         int deepest = 0;
-        for (int i = 1; i < _sampler.HitCount; i++)
+        ReadOnlySpan<Hit> values = hits.Value;
+        for (int i = 1; i < values.Length; i++)
         {
-            deepest = _sampler.HitValues[i].Depth > _sampler.HitValues[deepest].Depth ? i : deepest;
+            deepest = values[i].Depth > values[deepest].Depth ? i : deepest;
         }
 
-        int slot = _sampler.HitSlots[deepest];
-        Hit hit = _sampler.HitValues[deepest];
+        int slot = hits.Slot[deepest];
+        Hit hit = values[deepest];
         for (int round = 0; round < GuessRounds; round++)
         {
             float closing = ClosingRate(_table.Pair(slot), hit);
@@ -141,13 +142,13 @@ internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodie
     {
         slot = -1;
         deepest = default;
-        for (int i = 0; i < _sampler.HitCount; i++)
+        foreach (int hitSlot in hits.Slot)
         {
-            ref readonly PlannedPair pair = ref _table.Pair(_sampler.HitSlots[i]);
+            ref readonly PlannedPair pair = ref _table.Pair(hitSlot);
             Hit hit = _sampler.Memo.DetectIfNear(bodies[pair.A], bodies[pair.B]);
             if (hit.Depth > MotionTolerances.ContactSlop && hit.Depth > deepest.Depth)
             {
-                slot = _sampler.HitSlots[i];
+                slot = hitSlot;
                 deepest = hit;
             }
         }
@@ -157,9 +158,9 @@ internal sealed class FirstContactSearch(PairSchedule schedule, List<Body> bodie
 
     private bool AnyHitIntersects()
     {
-        for (int i = 0; i < _sampler.HitCount; i++)
+        foreach (int slot in hits.Slot)
         {
-            ref readonly PlannedPair pair = ref _table.Pair(_sampler.HitSlots[i]);
+            ref readonly PlannedPair pair = ref _table.Pair(slot);
             if (_sampler.Memo.DetectIfNear(bodies[pair.A], bodies[pair.B]).Depth > MotionTolerances.ContactSlop)
             {
                 return true;

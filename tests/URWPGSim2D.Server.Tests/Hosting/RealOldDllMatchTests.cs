@@ -96,7 +96,7 @@ public sealed class RealOldDllMatchTests
     {
         // The push-ball-via-channel entry filed under the double-fish race reads a second fish of its team and
         // a ball there: each call throws, each is charged to its team, and the race is played to its end.
-        var run = CliRun.Of(string.Empty, "run", "--item", "double-fish-race-via-holes", "--minutes", "1", "--strategy", "0=" + RealOldDlls.PathOf(RealOldDlls.Known[2].File));
+        var run = CliRun.Of(string.Empty, "run", "--item", "double-fish-race-via-holes", "--minutes", "1", "--strategy", "0=" + RealOldDlls.PathOf(RealOldDlls.Known[2].File), "--strategy-timeout", "2000");
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Contains("end: match over", run.Stdout, StringComparison.Ordinal);
         string faults = run.Stdout[run.Stdout.IndexOf("strategy faults:", StringComparison.Ordinal)..];
@@ -107,8 +107,10 @@ public sealed class RealOldDllMatchTests
 
     // Ball-grab entries are played for ten minutes (one of them acts only in the first 30 s of a ten-minute
     // match, as it reads RemainingCycles); the others for one minute, a whole match of their item too.
+    // The deadline is generous (2 s of CPU a call, against the default 100 ms): what is checked is that the DLL
+    // never throws or answers badly, not how fast a loaded test machine runs it.
     private static CliRun Play(RealOldDll dll, string strategy, string isolation) =>
-        CliRun.Of(string.Empty, "run", "--item", dll.Item, "--minutes", dll.Item == "ball-grab" ? "10" : "1", "--strategy", strategy, "--isolation", isolation);
+        CliRun.Of(string.Empty, "run", "--item", dll.Item, "--minutes", dll.Item == "ball-grab" ? "10" : "1", "--strategy", strategy, "--isolation", isolation, "--strategy-timeout", "2000");
 
     private static string Line(string stdout, string start) =>
         stdout.Split('\n').Single(l => l.StartsWith(start, StringComparison.Ordinal));
