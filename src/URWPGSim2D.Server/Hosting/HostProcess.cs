@@ -49,6 +49,12 @@ internal sealed class HostProcess : IStrategyLink
     /// <summary>False: a host that does not answer in time is killed (it measures its strategy's deadline itself).</summary>
     public bool SurvivesLateAnswer => false;
 
+    /// <inheritdoc/>
+    public bool CutByWait => _killedByWatchdog;
+
+    /// <inheritdoc/>
+    public TimeSpan? CpuTime() => _cgroup?.CpuTime();
+
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }
 
