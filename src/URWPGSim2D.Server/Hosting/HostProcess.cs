@@ -23,6 +23,7 @@ internal sealed class HostProcess : IStrategyLink
     private const int LineLimit = 300;
     private readonly Process _process;
     private readonly SandboxCgroup? _cgroup;
+    private int _disposed;
     private readonly Queue<string> _tail = new();
     private readonly Thread _errors;
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
@@ -224,9 +225,14 @@ internal sealed class HostProcess : IStrategyLink
         }
     }
 
-    /// <inheritdoc/>
+    /// <summary>Ends the host and everything it started and deletes its scratch folder; a second call does nothing.</summary>
     public void Dispose()
     {
+        if (System.Threading.Interlocked.Exchange(ref _disposed, 1) != 0)
+        {
+            return;
+        }
+
         HostWatchdog.Forget(this);
         if (!_process.WaitForExit(0))
         {

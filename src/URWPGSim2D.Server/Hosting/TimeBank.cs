@@ -3,8 +3,9 @@ using System;
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
-/// A team's time for one match: each call has its deadline of CPU time (and twice that in wall
-/// time), and a banked reserve pays for whatever a call uses beyond them. The match waits for a late
+/// A team's time for one match: each call has its deadline of CPU time, and twice the larger of that
+/// and its CPU time in wall time (a call that computes is not charged for a busy machine, one that
+/// sleeps or waits is), and a banked reserve pays for whatever a call uses beyond them. The match waits for a late
 /// call's answer and takes the overrun from the bank, so how fast the server plays never changes
 /// which answers count; only a spent bank, or a call longer than <see cref="CallLimit"/> in wall
 /// time, makes the team play idle for the rest of the match. The first call (the strategy's code is
@@ -73,25 +74,30 @@ internal sealed class TimeBank
     /// <summary>CPU time the next call may use before it draws on the bank.</summary>
     public TimeSpan CpuAllowance => _first ? ThreadTimeClock.HangLimitFor(Deadline) : Deadline;
 
-    /// <summary>Wall time the next call may take before it draws on the bank: twice its CPU allowance.</summary>
+    /// <summary>Wall time the next call may take before it draws on the bank when it uses no more CPU time than its allowance: twice that.</summary>
     public TimeSpan WallAllowance => CpuAllowance * 2;
 
-    /// <summary>How long to wait for the next call's answer in wall time: its allowance and the whole bank, at most <see cref="CallLimit"/>.</summary>
-    public TimeSpan WaitLimit => Min(WallAllowance + Remaining, Max(CallLimit, WallAllowance));
+    /// <summary>
+    /// How long to wait for the next call's answer in wall time: as long as it could take without
+    /// spending the bank (using its CPU allowance and the whole bank in CPU time, twice that in wall
+    /// time, and the bank again), at most <see cref="CallLimit"/>.
+    /// </summary>
+    public TimeSpan WaitLimit => Min((CpuLimit * 2) + Remaining, Max(CallLimit, WallAllowance));
 
     /// <summary>How much CPU time the next call may use before the bank is spent.</summary>
     public TimeSpan CpuLimit => CpuAllowance + Remaining;
 
     /// <summary>
     /// Takes a finished call's overrun from the bank: the larger of its CPU time beyond
-    /// <see cref="CpuAllowance"/> and its wall time beyond <see cref="WallAllowance"/>. False when that
-    /// spends the bank: the call's answer does not count and the team plays idle.
+    /// <see cref="CpuAllowance"/> and its wall time beyond twice the larger of that allowance and its
+    /// CPU time. False when that spends the bank: the call's answer does not count and the team plays idle.
     /// </summary>
     /// <param name="cpu">CPU time of the call (all the strategy's threads and processes where that is measured), or null where only wall time is known.</param>
     /// <param name="wall">Wall time from the question to the answer.</param>
     public bool Charge(TimeSpan? cpu, TimeSpan wall)
     {
-        TimeSpan overrun = Max(cpu is { } c ? c - CpuAllowance : TimeSpan.Zero, wall - WallAllowance);
+        TimeSpan computing = cpu is { } c ? c : TimeSpan.Zero;
+        TimeSpan overrun = Max(computing - CpuAllowance, wall - (Max(CpuAllowance, computing) * 2));
         _first = false;
         Slowest = Max(Slowest, Max(cpu ?? TimeSpan.Zero, wall));
         if (overrun <= TimeSpan.Zero)
