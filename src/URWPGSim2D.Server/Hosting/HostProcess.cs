@@ -14,13 +14,15 @@ namespace URWPGSim2D.Server.Hosting;
 /// heap limited, CPU time and core dumps limited by <c>prlimit</c>, and its scratch folder as working
 /// directory; where cgroups allow, in a control group of its own (<see cref="SandboxCgroup"/>) that
 /// limits the memory and the processes of its whole sandbox and ends all of them with it. A watchdog
-/// kills it when an answer takes longer than the server allows. What it writes to standard error is
-/// kept (its last lines) for the fault report.
+/// kills it when an answer takes longer than the server allows. What it writes to standard error (what
+/// its strategy prints) goes on, line by line, to the server's standard error, and its last lines are
+/// kept for the fault report.
 /// </summary>
 internal sealed class HostProcess : IStrategyLink
 {
     private const int TailLines = 4;
     private const int LineLimit = 300;
+    private const int EchoLimit = StrategyLog.MaxChars;
     private readonly Process _process;
     private readonly SandboxCgroup? _cgroup;
     private readonly Queue<string> _tail = new();
@@ -220,11 +222,13 @@ internal sealed class HostProcess : IStrategyLink
 
     // Keeps the last lines of the host's standard error, each cut to LineLimit characters, reading
     // in blocks: however much the host writes, with or without line breaks, this holds a few lines.
+    // Every line goes on to the server's standard error (each cut to EchoLimit characters).
     private void ReadErrors()
     {
         var stream = _process.StandardError.BaseStream;
         var buffer = new byte[4096];
         var line = new StringBuilder(LineLimit);
+        var echo = new StringBuilder();
         var decoder = new UTF8Encoding(false).GetDecoder();
         var chars = new char[buffer.Length + 4];
         try
@@ -239,10 +243,19 @@ internal sealed class HostProcess : IStrategyLink
                     if (c == '\n')
                     {
                         Keep(line);
+                        Forward(echo);
                     }
-                    else if (c != '\r' && line.Length < LineLimit)
+                    else if (c != '\r')
                     {
-                        line.Append(c);
+                        if (line.Length < LineLimit)
+                        {
+                            line.Append(c);
+                        }
+
+                        if (echo.Length < EchoLimit)
+                        {
+                            echo.Append(c);
+                        }
                     }
                 }
             }
@@ -256,6 +269,26 @@ internal sealed class HostProcess : IStrategyLink
         {
             Keep(line);
         }
+
+        if (echo.Length > 0)
+        {
+            Forward(echo);
+        }
+    }
+
+    // One line of the host's standard error on to the server's.
+    private static void Forward(StringBuilder line)
+    {
+        try
+        {
+            Console.Error.WriteLine(line.ToString());
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException)
+        {
+            // the server's standard error is closed: the line is still in the tail
+        }
+
+        line.Clear();
     }
 
     private void Keep(StringBuilder line)
