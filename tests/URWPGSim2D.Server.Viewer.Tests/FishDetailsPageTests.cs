@@ -284,6 +284,19 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
     }
 
     [Fact]
+    public async Task A_link_to_a_cycle_opens_the_replay_page_at_that_cycle()
+    {
+        // The tournament report links a team's first fault as replays/match-J.html#cycle=N.
+        var (html, _) = Record("at-cycle", "--item", "ball-grab", "--cycles", "60");
+        var (page, errors, _) = await OpenFile(browser, html, "#cycle=40");
+        Assert.Equal(40, await Cycle(page));
+        Assert.Equal("cycle 40 / 60", await page.TextContentAsync("#cycle"));
+        Assert.False(await page.EvaluateAsync<bool>("() => urwpg.playing"));
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
     public async Task ScreenshotOfTheDetailsAndTrajectories()
     {
         var (html, _) = Record("details-figure", "--item", "ball-grab", "--cycles", "600", "--debug-draw");

@@ -149,9 +149,15 @@ internal sealed class RunCommand : ICliCommand
         Match match = settings.Build();
         try
         {
+            // Every remote team's address first: a second team's client must know its port before the first client connects.
             foreach (var slot in match.Strategies.Slots)
             {
-                (slot.Hosted as RemoteStrategy)?.WaitForClient();
+                (slot.Hosted as RemoteStrategy)?.Announce();
+            }
+
+            foreach (var slot in match.Strategies.Slots)
+            {
+                (slot.Hosted as RemoteStrategy)?.WaitForClient(announced: true);
             }
         }
         catch (RemoteWaitException e)

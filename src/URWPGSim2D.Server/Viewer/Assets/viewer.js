@@ -1017,7 +1017,12 @@
   window.addEventListener('error', e => api.errors.push(String(e.message)));
   setup();
   if (data.live) { connectLive(); if (data.board) connectBoard(); }
-  else { api.store = Store.fromPacked(data); setTeams(api.store); }
+  else {
+    api.store = Store.fromPacked(data); setTeams(api.store);
+    // A link to a moment of the match (a tournament report's first fault): page.html#cycle=N opens at cycle N.
+    const at = /^#cycle=(\d+)$/.exec(location.hash);
+    if (at) seek(parseInt(at[1], 10) - api.store.firstCycle);
+  }
   updatePlayButton();
   requestAnimationFrame(frame);
 })();
