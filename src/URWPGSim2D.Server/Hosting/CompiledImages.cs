@@ -74,7 +74,7 @@ internal static class CompiledImages
         {
             progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiling {path} ({files.Count} file{(files.Count == 1 ? string.Empty : "s")})..."));
             long start = Stopwatch.GetTimestamp();
-            byte[] image = StrategyCompiler.Compile(Name(path), files);
+            byte[] image = StrategyCompiler.Compile(Name(path), files, progress);
             progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiled {path} in {Stopwatch.GetElapsedTime(start).TotalSeconds:0.0} s"));
             return image;
         }
