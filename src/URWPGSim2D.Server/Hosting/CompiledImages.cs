@@ -88,11 +88,11 @@ internal static class CompiledImages
             Compiled compiled;
             if (settings is null)
             {
-                compiled = new Compiled(StrategyCompiler.Compile(Name(path), files), null);
+                compiled = new Compiled(StrategyCompiler.Compile(Name(path), files, progress), null);
             }
             else
             {
-                var (image, file) = CompilerProcess.Compile(Name(path), path, files, settings);
+                var (image, file) = CompilerProcess.Compile(Name(path), path, files, settings, progress);
                 compiled = new Compiled(image, file);
             }
 

@@ -35,6 +35,7 @@ internal static class CompilerProcess
     public const int AddressSpaceMb = 3072;
 
     private const int OutOfMemoryExit = 6;
+    private const string NotePrefix = "note ";
     private const int Failed = 1;
     private const int AnswerLines = 4096;
     private const int LineLimit = 4096;
@@ -48,9 +49,10 @@ internal static class CompilerProcess
     /// <param name="path">The spec's folder or file, as the user wrote it (the sandbox may read it).</param>
     /// <param name="files">Its source files.</param>
     /// <param name="settings">The sandbox mode and the memory and process limits.</param>
+    /// <param name="note">Told the compiler's notes (a source read as GB18030), one line each.</param>
     /// <returns>The image, and the file of the run's folder that holds it.</returns>
     /// <exception cref="StrategyLoadException">The sources do not compile, or the compiler went past a limit (one line naming it).</exception>
-    public static (byte[] Image, string File) Compile(string name, string path, IReadOnlyList<string> files, HostSettings settings)
+    public static (byte[] Image, string File) Compile(string name, string path, IReadOnlyList<string> files, HostSettings settings, Action<string>? note = null)
     {
         bool sandbox = HostSandbox.Use(settings.Sandbox);
         string scratch = RunFolder.NewScratch();
@@ -60,7 +62,7 @@ internal static class CompilerProcess
         var cgroup = HostCgroup.Create(settings);
         try
         {
-            var result = Run(name, path, files, settings, sandbox, cgroup, scratch, image);
+            var result = Run(name, path, files, settings, sandbox, cgroup, scratch, image, note);
             done = true;
             return (result, image);
         }
@@ -75,7 +77,7 @@ internal static class CompilerProcess
         }
     }
 
-    private static byte[] Run(string name, string path, IReadOnlyList<string> files, HostSettings settings, bool sandbox, SandboxCgroup? cgroup, string scratch, string image)
+    private static byte[] Run(string name, string path, IReadOnlyList<string> files, HostSettings settings, bool sandbox, SandboxCgroup? cgroup, string scratch, string image, Action<string>? note)
     {
         var command = new List<string>();
         if (cgroup is not null)
@@ -166,6 +168,14 @@ internal static class CompilerProcess
             throw new StrategyLoadException($"the compiler ran out of memory: its limit is {settings.MemoryMb} MiB (--strategy-memory)");
         }
 
+        int notes = 0;
+        while (notes < answer.Count && answer[notes].StartsWith(NotePrefix, StringComparison.Ordinal))
+        {
+            note?.Invoke(Json.MessageText.Escape(answer[notes][NotePrefix.Length..]));
+            notes++;
+        }
+
+        answer.RemoveRange(0, notes);
         if (code == 0 && answer.Count == 1 && answer[0] == "ok")
         {
             return ReadImage(image);
@@ -270,7 +280,8 @@ internal static class CompilerProcess
     /// <summary>
     /// The compiler child: <c>--compile-strategy NAME IMAGE (FILE READ-FROM)…</c>. Compiles the files
     /// (each shown as FILE in errors, read from READ-FROM) and writes the image to IMAGE; answers on
-    /// standard output <c>ok</c>, or <c>error</c>, the message and the detail lines (exit 1).
+    /// standard output <c>ok</c>, or <c>error</c>, the message and the detail lines (exit 1), after a
+    /// <c>note LINE</c> for each note of the compiler.
     /// </summary>
     /// <param name="args">The arguments after <see cref="Command"/>.</param>
     /// <returns>The exit code: 0 compiled, 1 not, 2 bad arguments, 6 out of memory.</returns>
@@ -294,7 +305,7 @@ internal static class CompilerProcess
 
         try
         {
-            byte[] image = StrategyCompiler.Compile(args[0], files, readFrom);
+            byte[] image = StrategyCompiler.Compile(args[0], files, line => answer.WriteLine(NotePrefix + line), readFrom);
             if (image.Length > (long)ImageLimitMb * 1024 * 1024)
             {
                 throw new StrategyLoadException(string.Create(CultureInfo.InvariantCulture, $"the compiled image is {image.Length / (1024 * 1024)} MiB, more than the limit of {ImageLimitMb} MiB"));

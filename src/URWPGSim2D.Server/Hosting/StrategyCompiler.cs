@@ -80,10 +80,11 @@ internal static class StrategyCompiler
     /// <summary>Compiles the files into an assembly image.</summary>
     /// <param name="name">Assembly name.</param>
     /// <param name="files">The source files.</param>
+    /// <param name="note">Told one line for each file that is not UTF-8 and was read as GB18030 (<see cref="SourceFileText"/>).</param>
     /// <returns>The assembly image.</returns>
     /// <param name="readFrom">Where each file is read from when not from its name (the same count), or null.</param>
     /// <exception cref="StrategyLoadException">A file cannot be read, or the sources do not compile (<see cref="CompileErrors"/>).</exception>
-    public static byte[] Compile(string name, IReadOnlyList<string> files, IReadOnlyList<string>? readFrom = null)
+    public static byte[] Compile(string name, IReadOnlyList<string> files, Action<string>? note = null, IReadOnlyList<string>? readFrom = null)
     {
         var trees = new List<SyntaxTree>(files.Count);
         var parse = new CSharpParseOptions(LanguageVersion.Latest);
@@ -93,7 +94,11 @@ internal static class StrategyCompiler
             string text;
             try
             {
-                text = File.ReadAllText(readFrom is null ? file : readFrom[i]);
+                (text, bool gb18030) = SourceFileText.Read(readFrom is null ? file : readFrom[i]);
+                if (gb18030)
+                {
+                    note?.Invoke($"{file} is not UTF-8: read as GB18030 (GBK, as Visual Studio 2008 saved Chinese sources); save it as UTF-8 to be sure");
+                }
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
