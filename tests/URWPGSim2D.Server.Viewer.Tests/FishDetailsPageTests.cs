@@ -269,6 +269,34 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
     }
 
     [Fact]
+    public async Task Fish_are_labelled_by_their_number_in_their_team_from_1_as_students_code_numbers_them()
+    {
+        // Ball-grab: fish0 and fish1 are team 0's Fishes[0] and Fishes[1] (its fish 1 and 2), fish2 and fish3 team 1's.
+        var (html, _) = Record("labels", "--item", "ball-grab", "--cycles", "20");
+        var (page, errors, _) = await OpenFile(browser, html);
+        Assert.Equal(["T0\u00b71", "T0\u00b72", "T1\u00b71", "T1\u00b72"], await page.EvaluateAsync<string[]>("() => [0, 1, 2, 3].map(i => urwpg.fishLabel(i))"));
+        Assert.Equal(
+            ["fish0 (team 0 \u00b7 1)", "fish1 (team 0 \u00b7 2)", "fish2 (team 1 \u00b7 1)", "fish3 (team 1 \u00b7 2)"],
+            await page.EvaluateAsync<string[]>("() => Array.from(document.querySelectorAll('#inspect option')).slice(1, 5).map(o => o.textContent)"));
+        Assert.Equal("fish2 (team 1 \u00b7 1)", await page.EvaluateAsync<string>("() => document.querySelector('#follow option[value=\"2\"]').textContent"));
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
+    public async Task A_link_to_a_cycle_opens_the_replay_page_at_that_cycle()
+    {
+        // The tournament report links a team's first fault as replays/match-J.html#cycle=N.
+        var (html, _) = Record("at-cycle", "--item", "ball-grab", "--cycles", "60");
+        var (page, errors, _) = await OpenFile(browser, html, "#cycle=40");
+        Assert.Equal(40, await Cycle(page));
+        Assert.Equal("cycle 40 / 60", await page.TextContentAsync("#cycle"));
+        Assert.False(await page.EvaluateAsync<bool>("() => urwpg.playing"));
+        NoErrors(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
     public async Task ScreenshotOfTheDetailsAndTrajectories()
     {
         var (html, _) = Record("details-figure", "--item", "ball-grab", "--cycles", "600", "--debug-draw");

@@ -17,8 +17,8 @@ internal static class PageProbe
 
     public static readonly (int R, int G, int B) Ball = (0xf2, 0x9b, 0x30);
 
-    /// <summary>Opens a replay page file with every request but the page itself aborted and recorded, once its first frame is drawn.</summary>
-    public static async Task<(IPage Page, List<string> Errors, List<string> Requests)> OpenFile(Browser browser, string path)
+    /// <summary>Opens a replay page file (with <paramref name="fragment"/>, e.g. <c>#cycle=40</c>) with every request but the page itself aborted and recorded, once its first frame is drawn.</summary>
+    public static async Task<(IPage Page, List<string> Errors, List<string> Requests)> OpenFile(Browser browser, string path, string fragment = "")
     {
         var (page, errors) = await browser.NewPageAsync();
         string url = new Uri(path).AbsoluteUri;
@@ -31,7 +31,7 @@ internal static class PageProbe
             }
         };
         await page.Context.RouteAsync("**/*", route => route.Request.Url == url ? route.ContinueAsync() : route.AbortAsync());
-        await page.GotoAsync(url);
+        await page.GotoAsync(url + fragment);
         await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = 15_000 });
         return (page, errors, requests);
     }

@@ -18,7 +18,7 @@ namespace URWPGSim2D.Server.Cli;
 internal sealed class CliApp
 {
     /// <summary>The program name shown in usage text.</summary>
-    public const string ProgramName = "URWPGSim2D.Server";
+    public const string ProgramName = "urwpgsim2d";
 
     private readonly ICliCommand[] _commands;
 

@@ -149,9 +149,15 @@ internal sealed class RunCommand : ICliCommand
         Match match = settings.Build();
         try
         {
+            // Every remote team's address first: a second team's client must know its port before the first client connects.
             foreach (var slot in match.Strategies.Slots)
             {
-                (slot.Hosted as RemoteStrategy)?.WaitForClient();
+                (slot.Hosted as RemoteStrategy)?.Announce();
+            }
+
+            foreach (var slot in match.Strategies.Slots)
+            {
+                (slot.Hosted as RemoteStrategy)?.WaitForClient(announced: true);
             }
         }
         catch (RemoteWaitException e)
@@ -168,7 +174,17 @@ internal sealed class RunCommand : ICliCommand
         using (var trace = options.Trace is null ? null : new TraceWriter(options.Trace))
         {
             using var loop = new MatchLoop(match, settings.Cycles, trace, replay);
-            loop.Play(played: progress is null ? null : progress.Update);
+            bool printLogs = options.StrategyLog && trace is null && replay is null;
+            Action<int>? played = progress is null && !printLogs ? null : cycle =>
+            {
+                if (printLogs)
+                {
+                    PrintLogs(match, cycle, console);
+                }
+
+                progress?.Update(cycle);
+            };
+            loop.Play(played: played);
             trace?.Complete();
         }
 
@@ -195,6 +211,26 @@ internal sealed class RunCommand : ICliCommand
         Wrote(console, options.Svg, "the final frame");
         Wrote(console, options.Html, "the replay page");
         return ExitCodes.Success;
+    }
+
+    // --strategy-log without a file: what each strategy printed while deciding this cycle, on standard
+    // error, each line as "cycle N, team T (NAME): TEXT".
+    private static void PrintLogs(Match match, int cycle, CliConsole console)
+    {
+        foreach (var slot in match.Strategies.Slots)
+        {
+            if (slot.Log is not { } log || (log.Length == 0 && log.Dropped == 0))
+            {
+                continue;
+            }
+
+            string text = log.ToString();
+            string prefix = $"cycle {cycle}, team {slot.Team} ({slot.Label}): ";
+            foreach (string line in text.EndsWith('\n') ? text[..^1].Split('\n') : text.Split('\n'))
+            {
+                console.Error.Write(prefix + line + "\n");
+            }
+        }
     }
 
     /// <summary>The line that says a file was written: <c>wrote FILE (what)</c>; nothing when <paramref name="path"/> is null.</summary>
@@ -260,14 +296,14 @@ internal sealed class RunCommand : ICliCommand
             return TeamStrategy.ItemDemo;
         }
 
-        var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress) : null;
+        var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress, options.HostSettings) : null;
         if (prepared is not null)
         {
             HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
         }
 
         return prepared is null
-            ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress)
+            ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress, options.HostSettings)
             : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
     }
 
@@ -351,7 +387,8 @@ internal sealed class RunCommand : ICliCommand
         "--strategies DIR adds a control board to the page: choose the item, its length and each team's strategy (DIR's\n" +
         "folders, .cs and .dll files, or a built-in), start, recompile and restart, save the replay page and a PNG.\n" +
         "--debug-draw records the strategies' debug drawings (DebugDraw) in the trace and both pages; --strategy-log\n" +
-        "records what they print (Console, Debug; at most 4,096 characters per team and cycle) there too.\n" +
+        "records what they print (Console, Debug; at most 4,096 characters per team and cycle) there too, or, with\n" +
+        "none of --trace, --html and --live, prints it to stderr line by line as 'cycle N, team T (NAME): TEXT'.\n" +
         "--threads P: a single match spreads each cycle's independent islands of bodies over P threads (default 1;\n" +
         "the same match whatever P); with --batch, P is the number of matches played at once (default: every core).\n" +
         "--batch N plays N matches with seeds S .. S+N-1 on every core (--threads P), one line each and an aggregate;\n" +

@@ -99,7 +99,11 @@ internal sealed class RunOptions
     /// <summary>Whether the strategies' debug drawings are recorded in the trace, the replay page and the live view (<c>--debug-draw</c>).</summary>
     public bool DebugDraw { get; private set; }
 
-    /// <summary>Whether what the strategies print is recorded in the trace, the replay page and the live view (<c>--strategy-log</c>).</summary>
+    /// <summary>
+    /// Whether what the strategies print is recorded per team and cycle (<c>--strategy-log</c>): in the
+    /// trace, the replay page and the live view, or, without any of them, printed to standard error
+    /// with its cycle and team.
+    /// </summary>
     public bool StrategyLog { get; private set; }
 
     /// <summary>Default port of the live view.</summary>
@@ -415,9 +419,9 @@ internal sealed class RunOptions
             throw UsageError("--debug-draw records the strategies' drawings in --trace, --html or --live; give one of them");
         }
 
-        if (StrategyLog && !Live && Trace is null && Html is null)
+        if (StrategyLog && (Batch is not null || Slurm is not null))
         {
-            throw UsageError("--strategy-log records what the strategies print in --trace, --html or --live; give one of them");
+            throw UsageError("--strategy-log shows what the strategies print in one match (the terminal, --trace, --html or --live); it does not go with --batch or --slurm");
         }
 
         CheckSlurm();

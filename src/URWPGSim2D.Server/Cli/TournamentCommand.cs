@@ -207,6 +207,7 @@ internal sealed class TournamentCommand : ICliCommand
             var standings = Standings.Compute(header, o.Item.TeamCount, mine, errors);
             TournamentOutputs.Write(folder, standings, mine);
             console.Out.Write(StandingsLines(standings));
+            console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
             console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
         }
 
@@ -243,6 +244,32 @@ internal sealed class TournamentCommand : ICliCommand
         if (StandingsText.Ties(s) is { } ties)
         {
             t.Append(ties).Append('\n');
+        }
+
+        return t.ToString();
+    }
+
+    // The entrants' runtime faults, one line each, with the first fault's place in its replay page when it has one; nothing when none had a fault.
+    private static string FaultLines(Standings s, string folder, Func<int, bool> hasReplay)
+    {
+        if (!s.AnyFaults)
+        {
+            return string.Empty;
+        }
+
+        var t = new System.Text.StringBuilder("runtime faults (exceptions, timeouts, bad answers, host ends):\n");
+        foreach (var r in s.Rows)
+        {
+            if (r.Faults is { } f)
+            {
+                t.Append("  ").Append(r.Name).Append(": ").Append(StandingsText.Faults(f));
+                if (hasReplay(f.FirstMatch))
+                {
+                    t.Append(" (").Append(Path.Combine(folder, f.ReplayLink())).Append(')');
+                }
+
+                t.Append('\n');
+            }
         }
 
         return t.ToString();

@@ -14,13 +14,15 @@ namespace URWPGSim2D.Server.Hosting;
 /// heap limited, CPU time and core dumps limited by <c>prlimit</c>, and its scratch folder as working
 /// directory; where cgroups allow, in a control group of its own (<see cref="SandboxCgroup"/>) that
 /// limits the memory and the processes of its whole sandbox and ends all of them with it. A watchdog
-/// kills it when an answer takes longer than the server allows. What it writes to standard error is
-/// kept (its last lines) for the fault report.
+/// kills it when an answer takes longer than the server allows. What it writes to standard error (what
+/// its strategy prints) goes on, line by line, to the server's standard error, and its last lines are
+/// kept for the fault report.
 /// </summary>
 internal sealed class HostProcess : IStrategyLink
 {
     private const int TailLines = 4;
     private const int LineLimit = 300;
+    private const int EchoLimit = StrategyLog.MaxChars;
     private readonly Process _process;
     private readonly SandboxCgroup? _cgroup;
     private int _disposed;
@@ -70,25 +72,10 @@ internal sealed class HostProcess : IStrategyLink
     /// <param name="cpuSeconds">CPU time limit of the whole host, s.</param>
     public static HostProcess Start(string loadSpec, IEnumerable<string> readOnly, bool sandbox, HostSettings settings, int cpuSeconds)
     {
-        int memoryMb = settings.MemoryMb;
         string scratch = RunFolder.NewScratch();
-        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        string server = ServerAssembly;
         string dotnetRoot = DotnetRoot();
-        var environment = new Dictionary<string, string>(StringComparer.Ordinal)
-        {
-            ["PATH"] = "/usr/bin:/bin",
-            ["HOME"] = scratch,
-            ["TMPDIR"] = scratch,
-            ["DOTNET_ROOT"] = dotnetRoot,
-            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
-            ["DOTNET_NOLOGO"] = "1",
-            ["DOTNET_EnableDiagnostics"] = "0", // no debugger/diagnostics sockets
-            ["DOTNET_gcServer"] = "0",
-            ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
-            ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
-            ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
-            ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
-        };
+        var environment = ChildEnvironment(scratch, settings.MemoryMb);
 
         var command = new List<string>();
         var cgroup = HostCgroup.Create(settings);
@@ -109,7 +96,7 @@ internal sealed class HostProcess : IStrategyLink
             command.AddRange(["/usr/bin/prlimit", $"--cpu={cpuSeconds}", "--core=0", "--"]);
         }
 
-        command.AddRange([Path.Combine(dotnetRoot, OperatingSystem.IsWindows() ? "dotnet.exe" : "dotnet"), server, "host", loadSpec]);
+        command.AddRange([DotnetProgram, server, "host", loadSpec]);
         var start = new ProcessStartInfo(command[0])
         {
             UseShellExecute = false,
@@ -247,11 +234,13 @@ internal sealed class HostProcess : IStrategyLink
 
     // Keeps the last lines of the host's standard error, each cut to LineLimit characters, reading
     // in blocks: however much the host writes, with or without line breaks, this holds a few lines.
+    // Every line goes on to the server's standard error (each cut to EchoLimit characters).
     private void ReadErrors()
     {
         var stream = _process.StandardError.BaseStream;
         var buffer = new byte[4096];
         var line = new StringBuilder(LineLimit);
+        var echo = new StringBuilder();
         var decoder = new UTF8Encoding(false).GetDecoder();
         var chars = new char[buffer.Length + 4];
         try
@@ -266,10 +255,19 @@ internal sealed class HostProcess : IStrategyLink
                     if (c == '\n')
                     {
                         Keep(line);
+                        Forward(echo);
                     }
-                    else if (c != '\r' && line.Length < LineLimit)
+                    else if (c != '\r')
                     {
-                        line.Append(c);
+                        if (line.Length < LineLimit)
+                        {
+                            line.Append(c);
+                        }
+
+                        if (echo.Length < EchoLimit)
+                        {
+                            echo.Append(c);
+                        }
                     }
                 }
             }
@@ -283,6 +281,26 @@ internal sealed class HostProcess : IStrategyLink
         {
             Keep(line);
         }
+
+        if (echo.Length > 0)
+        {
+            Forward(echo);
+        }
+    }
+
+    // One line of the host's standard error on to the server's.
+    private static void Forward(StringBuilder line)
+    {
+        try
+        {
+            Console.Error.WriteLine(line.ToString());
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException)
+        {
+            // the server's standard error is closed: the line is still in the tail
+        }
+
+        line.Clear();
     }
 
     private void Keep(StringBuilder line)
@@ -299,7 +317,35 @@ internal sealed class HostProcess : IStrategyLink
         line.Clear();
     }
 
-    private static string DotnetRoot()
+    /// <summary>The server's own assembly, which a host or the compiler runs (<c>dotnet URWPGSim2D.Server.dll …</c>).</summary>
+    internal static string ServerAssembly => Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+
+    /// <summary>The <c>dotnet</c> program that runs this process.</summary>
+    internal static string DotnetProgram => Path.Combine(DotnetRoot(), OperatingSystem.IsWindows() ? "dotnet.exe" : "dotnet");
+
+    /// <summary>
+    /// The whole environment of a child of the server that runs untrusted work (a host, the compiler):
+    /// its scratch folder as <c>HOME</c> and <c>TMPDIR</c>, the runtime's settings, its GC heap limited to
+    /// <paramref name="memoryMb"/> MiB, and nothing of the server's own environment.
+    /// </summary>
+    internal static Dictionary<string, string> ChildEnvironment(string scratch, int memoryMb) => new(StringComparer.Ordinal)
+    {
+        ["PATH"] = "/usr/bin:/bin",
+        ["HOME"] = scratch,
+        ["TMPDIR"] = scratch,
+        ["DOTNET_ROOT"] = DotnetRoot(),
+        ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
+        ["DOTNET_NOLOGO"] = "1",
+        ["DOTNET_EnableDiagnostics"] = "0", // no debugger/diagnostics sockets
+        ["DOTNET_gcServer"] = "0",
+        ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
+        ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
+        ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
+        ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
+    };
+
+    /// <summary>The folder of the <c>dotnet</c> program that runs this process.</summary>
+    internal static string DotnetRoot()
     {
         // .../shared/Microsoft.NETCore.App/<version>/ -> the folder of the dotnet program
         string runtime = Path.TrimEndingDirectorySeparator(RuntimeEnvironment.GetRuntimeDirectory());

@@ -21,6 +21,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     private readonly RemoteSeat _seat;
     private readonly AssignmentMessage _assignment;
     private StrategyConnection? _current;
+    private string? _lastName;
 
     /// <summary>Creates the match's side of the seat; no client yet (<see cref="WaitForClient"/>).</summary>
     public RemoteStrategy(RemoteSeat seat, AssignmentMessage assignment)
@@ -31,8 +32,11 @@ internal sealed class RemoteStrategy : IConnectedStrategy
         _assignment = assignment;
     }
 
-    /// <inheritdoc/>
-    public string? TeamName => _current?.TeamName;
+    /// <summary>
+    /// The name the connected client sent in its hello; after it disconnected or the match ended,
+    /// the name of the last client that connected (so the summary names the team as it played).
+    /// </summary>
+    public string? TeamName => _current?.TeamName ?? _lastName;
 
     /// <inheritdoc/>
     public string? EndedBy { get; private set; }
@@ -43,11 +47,25 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     /// <summary>Whether a client is connected.</summary>
     public bool Connected => _current is not null;
 
-    /// <summary>Waits up to the seat's wait for a client that says a good hello; refused ones are logged and the wait goes on.</summary>
+    /// <summary>
+    /// Says on which address the seat waits for its client: called for every remote team before any
+    /// waits (<see cref="WaitForClient"/>), so that each team's address is known before the first client connects.
+    /// </summary>
+    public void Announce() => _seat.Log($"waiting for a client on {_seat.Address}");
+
+    /// <summary>
+    /// Waits up to the seat's wait for a client that says a good hello; refused ones are logged and
+    /// the wait goes on. The address is said first (<see cref="Announce"/>) unless <paramref name="announced"/>.
+    /// </summary>
+    /// <param name="announced">Whether <see cref="Announce"/> was called already.</param>
     /// <exception cref="RemoteWaitException">None came in time.</exception>
-    public void WaitForClient()
+    public void WaitForClient(bool announced = false)
     {
-        _seat.Log($"waiting for a client on {_seat.Address}");
+        if (!announced)
+        {
+            Announce();
+        }
+
         var clock = Stopwatch.StartNew();
         while (_current is null)
         {
@@ -138,6 +156,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
 
         _seat.Log($"client {(connection.TeamName is { } name ? MessageTextOf(name) + " " : "")}connected from {link.Peer}");
         _current = connection;
+        _lastName = connection.TeamName ?? _lastName;
         return true;
     }
 

@@ -35,6 +35,7 @@ internal static class ReportPage
             h.Append("<p class=\"note\">").Append(E(ties)).Append("</p>\n");
         }
 
+        Faults(h, s, hasReplay);
         h.Append("<h2>Intervals</h2>\n");
         Plot(h, s);
         if (s.Teams >= 2)
@@ -66,6 +67,31 @@ internal static class ReportPage
                 .Append(Inv($"</td><td>{r.Played}</td>"));
             h.Append(one ? Inv($"<td>{StandingsJson.Round(r.Seconds, 1):0.0}</td>") : Inv($"<td>{r.Wins}</td><td>{r.Draws}</td><td>{r.Losses}</td>"));
             h.Append("<td>").Append(StandingsText.Overlaps(r)).Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // The entrants whose strategies had runtime faults, with a link to the first fault's cycle in its replay page.
+    private static void Faults(StringBuilder h, Standings s, Func<int, bool> hasReplay)
+    {
+        if (!s.AnyFaults)
+        {
+            return;
+        }
+
+        h.Append("<h2>Runtime faults</h2>\n<p class=\"note\">Calls that threw, missed their deadline or answered badly, and strategy hosts that ended before their match; the first fault links to its cycle in the match's replay page when there is one (<code>--replays</code>).</p>\n");
+        h.Append("<table>\n<tr><th class=\"l\">Entrant</th><th>Exceptions</th><th>Timeouts</th><th>Bad answers</th><th>Host ends</th><th>Matches</th><th class=\"l\">First fault</th></tr>\n");
+        foreach (var r in s.Rows)
+        {
+            if (r.Faults is not { } f)
+            {
+                continue;
+            }
+
+            h.Append("<tr><td class=\"l\">").Append(E(r.Name)).Append(Inv($"</td><td>{f.Exceptions}</td><td>{f.Timeouts}</td><td>{f.BadAnswers}</td><td>{f.HostEnds}</td><td>{f.Matches}</td><td class=\"l err\">"));
+            h.Append(hasReplay(f.FirstMatch) ? "<a href=\"" + E(f.ReplayLink()) + "\">" + E(f.Where()) + "</a>" : E(f.Where()));
+            h.Append(": ").Append(E(Json.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append("</td></tr>\n");
         }
 
         h.Append("</table>\n");

@@ -51,7 +51,35 @@ internal sealed record Standings(
         }
 
         var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : Versus(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);
+        var faults = Faults(sorted, index, n);
+        rows = [.. rows.Select(r => r with { Faults = faults[r.Entrant] })];
         return new Standings(header, teams, sorted, Ranked(rows, teams), wdl);
+    }
+
+    /// <summary>Whether any entrant had a runtime fault.</summary>
+    public bool AnyFaults => Rows.Any(r => r.Faults is not null);
+
+    // Per entrant, the runtime faults of its strategy over its matches (null: none), from the results' faults entries.
+    private static EntrantFaults?[] Faults(List<TournamentRecord> records, Dictionary<string, int> index, int n)
+    {
+        var faults = new EntrantFaults?[n];
+        var lastMatch = new int[n];
+        foreach (var r in records)
+        {
+            foreach (var f in r.Result?.Faults ?? [])
+            {
+                if (f.Team < 0 || f.Team >= r.Entrants.Count || !index.TryGetValue(r.Entrants[f.Team], out int e))
+                {
+                    continue;
+                }
+
+                bool newMatch = faults[e] is null || lastMatch[e] != r.Index;
+                faults[e] = EntrantFaults.Add(faults[e], r.Index, f, newMatch);
+                lastMatch[e] = r.Index;
+            }
+        }
+
+        return faults;
     }
 
     // Sorted by rank; each row told which others overlap it.

@@ -12,12 +12,17 @@ namespace URWPGSim2D.Server.Tournament;
 /// item each entrant has <c>"score"</c> (the mean score), <c>"ci"</c> (its interval), <c>"played"</c>
 /// and <c>"seconds"</c> (the mean match length, the time tie-break) instead of the rating and wins,
 /// draws and losses. An entrant that could not be loaded has <c>"error"</c>, its one-line reason, at
-/// the end. Ratings and their intervals are rounded to 0.1, scores to 0.001, seconds to 0.1.
+/// the end. An entrant whose strategy had runtime faults has <c>"faults"</c> before it:
+/// <c>{"exceptions", "timeouts", "badAnswers", "hostEnds", "matches", "first": {"match", "cycle", "text"[, "replay"]}}</c>
+/// (<c>cycle</c> absent when not known; <c>replay</c>, the link to that cycle of the match's replay page
+/// relative to the folder, only when the page exists). Ratings and their intervals are rounded to 0.1, scores to 0.001, seconds to 0.1.
 /// </summary>
 internal static class StandingsJson
 {
     /// <summary>The file's text.</summary>
-    public static string Format(Standings standings)
+    /// <param name="standings">The standings.</param>
+    /// <param name="hasReplay">Whether match J's replay page exists (then the first fault gives its link).</param>
+    public static string Format(Standings standings, Func<int, bool>? hasReplay = null)
     {
         var t = new StringBuilder();
         t.Append("{\n  \"item\": ").Append(Text(standings.Header.Item))
@@ -33,6 +38,23 @@ internal static class StandingsJson
                 .Append(", \"ci\": [").Append(Number(r.Interval.Low, digits)).Append(", ").Append(Number(r.Interval.High, digits)).Append(']')
                 .Append(Inv($", \"played\": {r.Played}"));
             t.Append(one ? ", \"seconds\": " + Number(r.Seconds, 1) : Inv($", \"wins\": {r.Wins}, \"draws\": {r.Draws}, \"losses\": {r.Losses}"));
+            if (r.Faults is { } f)
+            {
+                t.Append(Inv($", \"faults\": {{\"exceptions\": {f.Exceptions}, \"timeouts\": {f.Timeouts}, \"badAnswers\": {f.BadAnswers}, \"hostEnds\": {f.HostEnds}, \"matches\": {f.Matches}, \"first\": {{\"match\": {f.FirstMatch}"));
+                if (f.FirstCycle is { } cycle)
+                {
+                    t.Append(Inv($", \"cycle\": {cycle}"));
+                }
+
+                t.Append(", \"text\": ").Append(Text(f.FirstText));
+                if (hasReplay?.Invoke(f.FirstMatch) == true)
+                {
+                    t.Append(", \"replay\": ").Append(Text(f.ReplayLink()));
+                }
+
+                t.Append("}}");
+            }
+
             if (r.Error is not null)
             {
                 t.Append(", \"error\": ").Append(Text(r.Error));

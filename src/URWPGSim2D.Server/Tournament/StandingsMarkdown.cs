@@ -7,7 +7,9 @@ namespace URWPGSim2D.Server.Tournament;
 internal static class StandingsMarkdown
 {
     /// <summary>The file's text.</summary>
-    public static string Format(Standings s)
+    /// <param name="s">The standings.</param>
+    /// <param name="hasReplay">Whether match J's replay page exists (then the first fault links to its cycle there).</param>
+    public static string Format(Standings s, System.Func<int, bool>? hasReplay = null)
     {
         var t = new StringBuilder();
         t.Append("# Standings: ").Append(s.Header.Item).Append("\n\n");
@@ -36,6 +38,24 @@ internal static class StandingsMarkdown
         if (StandingsText.Ties(s) is { } ties)
         {
             t.Append('\n').Append(ties).Append('\n');
+        }
+
+        if (s.AnyFaults)
+        {
+            t.Append("\nRuntime faults (calls that threw, missed their deadline or answered badly; strategy hosts that ended early):\n\n");
+            t.Append("| Entrant | Exceptions | Timeouts | Bad answers | Host ends | Matches | First fault |\n");
+            t.Append("|---|---:|---:|---:|---:|---:|---|\n");
+            foreach (var r in s.Rows)
+            {
+                if (r.Faults is not { } f)
+                {
+                    continue;
+                }
+
+                string where = hasReplay?.Invoke(f.FirstMatch) == true ? $"[{f.Where()}]({f.ReplayLink()})" : f.Where();
+                t.Append(string.Create(CultureInfo.InvariantCulture, $"| {Cell(r.Name)} | {f.Exceptions} | {f.Timeouts} | {f.BadAnswers} | {f.HostEnds} | {f.Matches} | "))
+                    .Append(where).Append(": ").Append(Cell(Json.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append(" |\n");
+            }
         }
 
         bool first = true;

@@ -15,6 +15,7 @@ namespace URWPGSim2D.Server.Tournament;
 /// <param name="Seconds">One-team items: the mean match length, s (the time tie-break).</param>
 /// <param name="Error">Why the entrant could not be loaded (it forfeits its matches), or null.</param>
 /// <param name="Overlapping">The ranks of the other entrants whose interval overlaps this one's, increasing.</param>
+/// <param name="Faults">The runtime faults of its strategy over its matches, or null when it had none.</param>
 internal sealed record StandingsRow(
     int Entrant, string Name, int Rank, double Rating, Interval Interval, int Played, int Wins, int Draws, int Losses,
-    double Seconds, string? Error, IReadOnlyList<int> Overlapping);
+    double Seconds, string? Error, IReadOnlyList<int> Overlapping, EntrantFaults? Faults = null);

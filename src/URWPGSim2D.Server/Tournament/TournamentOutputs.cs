@@ -29,8 +29,9 @@ internal static class TournamentOutputs
     public static void Write(string folder, Standings standings, IEnumerable<TournamentRecord> records)
     {
         TournamentFile.Write(Path.Combine(folder, Results), standings.Header, records);
-        AtomicFile.WriteAllText(Path.Combine(folder, StandingsJsonName), StandingsJson.Format(standings));
-        AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings));
-        AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, j => File.Exists(ReplayPage(folder, j))));
+        bool HasReplay(int j) => File.Exists(ReplayPage(folder, j));
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsJsonName), StandingsJson.Format(standings, HasReplay));
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings, HasReplay));
+        AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, HasReplay));
     }
 }

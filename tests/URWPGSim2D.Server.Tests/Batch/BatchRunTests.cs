@@ -136,7 +136,7 @@ public sealed class BatchRunTests : IDisposable
         var run = CliRun.Of(string.Empty, ["run", .. arguments.Split(' ')]);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
-        Assert.StartsWith(message + ". Usage: URWPGSim2D.Server run ", run.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith(message + ". Usage: urwpgsim2d run ", run.Stderr, StringComparison.Ordinal);
     }
 
     private (CliRun Run, string File) Batch(string name, params string[] extra) => Batch(name, 7, extra);

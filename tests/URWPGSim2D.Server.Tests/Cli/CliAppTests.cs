@@ -13,8 +13,8 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: URWPGSim2D.Server <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, inspect-dll, completion; --help for details)";
-    private const string CollideUsage = "Usage: URWPGSim2D.Server collide FILE";
+    private const string TopUsage = "Usage: urwpgsim2d <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, inspect-dll, completion; --help for details)";
+    private const string CollideUsage = "Usage: urwpgsim2d collide FILE";
 
     [Theory]
     [InlineData("--help")]
@@ -25,12 +25,12 @@ public sealed class CliAppTests
 
         Assert.Equal(0, run.ExitCode);
         Assert.Equal(string.Empty, run.Stderr);
-        Assert.StartsWith("URWPGSim2D.Server: command-line front end", run.Stdout, StringComparison.Ordinal);
-        Assert.Matches(@"\n  URWPGSim2D\.Server run \[--item NAME \| --scenario FILE\] \[options\] +Play a match", run.Stdout);
-        Assert.Matches(@"\n  URWPGSim2D\.Server collide FILE +Test pairs of shapes", run.Stdout);
-        Assert.Matches(@"\n  URWPGSim2D\.Server shapes FILE +Write the exact collision pieces", run.Stdout);
-        Assert.Matches(@"\n  URWPGSim2D\.Server render FILE --svg OUT +Draw shapes or pairs", run.Stdout);
-        Assert.Matches(@"\n  URWPGSim2D\.Server --help +Show this help\.", run.Stdout);
+        Assert.StartsWith("urwpgsim2d: command-line front end", run.Stdout, StringComparison.Ordinal);
+        Assert.Matches(@"\n  urwpgsim2d run \[--item NAME \| --scenario FILE\] \[options\] +Play a match", run.Stdout);
+        Assert.Matches(@"\n  urwpgsim2d collide FILE +Test pairs of shapes", run.Stdout);
+        Assert.Matches(@"\n  urwpgsim2d shapes FILE +Write the exact collision pieces", run.Stdout);
+        Assert.Matches(@"\n  urwpgsim2d render FILE --svg OUT +Draw shapes or pairs", run.Stdout);
+        Assert.Matches(@"\n  urwpgsim2d --help +Show this help\.", run.Stdout);
         Assert.Contains("Exit codes: 0 success; 2 bad input", run.Stdout, StringComparison.Ordinal);
         Assert.EndsWith("\n", run.Stdout, StringComparison.Ordinal);
     }
@@ -53,8 +53,8 @@ public sealed class CliAppTests
     }
 
     [Theory]
-    [InlineData("shapes", "Usage: URWPGSim2D.Server shapes FILE\n", "\"leaves\":{\"leftPectoral\"")]
-    [InlineData("render", "Usage: URWPGSim2D.Server render FILE --svg OUT\n", "MTV")]
+    [InlineData("shapes", "Usage: urwpgsim2d shapes FILE\n", "\"leaves\":{\"leftPectoral\"")]
+    [InlineData("render", "Usage: urwpgsim2d render FILE --svg OUT\n", "MTV")]
     public void ShapesAndRenderHelpDescribeTheFormats(string command, string usageLine, string detail)
     {
         var run = CliRun.Of(string.Empty, command, "--help");
@@ -92,7 +92,7 @@ public sealed class CliAppTests
 
         Assert.Equal(2, code);
         Assert.Equal(string.Empty, stdout.ToString());
-        Assert.StartsWith("URWPGSim2D.Server: command-line front end", stderr.ToString(), StringComparison.Ordinal);
+        Assert.StartsWith("urwpgsim2d: command-line front end", stderr.ToString(), StringComparison.Ordinal);
     }
 
     [Theory]
@@ -104,10 +104,10 @@ public sealed class CliAppTests
     [InlineData(new[] { "collide", "-", "--help" }, "collide: expected one FILE argument (- for stdin), got 2. " + CollideUsage)]
     [InlineData(new[] { "collide", "--pretty" }, "collide: unknown option \"--pretty\". " + CollideUsage)]
     [InlineData(new[] { "collide", "" }, "collide: FILE is empty. " + CollideUsage)]
-    [InlineData(new[] { "shapes" }, "shapes: expected one FILE argument (- for stdin), got 0. Usage: URWPGSim2D.Server shapes FILE")]
-    [InlineData(new[] { "shapes", "a.json", "b.json" }, "shapes: expected one FILE argument (- for stdin), got 2. Usage: URWPGSim2D.Server shapes FILE")]
-    [InlineData(new[] { "shapes", "--pretty" }, "shapes: unknown option \"--pretty\". Usage: URWPGSim2D.Server shapes FILE")]
-    [InlineData(new[] { "shapes", "" }, "shapes: FILE is empty. Usage: URWPGSim2D.Server shapes FILE")]
+    [InlineData(new[] { "shapes" }, "shapes: expected one FILE argument (- for stdin), got 0. Usage: urwpgsim2d shapes FILE")]
+    [InlineData(new[] { "shapes", "a.json", "b.json" }, "shapes: expected one FILE argument (- for stdin), got 2. Usage: urwpgsim2d shapes FILE")]
+    [InlineData(new[] { "shapes", "--pretty" }, "shapes: unknown option \"--pretty\". Usage: urwpgsim2d shapes FILE")]
+    [InlineData(new[] { "shapes", "" }, "shapes: FILE is empty. Usage: urwpgsim2d shapes FILE")]
     public void WrongArgumentsGiveOneUsageLine(string[] args, string expectedLine)
     {
         var run = CliRun.Of("[]", args);
@@ -145,7 +145,7 @@ public sealed class CliAppTests
     public void InputAndUsageErrorsFromACommandAreOneLineWithExitCodeTwo()
     {
         var input = new CliApp([new ProbeCommand { Failure = new InputException("things[4].size", "must be > 0, got -1") }]);
-        var usage = new CliApp([new ProbeCommand { Failure = new CliUsageException("probe: too many arguments", "URWPGSim2D.Server probe") }]);
+        var usage = new CliApp([new ProbeCommand { Failure = new CliUsageException("probe: too many arguments", "urwpgsim2d probe") }]);
 
         int inputCode = input.Run(["probe"], Streams(out var inputOut, out var inputErr));
         int usageCode = usage.Run(["probe"], Streams(out var usageOut, out var usageErr));
@@ -153,7 +153,7 @@ public sealed class CliAppTests
         Assert.Equal((2, 2), (inputCode, usageCode));
         Assert.Equal((string.Empty, string.Empty), (inputOut.ToString(), usageOut.ToString()));
         Assert.Equal("things[4].size: must be > 0, got -1\n", inputErr.ToString());
-        Assert.Equal("probe: too many arguments. Usage: URWPGSim2D.Server probe\n", usageErr.ToString());
+        Assert.Equal("probe: too many arguments. Usage: urwpgsim2d probe\n", usageErr.ToString());
     }
 
     [Fact]

@@ -17,7 +17,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// </summary>
 public sealed class RenderCommandTests : IDisposable
 {
-    private const string RenderUsage = "Usage: URWPGSim2D.Server render FILE --svg OUT";
+    private const string RenderUsage = "Usage: urwpgsim2d render FILE --svg OUT";
     private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
     private readonly string _folder = Path.Combine(Path.GetTempPath(), $"urwpgsim2d-render-{Guid.NewGuid():N}");
 

@@ -106,7 +106,7 @@ public sealed class RunCommandTests : IDisposable
         var run = CliRun.Of(string.Empty, args);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
-        Assert.StartsWith(start + ". Usage: URWPGSim2D.Server run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N]", run.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith(start + ". Usage: urwpgsim2d run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N]", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
     }
 

@@ -82,7 +82,7 @@ public sealed class SuggestionTests
         Assert.Equal((2, "unknown command \"rn\"; did you mean run?\n"), Failure("rn"));
         Assert.Equal((2, "unknown command \"tournement\"; did you mean tournament?\n"), Failure("tournement"));
         var far = CliRun.Of(string.Empty, "run", "--fast", "1");
-        Assert.StartsWith("run: unknown option \"--fast\". Usage: URWPGSim2D.Server run [", far.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith("run: unknown option \"--fast\". Usage: urwpgsim2d run [", far.Stderr, StringComparison.Ordinal);
     }
 
     [Fact]

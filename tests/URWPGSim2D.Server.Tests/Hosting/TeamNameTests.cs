@@ -84,6 +84,41 @@ public sealed class TeamNameTests : IDisposable
         Assert.Contains("goals team 0 (Team First [red])", batch.Stdout, StringComparison.Ordinal);
     }
 
+    [Theory]
+    [InlineData("gb18030")]
+    [InlineData("utf-8")]
+    [InlineData("utf-8-bom")]
+    [InlineData("utf-16")]
+    public void An_original_source_saved_in_GBK_as_VS2008_saved_it_keeps_its_Chinese_team_name(string encoding)
+    {
+        System.Text.Encoding.RegisterProvider(System.Text.CodePagesEncodingProvider.Instance);
+        string folder = Path.Combine(_folder, "old-" + encoding);
+        Directory.CreateDirectory(folder);
+        string source = File.ReadAllText(Path.Combine(Docs.Repository.PathOf("templates/Strategy"), "Strategy.cs"))
+            .Replace("\"My Team\"", "\"蓝鲨队\" /* 中文注释：抢球 */", StringComparison.Ordinal);
+        byte[] bytes = encoding switch
+        {
+            "gb18030" => System.Text.Encoding.GetEncoding(936).GetBytes(source), // GBK: what VS2008 wrote on a Chinese Windows
+            "utf-8" => new System.Text.UTF8Encoding(false).GetBytes(source),
+            "utf-8-bom" => [.. System.Text.Encoding.UTF8.GetPreamble(), .. System.Text.Encoding.UTF8.GetBytes(source)],
+            _ => [.. System.Text.Encoding.Unicode.GetPreamble(), .. System.Text.Encoding.Unicode.GetBytes(source)],
+        };
+        File.WriteAllBytes(Path.Combine(folder, "Strategy.cs"), bytes);
+        URWPGSim2D.Server.Hosting.CompiledImages.Forget();
+        var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "5", "--strategy", "0=" + folder, "--strategy", "1=idle");
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        Assert.Contains($"score: team 0 (蓝鲨队 [old-{encoding}]) ", run.Stdout, StringComparison.Ordinal);
+        string note = $"{Path.Combine(folder, "Strategy.cs")} is not UTF-8: read as GB18030 (GBK, as Visual Studio 2008 saved Chinese sources); save it as UTF-8 to be sure\n";
+        if (encoding == "gb18030")
+        {
+            Assert.Contains(note, run.Stderr, StringComparison.Ordinal);
+        }
+        else
+        {
+            Assert.DoesNotContain("is not UTF-8", run.Stderr, StringComparison.Ordinal);
+        }
+    }
+
     [Fact]
     public void DemoIsTheItemsDemoStrategyAndNeedsAnItem()
     {

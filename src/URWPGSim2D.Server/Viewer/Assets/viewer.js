@@ -303,6 +303,16 @@
   }
   function rect(min, max) { path([[min[0], min[1]], [max[0], min[1]], [max[0], max[1]], [min[0], max[1]]]); }
   function circle(x, z, r) { const q = worldToCanvas(x, z); ctx.beginPath(); ctx.arc(q[0], q[1], Math.max(0.5, r * api.view.scale), 0, 2 * Math.PI); }
+  // A fish's number in its team, from 1, as the original numbered them (its Fishes[k - 1] in the
+  // original API's code): fish of one team in the order of the layout.
+  function teamNumber(layout, i) {
+    let k = 0;
+    for (let j = 0; j <= i; j++) if (layout.fish[j].team === layout.fish[i].team) k++;
+    return k;
+  }
+  function fishLabel(layout, i) { return 'T' + layout.fish[i].team + '\u00b7' + teamNumber(layout, i); }
+  function fishChoice(layout, i) { return 'fish' + i + ' (team ' + layout.fish[i].team + ' \u00b7 ' + teamNumber(layout, i) + ')'; }
+  api.fishLabel = i => (api.store && i < api.store.nf ? fishLabel(api.store.layout, i) : null);
   function label(text, x, z, dx, dy, colour) {
     const q = worldToCanvas(x, z), px = Math.round(11 * api.view.dpr);
     ctx.font = '600 ' + px + 'px system-ui, sans-serif';
@@ -374,7 +384,7 @@
         const { p } = poses[i], size = layout.fish[i].size, reach = size.length / 2 + size.head, c = Math.cos(p[2]), sn = Math.sin(p[2]);
         const tip = worldToCanvas(p[0] + reach * c, p[1] + reach * sn), end = worldToCanvas(p[0] + (reach + 70) * c, p[1] + (reach + 70) * sn);
         ctx.beginPath(); ctx.moveTo(tip[0], tip[1]); ctx.lineTo(end[0], end[1]); ctx.strokeStyle = '#111'; ctx.lineWidth = 1.5 * dpr; ctx.stroke();
-        label('fish' + i, p[0], p[1], 0, -26, api.teamColour(layout.fish[i].team));
+        label(fishLabel(layout, i), p[0], p[1], 0, -26, api.teamColour(layout.fish[i].team));
       }
       for (let i = 0; i < s.nb; i++) {
         const p = ballPos(s, t, i), v = layout.balls[i].value;
@@ -622,7 +632,7 @@
     const select = $('inspect');
     select.textContent = '';
     const none = document.createElement('option'); none.value = ''; none.textContent = 'click a fish or a ball'; select.appendChild(none);
-    for (let i = 0; i < s.nf; i++) { const o = document.createElement('option'); o.value = 'fish' + i; o.textContent = 'fish' + i + ' (team ' + s.layout.fish[i].team + ')'; select.appendChild(o); }
+    for (let i = 0; i < s.nf; i++) { const o = document.createElement('option'); o.value = 'fish' + i; o.textContent = fishChoice(s.layout, i); select.appendChild(o); }
     for (let i = 0; i < s.nb; i++) { const o = document.createElement('option'); o.value = 'ball' + i; o.textContent = 'ball' + i; select.appendChild(o); }
     if (api.inspected && api.inspected.index >= bodyCount(s, api.inspected.kind)) api.inspected = null;
     select.value = api.inspected ? bodyId(api.inspected) : '';
@@ -757,7 +767,7 @@
     $('item').textContent = s.item === 'default' ? '' : s.item;
     const follow = $('follow');
     while (follow.options.length > 1) follow.remove(1);
-    s.layout.fish.forEach((f, i) => { const o = document.createElement('option'); o.value = String(i); o.textContent = 'fish' + i + ' (team ' + f.team + ')'; follow.appendChild(o); });
+    s.layout.fish.forEach((f, i) => { const o = document.createElement('option'); o.value = String(i); o.textContent = fishChoice(s.layout, i); follow.appendChild(o); });
     follow.value = String(api.follow < s.nf ? api.follow : -1);
     setupInspector(s);
     hudDirty = true;
@@ -1007,7 +1017,12 @@
   window.addEventListener('error', e => api.errors.push(String(e.message)));
   setup();
   if (data.live) { connectLive(); if (data.board) connectBoard(); }
-  else { api.store = Store.fromPacked(data); setTeams(api.store); }
+  else {
+    api.store = Store.fromPacked(data); setTeams(api.store);
+    // A link to a moment of the match (a tournament report's first fault): page.html#cycle=N opens at cycle N.
+    const at = /^#cycle=(\d+)$/.exec(location.hash);
+    if (at) seek(parseInt(at[1], 10) - api.store.firstCycle);
+  }
   updatePlayButton();
   requestAnimationFrame(frame);
 })();

@@ -28,7 +28,7 @@ public sealed class ServerCommandTests
             File.WriteAllText(script, "exec " + ShellWord.Quote(words[0]) + " " + ShellWord.Quote(words[1]) + " merge --help\n");
             var (code, stdout, stderr) = Bash.Run(script, "/");
             Assert.True(code == 0, stderr);
-            Assert.StartsWith("Usage: URWPGSim2D.Server merge [--out FILE [--force]] FILE...", stdout, StringComparison.Ordinal);
+            Assert.StartsWith("Usage: urwpgsim2d merge [--out FILE [--force]] FILE...", stdout, StringComparison.Ordinal);
         }
         finally
         {

@@ -25,9 +25,9 @@ public sealed class CompletionCommandTests
     }
 
     [Theory]
-    [InlineData("completion: SHELL must be bash, zsh or pwsh, got \"fish\". Usage: URWPGSim2D.Server completion bash|zsh|pwsh\n", "fish")]
-    [InlineData("completion: expected one SHELL (bash, zsh or pwsh), got 0. Usage: URWPGSim2D.Server completion bash|zsh|pwsh\n")]
-    [InlineData("completion: expected one SHELL (bash, zsh or pwsh), got 2. Usage: URWPGSim2D.Server completion bash|zsh|pwsh\n", "bash", "zsh")]
+    [InlineData("completion: SHELL must be bash, zsh or pwsh, got \"fish\". Usage: urwpgsim2d completion bash|zsh|pwsh\n", "fish")]
+    [InlineData("completion: expected one SHELL (bash, zsh or pwsh), got 0. Usage: urwpgsim2d completion bash|zsh|pwsh\n")]
+    [InlineData("completion: expected one SHELL (bash, zsh or pwsh), got 2. Usage: urwpgsim2d completion bash|zsh|pwsh\n", "bash", "zsh")]
     [InlineData("completion: unknown option \"--hlep\"; did you mean --help?\n", "--hlep")]
     public void BadArgumentsAreOneLineWithExitCodeTwo(string line, params string[] args)
     {
@@ -40,7 +40,7 @@ public sealed class CompletionCommandTests
     {
         var run = CliRun.Of(string.Empty, "completion", "--help");
         Assert.Equal(0, run.ExitCode);
-        Assert.StartsWith("Usage: URWPGSim2D.Server completion bash|zsh|pwsh\n", run.Stdout, StringComparison.Ordinal);
+        Assert.StartsWith("Usage: urwpgsim2d completion bash|zsh|pwsh\n", run.Stdout, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d completion bash >> ~/.bashrc", run.Stdout, StringComparison.Ordinal);
     }
 

@@ -76,6 +76,27 @@ public sealed class RemoteMatchTests : IDisposable
     }
 
     [Fact]
+    public void Two_remote_teams_on_port_0_both_say_their_port_before_a_client_connects_and_are_named_by_their_clients()
+    {
+        string[] run = ["run", "--item", "polo-1v1", "--cycles", "20", "--strategy", "0=remote:0", "--strategy", "1=remote:0", "--strategy-timeout", "20000"];
+        var stderr = new WatchedWriter();
+        var server = Background(run, stderr);
+        int[] ports = stderr.WaitForPorts(2); // no client has connected yet: the server waits for team 0's
+        Assert.NotEqual(ports[0], ports[1]);
+        Assert.DoesNotContain("connected from", stderr.ToString(), StringComparison.Ordinal);
+        CliRun? second = null;
+        var other = new Thread(() => second = CliRun.Of(string.Empty, "connect", $"127.0.0.1:{ports[1]}", "idle")) { IsBackground = true };
+        other.Start();
+        var first = CliRun.Of(string.Empty, "connect", $"127.0.0.1:{ports[0]}", "chase-ball");
+        other.Join();
+        var result = server();
+        Assert.True(result.ExitCode == 0 && first.ExitCode == 0 && second!.ExitCode == 0, result.Stderr + first.Stderr + second!.Stderr);
+
+        // Named by the names the clients sent, with the seat beside them.
+        Assert.True(Regex.IsMatch("\n" + result.Stdout, @"\nscore: team 0 \(chase-ball \[remote:\d+\]\) \d+, team 1 \(idle \[remote:\d+\]\) \d+\n"), result.Stdout);
+    }
+
+    [Fact]
     public void A_server_without_a_client_gives_up_after_the_wait_with_one_line_and_exit_2()
     {
         string trace = Path.Combine(_folder, "never.jsonl");
