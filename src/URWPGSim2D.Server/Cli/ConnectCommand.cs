@@ -68,7 +68,7 @@ internal sealed class ConnectCommand : ICliCommand
         IStrategy strategy;
         try
         {
-            strategy = StrategyResolver.Load(spec, console.ErrorLine);
+            strategy = StrategyResolver.Load(spec, console.ErrorLine, compileInThisProcess: true); // the team's own strategy on its own machine
         }
         catch (StrategyLoadException e)
         {

@@ -70,7 +70,7 @@ internal sealed class HostCommand : ICliCommand
         IStrategy strategy;
         try
         {
-            strategy = StrategyResolver.Load(words[0].Text);
+            strategy = StrategyResolver.Load(words[0].Text, compileInThisProcess: true); // the host is the sandbox
         }
         catch (StrategyLoadException e)
         {

@@ -296,14 +296,14 @@ internal sealed class RunCommand : ICliCommand
             return TeamStrategy.ItemDemo;
         }
 
-        var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress) : null;
+        var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress, options.HostSettings) : null;
         if (prepared is not null)
         {
             HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
         }
 
         return prepared is null
-            ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress)
+            ? TeamStrategy.InProcess(TeamName.OfSpec(spec), spec, progress, options.HostSettings)
             : TeamStrategy.Hosted(TeamName.OfSpec(spec), prepared, options.HostSettings);
     }
 

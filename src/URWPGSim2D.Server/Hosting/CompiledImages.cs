@@ -12,25 +12,29 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// Strategy sources compiled once per run: the image of a folder or <c>.cs</c> file is kept, keyed
 /// by the path and a SHA-256 of its files' names and contents, so every match of a batch (and every
-/// host) uses the same compiled assembly and a changed file is compiled again.
+/// host) uses the same compiled assembly and a changed file is compiled again. The server compiles
+/// in a child process (<see cref="CompilerProcess"/>), which writes the image to a file of the run's
+/// folder; a strategy host (which is a sandbox already) compiles in its own process.
 /// </summary>
 internal static class CompiledImages
 {
-    private static readonly ConcurrentDictionary<string, Lazy<byte[]>> Images = new(StringComparer.Ordinal);
+    private static readonly ConcurrentDictionary<string, Lazy<Compiled>> Images = new(StringComparer.Ordinal);
     private static readonly ConcurrentDictionary<string, string> Files = new(StringComparer.Ordinal);
 
     /// <summary>The compiled image of the sources <paramref name="files"/> of <paramref name="path"/>.</summary>
     /// <param name="path">The spec's folder or file, as the user wrote it.</param>
     /// <param name="files">Its source files.</param>
     /// <param name="progress">Told a line when compiling starts and one when it is done (with the time it took); not told when the image is already compiled.</param>
-    /// <exception cref="StrategyLoadException">They do not compile (the message names <paramref name="path"/>).</exception>
-    public static byte[] Get(string path, IReadOnlyList<string> files, Action<string>? progress = null)
+    /// <param name="settings">The limits of the compiler's child process (null: the defaults).</param>
+    /// <param name="inThisProcess">Compile in this process (a strategy host, a remote client) instead of a child.</param>
+    /// <exception cref="StrategyLoadException">They do not compile, or the compiler went past a limit (the message names <paramref name="path"/>).</exception>
+    public static byte[] Get(string path, IReadOnlyList<string> files, Action<string>? progress = null, HostSettings? settings = null, bool inThisProcess = false)
     {
         string key = Key(path, files);
-        var lazy = Images.GetOrAdd(key, _ => new Lazy<byte[]>(() => Compile(path, files, progress)));
+        var lazy = Images.GetOrAdd(key, _ => new Lazy<Compiled>(() => Compile(path, files, progress, inThisProcess ? null : settings ?? HostSettings.Default)));
         try
         {
-            return lazy.Value;
+            return lazy.Value.Image;
         }
         catch (StrategyLoadException)
         {
@@ -43,12 +47,18 @@ internal static class CompiledImages
     /// <param name="path">The spec's folder or file, as the user wrote it.</param>
     /// <param name="files">Its source files.</param>
     /// <param name="progress">As for <see cref="Get"/>.</param>
-    public static string File(string path, IReadOnlyList<string> files, Action<string>? progress = null)
+    /// <param name="settings">As for <see cref="Get"/>.</param>
+    public static string File(string path, IReadOnlyList<string> files, Action<string>? progress = null, HostSettings? settings = null)
     {
-        byte[] image = Get(path, files, progress);
+        byte[] image = Get(path, files, progress, settings);
         string key = Key(path, files);
         return Files.GetOrAdd(key, _ =>
         {
+            if (Images.TryGetValue(key, out var compiled) && compiled.IsValueCreated && compiled.Value.File is { } written)
+            {
+                return written; // the compiler's child wrote it
+            }
+
             string file = System.IO.Path.Combine(RunFolder.NewStrategyFolder(), Name(path) + ".dll");
             System.IO.File.WriteAllBytes(file, image);
             return file;
@@ -68,15 +78,26 @@ internal static class CompiledImages
     /// <summary>The assembly name of a compiled strategy.</summary>
     public static string Name(string path) => "Strategy_" + System.IO.Path.GetFileNameWithoutExtension(System.IO.Path.TrimEndingDirectorySeparator(path));
 
-    private static byte[] Compile(string path, IReadOnlyList<string> files, Action<string>? progress)
+    // In a child limited by settings, or (null) in this process.
+    private static Compiled Compile(string path, IReadOnlyList<string> files, Action<string>? progress, HostSettings? settings)
     {
         try
         {
             progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiling {path} ({files.Count} file{(files.Count == 1 ? string.Empty : "s")})..."));
             long start = Stopwatch.GetTimestamp();
-            byte[] image = StrategyCompiler.Compile(Name(path), files, progress);
+            Compiled compiled;
+            if (settings is null)
+            {
+                compiled = new Compiled(StrategyCompiler.Compile(Name(path), files, progress), null);
+            }
+            else
+            {
+                var (image, file) = CompilerProcess.Compile(Name(path), path, files, settings, progress);
+                compiled = new Compiled(image, file);
+            }
+
             progress?.Invoke(string.Create(CultureInfo.InvariantCulture, $"compiled {path} in {Stopwatch.GetElapsedTime(start).TotalSeconds:0.0} s"));
-            return image;
+            return compiled;
         }
         catch (StrategyLoadException e)
         {
@@ -102,4 +123,7 @@ internal static class CompiledImages
 
         return System.IO.Path.GetFullPath(path) + "|" + Convert.ToHexString(sha.GetHashAndReset());
     }
+
+    /// <summary>A compiled image, and the file the compiler's child wrote it to (null: compiled in this process).</summary>
+    private sealed record Compiled(byte[] Image, string? File);
 }

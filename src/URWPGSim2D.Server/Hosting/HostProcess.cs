@@ -65,25 +65,10 @@ internal sealed class HostProcess : IStrategyLink
     /// <param name="cpuSeconds">CPU time limit of the whole host, s.</param>
     public static HostProcess Start(string loadSpec, IEnumerable<string> readOnly, bool sandbox, HostSettings settings, int cpuSeconds)
     {
-        int memoryMb = settings.MemoryMb;
         string scratch = RunFolder.NewScratch();
-        string server = Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+        string server = ServerAssembly;
         string dotnetRoot = DotnetRoot();
-        var environment = new Dictionary<string, string>(StringComparer.Ordinal)
-        {
-            ["PATH"] = "/usr/bin:/bin",
-            ["HOME"] = scratch,
-            ["TMPDIR"] = scratch,
-            ["DOTNET_ROOT"] = dotnetRoot,
-            ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
-            ["DOTNET_NOLOGO"] = "1",
-            ["DOTNET_EnableDiagnostics"] = "0", // no debugger/diagnostics sockets
-            ["DOTNET_gcServer"] = "0",
-            ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
-            ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
-            ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
-            ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
-        };
+        var environment = ChildEnvironment(scratch, settings.MemoryMb);
 
         var command = new List<string>();
         var cgroup = HostCgroup.Create(settings);
@@ -104,7 +89,7 @@ internal sealed class HostProcess : IStrategyLink
             command.AddRange(["/usr/bin/prlimit", $"--cpu={cpuSeconds}", "--core=0", "--"]);
         }
 
-        command.AddRange([Path.Combine(dotnetRoot, OperatingSystem.IsWindows() ? "dotnet.exe" : "dotnet"), server, "host", loadSpec]);
+        command.AddRange([DotnetProgram, server, "host", loadSpec]);
         var start = new ProcessStartInfo(command[0])
         {
             UseShellExecute = false,
@@ -320,7 +305,35 @@ internal sealed class HostProcess : IStrategyLink
         line.Clear();
     }
 
-    private static string DotnetRoot()
+    /// <summary>The server's own assembly, which a host or the compiler runs (<c>dotnet URWPGSim2D.Server.dll …</c>).</summary>
+    internal static string ServerAssembly => Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
+
+    /// <summary>The <c>dotnet</c> program that runs this process.</summary>
+    internal static string DotnetProgram => Path.Combine(DotnetRoot(), OperatingSystem.IsWindows() ? "dotnet.exe" : "dotnet");
+
+    /// <summary>
+    /// The whole environment of a child of the server that runs untrusted work (a host, the compiler):
+    /// its scratch folder as <c>HOME</c> and <c>TMPDIR</c>, the runtime's settings, its GC heap limited to
+    /// <paramref name="memoryMb"/> MiB, and nothing of the server's own environment.
+    /// </summary>
+    internal static Dictionary<string, string> ChildEnvironment(string scratch, int memoryMb) => new(StringComparer.Ordinal)
+    {
+        ["PATH"] = "/usr/bin:/bin",
+        ["HOME"] = scratch,
+        ["TMPDIR"] = scratch,
+        ["DOTNET_ROOT"] = DotnetRoot(),
+        ["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1",
+        ["DOTNET_NOLOGO"] = "1",
+        ["DOTNET_EnableDiagnostics"] = "0", // no debugger/diagnostics sockets
+        ["DOTNET_gcServer"] = "0",
+        ["DOTNET_GCHeapHardLimit"] = "0x" + ((long)memoryMb * 1024 * 1024).ToString("x", System.Globalization.CultureInfo.InvariantCulture),
+        ["DOTNET_TieredCompilation"] = "1", // start fast; the server's own setting (off) costs a host ~0.1 s
+        ["DOTNET_TieredPGO"] = "0", // no instrumented code: a host's life is too short to profit from it
+        ["DOTNET_gcConcurrent"] = "0", // no background GC thread to start
+    };
+
+    /// <summary>The folder of the <c>dotnet</c> program that runs this process.</summary>
+    internal static string DotnetRoot()
     {
         // .../shared/Microsoft.NETCore.App/<version>/ -> the folder of the dotnet program
         string runtime = Path.TrimEndingDirectorySeparator(RuntimeEnvironment.GetRuntimeDirectory());

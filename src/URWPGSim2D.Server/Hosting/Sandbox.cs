@@ -28,9 +28,10 @@ internal static class Sandbox
     /// <summary>
     /// The bubblewrap arguments (before the command) for a host that may read <paramref name="readOnly"/>
     /// and write <paramref name="scratch"/> (a tmpfs of <paramref name="scratchBytes"/> there, as /tmp and
-    /// /dev/shm), with <paramref name="environment"/> as its whole environment.
+    /// /dev/shm), with <paramref name="environment"/> as its whole environment; it may also write the
+    /// folders <paramref name="writable"/> (the compiler's output folder), if any.
     /// </summary>
-    public static List<string> Arguments(IEnumerable<string> readOnly, string scratch, IReadOnlyDictionary<string, string> environment, long scratchBytes)
+    public static List<string> Arguments(IEnumerable<string> readOnly, string scratch, IReadOnlyDictionary<string, string> environment, long scratchBytes, IEnumerable<string>? writable = null)
     {
         string size = scratchBytes.ToString(System.Globalization.CultureInfo.InvariantCulture);
         var a = new List<string>
@@ -60,6 +61,12 @@ internal static class Sandbox
             {
                 a.AddRange(["--ro-bind", full, full]);
             }
+        }
+
+        foreach (string path in writable ?? [])
+        {
+            string full = Path.TrimEndingDirectorySeparator(Path.GetFullPath(path));
+            a.AddRange(["--bind", full, full]);
         }
 
         a.AddRange(["--size", size, "--perms", "0700", "--tmpfs", scratch, "--chdir", scratch, "--clearenv"]);

@@ -11,7 +11,7 @@ using Microsoft.CodeAnalysis.CSharp;
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
-/// Compiles a team's strategy sources in process (Roslyn) against the framework, the strategy SDK and
+/// Compiles a team's strategy sources (Roslyn; the server runs it in a child process, <see cref="CompilerProcess"/>) against the framework, the strategy SDK and
 /// the compatibility assembly (the original's API). Errors come back as <c>file(line,col): error CSnnnn:
 /// message</c> lines, led by their likely cause (<see cref="CompileErrors"/>); warnings are ignored, and the ones old sources always raise on .NET 10 are
 /// suppressed outright: the obsolete <c>InitializeLifetimeService</c> override (CS0672, SYSLIB0010,
@@ -82,17 +82,19 @@ internal static class StrategyCompiler
     /// <param name="files">The source files.</param>
     /// <param name="note">Told one line for each file that is not UTF-8 and was read as GB18030 (<see cref="SourceFileText"/>).</param>
     /// <returns>The assembly image.</returns>
+    /// <param name="readFrom">Where each file is read from when not from its name (the same count), or null.</param>
     /// <exception cref="StrategyLoadException">A file cannot be read, or the sources do not compile (<see cref="CompileErrors"/>).</exception>
-    public static byte[] Compile(string name, IReadOnlyList<string> files, Action<string>? note = null)
+    public static byte[] Compile(string name, IReadOnlyList<string> files, Action<string>? note = null, IReadOnlyList<string>? readFrom = null)
     {
         var trees = new List<SyntaxTree>(files.Count);
         var parse = new CSharpParseOptions(LanguageVersion.Latest);
-        foreach (string file in files)
+        for (int i = 0; i < files.Count; i++)
         {
+            string file = files[i];
             string text;
             try
             {
-                (text, bool gb18030) = SourceFileText.Read(file);
+                (text, bool gb18030) = SourceFileText.Read(readFrom is null ? file : readFrom[i]);
                 if (gb18030)
                 {
                     note?.Invoke($"{file} is not UTF-8: read as GB18030 (GBK, as Visual Studio 2008 saved Chinese sources); save it as UTF-8 to be sure");

@@ -14,7 +14,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// Creates a team's strategy from <c>--strategy TEAM=SPEC</c>. SPEC is a built-in name
 /// (<c>idle</c>, <c>chase-ball</c>), a compiled assembly (<c>path/My.dll</c>, optionally
 /// <c>#Namespace.Type</c>), a C# source file (<c>path/Strategy.cs</c>) or a folder of sources. Sources are
-/// compiled in process (<see cref="StrategyCompiler"/>). Every assembly gets its own collectible
+/// compiled in a limited child process (<see cref="CompilerProcess"/>; a strategy host compiles in its own). Every assembly gets its own collectible
 /// <see cref="StrategyLoadContext"/>. An assembly may implement either API: the SDK's
 /// <see cref="IStrategy"/>, or the original's <c>URWPGSim2D.StrategyLoader.IStrategy</c> (the class
 /// <c>URWPGSim2D.Strategy.Strategy</c> is preferred), which runs through <see cref="OriginalStrategyAdapter"/>.
@@ -33,8 +33,10 @@ internal static class StrategyResolver
     /// <summary>Creates the strategy named by <paramref name="spec"/>.</summary>
     /// <param name="spec">The spec.</param>
     /// <param name="progress">Told when sources start and finish compiling (<see cref="CompiledImages.Get"/>).</param>
+    /// <param name="settings">The limits of the compiler's child process (null: the defaults).</param>
+    /// <param name="compileInThisProcess">Compile sources in this process (a strategy host, a remote client), not in a child.</param>
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    public static IStrategy Load(string spec, Action<string>? progress = null)
+    public static IStrategy Load(string spec, Action<string>? progress = null, HostSettings? settings = null, bool compileInThisProcess = false)
     {
         if (spec == "idle")
         {
@@ -49,7 +51,7 @@ internal static class StrategyResolver
         (string path, string? typeName) = Split(spec);
         if (IsSources(path))
         {
-            return FromSources(path, typeName, progress);
+            return FromSources(path, typeName, progress, settings, compileInThisProcess);
         }
 
         string full = CheckAssembly(spec, path);
@@ -63,9 +65,10 @@ internal static class StrategyResolver
     /// </summary>
     /// <param name="spec">The spec.</param>
     /// <param name="progress">Told when sources start and finish compiling (<see cref="CompiledImages.Get"/>).</param>
+    /// <param name="settings">The limits of the compiler's child process (null: the defaults).</param>
     /// <exception cref="StrategyLoadException">The strategy cannot be used (same messages as <see cref="Load"/>).</exception>
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    public static PreparedStrategy? Prepare(string spec, Action<string>? progress = null)
+    public static PreparedStrategy? Prepare(string spec, Action<string>? progress = null, HostSettings? settings = null)
     {
         if (spec is "idle" or "chase-ball")
         {
@@ -77,7 +80,7 @@ internal static class StrategyResolver
         if (IsSources(path))
         {
             var files = Sources(path);
-            byte[] image = CompiledImages.Get(path, files, progress);
+            byte[] image = CompiledImages.Get(path, files, progress, settings);
             var context = new StrategyLoadContext(path, null);
             try
             {
@@ -89,7 +92,7 @@ internal static class StrategyResolver
                 context.Unload();
             }
 
-            string dll = CompiledImages.File(path, files);
+            string dll = CompiledImages.File(path, files, settings: settings);
             return new PreparedStrategy(dll + suffix, [Path.GetDirectoryName(dll)!, Path.GetFullPath(path)]);
         }
 
@@ -163,9 +166,9 @@ internal static class StrategyResolver
     }
 
     [UnconditionalSuppressMessage("Trimming", "IL2026", Justification = Justification)]
-    private static IStrategy FromSources(string path, string? typeName, Action<string>? progress)
+    private static IStrategy FromSources(string path, string? typeName, Action<string>? progress, HostSettings? settings, bool inThisProcess)
     {
-        byte[] image = CompiledImages.Get(path, Sources(path), progress);
+        byte[] image = CompiledImages.Get(path, Sources(path), progress, settings, inThisProcess);
         var context = new StrategyLoadContext(path, null);
         using var stream = new MemoryStream(image, writable: false);
         return Create(context.LoadFromStream(stream), path, typeName);

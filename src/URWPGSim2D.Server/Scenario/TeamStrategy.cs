@@ -34,12 +34,13 @@ internal sealed record TeamStrategy(string Label, IStrategy? Strategy, bool Isol
     /// <param name="label">The spec's label, for a strategy that has no name of its own.</param>
     /// <param name="spec">The spec.</param>
     /// <param name="progress">Told when sources start and finish compiling.</param>
+    /// <param name="settings">The limits of the compiler's child process (null: the defaults).</param>
     /// <exception cref="StrategyLoadException">The strategy cannot be loaded (not found, does not compile, no strategy class).</exception>
-    public static TeamStrategy InProcess(string label, string spec, Action<string>? progress = null)
+    public static TeamStrategy InProcess(string label, string spec, Action<string>? progress = null, HostSettings? settings = null)
     {
         try
         {
-            IStrategy strategy = StrategyResolver.Load(spec, progress);
+            IStrategy strategy = StrategyResolver.Load(spec, progress, settings);
             return new TeamStrategy(Hosting.TeamName.Label(NameOf(strategy), label), strategy, Isolated: true);
         }
         catch (StrategyCreationException e)

@@ -68,7 +68,7 @@ internal sealed class EntrantLoader
             return TeamStrategy.Hosted(entrant.Name, prepared, Settings);
         }
 
-        return TeamStrategy.InProcess(entrant.Name, entrant.Spec);
+        return TeamStrategy.InProcess(entrant.Name, entrant.Spec, settings: Settings);
     }
 
     /// <summary>The one-line reason of a load failure: the message, and the first compile error when there are some.</summary>
@@ -85,7 +85,7 @@ internal sealed class EntrantLoader
 
         try
         {
-            var prepared = StrategyResolver.Prepare(entrant.Spec, progress); // compiles and checks; runs none of the entrant's code
+            var prepared = StrategyResolver.Prepare(entrant.Spec, progress, settings); // compiles and checks; runs none of the entrant's code
             return (settings.Isolation == IsolationMode.Process ? prepared : null, null);
         }
         catch (StrategyLoadException e)
