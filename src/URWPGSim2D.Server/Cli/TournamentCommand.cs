@@ -208,7 +208,7 @@ internal sealed class TournamentCommand : ICliCommand
             TournamentOutputs.Write(folder, standings, mine);
             console.Out.Write(StandingsLines(standings));
             console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
-            console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
+            console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
         }
 
         double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
@@ -244,6 +244,18 @@ internal sealed class TournamentCommand : ICliCommand
         if (StandingsText.Ties(s) is { } ties)
         {
             t.Append(ties).Append('\n');
+        }
+
+        if (s.Points.Count > 0)
+        {
+            t.Append("points table (").Append(StandingsText.PointsRule).Append("):\n");
+            t.Append(string.Create(CultureInfo.InvariantCulture, $"{"rank",4}  {"entrant".PadRight(width)}  {"played",6}  {"W-D-L",-11}  {"goals",-7}  {"diff",4}  {"points",6}\n"));
+            foreach (var p in s.Points)
+            {
+                string wdl = string.Create(CultureInfo.InvariantCulture, $"{p.Won}-{p.Drawn}-{p.Lost}");
+                string goals = string.Create(CultureInfo.InvariantCulture, $"{p.GoalsFor}:{p.GoalsAgainst}");
+                t.Append(string.Create(CultureInfo.InvariantCulture, $"{p.Rank,4}  {p.Name.PadRight(width)}  {p.Played,6}  {wdl,-11}  {goals,-7}  {StandingsText.Signed(p.GoalDifference),4}  {p.Points,6}\n"));
+            }
         }
 
         return t.ToString();
@@ -350,10 +362,11 @@ internal sealed class TournamentCommand : ICliCommand
         "ordered pair of entrants (both sides of the field) on each of --seeds N seeds (default 4) from --seed S\n" +
         "(default 1); one-team items: every entrant on each seed. --minutes 10|5|3|1 (default 10) or --cycles N sets\n" +
         "the length; --threads P plays P matches at once (default: every core). Writes into --out DIR: results.jsonl\n" +
-        "(the batch format plus the entrants), standings.json, standings.md and report.html (--replays: and every\n" +
-        "match's replay page in replays/). Run again into the same DIR, it plays only missing or broken matches.\n" +
-        "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
-        "intervals; one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
+        "(the batch format plus the entrants), standings.json, standings.md, standings.csv, matches.csv and\n" +
+        "report.html (--replays: and every match's replay page in replays/). Run again into the same DIR, it plays\n" +
+        "only missing or broken matches. Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale,\n" +
+        "mean 1500, with 95 % bootstrap intervals, and a points table (3 a win, 1 a draw; goal difference, goals,\n" +
+        "head to head); one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
         "Entrants' code runs as with 'run': each in its own strategy host per match (--isolation process, the default;\n" +
         "--sandbox auto|required|off, --strategy-memory MB), or in the server's process with --isolation none; faults\n" +
         "are charged to the team that made them and the match is played.\n" +

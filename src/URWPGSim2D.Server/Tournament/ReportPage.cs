@@ -35,6 +35,7 @@ internal static class ReportPage
             h.Append("<p class=\"note\">").Append(E(ties)).Append("</p>\n");
         }
 
+        Points(h, s);
         Faults(h, s, hasReplay);
         h.Append("<h2>Intervals</h2>\n");
         Plot(h, s);
@@ -186,6 +187,25 @@ internal static class ReportPage
             }
 
             h.Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // The points table (items of two or more teams).
+    private static void Points(StringBuilder h, Standings s)
+    {
+        if (s.Points.Count == 0)
+        {
+            return;
+        }
+
+        h.Append("<h2>Points table</h2>\n<p class=\"note\">").Append(E(StandingsText.PointsRule)).Append(".</p>\n");
+        h.Append("<table>\n<tr><th>Rank</th><th class=\"l\">Entrant</th><th>Played</th><th>Won</th><th>Drawn</th><th>Lost</th><th>Goals for</th><th>Goals against</th><th>Goal difference</th><th>Points</th></tr>\n");
+        foreach (var p in s.Points)
+        {
+            h.Append(Inv($"<tr><td>{p.Rank}</td><td class=\"l\">")).Append(E(p.Name))
+                .Append(Inv($"</td><td>{p.Played}</td><td>{p.Won}</td><td>{p.Drawn}</td><td>{p.Lost}</td><td>{p.GoalsFor}</td><td>{p.GoalsAgainst}</td><td>{StandingsText.Signed(p.GoalDifference)}</td><td>{p.Points}</td></tr>\n"));
         }
 
         h.Append("</table>\n");

@@ -53,8 +53,14 @@ internal sealed record Standings(
         var rows = teams == 1 ? OneTeam(header, sorted, index, error, replicates, out var wdl) : Versus(sorted, header.Entrants.Select(e => e.Name).ToArray(), index, error, replicates, out wdl);
         var faults = Faults(sorted, index, n);
         rows = [.. rows.Select(r => r with { Faults = faults[r.Entrant] })];
-        return new Standings(header, teams, sorted, Ranked(rows, teams), wdl);
+        return new Standings(header, teams, sorted, Ranked(rows, teams), wdl)
+        {
+            Points = teams == 1 ? [] : PointsTable.Compute(sorted, [.. header.Entrants.Select(e => e.Name)]),
+        };
     }
+
+    /// <summary>Items of two or more teams: the points table (<see cref="PointsTable"/>), best first; empty for a one-team item.</summary>
+    public IReadOnlyList<PointsRow> Points { get; init; } = [];
 
     /// <summary>Whether any entrant had a runtime fault.</summary>
     public bool AnyFaults => Rows.Any(r => r.Faults is not null);
@@ -152,10 +158,12 @@ internal sealed record Standings(
         return rows;
     }
 
-    // Side p against side q of a match: 1 (p won), 0.5 (draw), 0 (q won), or null (no game). The
-    // item's winner beats every other side; otherwise, with more than two sides, the higher score
-    // wins; a side that could not play loses to one that did.
-    private static double? Outcome(TournamentRecord r, int p, int q)
+    /// <summary>
+    /// Side <paramref name="p"/> against side <paramref name="q"/> of a match: 1 (p won), 0.5 (draw),
+    /// 0 (q won), or null (no game). The item's winner beats every other side; otherwise, with more
+    /// than two sides, the higher score wins; a side that could not play loses to one that did.
+    /// </summary>
+    public static double? Outcome(TournamentRecord r, int p, int q)
     {
         if (r.Result is { } result)
         {

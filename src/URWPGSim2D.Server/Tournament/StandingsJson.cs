@@ -16,6 +16,8 @@ namespace URWPGSim2D.Server.Tournament;
 /// <c>{"exceptions", "timeouts", "badAnswers", "hostEnds", "matches", "first": {"match", "cycle", "text"[, "replay"]}}</c>
 /// (<c>cycle</c> absent when not known; <c>replay</c>, the link to that cycle of the match's replay page
 /// relative to the folder, only when the page exists). Ratings and their intervals are rounded to 0.1, scores to 0.001, seconds to 0.1.
+/// An item of two or more teams also has <c>"points"</c>, the points table (<see cref="PointsTable"/>), best first:
+/// <c>[{"name", "rank", "played", "won", "drawn", "lost", "goalsFor", "goalsAgainst", "goalDifference", "points"}, …]</c>.
 /// </summary>
 internal static class StandingsJson
 {
@@ -63,7 +65,22 @@ internal static class StandingsJson
             t.Append(k + 1 < standings.Rows.Count ? "},\n" : "}\n");
         }
 
-        t.Append("  ]\n}\n");
+        t.Append("  ]");
+        if (standings.Points.Count > 0)
+        {
+            t.Append(",\n  \"points\": [\n");
+            for (int k = 0; k < standings.Points.Count; k++)
+            {
+                var p = standings.Points[k];
+                t.Append("    {\"name\": ").Append(Text(p.Name))
+                    .Append(Inv($", \"rank\": {p.Rank}, \"played\": {p.Played}, \"won\": {p.Won}, \"drawn\": {p.Drawn}, \"lost\": {p.Lost}, \"goalsFor\": {p.GoalsFor}, \"goalsAgainst\": {p.GoalsAgainst}, \"goalDifference\": {p.GoalDifference}, \"points\": {p.Points}}}"))
+                    .Append(k + 1 < standings.Points.Count ? ",\n" : "\n");
+            }
+
+            t.Append("  ]");
+        }
+
+        t.Append("\n}\n");
         return t.ToString();
     }
 

@@ -40,6 +40,17 @@ internal static class StandingsMarkdown
             t.Append('\n').Append(ties).Append('\n');
         }
 
+        if (s.Points.Count > 0)
+        {
+            t.Append("\nPoints table (").Append(StandingsText.PointsRule).Append("):\n\n");
+            t.Append("| Rank | Entrant | Played | Won | Drawn | Lost | Goals for | Goals against | Goal difference | Points |\n");
+            t.Append("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+            foreach (var p in s.Points)
+            {
+                t.Append(string.Create(CultureInfo.InvariantCulture, $"| {p.Rank} | {Cell(p.Name)} | {p.Played} | {p.Won} | {p.Drawn} | {p.Lost} | {p.GoalsFor} | {p.GoalsAgainst} | {StandingsText.Signed(p.GoalDifference)} | {p.Points} |\n"));
+            }
+        }
+
         if (s.AnyFaults)
         {
             t.Append("\nRuntime faults (calls that threw, missed their deadline or answered badly; strategy hosts that ended early):\n\n");

@@ -14,6 +14,12 @@ internal static class StandingsText
         : "Bradley-Terry ratings by maximum likelihood (a draw counts half a win; one virtual draw against a 1500 opponent each) on the Elo scale, 400 points = odds of 10 to 1, mean 1500; 95 % intervals by a bootstrap over each pairing's matches (1,000 replicates, fixed seed)."
             + (s.Teams > 2 ? " A match of more than two teams counts as one game between every two of its sides: the item's winner beats the others, else the higher score wins; Played counts these games." : "");
 
+    /// <summary>How the points table is made, in a few words.</summary>
+    public const string PointsRule = "3 points a win, 1 a draw; ties: goal difference, goals scored, head to head, name";
+
+    /// <summary>A goal difference as written: <c>+3</c>, <c>0</c>, <c>-2</c>.</summary>
+    public static string Signed(int value) => value > 0 ? "+" + value.ToString(CultureInfo.InvariantCulture) : value.ToString(CultureInfo.InvariantCulture);
+
     /// <summary>The rating (or mean score) as written.</summary>
     public static string Value(Standings s, double value) =>
         StandingsJson.Round(value, s.Teams == 1 ? 3 : 1).ToString(s.Teams == 1 ? "0.000" : "0.0", CultureInfo.InvariantCulture);

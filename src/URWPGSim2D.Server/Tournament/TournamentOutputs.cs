@@ -4,7 +4,7 @@ using URWPGSim2D.Server.Rendering;
 
 namespace URWPGSim2D.Server.Tournament;
 
-/// <summary>The files of a finished tournament in its folder: results.jsonl, standings.json, standings.md and report.html, each written whole and renamed.</summary>
+/// <summary>The files of a finished tournament in its folder: results.jsonl, standings.json, standings.md, standings.csv, matches.csv and report.html, each written whole and renamed.</summary>
 internal static class TournamentOutputs
 {
     /// <summary>The results file's name.</summary>
@@ -15,6 +15,12 @@ internal static class TournamentOutputs
 
     /// <summary>The Markdown standings' name.</summary>
     public const string StandingsMarkdownName = "standings.md";
+
+    /// <summary>The standings for a spreadsheet.</summary>
+    public const string StandingsCsvName = "standings.csv";
+
+    /// <summary>The matches for a spreadsheet.</summary>
+    public const string MatchesCsvName = "matches.csv";
 
     /// <summary>The report's name.</summary>
     public const string Report = "report.html";
@@ -32,6 +38,8 @@ internal static class TournamentOutputs
         bool HasReplay(int j) => File.Exists(ReplayPage(folder, j));
         AtomicFile.WriteAllText(Path.Combine(folder, StandingsJsonName), StandingsJson.Format(standings, HasReplay));
         AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings, HasReplay));
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsCsvName), StandingsCsv.Standings(standings));
+        AtomicFile.WriteAllText(Path.Combine(folder, MatchesCsvName), StandingsCsv.Matches(standings));
         AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, HasReplay));
     }
 }
