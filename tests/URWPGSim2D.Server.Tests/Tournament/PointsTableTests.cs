@@ -106,6 +106,40 @@ public sealed class PointsTableTests
         }
     }
 
+    [Fact]
+    public void Places_follow_points_then_goal_difference_then_goals_in_every_view()
+    {
+        string[] names = ["a", "b", "c"];
+        var s = Standings.Compute(Header(names), 2,
+        [
+            Played(0, "a", "b", 3, 0), Played(1, "b", "a", 1, 1),
+            Played(2, "a", "c", 0, 2), Played(3, "c", "a", 0, 0),
+            Played(4, "b", "c", 2, 1), Played(5, "c", "b", 1, 0),
+        ], replicates: 50);
+        Assert.Equal(["c", "a", "b"], s.Points.Select(p => p.Name));
+        Assert.Equal((4, 2, 1, 1, 4, 2, 7), Of(s.Points[0]));
+        Assert.Equal((4, 1, 2, 1, 4, 3, 5), Of(s.Points[1]));
+        Assert.Equal((4, 1, 1, 2, 3, 6, 4), Of(s.Points[2]));
+
+        Assert.Contains("| 1 | c | 4 | 2 | 1 | 1 | 4 | 2 | +2 | 7 |\n| 2 | a | 4 | 1 | 2 | 1 | 4 | 3 | +1 | 5 |\n| 3 | b | 4 | 1 | 1 | 2 | 3 | 6 | -3 | 4 |\n", StandingsMarkdown.Format(s), StringComparison.Ordinal);
+        Assert.Contains("<h2>Points table</h2>", ReportPage.Format(s, _ => false), StringComparison.Ordinal);
+        Assert.Contains("\"points\": [\n    {\"name\": \"c\", \"rank\": 1, \"played\": 4, \"won\": 2, \"drawn\": 1, \"lost\": 1, \"goalsFor\": 4, \"goalsAgainst\": 2, \"goalDifference\": 2, \"points\": 7},", StandingsJson.Format(s), StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void A_one_team_item_has_no_points_table()
+    {
+        var s = Standings.Compute(new TournamentHeader("transport", [new Entrant("a", "idle")], 1, 1, 100, 100, 1), 1, [], replicates: 10);
+        Assert.Empty(s.Points);
+        Assert.DoesNotContain("\"points\"", StandingsJson.Format(s), StringComparison.Ordinal);
+        Assert.DoesNotContain("Points table", StandingsMarkdown.Format(s), StringComparison.Ordinal);
+    }
+
+    private static (int, int, int, int, int, int, int) Of(PointsRow p) => (p.Played, p.Won, p.Drawn, p.Lost, p.GoalsFor, p.GoalsAgainst, p.Points);
+
+    private static TournamentHeader Header(string[] names) =>
+        new("ball-grab", names.Select(n => new Entrant(n, "idle")).ToArray(), 1, 1, 100, 100, names.Length * (names.Length - 1));
+
     // A two-team match: the higher score wins (the item's rule in these tests), equal scores draw.
     internal static TournamentRecord Played(int index, string team0, string team1, int score0, int score1) =>
         new(index, (ulong)index, [team0, team1], new MatchResult(index, (ulong)index, 100, score0, score1, new long[7], 0, 0, 0, 0f, 0, 0, "ball-grab", [score0, score1], score0 > score1 ? 0 : score1 > score0 ? 1 : -1, "test"), [], []);
