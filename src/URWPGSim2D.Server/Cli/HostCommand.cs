@@ -92,7 +92,7 @@ internal sealed class HostCommand : ICliCommand
         }
 
         // A host runs one strategy: the CPU time of all its threads counts against the deadline.
-        var client = new StrategyClient(fromServer, toServer, () => new ThreadTimeClock(wholeProcess: true));
+        var client = new StrategyClient(fromServer, toServer);
         try
         {
             return client.Play(strategy, token: null) == StrategyClient.Ending.Ended ? ExitCodes.Success : Disconnected;

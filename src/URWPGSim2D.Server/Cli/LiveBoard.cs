@@ -76,7 +76,7 @@ internal sealed class LiveBoard
 
         var teams = fresh ? s.Teams : Renewed(s);
         int cycles = s.Cycles ?? (s.Minutes * 600) ?? s.Scenario.Cycles;
-        return new MatchSettings(s.Scenario, cycles, _options.Seed, _options.Noise, teams, _options.StrategyTimeoutMs, _options.Threads ?? 1, _options.DebugDraw, _options.StrategyLog);
+        return new MatchSettings(s.Scenario, cycles, _options.Seed, _options.Noise, teams, _options.StrategyTimeoutMs, _options.Threads ?? 1, _options.DebugDraw, _options.StrategyLog, _options.TimeBank);
     }
 
     /// <summary>

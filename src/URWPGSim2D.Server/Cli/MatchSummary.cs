@@ -77,6 +77,7 @@ internal static class MatchSummary
             s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {slot.Exceptions} exceptions, {slot.Timeouts} timeouts, {slot.BadAnswers} bad answers");
             s.Append(slot switch
             {
+                { IdleFromCycle: > 0, Crashes: 0 } => string.Create(c, $", out of time in cycle {slot.IdleFromCycle}; its fish kept their last decisions until then and stopped after"),
                 { Crashes: 0 } => "; its fish kept their last decisions",
                 { CreationFault: not null } => ", strategy not created; its fish stopped for the whole match",
                 _ => string.Create(c, $", strategy host ended in cycle {slot.EndedInCycle}; its fish kept their last decisions until then and stopped after"),
@@ -85,6 +86,41 @@ internal static class MatchSummary
         }
 
         s.Append(any ? "\n" : " none\n");
+        AppendTime(s, match.Strategies);
         return s.ToString();
+    }
+
+    // The time banks of the teams whose strategies are timed: one line, and a line for each team that drew on its bank.
+    private static void AppendTime(StringBuilder s, Hosting.StrategyCaller strategies)
+    {
+        var c = CultureInfo.InvariantCulture;
+        bool timed = false, drawn = false;
+        foreach (var slot in strategies.Slots)
+        {
+            timed |= slot.Bank is not null;
+            drawn |= slot.Bank is { LateCalls: > 0 };
+        }
+
+        if (!timed)
+        {
+            return;
+        }
+
+        s.Append(c, $"strategy time: {strategies.TimeoutMs} ms of CPU time a call, a time bank of {strategies.TimeBank.TotalSeconds:0.0##} s a team for late calls:");
+        if (!drawn)
+        {
+            s.Append(" none drawn\n");
+            return;
+        }
+
+        foreach (var slot in strategies.Slots)
+        {
+            if (slot.Bank is { LateCalls: > 0 } bank)
+            {
+                s.Append(c, $"\n  team {slot.Team} ({slot.Label}): {bank.LateCalls} late {(bank.LateCalls == 1 ? "call" : "calls")}, {bank.Used.TotalSeconds:0.000} s drawn{(bank.Spent ? ", bank spent" : "")}, slowest call {bank.Slowest.TotalMilliseconds:0} ms");
+            }
+        }
+
+        s.Append('\n');
     }
 }

@@ -244,7 +244,7 @@ internal sealed class RunCommand : ICliCommand
 
     /// <summary>The settings of the match the options ask for (the scene's cycles unless --cycles or --minutes).</summary>
     public static MatchSettings Settings(RunOptions options, ScenarioDefinition scenario, TeamStrategy?[] teams) =>
-        new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1, options.DebugDraw, options.StrategyLog);
+        new(scenario, options.CyclesFor(scenario), options.Seed, options.Noise, teams, options.StrategyTimeoutMs, options.Threads ?? 1, options.DebugDraw, options.StrategyLog, options.TimeBank);
 
     /// <summary>
     /// The strategies of the command line: with <c>--isolation process</c> (the default) readied for
@@ -377,8 +377,9 @@ internal sealed class RunCommand : ICliCommand
         "--strategy TEAM=SPEC gives a whole team a strategy: a built-in name (idle, chase-ball, demo: the item's own\n" +
         "demo), a .dll built against\n" +
         "either API (the SDK's or the original's), a .cs file or a folder of .cs files (compiled in process), each in\n" +
-        "its own load context; --strategy-timeout is its deadline per call in ms of its thread's CPU time (default\n" +
-        "100). --strategy TEAM=remote:PORT waits for a remote client to play the team over TCP (connect, or any client\n" +
+        "its own load context; --strategy-timeout is its deadline per call in ms of CPU time (default 100); a late call\n" +
+        "is waited for and paid from the team's time bank (--time-bank SECONDS; default a tenth of the match's\n" +
+        "deadlines, at least 5 s); a team whose bank is spent plays idle. --strategy TEAM=remote:PORT waits for a remote client to play the team over TCP (connect, or any client\n" +
         "of docs/protocol.md; PORT 0: any free one) for --remote-wait SECONDS (default 60), on 127.0.0.1 unless\n" +
         "--remote-host ADDR; --remote-token [TEAM=]TOKEN must be presented by the client (docs/cli.md, Remote teams).\n" +
         "--trace writes JSON Lines, --svg the final frame, --html a self-contained replay page (docs/viewer.md); an\n" +

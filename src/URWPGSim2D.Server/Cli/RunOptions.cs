@@ -16,7 +16,7 @@ internal sealed class RunOptions
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused] [--strategies DIR]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
+    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] [--time-bank SECONDS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused] [--strategies DIR]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
 
     /// <summary>Every long option of <c>run</c>, as declared (<see cref="RunSyntax"/>).</summary>
     public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(RunSyntax.Command);
@@ -117,6 +117,9 @@ internal sealed class RunOptions
 
     /// <summary>Per team (0 to 3), the token its remote client must present (<c>--remote-token</c>), or null.</summary>
     public string?[] RemoteTokens { get; } = new string?[4];
+
+    /// <summary>Each team's time bank for late calls (<c>--time-bank SECONDS</c>), or null for the default: a tenth of the match's deadlines, at least 5 s.</summary>
+    public System.TimeSpan? TimeBank { get; private set; }
 
     /// <summary>How long a match waits for its remote clients (<c>--remote-wait SECONDS</c>; default 60).</summary>
     public int RemoteWaitSeconds { get; private set; } = RemoteSeat.DefaultWaitSeconds;
@@ -282,6 +285,7 @@ internal sealed class RunOptions
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
+                case "--time-bank": o.TimeBank = System.TimeSpan.FromSeconds(Number(name, value, 0, 86_400)); break;
                 case "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--noise":
                     o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {MessageText.Quote(value)}") };

@@ -34,6 +34,7 @@ internal static class RunSyntax
             CliSyntax.Value("--remote-host", "ADDR", "the address remote teams connect to"),
             CliSyntax.Repeated("--remote-token", "[TEAM=]TOKEN", "the token a remote team must present"),
             CliSyntax.Value("--strategy-timeout", "MS", "a strategy's CPU time per call"),
+            CliSyntax.Value("--time-bank", "SECONDS", "each team's time bank for late calls"),
             .. HostOptions.Declare(),
             CliSyntax.Value("--trace", "FILE", "write the match's trace", CliCompletions.Paths),
             CliSyntax.Value("--svg", "FILE", "draw the last cycle as SVG", CliCompletions.Paths),

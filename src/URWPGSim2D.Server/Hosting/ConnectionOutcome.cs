@@ -12,8 +12,11 @@ internal enum ConnectionOutcome
     /// <summary>The strategy answered something unusable, or the client broke the protocol for this cycle.</summary>
     BadAnswer,
 
-    /// <summary>The strategy missed its deadline (or is still busy).</summary>
+    /// <summary>The client reported that its strategy missed its deadline (or is still busy).</summary>
     TimedOut,
+
+    /// <summary>No answer within the time the server waited: a host is killed then; a remote client's answer, should it come, is skipped.</summary>
+    GivenUp,
 
     /// <summary>The strategy host ended (crashed, exited, was killed) or could not start: no more answers this match.</summary>
     Ended,

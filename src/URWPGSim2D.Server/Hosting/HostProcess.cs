@@ -25,6 +25,7 @@ internal sealed class HostProcess : IStrategyLink
     private const int EchoLimit = StrategyLog.MaxChars;
     private readonly Process _process;
     private readonly SandboxCgroup? _cgroup;
+    private int _disposed;
     private readonly Queue<string> _tail = new();
     private readonly Thread _errors;
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
@@ -51,6 +52,12 @@ internal sealed class HostProcess : IStrategyLink
 
     /// <summary>False: a host that does not answer in time is killed (it measures its strategy's deadline itself).</summary>
     public bool SurvivesLateAnswer => false;
+
+    /// <inheritdoc/>
+    public bool CutByWait => _killedByWatchdog;
+
+    /// <inheritdoc/>
+    public TimeSpan? CpuTime() => _cgroup?.CpuTime();
 
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }
@@ -254,9 +261,14 @@ internal sealed class HostProcess : IStrategyLink
         }
     }
 
-    /// <inheritdoc/>
+    /// <summary>Ends the host and everything it started and deletes its scratch folder; a second call does nothing.</summary>
     public void Dispose()
     {
+        if (System.Threading.Interlocked.Exchange(ref _disposed, 1) != 0)
+        {
+            return;
+        }
+
         HostWatchdog.Forget(this);
         if (!_process.WaitForExit(0))
         {

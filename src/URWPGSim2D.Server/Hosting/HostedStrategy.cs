@@ -6,10 +6,11 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// A team's strategy in a strategy host process: starts the host (<see cref="HostProcess"/>) and
 /// plays it over a <see cref="StrategyConnection"/>, the code path a remote client's connection
-/// takes too. The host measures the strategy's deadline itself and answers a missed one as a
-/// time-out; the watchdog kills a host that does not answer at all within the connection's
-/// answer limit. A host that ends is not restarted (the next match starts a new one). A strategy
-/// goes to a pre-started host when one waits for it (<see cref="HostPool"/>).
+/// takes too. The host answers every call when it returns; the server measures the call (wall time,
+/// and the CPU time of the host's whole sandbox where a control group counts it) against the team's
+/// time bank, and the watchdog kills a host that does not answer within the time the server waits.
+/// A host that ends is not restarted (the next match starts a new one). A strategy goes to a
+/// pre-started host when one waits for it (<see cref="HostPool"/>).
 /// </summary>
 internal static class HostedStrategy
 {

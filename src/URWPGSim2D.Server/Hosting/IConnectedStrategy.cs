@@ -25,7 +25,14 @@ internal interface IConnectedStrategy : IDisposable
     /// Sends <paramref name="snapshot"/> and reads the cycle's decisions into <paramref name="decisions"/>
     /// (written only on <see cref="ConnectionOutcome.Decided"/>). <paramref name="message"/> says what went wrong otherwise.
     /// </summary>
-    ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message);
+    /// <param name="snapshot">What the strategy sees.</param>
+    /// <param name="decisions">Where the decisions go.</param>
+    /// <param name="waitLimit">Wall time the server waits for the answer (then <see cref="ConnectionOutcome.GivenUp"/>).</param>
+    /// <param name="message">What went wrong, or null.</param>
+    ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message);
+
+    /// <summary>The CPU time the client's processes have used so far, or null where it is not measured (<see cref="IStrategyLink.CpuTime"/>).</summary>
+    TimeSpan? CpuTime();
 
     /// <summary>Sends the end of the match to a client still there, lets it go, and disposes the connection.</summary>
     void Stop(EndMessage end);

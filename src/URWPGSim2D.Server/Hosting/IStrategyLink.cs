@@ -29,6 +29,16 @@ internal interface IStrategyLink : IDisposable
     /// <summary>Lifts the limit of <see cref="BeginWait"/>.</summary>
     void EndWait();
 
+    /// <summary>Whether the link was cut because a wait ran out (<see cref="BeginWait"/>; a host killed by the watchdog).</summary>
+    bool CutByWait { get; }
+
+    /// <summary>
+    /// The CPU time the client's processes have used so far (a host in a control group: every thread
+    /// and child process of its sandbox), or null where it is not measured (a remote client, a host
+    /// without a control group).
+    /// </summary>
+    TimeSpan? CpuTime();
+
     /// <summary>Cuts the link at once (kills the host, closes the socket).</summary>
     void Abort();
 

@@ -4,11 +4,11 @@ using System.Threading;
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
-/// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread with a per-call
-/// deadline measured by a <see cref="StrategyClock"/> (the CPU time of that thread in a real match). A
-/// call past its deadline is abandoned: its answer is discarded even if it arrives before the host
-/// looks, and the strategy is skipped while it is still busy, so a strategy that hangs cannot stop the match.
-/// The first call, which also compiles the strategy's code, has the longer hang limit as its deadline.
+/// Runs a strategy's <see cref="IStrategy.Decide"/> on a dedicated background thread, measured by a
+/// <see cref="StrategyClock"/> (the CPU time of that thread in a real match, and the call's wall time).
+/// The caller says how long it waits for a call; a call past that is abandoned (its answer is discarded
+/// even if it arrives before the caller looks, and the runner answers <see cref="Outcome.TimedOut"/>
+/// while it is still busy), so a strategy that hangs cannot stop the match.
 /// </summary>
 internal sealed class IsolatedStrategyRunner
 {
@@ -20,9 +20,9 @@ internal sealed class IsolatedStrategyRunner
     private MatchSnapshot? _snapshot;
     private int[] _fish = [];
     private Exception? _error;
-    private TimeSpan _used;
+    private TimeSpan _cpu;
+    private TimeSpan _wall;
     private bool _pending;
-    private bool _warm;
     private volatile bool _stopped;
     private DebugRecorder? _drawings;
     private StrategyLog? _log;
@@ -39,20 +39,32 @@ internal sealed class IsolatedStrategyRunner
     /// <summary>Outcome of one call.</summary>
     public enum Outcome
     {
-        /// <summary>Finished within its deadline; decisions updated.</summary>
+        /// <summary>Finished in the time waited; decisions updated.</summary>
         Decided,
 
         /// <summary>Threw; decisions unchanged.</summary>
         Threw,
 
-        /// <summary>Past its deadline or still busy with an earlier call; decisions unchanged.</summary>
+        /// <summary>Past the time waited, or still busy with a call given up on; decisions unchanged.</summary>
         TimedOut,
     }
 
-    /// <summary>Asks for decisions with a deadline of <paramref name="timeoutMs"/> ms.</summary>
-    public Outcome Decide(MatchSnapshot snapshot, int[] fish, Span<Decision> decisions, int timeoutMs, out Exception? error)
+    /// <summary>
+    /// Asks for decisions and waits for them up to <paramref name="cpuLimit"/> of the call's CPU time and
+    /// <paramref name="wallLimit"/> of wall time (<see cref="Timeout.InfiniteTimeSpan"/>: as long as the call takes).
+    /// </summary>
+    /// <param name="snapshot">What the strategy sees.</param>
+    /// <param name="fish">The fish it decides for.</param>
+    /// <param name="decisions">The decisions in force; replaced when the call decides.</param>
+    /// <param name="cpuLimit">CPU time after which the call is given up.</param>
+    /// <param name="wallLimit">Wall time after which the call is given up.</param>
+    /// <param name="error">What the call threw, for <see cref="Outcome.Threw"/>.</param>
+    /// <param name="cpu">CPU time the call used (when it finished).</param>
+    /// <param name="wall">Wall time the call took (when it finished).</param>
+    public Outcome Decide(MatchSnapshot snapshot, int[] fish, Span<Decision> decisions, TimeSpan cpuLimit, TimeSpan wallLimit, out Exception? error, out TimeSpan cpu, out TimeSpan wall)
     {
         error = null;
+        cpu = wall = TimeSpan.Zero;
         if (_pending)
         {
             if (!_clock.AbandonedCallReturned(_done))
@@ -61,15 +73,6 @@ internal sealed class IsolatedStrategyRunner
             }
 
             _pending = false; // the abandoned call's answer is dropped here
-        }
-
-        // The first call also pays for .NET compiling the strategy's (and the adapter's) code on its
-        // thread: it gets the hang limit instead of the deadline.
-        var budget = TimeSpan.FromMilliseconds(timeoutMs);
-        if (!_warm)
-        {
-            budget = ThreadTimeClock.HangLimitFor(budget);
-            _warm = true;
         }
 
         // The strategy reads its own copy: a call given up on may go on reading while the next
@@ -87,19 +90,16 @@ internal sealed class IsolatedStrategyRunner
         _fish = fish;
         _error = null;
         _pending = true;
-        _clock.Arm(budget);
+        _clock.Arm(cpuLimit);
         _start.Release();
-        if (!_clock.WaitForCall(_done, budget))
+        if (!_clock.WaitForCall(_done, cpuLimit, wallLimit))
         {
             return Outcome.TimedOut;
         }
 
         _pending = false;
-        if (_used > budget)
-        {
-            return Outcome.TimedOut; // finished, but late: discarded
-        }
-
+        cpu = _cpu;
+        wall = _wall;
         if (_error is not null)
         {
             error = _error;
@@ -173,7 +173,7 @@ internal sealed class IsolatedStrategyRunner
                 }
             }
 
-            _used = _clock.CallEnded();
+            (_cpu, _wall) = _clock.CallEnded();
             _done.Release();
         }
     }

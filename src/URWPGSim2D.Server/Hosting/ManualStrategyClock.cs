@@ -14,7 +14,6 @@ internal sealed class ManualStrategyClock : StrategyClock
     private readonly ManualResetEventSlim _released = new(false);
     private long _usedTicks;
     private long _budgetTicks = long.MaxValue;
-    private volatile bool _hung;
 
     /// <summary>Charges time to the current call (call it from the strategy).</summary>
     /// <param name="time">Time the strategy "used".</param>
@@ -30,7 +29,6 @@ internal sealed class ManualStrategyClock : StrategyClock
     /// <summary>Makes the current call use unbounded time: blocks the strategy's thread until <see cref="Release"/>.</summary>
     public void Hang()
     {
-        _hung = true;
         Interlocked.Exchange(ref _usedTicks, long.MaxValue / 2);
         _overrun.Set();
         _released.Wait();
@@ -40,19 +38,18 @@ internal sealed class ManualStrategyClock : StrategyClock
     public void Release() => _released.Set();
 
     /// <inheritdoc/>
-    public override void Arm(TimeSpan budget)
+    public override void Arm(TimeSpan cpuLimit)
     {
-        Volatile.Write(ref _budgetTicks, budget.Ticks);
+        Volatile.Write(ref _budgetTicks, cpuLimit == Timeout.InfiniteTimeSpan ? long.MaxValue : cpuLimit.Ticks);
         Interlocked.Exchange(ref _usedTicks, 0);
-        _hung = false;
         _overrun.Reset();
     }
 
-    /// <summary>A hung call is still busy; any other late call has all its time spent and returns: wait for it.</summary>
+    /// <summary>A hung call not yet released is still busy; a released one returns: wait for it.</summary>
     /// <param name="done">Released once when the abandoned call returns.</param>
     public override bool AbandonedCallReturned(SemaphoreSlim done)
     {
-        if (_hung && !_released.IsSet)
+        if (!_released.IsSet)
         {
             return done.Wait(0);
         }
@@ -67,10 +64,14 @@ internal sealed class ManualStrategyClock : StrategyClock
     }
 
     /// <inheritdoc/>
-    public override TimeSpan CallEnded() => TimeSpan.FromTicks(Interlocked.Read(ref _usedTicks));
+    public override (TimeSpan Cpu, TimeSpan Wall) CallEnded()
+    {
+        var used = TimeSpan.FromTicks(Interlocked.Read(ref _usedTicks));
+        return (used, used); // no real time counts: the wall time is the time charged too
+    }
 
     /// <inheritdoc/>
-    public override bool WaitForCall(SemaphoreSlim done, TimeSpan budget)
+    public override bool WaitForCall(SemaphoreSlim done, TimeSpan cpuLimit, TimeSpan wallLimit)
     {
         int which = WaitHandle.WaitAny([done.AvailableWaitHandle, _overrun.WaitHandle]);
         return which == 0 && done.Wait(0);

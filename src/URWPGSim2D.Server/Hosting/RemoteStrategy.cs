@@ -80,13 +80,16 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     }
 
     /// <inheritdoc/>
+    public TimeSpan? CpuTime() => null;
+
+    /// <inheritdoc/>
     public DebugRecorder? Drawings => _current?.Drawings;
 
     /// <inheritdoc/>
     public StrategyLog? Log => _current?.Log;
 
     /// <inheritdoc/>
-    public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
+    public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message)
     {
         message = null;
         EndedBy = null;
@@ -103,7 +106,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
             return ConnectionOutcome.Absent;
         }
 
-        var outcome = connection.Decide(snapshot, decisions, out message);
+        var outcome = connection.Decide(snapshot, decisions, waitLimit, out message);
         if (!connection.HasEnded)
         {
             return outcome;

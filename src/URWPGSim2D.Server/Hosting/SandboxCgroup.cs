@@ -24,6 +24,7 @@ internal sealed partial class SandboxCgroup : IDisposable
     private static int _next;
     private readonly string[] _folders;
     private readonly Layout _layout;
+    private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuUsage;
     private int _disposed;
 
     private SandboxCgroup(Layout layout, string[] folders, long memoryBytes)
@@ -31,6 +32,17 @@ internal sealed partial class SandboxCgroup : IDisposable
         _layout = layout;
         _folders = folders;
         MemoryBytes = memoryBytes;
+        if (layout.CpuUsage is { } usage)
+        {
+            try
+            {
+                _cpuUsage = File.OpenHandle(Path.Combine(folders[usage.Folder], usage.File));
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                _cpuUsage = null; // no CPU time of the whole sandbox: the wall time still counts
+            }
+        }
     }
 
     /// <summary>Why no group can be made here, or null when it can.</summary>
@@ -109,6 +121,51 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         yield return "--";
+    }
+
+    /// <summary>
+    /// The CPU time all processes of the group have used so far (every thread, every child, however
+    /// it hides), or null where the group has no CPU accounting. One read of an open file; no allocation.
+    /// </summary>
+    public TimeSpan? CpuTime()
+    {
+        if (_cpuUsage is not { } handle)
+        {
+            return null;
+        }
+
+        Span<byte> text = stackalloc byte[64];
+        int n;
+        try
+        {
+            n = RandomAccess.Read(handle, text, 0);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ObjectDisposedException)
+        {
+            return null;
+        }
+
+        // v1: "<nanoseconds>\n"; v2: "usage_usec <microseconds>\n…".
+        var line = text[..n];
+        int nl = line.IndexOf((byte)'\n');
+        if (nl >= 0)
+        {
+            line = line[..nl];
+        }
+
+        bool micro = _layout.V2;
+        if (micro)
+        {
+            int space = line.IndexOf((byte)' ');
+            line = space >= 0 ? line[(space + 1)..] : [];
+        }
+
+        if (!System.Buffers.Text.Utf8Parser.TryParse(line, out long value, out int used) || used != line.Length)
+        {
+            return null;
+        }
+
+        return TimeSpan.FromTicks(micro ? value * 10 : value / 100);
     }
 
     /// <summary>Whether the kernel killed a process of the group for want of memory.</summary>
@@ -217,6 +274,7 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         KillAll();
+        _cpuUsage?.Dispose();
         foreach (string folder in _folders)
         {
             // A killed process leaves the group when the kernel has finished with it: a few tries.
@@ -277,7 +335,7 @@ internal sealed partial class SandboxCgroup : IDisposable
             try
             {
                 Directory.CreateDirectory(folder);
-                bool limits = File.Exists(Path.Combine(folder, "cgroup.procs")) && (File.Exists(Path.Combine(folder, "memory.max")) || File.Exists(Path.Combine(folder, "memory.limit_in_bytes")) || File.Exists(Path.Combine(folder, "pids.max")));
+                bool limits = File.Exists(Path.Combine(folder, "cgroup.procs")) && (File.Exists(Path.Combine(folder, "memory.max")) || File.Exists(Path.Combine(folder, "memory.limit_in_bytes")) || File.Exists(Path.Combine(folder, "pids.max")) || File.Exists(Path.Combine(folder, "cpuacct.usage")));
                 TryRemove(folder);
                 if (!limits)
                 {
@@ -316,7 +374,7 @@ internal sealed partial class SandboxCgroup : IDisposable
                 }
             }
 
-            string? memoryMount = null, pidsMount = null, unified = null;
+            string? memoryMount = null, pidsMount = null, cpuMount = null, unified = null;
             foreach (string line in File.ReadLines("/proc/self/mounts"))
             {
                 string[] fields = line.Split(' ');
@@ -341,12 +399,20 @@ internal sealed partial class SandboxCgroup : IDisposable
                     {
                         pidsMount ??= fields[1];
                     }
+
+                    if (Array.IndexOf(options, "cpuacct") >= 0)
+                    {
+                        cpuMount ??= fields[1];
+                    }
                 }
             }
 
             if (memoryMount is not null && pidsMount is not null && own.TryGetValue("memory", out string? memoryPath) && own.TryGetValue("pids", out string? pidsPath))
             {
-                return new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath)]);
+                // The cpuacct group, where there is one, measures the CPU time of the whole sandbox.
+                return cpuMount is not null && own.TryGetValue("cpuacct", out string? cpuPath)
+                    ? new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath), Under(cpuMount, cpuPath)])
+                    : new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath)]);
             }
 
             if (unified is not null && own.TryGetValue(string.Empty, out string? path))
@@ -378,6 +444,10 @@ internal sealed partial class SandboxCgroup : IDisposable
     [LibraryImport("libc", EntryPoint = "kill", SetLastError = true)]
     private static partial int Kill(int pid, int signal);
 
-    /// <summary>v1: the memory group's parent and the pids group's parent; v2: the one parent.</summary>
-    private sealed record Layout(bool V2, string[] Parents);
+    /// <summary>v1: the memory group's parent, the pids group's parent and, where there is one, the cpuacct group's parent; v2: the one parent.</summary>
+    private sealed record Layout(bool V2, string[] Parents)
+    {
+        /// <summary>The group folder (by index into <see cref="Parents"/>) and file that count the group's CPU time, or null.</summary>
+        public (int Folder, string File)? CpuUsage => V2 ? (0, "cpu.stat") : Parents.Length > 2 ? (2, "cpuacct.usage") : null;
+    }
 }

@@ -1,24 +1,47 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
-/// Asks every strategy slot, in a fixed order, for its fish's decisions. A strategy that throws,
-/// answers with something unusable (<see cref="StrategyContractException"/>) or (isolated ones) runs
-/// past its deadline leaves its fish on their last decisions; the fault is counted for the summary
-/// and the results file, and the match goes on.
+/// Asks every strategy slot, in a fixed order, for its fish's decisions. A strategy that throws or
+/// answers with something unusable (<see cref="StrategyContractException"/>) leaves its fish on their
+/// last decisions; the fault is counted for the summary and the results file, and the match goes on.
+/// A strategy that runs isolated or in another process is waited for, however late, and pays for a
+/// late call from its time bank (<see cref="TimeBank"/>): which answers count never depends on how
+/// fast the server plays. A team whose bank is spent, or whose call is given up on, plays idle.
 /// </summary>
-internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
+internal sealed class StrategyCaller
 {
+    /// <summary>Asks <paramref name="slots"/>; each isolated or hosted one gets a time bank of <paramref name="timeBank"/> for calls of <paramref name="timeoutMs"/>.</summary>
+    /// <param name="slots">The slots, in decision order.</param>
+    /// <param name="timeoutMs">The deadline of one call, ms of CPU time.</param>
+    /// <param name="timeBank">Each team's bank for the match, or null for the least default bank (<see cref="Hosting.TimeBank.DefaultFor"/>).</param>
+    public StrategyCaller(StrategySlot[] slots, int timeoutMs, TimeSpan? timeBank = null)
+    {
+        Slots = slots;
+        TimeoutMs = timeoutMs;
+        TimeBank = timeBank ?? Hosting.TimeBank.DefaultFor(0, timeoutMs);
+        foreach (var slot in slots)
+        {
+            if (slot.Runner is not null || slot.Hosted is not null)
+            {
+                slot.Bank = new TimeBank(TimeSpan.FromMilliseconds(timeoutMs), TimeBank);
+            }
+        }
+    }
+
     /// <summary>The slots, in decision order.</summary>
-    public StrategySlot[] Slots { get; } = slots;
+    public StrategySlot[] Slots { get; }
 
-    private string? _timeoutText;
+    /// <summary>The deadline of a call of an isolated or hosted strategy, ms of CPU time.</summary>
+    public int TimeoutMs { get; }
 
-    /// <summary>Time limit of an isolated strategy per cycle, ms.</summary>
-    public int TimeoutMs { get; } = timeoutMs;
+    /// <summary>Each team's time bank at the start of the match.</summary>
+    public TimeSpan TimeBank { get; }
 
     /// <summary>Total faults of all slots.</summary>
     public int TotalFaults
@@ -53,7 +76,14 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             try
             {
                 slot.Runner?.Stop();
-                slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
+                if (slot.IdleFromCycle == 0)
+                {
+                    slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
+                }
+                else
+                {
+                    slot.Hosted?.Dispose(); // out of time: nothing more is said to it
+                }
             }
             catch (Exception e) when (e is not OutOfMemoryException)
             {
@@ -79,9 +109,9 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             slot.Decisions.CopyTo(slot.Scratch, 0);
             slot.Drawings?.Reset(slot.Fish);
             slot.Log?.Clear();
-            if (slot.EndedInCycle > 0)
+            if (slot.EndedInCycle > 0 || slot.IdleFromCycle > 0)
             {
-                // its host has ended (or it was never created): its fish stay stopped
+                // its host has ended (or it was never created), or its time is spent: its fish stay stopped
             }
             else if (slot.CreationFault is { } why)
             {
@@ -123,20 +153,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
             }
             else
             {
-                switch (slot.Runner.Decide(snapshot, slot.Fish, slot.Scratch, TimeoutMs, out Exception? error))
-                {
-                    case IsolatedStrategyRunner.Outcome.Decided:
-                        slot.Scratch.CopyTo(slot.Decisions, 0);
-                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
-                        break;
-                    case IsolatedStrategyRunner.Outcome.Threw:
-                        Fault(slot, cycle, error!);
-                        CopyDrawings(slot, slot.Runner.Drawings, slot.Runner.Log);
-                        break;
-                    default:
-                        slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
-                        break;
-                }
+                Isolated(slot, slot.Runner, snapshot, cycle);
             }
 
             for (int k = 0; k < slot.Fish.Length; k++)
@@ -161,7 +178,64 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
         }
     }
 
-    private string TimeoutText => _timeoutText ??= $"no decision within {TimeoutMs} ms";
+    // One cycle of a strategy on its own thread in the server's process: waited for as long as its
+    // bank lasts, its CPU time measured on its thread.
+    private static void Isolated(StrategySlot slot, IsolatedStrategyRunner runner, MatchSnapshot snapshot, int cycle)
+    {
+        var bank = slot.Bank!;
+        var waited = bank.WaitLimit;
+        var outcome = runner.Decide(snapshot, slot.Fish, slot.Scratch, bank.CpuLimit, waited, out Exception? error, out TimeSpan cpu, out TimeSpan wall);
+        if (outcome == IsolatedStrategyRunner.Outcome.TimedOut)
+        {
+            GiveUp(slot, cycle, waited, $"no decision within {Seconds(bank.CpuLimit)} of CPU time or {Seconds(waited)}");
+            return;
+        }
+
+        if (!bank.Charge(cpu, wall))
+        {
+            Spent(slot, cycle, cpu, wall);
+            return;
+        }
+
+        if (outcome == IsolatedStrategyRunner.Outcome.Decided)
+        {
+            slot.Scratch.CopyTo(slot.Decisions, 0);
+        }
+        else
+        {
+            Fault(slot, cycle, error!);
+        }
+
+        CopyDrawings(slot, runner.Drawings, runner.Log);
+    }
+
+    // A call given up on: no answer while the team's bank (or the call limit) lasted.
+    private static void GiveUp(StrategySlot slot, int cycle, TimeSpan waited, string what)
+    {
+        var bank = slot.Bank!;
+        bool limit = bank.Remaining + bank.WallAllowance > bank.CallLimit;
+        bank.GiveUp(waited);
+        slot.OutOfTime(cycle, limit
+            ? $"{what} (the limit of one call); the team plays idle for the rest of the match"
+            : $"time bank spent: {what}; the team plays idle for the rest of the match");
+        if (slot.Hosted is { } hosted)
+        {
+            hosted.Dispose(); // a host is ended with everything it started
+        }
+    }
+
+    // A call that answered, but used more than the team's bank had left: its answer does not count.
+    private static void Spent(StrategySlot slot, int cycle, TimeSpan? cpu, TimeSpan wall)
+    {
+        var bank = slot.Bank!;
+        string used = cpu is { } c ? $"{Milliseconds(c)} of CPU time and {Milliseconds(wall)}" : Milliseconds(wall);
+        slot.OutOfTime(cycle, $"time bank spent: a call took {used} with {Seconds(bank.Reserve)} banked for the match; the team plays idle for the rest of the match");
+        slot.Hosted?.Dispose();
+    }
+
+    private static string Seconds(TimeSpan t) => string.Create(CultureInfo.InvariantCulture, $"{t.TotalSeconds:0.0##} s");
+
+    private static string Milliseconds(TimeSpan t) => string.Create(CultureInfo.InvariantCulture, $"{t.TotalMilliseconds:0} ms");
 
     // One cycle of a strategy in another process: the same faults as in the server's process; an
     // ended host stops the team's fish for the rest of the match, a disconnected remote client
@@ -170,14 +244,41 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
     {
         ConnectionOutcome outcome;
         string? message;
+        var bank = slot.Bank!;
+        var waited = bank.WaitLimit;
+        long started;
         try
         {
-            outcome = hosted.Decide(snapshot, slot.Scratch, out message);
+            slot.LastCpuTime ??= hosted.CpuTime();
+            started = Stopwatch.GetTimestamp();
+            outcome = hosted.Decide(snapshot, slot.Scratch, waited, out message);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // The server failed talking to this host: the team's host is given up, the match goes on.
             slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: the server failed with it: {e.GetType().Name}: {e.Message}");
+            return;
+        }
+
+        // The time of the call: wall time from the question to the answer; CPU time of the host's whole
+        // sandbox since its last answer (what its threads and processes did between calls counts too).
+        var wall = Stopwatch.GetElapsedTime(started);
+        TimeSpan? cpu = null;
+        if (outcome is not (ConnectionOutcome.Absent or ConnectionOutcome.Ended or ConnectionOutcome.Disconnected or ConnectionOutcome.GivenUp) && hosted.CpuTime() is { } now)
+        {
+            cpu = slot.LastCpuTime is { } before ? now - before : null;
+            slot.LastCpuTime = now;
+        }
+
+        if (outcome == ConnectionOutcome.GivenUp)
+        {
+            GiveUp(slot, cycle, waited, $"no answer within {Seconds(waited)}");
+            return;
+        }
+
+        if (outcome is ConnectionOutcome.Decided or ConnectionOutcome.Exception or ConnectionOutcome.BadAnswer or ConnectionOutcome.TimedOut && !bank.Charge(cpu, wall))
+        {
+            Spent(slot, cycle, cpu, wall);
             return;
         }
 
@@ -200,7 +301,7 @@ internal sealed class StrategyCaller(StrategySlot[] slots, int timeoutMs)
 
                 break;
             case ConnectionOutcome.TimedOut:
-                slot.Charge(cycle, FaultKind.Timeout, TimeoutText);
+                slot.Charge(cycle, FaultKind.Timeout, message ?? $"no decision within {TimeoutMs} ms");
                 break;
             case ConnectionOutcome.Absent:
                 break; // no remote client since a disconnect: nothing asked, nothing charged

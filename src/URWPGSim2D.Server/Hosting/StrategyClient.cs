@@ -7,10 +7,11 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// The client side of the strategy protocol (docs/protocol.md): says hello, takes the assignment,
 /// then answers every cycle with the strategy's decisions until the server's end. The strategy runs
-/// on its own thread with its deadline measured as that thread's CPU time
-/// (<see cref="IsolatedStrategyRunner"/>), exactly as an isolated strategy inside the server: an
-/// exception, a contract violation or a missed deadline is answered as that cycle's fault, and the
-/// decisions in force stay as they were. A strategy host runs this over its standard input and output.
+/// on its own thread (<see cref="IsolatedStrategyRunner"/>) and every call is answered when it
+/// returns, however long it takes: the server measures the time and takes a late call's overrun
+/// from the team's time bank (<see cref="TimeBank"/>). An exception or a contract violation is
+/// answered as that cycle's fault, and the decisions in force stay as they were. A strategy host
+/// runs this over its standard input and output.
 /// </summary>
 internal sealed class StrategyClient
 {
@@ -125,7 +126,7 @@ internal sealed class StrategyClient
 
     private void Answer(IsolatedStrategyRunner runner, MatchSnapshot snapshot, AssignmentMessage assignment, int cycle, Decision[] inForce)
     {
-        switch (runner.Decide(snapshot, assignment.Fish, inForce, assignment.DeadlineMs, out Exception? error))
+        switch (runner.Decide(snapshot, assignment.Fish, inForce, System.Threading.Timeout.InfiniteTimeSpan, System.Threading.Timeout.InfiniteTimeSpan, out Exception? error, out _, out _))
         {
             case IsolatedStrategyRunner.Outcome.Decided:
                 _channel.WriteLine(_writer.Decisions(cycle, inForce, runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));

@@ -37,7 +37,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private bool _started;
     private bool _stopped;
 
-    /// <summary>Creates the connection over <paramref name="link"/>; nothing is read before the first <see cref="Decide"/> or <see cref="Handshake"/>.</summary>
+    /// <summary>Creates the connection over <paramref name="link"/>; nothing is read before the first <c>Decide</c> or <see cref="Handshake"/>.</summary>
     /// <param name="link">The transport.</param>
     /// <param name="assignment">What the client is told of the match.</param>
     /// <param name="answerLimit">Wall time the server waits for a cycle's answer.</param>
@@ -159,7 +159,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
     /// <summary>
     /// Takes the client's hello now, before the match (its name is then known to every output);
-    /// a refused or missing hello is what the first <see cref="Decide"/> reports, as without this call.
+    /// a refused or missing hello is what the first <c>Decide</c> reports, as without this call.
     /// </summary>
     public void Introduce()
     {
@@ -175,8 +175,18 @@ internal sealed class StrategyConnection : IConnectedStrategy
     /// <inheritdoc/>
     public StrategyLog? Log => _printed;
 
+    /// <summary>Decides with the connection's own limit: <see cref="FirstAnswerLimit"/> for the first answer, <see cref="AnswerLimit"/> after.</summary>
+    /// <param name="snapshot">What the strategy sees.</param>
+    /// <param name="decisions">Where the decisions go.</param>
+    /// <param name="message">What went wrong, or null.</param>
+    public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message) =>
+        Decide(snapshot, decisions, _answered ? AnswerLimit : FirstAnswerLimit ?? AnswerLimit, out message);
+
     /// <inheritdoc/>
-    public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, out string? message)
+    public TimeSpan? CpuTime() => _link.CpuTime();
+
+    /// <inheritdoc/>
+    public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message)
     {
         message = null;
         EndedBy = null;
@@ -199,9 +209,10 @@ internal sealed class StrategyConnection : IConnectedStrategy
         try
         {
             _channel.WriteLine(_writer.Cycle(snapshot));
-            if (!ReadAnswer(cycle, out var line))
+            if (!ReadAnswer(cycle, waitLimit, out var line))
             {
-                return End(ref message);
+                var ended = End(ref message);
+                return _link.CutByWait ? ConnectionOutcome.GivenUp : ended;
             }
 
             if (MessageReader.TypeOf(line) != MessageType.Decisions)
@@ -230,7 +241,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
         }
         catch (TimeoutException)
         {
-            return ConnectionOutcome.TimedOut; // its answer may still come: skipped then
+            message = $"no answer within {waitLimit.TotalSeconds:0.0##} s";
+            return ConnectionOutcome.GivenUp; // its answer may still come: skipped then
         }
         catch (ProtocolException e) when (e.Message.StartsWith("a line is longer", StringComparison.Ordinal))
         {
@@ -283,9 +295,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
     public void Dispose() => _link.Dispose();
 
     // The cycle's answer, past answers to earlier cycles (already charged).
-    private bool ReadAnswer(int cycle, out ReadOnlySpan<byte> line)
+    private bool ReadAnswer(int cycle, TimeSpan limit, out ReadOnlySpan<byte> line)
     {
-        _link.BeginWait(_answered ? AnswerLimit : FirstAnswerLimit ?? AnswerLimit);
+        _link.BeginWait(limit);
         _answered = true;
         try
         {

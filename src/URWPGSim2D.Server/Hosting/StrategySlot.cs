@@ -86,7 +86,7 @@ internal sealed class StrategySlot
     /// <summary>Cycles in which the strategy threw.</summary>
     public int Exceptions { get; private set; }
 
-    /// <summary>Cycles in which it ran past its time limit (or was still busy from an earlier one).</summary>
+    /// <summary>Cycles charged a time-out: its time bank ran out, a call was given up on, or a remote client reported one.</summary>
     public int Timeouts { get; private set; }
 
     /// <summary>Cycles in which it answered with something unusable (for example too few decisions).</summary>
@@ -148,6 +148,25 @@ internal sealed class StrategySlot
         ConsoleRouter.Install();
         Log ??= new StrategyLog();
         Runner?.RecordLog();
+    }
+
+    /// <summary>The team's time for the match (a strategy that runs isolated or in another process), or null for a built-in one.</summary>
+    public TimeBank? Bank { get; set; }
+
+    /// <summary>The CPU time of the strategy's host at its last answer (where it is measured), or null.</summary>
+    public TimeSpan? LastCpuTime { get; set; }
+
+    /// <summary>The cycle (1-based) from which the team plays idle because it ran out of time, or 0.</summary>
+    public int IdleFromCycle { get; private set; }
+
+    /// <summary>Charges the time-out that ends the team's time in <paramref name="cycle"/>: its fish stop and it is not asked again this match.</summary>
+    /// <param name="cycle">The cycle (1-based).</param>
+    /// <param name="message">What happened.</param>
+    public void OutOfTime(int cycle, string message)
+    {
+        Charge(cycle, FaultKind.Timeout, message);
+        IdleFromCycle = cycle;
+        Array.Fill(Decisions, Decision.Stop);
     }
 
     /// <summary>The kind of the latest fault.</summary>

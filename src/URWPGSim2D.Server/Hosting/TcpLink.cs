@@ -43,6 +43,13 @@ internal sealed class TcpLink : IStrategyLink
     /// <inheritdoc/>
     public bool SurvivesLateAnswer => true;
 
+    /// <summary>False: a wait that runs out leaves the connection open (<see cref="SurvivesLateAnswer"/>).</summary>
+    public bool CutByWait => false;
+
+    /// <summary>Null: a remote client's CPU time is not measured.</summary>
+    /// <returns>Null.</returns>
+    public TimeSpan? CpuTime() => null;
+
     /// <inheritdoc/>
     public void BeginWait(TimeSpan limit) => _stream.Deadline = Stopwatch.GetTimestamp() + (long)(limit.TotalSeconds * Stopwatch.Frequency);
 

@@ -6,45 +6,26 @@ using System.Threading;
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
-/// The deadline clock of a real match: the CPU time of the strategy's thread (Linux:
+/// The clock of a real match: the CPU time of the strategy's thread (Linux:
 /// <c>pthread_getcpuclockid</c>; elsewhere wall time), so time the machine spends on other work does not
-/// count. A call that does not run (it sleeps or blocks) is also given up after
-/// <see cref="HangLimitFor"/> its deadline in wall time (ten deadlines, at least a second); its answer,
-/// should it come, is discarded.
+/// count, and the call's wall time.
 /// </summary>
 internal sealed partial class ThreadTimeClock : StrategyClock
 {
     private const int ThreadCpuClockFailed = int.MinValue;
-    private const int ProcessCpuClock = 2; // CLOCK_PROCESS_CPUTIME_ID: every thread of the process
-    private readonly bool _wholeProcess;
 
     private readonly Stopwatch _wall = new();
     private int _clockId = ThreadCpuClockFailed;
     private long _startNs;
 
-    /// <summary>A clock of the strategy's own thread (a strategy in the server's process, or on a remote team's machine).</summary>
-    public ThreadTimeClock()
-    {
-    }
-
-    /// <summary>
-    /// A clock of the strategy's thread, or with <paramref name="wholeProcess"/> of every thread of this
-    /// process (a strategy host, which runs one strategy: threads it starts count against its deadline too).
-    /// </summary>
-    public ThreadTimeClock(bool wholeProcess) => _wholeProcess = wholeProcess;
-
-    /// <summary>Wall time after which an unfinished call is given up whatever its CPU time: ten deadlines, at least one second.</summary>
+    /// <summary>Wall time a strategy's first call is allowed (its code is compiled then): ten deadlines, at least one second.</summary>
     /// <param name="deadline">The per-call deadline.</param>
     public static TimeSpan HangLimitFor(TimeSpan deadline) => TimeSpan.FromTicks(Math.Max(TimeSpan.TicksPerSecond, deadline.Ticks * 10));
 
     /// <inheritdoc/>
     public override void CallStarting()
     {
-        if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux() && _wholeProcess)
-        {
-            _clockId = ProcessCpuClock;
-        }
-        else if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux())
+        if (_clockId == ThreadCpuClockFailed && OperatingSystem.IsLinux())
         {
             try
             {
@@ -64,16 +45,23 @@ internal sealed partial class ThreadTimeClock : StrategyClock
     }
 
     /// <inheritdoc/>
-    public override TimeSpan CallEnded() => TimeSpan.FromTicks((Now() - Volatile.Read(ref _startNs)) / 100);
+    public override (TimeSpan Cpu, TimeSpan Wall) CallEnded() => (TimeSpan.FromTicks((Now() - Volatile.Read(ref _startNs)) / 100), _wall.Elapsed);
 
     /// <inheritdoc/>
-    public override bool WaitForCall(SemaphoreSlim done, TimeSpan budget)
+    public override bool WaitForCall(SemaphoreSlim done, TimeSpan cpuLimit, TimeSpan wallLimit)
     {
-        int slice = (int)Math.Clamp(budget.TotalMilliseconds / 4, 1, 50);
+        if (cpuLimit == Timeout.InfiniteTimeSpan && wallLimit == Timeout.InfiniteTimeSpan)
+        {
+            done.Wait();
+            return true;
+        }
+
+        int slice = (int)Math.Clamp(Math.Min(cpuLimit.TotalMilliseconds, wallLimit.TotalMilliseconds) / 4, 1, 50);
+        long cpuNs = cpuLimit == Timeout.InfiniteTimeSpan ? long.MaxValue : (long)Math.Min(cpuLimit.Ticks * 100.0, long.MaxValue / 2);
+        var wall = Stopwatch.StartNew();
         while (!done.Wait(slice))
         {
-            long used = Now() - Volatile.Read(ref _startNs);
-            if (used > budget.Ticks * 100 || _wall.Elapsed > HangLimitFor(budget))
+            if (Now() - Volatile.Read(ref _startNs) > cpuNs || (wallLimit != Timeout.InfiniteTimeSpan && wall.Elapsed > wallLimit))
             {
                 return false;
             }

@@ -45,7 +45,8 @@ internal static class MatchBuilder
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <param name="debugDraw">Whether the strategies' debug drawings are recorded (<c>run --debug-draw</c>).</param>
     /// <param name="strategyLog">Whether what the strategies print is recorded (<c>run --strategy-log</c>).</param>
-    public static Match BuildRecording(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false)
+    /// <param name="timeBank">Each team's time bank for late calls, or null for <see cref="TimeBank.DefaultFor"/>.</param>
+    public static Match BuildRecording(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false, TimeSpan? timeBank = null)
     {
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
         var motion = new Stepper(broadPhase);
@@ -96,7 +97,7 @@ internal static class MatchBuilder
             }
         }
 
-        var host = new StrategyCaller(slots, strategyTimeoutMs);
+        var host = new StrategyCaller(slots, strategyTimeoutMs, timeBank ?? TimeBank.DefaultFor(cycles ?? scenario.Cycles, strategyTimeoutMs));
         return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, referee);
     }
 

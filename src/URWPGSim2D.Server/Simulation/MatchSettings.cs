@@ -18,6 +18,7 @@ namespace URWPGSim2D.Server.Simulation;
 /// <param name="Threads">Threads the stepper spreads a cycle's independent islands over (the same match whatever the count).</param>
 /// <param name="DebugDraw">Whether the strategies' debug drawings are recorded in the trace (<c>run --debug-draw</c>).</param>
 /// <param name="StrategyLog">Whether what the strategies print is recorded in the trace (<c>run --strategy-log</c>).</param>
+/// <param name="TimeBank">Each team's time bank for late calls (<see cref="Hosting.TimeBank"/>), or null for the default (<see cref="Hosting.TimeBank.DefaultFor"/>).</param>
 internal sealed record MatchSettings(
     ScenarioDefinition Scenario,
     int Cycles,
@@ -27,12 +28,13 @@ internal sealed record MatchSettings(
     int StrategyTimeoutMs = MatchBuilder.DefaultStrategyTimeoutMs,
     int Threads = 1,
     bool DebugDraw = false,
-    bool StrategyLog = false)
+    bool StrategyLog = false,
+    System.TimeSpan? TimeBank = null)
 {
     /// <summary>Builds a fresh match of these settings, ready for cycle 1.</summary>
     public Match Build()
     {
-        var match = MatchBuilder.BuildRecording(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog);
+        var match = MatchBuilder.BuildRecording(Scenario, Teams, Seed, Noise, StrategyTimeoutMs, cycles: Cycles, debugDraw: DebugDraw, strategyLog: StrategyLog, timeBank: TimeBank);
         match.Stepper.Threads = Threads;
         return match;
     }

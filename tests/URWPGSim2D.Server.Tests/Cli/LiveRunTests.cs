@@ -28,11 +28,12 @@ public sealed partial class LiveRunTests
         // (the player never plays a cycle before its deadline) and cannot be faster than about 10x.
         var options = RunOptions.Parse(["--live", "--speed", "10", "--cycles", "20", "--port", FreePort().ToString(CultureInfo.InvariantCulture)]);
         var output = new SignallingWriter("match over");
-        var console = new CliConsole(new StringReader(string.Empty), output, new StringWriter());
+        var errors = new StringWriter();
+        var console = new CliConsole(new StringReader(string.Empty), output, TextWriter.Synchronized(errors));
         using var stop = new CancellationTokenSource();
         var served = Task.Run(() => LiveRun.Serve(options, DefaultScenario.Load(), new TeamStrategy?[2], console, stop.Token, _ => { }));
 
-        Assert.True(await Task.WhenAny(output.Seen, served, Task.Delay(60_000)) == output.Seen, "no summary when the match ended: " + output);
+        Assert.True(await Task.WhenAny(output.Seen, served, Task.Delay(60_000)) == output.Seen, "no summary when the match ended: " + output + " / stderr: " + errors);
         Assert.False(served.IsCompleted, "the page is still served after the match");
         string atEnd = output.ToString();
         var first = LiveLine().Match(atEnd.Split('\n')[0]);
@@ -64,13 +65,33 @@ public sealed partial class LiveRunTests
         Assert.DoesNotContain("real time", MatchSummary.FormatLive(match, TimeSpan.Zero, TimeSpan.Zero).Split('\n')[0], StringComparison.Ordinal);
     }
 
+    private static int _nextPort;
+
+    /// <summary>
+    /// A free port for a live server no other test takes: from this test process's own block of 100
+    /// below the kernel's ephemeral range (so no outgoing connection and no other test process gets
+    /// it meanwhile), each handed out once, checked free.
+    /// </summary>
     internal static int FreePort()
     {
-        var probe = new TcpListener(IPAddress.Loopback, 0);
-        probe.Start();
-        int port = ((IPEndPoint)probe.LocalEndpoint).Port;
-        probe.Stop();
-        return port;
+        int block = 20_000 + (Environment.ProcessId % 120 * 100);
+        for (int attempt = 0; attempt < 100; attempt++)
+        {
+            int port = block + (Interlocked.Increment(ref _nextPort) % 100);
+            try
+            {
+                var probe = new TcpListener(IPAddress.Loopback, port);
+                probe.Start();
+                probe.Stop();
+                return port;
+            }
+            catch (SocketException)
+            {
+                // taken by something else on the machine: the next one
+            }
+        }
+
+        throw new InvalidOperationException("no free port in this test process's block");
     }
 
     [GeneratedRegex(@"^match: 20 cycles, 2\.0 s simulated, played live in ([0-9]+\.[0-9]) s wall time \(([0-9]+\.[0-9])x real time, [0-9]+\.[0-9]{2} us of computing per cycle\), seed 1$")]

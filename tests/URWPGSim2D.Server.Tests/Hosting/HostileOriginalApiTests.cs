@@ -94,12 +94,13 @@ public sealed class HostileOriginalApiTests : IDisposable
     }
 
     [Fact]
-    public void A_strategy_that_hangs_never_answers_and_times_out_every_cycle_after()
+    public void A_strategy_that_hangs_never_answers_spends_its_bank_and_plays_idle_after()
     {
-        // It sleeps forever from cycle 3: no CPU is used, no answer ever comes, whatever the machine's speed.
-        var run = Run(Source("Sleeper", "if (cycle == 2) System.Threading.Thread.Sleep(System.Threading.Timeout.Infinite);"), 8);
+        // It sleeps forever from cycle 3: no CPU is used, no answer ever comes, whatever the machine's
+        // speed; the server waits as long as a call could take without spending the 1 s bank (2 × 2 s + 1 s), then kills its host.
+        var run = Run(Source("Sleeper", "if (cycle == 2) System.Threading.Thread.Sleep(System.Threading.Timeout.Infinite);"), 8, "--time-bank", "1");
         Assert.StartsWith("match: 8 cycles,", run.Stdout, StringComparison.Ordinal);
-        Assert.Equal("0 exceptions, 6 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 3: no decision within 1000 ms", Faults(run));
+        Assert.Equal("0 exceptions, 1 timeouts, 0 bad answers, out of time in cycle 3; its fish kept their last decisions until then and stopped after; first: cycle 3: time bank spent: no answer within 5.0 s; the team plays idle for the rest of the match", Faults(run));
     }
 
     [Fact]

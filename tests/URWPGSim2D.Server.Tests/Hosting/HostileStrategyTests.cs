@@ -81,20 +81,22 @@ public sealed class HostileStrategyTests : IDisposable
     }
 
     [Fact]
-    public void A_host_that_stops_answering_is_killed_by_the_watchdog()
+    public void A_host_that_stops_answering_is_killed_when_its_bank_is_spent()
     {
-        // The strategy stops its whole process (SIGSTOP): the host can no longer answer at all.
-        // (A 50 ms deadline keeps the server's wait short: 2 × 1 s + 5 s.)
+        // The strategy stops its whole process (SIGSTOP): the host can no longer answer at all. The
+        // server waits as long as the call could take without spending the 1 s bank (2 × 1.05 s + 1 s), then kills the host.
         var run = RunWithin("50", Sdk("Freezer", "if (s.Cycle == 1) kill(getpid(), 19);",
-            "[DllImport(\"libc\")] static extern int kill(int pid, int sig); [DllImport(\"libc\")] static extern int getpid();"), 5);
-        Assert.Equal("0 exceptions, 0 timeouts, 0 bad answers, strategy host ended in cycle 2; its fish kept their last decisions until then and stopped after; first: cycle 2: strategy host ended: no answer within 7 s, killed", Faults(run));
+            "[DllImport(\"libc\")] static extern int kill(int pid, int sig); [DllImport(\"libc\")] static extern int getpid();"), 5, "--time-bank", "1");
+        Assert.Equal("0 exceptions, 1 timeouts, 0 bad answers, out of time in cycle 2; its fish kept their last decisions until then and stopped after; first: cycle 2: time bank spent: no answer within 3.1 s; the team plays idle for the rest of the match", Faults(run));
+        Assert.Contains("\n  team 0 (Freezer [Freezer.cs]): 1 late call, 1.000 s drawn, bank spent, slowest call ", run.Stdout, StringComparison.Ordinal);
     }
 
     [Fact]
-    public void A_strategy_that_spins_forever_times_out_every_cycle_and_the_match_goes_on()
+    public void A_strategy_that_spins_forever_spends_its_bank_and_the_match_goes_on_without_it()
     {
-        var run = Run(Sdk("Spinner", "if (s.Cycle >= 3) while (true) { }"));
-        Assert.Equal("0 exceptions, 17 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 4: no decision within 1000 ms", Faults(run));
+        var run = Run(Sdk("Spinner", "if (s.Cycle >= 3) while (true) { }"), 20, "--time-bank", "1");
+        Assert.StartsWith("match: 20 cycles,", run.Stdout, StringComparison.Ordinal);
+        Assert.Equal("0 exceptions, 1 timeouts, 0 bad answers, out of time in cycle 4; its fish kept their last decisions until then and stopped after; first: cycle 4: time bank spent: no answer within 5.0 s; the team plays idle for the rest of the match", Faults(run));
     }
 
     [Fact]

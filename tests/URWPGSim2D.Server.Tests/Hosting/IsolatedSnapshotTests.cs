@@ -13,6 +13,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// </summary>
 public sealed class IsolatedSnapshotTests
 {
+    private static readonly TimeSpan Limit = TimeSpan.FromMilliseconds(50);
+
     [Fact]
     public void AnAbandonedCallKeepsReadingTheValuesOfItsOwnCycle()
     {
@@ -28,7 +30,7 @@ public sealed class IsolatedSnapshotTests
         var strategy = new ReadsAfterHanging(clock);
         var runner = new IsolatedStrategyRunner(strategy, 1, 0, clock);
         var decisions = new Decision[1];
-        Assert.Equal(IsolatedStrategyRunner.Outcome.TimedOut, runner.Decide(snapshot, [0], decisions, 50, out _));
+        Assert.Equal(IsolatedStrategyRunner.Outcome.TimedOut, runner.Decide(snapshot, [0], decisions, Limit, Limit, out _, out _, out _));
 
         // The match moves on while the first call still runs: new cycle, fish moved, a ball scored.
         snapshot.SetHeader(2, [3, 0]);
@@ -37,7 +39,7 @@ public sealed class IsolatedSnapshotTests
         clock.Release();
 
         // The second call waits for the first to return; then it sees cycle 2.
-        Assert.Equal(IsolatedStrategyRunner.Outcome.Decided, runner.Decide(snapshot, [0], decisions, 50, out var error));
+        Assert.Equal(IsolatedStrategyRunner.Outcome.Decided, runner.Decide(snapshot, [0], decisions, Limit, Limit, out var error, out _, out _));
         Assert.Null(error);
         runner.Stop();
         Assert.Equal(

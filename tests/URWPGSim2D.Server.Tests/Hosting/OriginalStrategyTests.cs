@@ -189,13 +189,15 @@ public sealed class OriginalStrategyTests
             Assert.Equal(new Decision(10, 7), seen[8]);  // cycles 5..9 threw
             Assert.Equal(new Decision(10, 7), seen[13]); // cycles 10..14 answered no decisions
             Assert.Equal(new Decision(4, 7), seen[18]);  // cycles 15..19 good again
-            Assert.Equal(new Decision(4, 7), seen[29]);  // hung from cycle 20 on
+            Assert.Equal(Decision.Stop, seen[19]);       // hung in cycle 20: given up on, idle from then on
+            Assert.Equal(Decision.Stop, seen[29]);
+            Assert.Equal(20, slot.IdleFromCycle);
             Assert.Equal(5, slot.Exceptions);
             Assert.Equal(5, slot.BadAnswers);
-            Assert.Equal(11, slot.Timeouts);
+            Assert.Equal(1, slot.Timeouts);
             Assert.Equal("cycle 5: InvalidOperationException: faulty on purpose", slot.FirstFault);
             string summary = MatchSummary.Format(match, TimeSpan.FromMilliseconds(1));
-            Assert.Contains("team 0 (faulty): 5 exceptions, 11 timeouts, 5 bad answers; its fish kept their last decisions", summary, StringComparison.Ordinal);
+            Assert.Contains("team 0 (faulty): 5 exceptions, 1 timeouts, 5 bad answers, out of time in cycle 20; its fish kept their last decisions until then and stopped after", summary, StringComparison.Ordinal);
         }
         finally
         {

@@ -42,12 +42,12 @@ public sealed class StrategyCliTests : IDisposable
     [Fact]
     public void FaultsOfARealHangAreListedAndTheMatchPlaysToTheEnd()
     {
-        // Cycles 5–9 throw, 10–14 answer no decisions, from 20 the strategy sleeps forever: given up
-        // after the hang limit (1 s) once, then skipped while busy. The counts do not depend on timing.
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "25", "--strategy", "0=" + OriginalStrategyTests.Folder("Faulty"), "--strategy-timeout", "20");
+        // Cycles 5–9 throw, 10–14 answer no decisions, in 20 the strategy sleeps forever: given up
+        // when its 1 s bank is spent, then idle. The counts do not depend on timing.
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "25", "--strategy", "0=" + OriginalStrategyTests.Folder("Faulty"), "--strategy-timeout", "20", "--time-bank", "1");
         Assert.Equal(0, run.ExitCode);
         Assert.StartsWith("match: 25 cycles,", run.Stdout, StringComparison.Ordinal);
-        string line = "  team 0 (Faulty): 5 exceptions, 6 timeouts, 5 bad answers; its fish kept their last decisions; first: cycle 5: InvalidOperationException: faulty on purpose";
+        string line = "  team 0 (Faulty): 5 exceptions, 1 timeouts, 5 bad answers, out of time in cycle 20; its fish kept their last decisions until then and stopped after; first: cycle 5: InvalidOperationException: faulty on purpose";
         Assert.Contains("strategy faults:\n" + line + "\n", run.Stdout, StringComparison.Ordinal);
         Assert.Equal("strategy faults:\n" + line, DocsBlock("strategy faults:"));
     }

@@ -32,8 +32,12 @@ internal sealed class SlowStrategy(ManualStrategyClock clock) : IStrategy
 
     public string TeamName => "slow";
 
+    /// <summary>Calls made so far.</summary>
+    public int Calls { get; private set; }
+
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
     {
+        Calls++;
         if (snapshot.Cycle == 3)
         {
             clock.Spend(Spend);

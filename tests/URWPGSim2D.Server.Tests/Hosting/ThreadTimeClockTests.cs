@@ -15,8 +15,9 @@ public sealed class ThreadTimeClockTests
         var clock = new ThreadTimeClock();
         clock.CallStarting();
         Thread.Sleep(300);
-        TimeSpan used = clock.CallEnded();
+        (TimeSpan used, TimeSpan wall) = clock.CallEnded();
         Assert.True(used < TimeSpan.FromMilliseconds(150), $"a 300 ms sleep used {used.TotalMilliseconds} ms of CPU");
+        Assert.True(wall >= TimeSpan.FromMilliseconds(300), $"a 300 ms sleep took {wall.TotalMilliseconds} ms of wall time");
     }
 
     [Fact]

@@ -8,11 +8,11 @@ namespace URWPGSim2D.Server.Tests.Simulation;
 internal static class TestMatches
 {
     /// <summary>A match from scenario JSON; "noise" defaults to false here.</summary>
-    public static Match FromJson(string json, TeamStrategy?[]? teams = null, int timeoutMs = MatchBuilder.DefaultStrategyTimeoutMs)
+    public static Match FromJson(string json, TeamStrategy?[]? teams = null, int timeoutMs = MatchBuilder.DefaultStrategyTimeoutMs, System.TimeSpan? timeBank = null)
     {
         var scenario = ScenarioParser.Parse(json);
         bool noise = json.Contains("\"noise\"", System.StringComparison.Ordinal) && scenario.Noise;
-        return MatchBuilder.Build(scenario, teams, noise: noise, strategyTimeoutMs: timeoutMs);
+        return MatchBuilder.BuildRecording(scenario, teams, noise: noise, strategyTimeoutMs: timeoutMs, timeBank: timeBank);
     }
 
     /// <summary>A match with only balls (positions and velocities given as x, z, vx, vz quadruples).</summary>

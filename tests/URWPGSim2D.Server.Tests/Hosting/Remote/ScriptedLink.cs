@@ -32,6 +32,10 @@ internal sealed class ScriptedLink : IStrategyLink
 
     public bool SurvivesLateAnswer { get; }
 
+    public bool CutByWait => false;
+
+    public TimeSpan? CpuTime() => null;
+
     public bool Waiting { get; private set; }
 
     public bool Aborted { get; private set; }

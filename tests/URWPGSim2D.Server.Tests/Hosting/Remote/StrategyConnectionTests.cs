@@ -75,12 +75,13 @@ public sealed class StrategyConnectionTests
     }
 
     [Fact]
-    public void A_late_answer_is_a_time_out_and_is_dropped_when_it_comes()
+    public void A_late_answer_is_given_up_on_and_is_dropped_when_it_comes()
     {
         var link = new ScriptedLink().Send(Hello).RunLate().Send(Answer(0, 1, 1, 1, 1)).Send(Answer(1, 5, 6, 7, 8));
         var connection = Connect(link, null);
         var decisions = new Decision[] { new(2, 2), new(2, 2) };
-        Assert.Equal(ConnectionOutcome.TimedOut, connection.Decide(Next(), decisions, out _));
+        Assert.Equal(ConnectionOutcome.GivenUp, connection.Decide(Next(), decisions, out string? message));
+        Assert.Equal("no answer within 1.0 s", message);
         Assert.Equal([new Decision(2, 2), new Decision(2, 2)], decisions);
         Assert.Equal(ConnectionOutcome.Decided, connection.Decide(Next(), decisions, out _));
         Assert.Equal([new Decision(5, 6), new Decision(7, 8)], decisions);
@@ -178,7 +179,7 @@ public sealed class StrategyConnectionTests
                 else
                 {
                     Assert.All(decisions, d => Assert.Equal(new Decision(99, 99), d));
-                    Assert.NotNull(outcome == ConnectionOutcome.TimedOut ? "late" : message);
+                    Assert.NotNull(outcome is ConnectionOutcome.TimedOut or ConnectionOutcome.GivenUp ? "late" : message);
                 }
 
                 Assert.False(ended && outcome != ConnectionOutcome.Ended, $"script {script}: an ended connection answered {outcome}");
@@ -188,7 +189,7 @@ public sealed class StrategyConnectionTests
             Assert.All(_log, l => Assert.DoesNotContain('\n', l));
         }
 
-        Assert.Superset(new HashSet<ConnectionOutcome> { ConnectionOutcome.Decided, ConnectionOutcome.BadAnswer, ConnectionOutcome.TimedOut, ConnectionOutcome.Ended }, outcomes);
+        Assert.Superset(new HashSet<ConnectionOutcome> { ConnectionOutcome.Decided, ConnectionOutcome.BadAnswer, ConnectionOutcome.GivenUp, ConnectionOutcome.Ended }, outcomes);
     }
 
     // What a hostile or broken client might send for one cycle.
