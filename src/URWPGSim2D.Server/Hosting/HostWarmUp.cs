@@ -33,7 +33,7 @@ internal static partial class HostWarmUp
             input.Write(writer.End(new EndMessage(1, [0, 0], 0)));
             input.Position = 0;
             var output = new MemoryStream();
-            new StrategyClient(input, output, () => new ThreadTimeClock(wholeProcess: true)).Play(new ChaseBallStrategy(), null);
+            new StrategyClient(input, output).Play(new ChaseBallStrategy(), null);
             var decisions = new Strategies.Decision[2];
             foreach (var line in Encoding.UTF8.GetString(output.ToArray()).Split('\n', StringSplitOptions.RemoveEmptyEntries))
             {
