@@ -86,7 +86,7 @@ internal sealed class TournamentCommand : ICliCommand
             // Another tournament's results are never touched: checked before anything is played.
             foreach (string file in o.Merge.Prepend(results))
             {
-                if (File.Exists(file) && TournamentFile.Read(file).Header is var found && !found.SameTournament(whole))
+                if (File.Exists(file) && TournamentFile.Read(file).Header is var found && !found.SameSettings(whole))
                 {
                     return Refuse(console, $"{file}: holds another tournament ({found.Difference(whole)}); use another --out or delete it");
                 }
@@ -143,7 +143,12 @@ internal sealed class TournamentCommand : ICliCommand
             }
         }
 
-        var (kept, dropped) = TournamentResume.Gather(header, schedule, o.Merge.Prepend(results), errors);
+        var (kept, dropped, remap) = TournamentResume.GatherAll(header, schedule, o.Merge.Prepend(results), errors);
+        if (remap is not null && o.Results is null)
+        {
+            MoveReplays(folder, remap.Moved);
+        }
+
         string? replays = o.Replays ? folder : null;
         var toPlay = schedule.Matches
             .Where(m => m.Index % header.ShardCount == header.ShardIndex)
@@ -157,7 +162,7 @@ internal sealed class TournamentCommand : ICliCommand
         int inShard = schedule.Matches.Count(m => m.Index % header.ShardCount == header.ShardIndex);
         string share = header.ShardCount > 1 ? string.Create(CultureInfo.InvariantCulture, $" (shard {header.ShardIndex}/{header.ShardCount}: {inShard})") : string.Empty;
         console.Out.Write(string.Create(CultureInfo.InvariantCulture,
-            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, {Plural(header.Matches, "match")}{share}; {toPlay.Count} to play, {inShard - toPlay.Count} already there{(dropped > 0 ? $", {dropped} broken lines dropped" : string.Empty)}\n"));
+            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, {Plural(header.Matches, "match")}{share}; {toPlay.Count} to play, {inShard - toPlay.Count} already there{(dropped > 0 ? $", {dropped} broken lines dropped" : string.Empty)}{(remap is { Changed: > 0 } ? $", {Plural(remap.Changed, "match")} of changed or removed entrants dropped" : string.Empty)}\n"));
 
         // What is already there is rewritten whole (dropping broken lines), then each finished match is appended.
         TournamentFile.Write(results, header, kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex));
@@ -205,7 +210,7 @@ internal sealed class TournamentCommand : ICliCommand
         else
         {
             var standings = Standings.Compute(header, o.Item.TeamCount, mine, errors);
-            TournamentOutputs.Write(folder, standings, mine);
+            TournamentOutputs.Write(folder, standings, mine, entrants.TeamNames);
             console.Out.Write(StandingsLines(standings));
             console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
             console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
@@ -226,6 +231,38 @@ internal sealed class TournamentCommand : ICliCommand
         }
 
         return ExitCodes.Success;
+    }
+
+    // The replay pages of the matches kept from a run with other entrants, moved to their new index;
+    // the pages of matches not kept are deleted (their index may now be another match's).
+    private static void MoveReplays(string folder, Dictionary<int, int> moved)
+    {
+        string pages = Path.Combine(folder, TournamentOutputs.Replays);
+        if (!Directory.Exists(pages))
+        {
+            return;
+        }
+
+        var staged = new List<(string From, int To)>();
+        foreach (string page in Directory.EnumerateFiles(pages, "match-*.html"))
+        {
+            string number = Path.GetFileNameWithoutExtension(page)["match-".Length..];
+            if (int.TryParse(number, NumberStyles.None, CultureInfo.InvariantCulture, out int index) && moved.TryGetValue(index, out int to))
+            {
+                string temporary = page + ".moving";
+                File.Move(page, temporary, overwrite: true);
+                staged.Add((temporary, to));
+            }
+            else
+            {
+                File.Delete(page);
+            }
+        }
+
+        foreach (var (from, to) in staged)
+        {
+            File.Move(from, TournamentOutputs.ReplayPage(folder, to), overwrite: true);
+        }
     }
 
     // The standings in a few lines for the terminal.
@@ -351,7 +388,9 @@ internal sealed class TournamentCommand : ICliCommand
         "(default 1); one-team items: every entrant on each seed. --minutes 10|5|3|1 (default 10) or --cycles N sets\n" +
         "the length; --threads P plays P matches at once (default: every core). Writes into --out DIR: results.jsonl\n" +
         "(the batch format plus the entrants), standings.json, standings.md and report.html (--replays: and every\n" +
-        "match's replay page in replays/). Run again into the same DIR, it plays only missing or broken matches.\n" +
+        "match's replay page in replays/). Run again into the same DIR, it plays only missing or broken matches, and\n" +
+        "those of entrants whose code changed (each file or folder entrant has a version, a hash of its files) or that\n" +
+        "were added. --entrants-dir DIR: every sub-folder, .cs file and .dll in DIR is an entrant named after it.\n" +
         "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
         "intervals; one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
         "Entrants' code runs as with 'run': each in its own strategy host per match (--isolation process, the default;\n" +

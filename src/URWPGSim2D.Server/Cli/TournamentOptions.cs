@@ -19,7 +19,7 @@ internal sealed class TournamentOptions
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM --entrant NAME=SPEC [--entrant NAME=SPEC]... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -203,6 +203,7 @@ internal sealed class TournamentOptions
                     o.Item = ItemRegistry.Find(value) ?? throw ItemList.Unknown("tournament", value, withDefault: false);
                     break;
                 case "--entrant": o.Entrants.Add(ParseEntrant(value)); break;
+                case "--entrants-dir": o.Entrants.InsertRange(0, EntrantsOf(value)); break;
                 case "--seeds": o.Seeds = (int)Number(name, value, 1, 100_000); break;
                 case "--seed": o.FirstSeed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--minutes":
@@ -267,6 +268,25 @@ internal sealed class TournamentOptions
             }
         }
 
+        // Each entrant's version: a hash of its files, so that a changed entrant's matches are played again.
+        for (int i = 0; i < Entrants.Count; i++)
+        {
+            var e = Entrants[i];
+            if (e.Spec == Entrant.Demo || StrategyResolver.BuiltInNames.Contains(e.Spec))
+            {
+                continue;
+            }
+
+            try
+            {
+                Entrants[i] = e with { Version = EntrantFiles.Version(e.Spec) };
+            }
+            catch (Exception x) when (x is IOException or UnauthorizedAccessException)
+            {
+                throw UsageError($"--entrant {e.Name}: cannot read {MessageText.Quote(e.Spec)} ({x.Message})");
+            }
+        }
+
         if ((ShardCount > 1 || seen.Contains("--shard")) != (Results is not null))
         {
             throw UsageError("--shard I/K and --results FILE go together (a Slurm task's share of the tournament)");
@@ -286,6 +306,44 @@ internal sealed class TournamentOptions
         {
             throw UsageError("--merge gathers shards into --out DIR; it does not go with --shard");
         }
+    }
+
+    // --entrants-dir DIR: every sub-folder, .cs file and DLL in DIR, named after it.
+    private static List<Entrant> EntrantsOf(string folder)
+    {
+        if (!Directory.Exists(folder))
+        {
+            throw UsageError($"--entrants-dir must be a folder, got {MessageText.Quote(folder)}");
+        }
+
+        List<Entrant> entrants;
+        try
+        {
+            entrants = EntrantFiles.Of(folder);
+        }
+        catch (ArgumentException e)
+        {
+            throw UsageError($"--entrants-dir {MessageText.Quote(folder)}: {e.Message}");
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw UsageError($"--entrants-dir {MessageText.Quote(folder)}: cannot read it ({e.Message})");
+        }
+
+        if (entrants.Count == 0)
+        {
+            throw UsageError($"--entrants-dir {MessageText.Quote(folder)} holds no sub-folder, .cs file or .dll file");
+        }
+
+        foreach (var e in entrants)
+        {
+            if (e.Name.Length > MaximumName || e.Name.AsSpan().IndexOfAnyInRange('\0', '\u001f') >= 0 || e.Name.Contains('\u007f', StringComparison.Ordinal) || e.Name.Trim() != e.Name)
+            {
+                throw UsageError($"--entrants-dir: an entrant's name must be 1-{MaximumName} printable characters without spaces at its ends, got {MessageText.Quote(e.Name)} ({MessageText.Quote(e.Spec)})");
+            }
+        }
+
+        return entrants;
     }
 
     // NAME=SPEC: a name of printable characters without '=', and a SPEC that names something.

@@ -23,6 +23,7 @@ internal static class TournamentSyntax
         [
             CliSyntax.Value("--item", "ITEM", "the item the entrants play (name or Chinese name)", CliCompletions.TournamentItems),
             CliSyntax.Repeated("--entrant", "NAME=SPEC", "an entrant: its name and its strategy", CliCompletions.Entrants),
+            CliSyntax.Value("--entrants-dir", "DIR", "a folder whose every sub-folder, .cs file and DLL is an entrant named after it", CliCompletions.Folders),
             CliSyntax.Value("--seeds", "N", "seeds each pairing plays"),
             CliSyntax.Value("--seed", "S", "the first seed"),
             CliSyntax.Value("--minutes", "10|5|3|1", "match length", CliCompletions.Fixed("10", "5", "3", "1")),

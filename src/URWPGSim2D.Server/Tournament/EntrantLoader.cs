@@ -33,13 +33,21 @@ internal sealed class EntrantLoader
         Settings = settings;
         _prepared = new PreparedStrategy?[entrants.Count];
         var errors = new string?[entrants.Count];
+        var names = new string?[entrants.Count];
         for (int i = 0; i < entrants.Count; i++)
         {
-            (_prepared[i], errors[i]) = Ready(entrants[i], settings, progress);
+            (_prepared[i], errors[i], names[i]) = Ready(entrants[i], settings, progress);
         }
 
         Errors = errors;
+        TeamNames = names;
     }
+
+    /// <summary>
+    /// Per entrant, the team's own name as its code gives it (the original's <c>GetTeamName()</c> or the
+    /// SDK's <c>TeamName</c> when it returns a constant; a built-in strategy's name), or null when not known.
+    /// </summary>
+    public IReadOnlyList<string?> TeamNames { get; }
 
     /// <summary>How user strategies run.</summary>
     public HostSettings Settings { get; }
@@ -75,26 +83,46 @@ internal sealed class EntrantLoader
     public static string Reason(StrategyLoadException e) =>
         StandingsText.Line(e.Details.Count == 0 ? e.Message : $"{e.Message.TrimEnd(':', ' ')}; first: {e.Details[0]}");
 
-    // The prepared strategy (hosted entrants) and null, or null and the reason it cannot be used.
-    private static (PreparedStrategy? Prepared, string? Error) Ready(Entrant entrant, HostSettings settings, Action<string>? progress)
+    // The prepared strategy (hosted entrants) and null, or null and the reason it cannot be used; and the team's own name when known.
+    private static (PreparedStrategy? Prepared, string? Error, string? Name) Ready(Entrant entrant, HostSettings settings, Action<string>? progress)
     {
         if (entrant.Spec == Entrant.Demo)
         {
-            return (null, null);
+            return (null, null, null);
+        }
+
+        if (System.Linq.Enumerable.Contains(StrategyResolver.BuiltInNames, entrant.Spec))
+        {
+            return (null, null, entrant.Spec);
         }
 
         try
         {
             var prepared = StrategyResolver.Prepare(entrant.Spec, progress, settings); // compiles and checks; runs none of the entrant's code
-            return (settings.Isolation == IsolationMode.Process ? prepared : null, null);
+            return (settings.Isolation == IsolationMode.Process ? prepared : null, null, prepared is null ? null : OwnName(prepared));
         }
         catch (StrategyLoadException e)
         {
-            return (null, Reason(e));
+            return (null, Reason(e), null);
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            return (null, StandingsText.Line($"{e.GetType().Name}: {e.Message}")); // whatever loading throws, the tournament goes on
+            return (null, StandingsText.Line($"{e.GetType().Name}: {e.Message}"), null); // whatever loading throws, the tournament goes on
+        }
+    }
+
+    // The constant name the strategy's assembly gives its team, read from its metadata (none of its code runs); null when not constant.
+    private static string? OwnName(PreparedStrategy prepared)
+    {
+        int hash = prepared.LoadSpec.LastIndexOf('#');
+        string assembly = hash > 0 ? prepared.LoadSpec[..hash] : prepared.LoadSpec;
+        try
+        {
+            return StrategyInspection.Of(assembly).TeamName;
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            return null; // only shown in the report: an assembly the inspection cannot read still plays
         }
     }
 }

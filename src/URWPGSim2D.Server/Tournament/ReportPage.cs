@@ -18,7 +18,8 @@ internal static class ReportPage
     /// <summary>The page's text.</summary>
     /// <param name="s">The standings.</param>
     /// <param name="hasReplay">Whether match J's replay page exists.</param>
-    public static string Format(Standings s, Func<int, bool> hasReplay)
+    /// <param name="teamNames">Per entrant (header order), the team's own name when known.</param>
+    public static string Format(Standings s, Func<int, bool> hasReplay, IReadOnlyList<string?>? teamNames = null)
     {
         var h = new StringBuilder();
         string title = "Tournament: " + s.Header.Item;
@@ -35,6 +36,7 @@ internal static class ReportPage
             h.Append("<p class=\"note\">").Append(E(ties)).Append("</p>\n");
         }
 
+        Entrants(h, s, teamNames);
         Faults(h, s, hasReplay);
         h.Append("<h2>Intervals</h2>\n");
         Plot(h, s);
@@ -67,6 +69,27 @@ internal static class ReportPage
                 .Append(Inv($"</td><td>{r.Played}</td>"));
             h.Append(one ? Inv($"<td>{StandingsJson.Round(r.Seconds, 1):0.0}</td>") : Inv($"<td>{r.Wins}</td><td>{r.Draws}</td><td>{r.Losses}</td>"));
             h.Append("<td>").Append(StandingsText.Overlaps(r)).Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // Each entrant's code: its folder or file, the version (a hash of its files) and the team's own name.
+    private static void Entrants(StringBuilder h, Standings s, IReadOnlyList<string?>? teamNames)
+    {
+        if (!StandingsText.ShowsEntrants(s))
+        {
+            return;
+        }
+
+        h.Append("<h2>Entrants</h2>\n<p class=\"note\">The version is a hash of the entrant's files: a new version plays its matches again.</p>\n");
+        h.Append("<table>\n<tr><th class=\"l\">Entrant</th><th class=\"l\">Code</th><th class=\"l\">Version</th><th class=\"l\">Team name</th></tr>\n");
+        foreach (var r in s.Rows)
+        {
+            var e = s.Header.Entrants[r.Entrant];
+            string? own = teamNames is not null && r.Entrant < teamNames.Count ? teamNames[r.Entrant] : null;
+            h.Append("<tr><td class=\"l\">").Append(E(r.Name)).Append("</td><td class=\"l\">").Append(E(e.Spec)).Append("</td><td class=\"l\"><code>")
+                .Append(E(e.Version ?? "-")).Append("</code></td><td class=\"l\">").Append(E(own ?? "-")).Append("</td></tr>\n");
         }
 
         h.Append("</table>\n");

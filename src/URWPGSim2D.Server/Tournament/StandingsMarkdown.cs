@@ -9,7 +9,8 @@ internal static class StandingsMarkdown
     /// <summary>The file's text.</summary>
     /// <param name="s">The standings.</param>
     /// <param name="hasReplay">Whether match J's replay page exists (then the first fault links to its cycle there).</param>
-    public static string Format(Standings s, System.Func<int, bool>? hasReplay = null)
+    /// <param name="teamNames">Per entrant (header order), the team's own name when known.</param>
+    public static string Format(Standings s, System.Func<int, bool>? hasReplay = null, System.Collections.Generic.IReadOnlyList<string?>? teamNames = null)
     {
         var t = new StringBuilder();
         t.Append("# Standings: ").Append(s.Header.Item).Append("\n\n");
@@ -38,6 +39,19 @@ internal static class StandingsMarkdown
         if (StandingsText.Ties(s) is { } ties)
         {
             t.Append('\n').Append(ties).Append('\n');
+        }
+
+        if (StandingsText.ShowsEntrants(s))
+        {
+            t.Append("\nEntrants (the version is a hash of the entrant's files: a new version plays its matches again):\n\n");
+            t.Append("| Entrant | Code | Version | Team name |\n|---|---|---|---|\n");
+            foreach (var r in s.Rows)
+            {
+                var e = s.Header.Entrants[r.Entrant];
+                string? own = teamNames is not null && r.Entrant < teamNames.Count ? teamNames[r.Entrant] : null;
+                t.Append("| ").Append(Cell(r.Name)).Append(" | ").Append(Cell(e.Spec)).Append(" | ").Append(e.Version ?? "-").Append(" | ")
+                    .Append(own is null ? "-" : Cell(Json.MessageText.Escape(own))).Append(" |\n");
+            }
         }
 
         if (s.AnyFaults)

@@ -56,6 +56,9 @@ internal static class StandingsText
 
     private static string Cut(string text, int max) => text.Length <= max ? text : string.Concat(text.AsSpan(0, max), "…");
 
+    /// <summary>Whether the standings list the entrants' code (some entrant is files, with a version).</summary>
+    public static bool ShowsEntrants(Standings s) => s.Header.Entrants.Any(e => e.Version is not null);
+
     /// <summary>One line of a reason: line breaks as spaces.</summary>
     public static string Line(string text) => text.ReplaceLineEndings(" ").Trim();
 }

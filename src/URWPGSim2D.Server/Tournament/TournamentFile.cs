@@ -9,7 +9,7 @@ namespace URWPGSim2D.Server.Tournament;
 
 /// <summary>
 /// A tournament's result file, JSON Lines: the header
-/// (<c>{"kind":"tournament","item":…,"entrants":[{"name":…,"spec":…}],…,"shard":I,"shards":K}</c>),
+/// (<c>{"kind":"tournament","item":…,"entrants":[{"name":…,"spec":…[,"version":…]}],…,"shard":I,"shards":K}</c>),
 /// then one line per match: a batch match line (docs/batch.md) with <c>"entrants":[NAME, …]</c>
 /// (per team) added at its end, or <c>{"kind":"forfeit","index":j,"seed":s,"entrants":[…],"forfeits":[team…],"reasons":[…]}</c>
 /// for a match an entrant could not be loaded for. Written whole through FILE.partial and renamed,
@@ -154,6 +154,11 @@ internal static class TournamentFile
             w.WriteStartObject();
             w.WriteString("name", e.Name);
             w.WriteString("spec", e.Spec);
+            if (e.Version is not null)
+            {
+                w.WriteString("version", e.Version);
+            }
+
             w.WriteEndObject();
         }
 
@@ -179,7 +184,7 @@ internal static class TournamentFile
         var entrants = new List<Entrant>();
         foreach (var x in list.EnumerateArray())
         {
-            entrants.Add(new Entrant(Field(x, "name").GetString()!, Field(x, "spec").GetString()!));
+            entrants.Add(new Entrant(Field(x, "name").GetString()!, Field(x, "spec").GetString()!, x.TryGetProperty("version", out var v) ? v.GetString() : null));
         }
 
         var h = new TournamentHeader(

@@ -21,6 +21,13 @@ internal sealed record TournamentHeader(
     string Item, IReadOnlyList<Entrant> Entrants, int Seeds, ulong FirstSeed, int Cycles, int StrategyTimeoutMs,
     int Matches, int ShardIndex = 0, int ShardCount = 1)
 {
+    /// <summary>
+    /// Whether the two headers play their matches alike (item, seeds, length, time limit), whatever
+    /// their entrants: then the matches of the entrants both have, in the same version, are the same matches.
+    /// </summary>
+    public bool SameSettings(TournamentHeader other) =>
+        Item == other.Item && Seeds == other.Seeds && FirstSeed == other.FirstSeed && Cycles == other.Cycles && StrategyTimeoutMs == other.StrategyTimeoutMs;
+
     /// <summary>Whether the two headers describe the same tournament (shards aside).</summary>
     public bool SameTournament(TournamentHeader other) =>
         Item == other.Item && Entrants.SequenceEqual(other.Entrants) && Seeds == other.Seeds && FirstSeed == other.FirstSeed
@@ -36,5 +43,5 @@ internal sealed record TournamentHeader(
         : StrategyTimeoutMs != other.StrategyTimeoutMs ? $"strategy time limit {StrategyTimeoutMs} vs {other.StrategyTimeoutMs} ms"
         : "the same tournament";
 
-    private static string Names(TournamentHeader h) => string.Join(",", h.Entrants.Select(e => e.Name + "=" + e.Spec));
+    private static string Names(TournamentHeader h) => string.Join(",", h.Entrants.Select(e => e.Name + "=" + e.Spec + (e.Version is null ? string.Empty : "@" + e.Version)));
 }

@@ -26,12 +26,16 @@ internal static class TournamentOutputs
     public static string ReplayPage(string folder, int index) => Path.Combine(folder, Replays, $"match-{index}.html");
 
     /// <summary>Writes the standings, the report and (in index order) the results.</summary>
-    public static void Write(string folder, Standings standings, IEnumerable<TournamentRecord> records)
+    /// <param name="folder">The tournament's folder.</param>
+    /// <param name="standings">The standings.</param>
+    /// <param name="records">The records.</param>
+    /// <param name="teamNames">Per entrant (header order), the team's own name when known (<see cref="EntrantLoader.TeamNames"/>).</param>
+    public static void Write(string folder, Standings standings, IEnumerable<TournamentRecord> records, IReadOnlyList<string?>? teamNames = null)
     {
         TournamentFile.Write(Path.Combine(folder, Results), standings.Header, records);
         bool HasReplay(int j) => File.Exists(ReplayPage(folder, j));
         AtomicFile.WriteAllText(Path.Combine(folder, StandingsJsonName), StandingsJson.Format(standings, HasReplay));
-        AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings, HasReplay));
-        AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, HasReplay));
+        AtomicFile.WriteAllText(Path.Combine(folder, StandingsMarkdownName), StandingsMarkdown.Format(standings, HasReplay, teamNames));
+        AtomicFile.WriteAllText(Path.Combine(folder, Report), ReportPage.Format(standings, HasReplay, teamNames));
     }
 }

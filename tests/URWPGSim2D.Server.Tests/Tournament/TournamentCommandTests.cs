@@ -109,7 +109,7 @@ public sealed class TournamentCommandTests : IDisposable
         File.WriteAllText(bad, "public sealed class Mended : URWPGSim2D.Strategies.IStrategy { public string TeamName => \"mended\"; public void Decide(URWPGSim2D.Strategies.MatchSnapshot s, System.ReadOnlySpan<int> f, System.Span<URWPGSim2D.Strategies.Decision> d) { } }");
         var mended = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "bad=" + bad, "--entrant", "idle=idle", "--seeds", "1", "--cycles", "40", "--out", Dir("f"));
         Assert.True(mended.ExitCode == 0, mended.Stderr);
-        Assert.Contains("; 4 to play, 2 already there\n", mended.Stdout, StringComparison.Ordinal);
+        Assert.Contains("; 4 to play, 2 already there, 4 matches of changed or removed entrants dropped\n", mended.Stdout, StringComparison.Ordinal);
         Assert.DoesNotContain("error", File.ReadAllText(Path.Combine(Dir("f"), "standings.json")), StringComparison.Ordinal);
     }
 
