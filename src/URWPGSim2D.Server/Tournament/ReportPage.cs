@@ -36,6 +36,7 @@ internal static class ReportPage
             h.Append("<p class=\"note\">").Append(E(ties)).Append("</p>\n");
         }
 
+        Points(h, s);
         Entrants(h, s, teamNames);
         Faults(h, s, hasReplay);
         h.Append("<h2>Intervals</h2>\n");
@@ -69,6 +70,26 @@ internal static class ReportPage
                 .Append(Inv($"</td><td>{r.Played}</td>"));
             h.Append(one ? Inv($"<td>{StandingsJson.Round(r.Seconds, 1):0.0}</td>") : Inv($"<td>{r.Wins}</td><td>{r.Draws}</td><td>{r.Losses}</td>"));
             h.Append("<td>").Append(StandingsText.Overlaps(r)).Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // The points table of a two-team item (3 a win, 1 a draw), as a class or league keeps it.
+    private static void Points(StringBuilder h, Standings s)
+    {
+        var table = PointsTable.Of(s);
+        if (table.Count == 0)
+        {
+            return;
+        }
+
+        h.Append("<h2>Points table</h2>\n<p class=\"note\">3 points a win, 1 a draw, 0 a loss; ties broken by goal difference, then goals, then the points between the entrants still level, then the name.</p>\n");
+        h.Append("<table>\n<tr><th>Place</th><th class=\"l\">Entrant</th><th>Played</th><th>Wins</th><th>Draws</th><th>Losses</th><th>Goals</th><th>Difference</th><th>Points</th></tr>\n");
+        foreach (var p in table)
+        {
+            h.Append(Inv($"<tr><td>{p.Rank}</td><td class=\"l\">")).Append(E(p.Name))
+                .Append(Inv($"</td><td>{p.Played}</td><td>{p.Wins}</td><td>{p.Draws}</td><td>{p.Losses}</td><td>{p.GoalsFor}:{p.GoalsAgainst}</td><td>{p.Difference:+0;-0;0}</td><td>{p.Points}</td></tr>\n"));
         }
 
         h.Append("</table>\n");

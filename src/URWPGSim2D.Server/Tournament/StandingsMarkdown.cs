@@ -41,6 +41,17 @@ internal static class StandingsMarkdown
             t.Append('\n').Append(ties).Append('\n');
         }
 
+        var table = PointsTable.Of(s);
+        if (table.Count > 0)
+        {
+            t.Append("\nPoints table (3 a win, 1 a draw; then goal difference, goals, head to head):\n\n");
+            t.Append("| Place | Entrant | Played | Wins | Draws | Losses | Goals | Difference | Points |\n|---:|---|---:|---:|---:|---:|---|---:|---:|\n");
+            foreach (var p in table)
+            {
+                t.Append(string.Create(CultureInfo.InvariantCulture, $"| {p.Rank} | {Cell(p.Name)} | {p.Played} | {p.Wins} | {p.Draws} | {p.Losses} | {p.GoalsFor}:{p.GoalsAgainst} | {p.Difference:+0;-0;0} | {p.Points} |\n"));
+            }
+        }
+
         if (StandingsText.ShowsEntrants(s))
         {
             t.Append("\nEntrants (the version is a hash of the entrant's files: a new version plays its matches again):\n\n");
