@@ -14,7 +14,8 @@ namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 /// baseline) on its own thread in the server (<c>--isolation none</c>), <see cref="Hosted"/> in its
 /// host process (snapshot out as a protocol line, decisions back). The difference is the per-cycle
 /// cost of isolation. <see cref="HostStartToFirstDecision"/> starts a host for the already compiled
-/// strategy, takes its first decision and stops it. <see cref="Remote"/> plays the same strategy on a
+/// strategy, takes its first decision and stops it; <see cref="PooledHostToFirstDecision"/> does the same
+/// with a host started ahead and waiting (<see cref="HostPool"/>), as matches get theirs. <see cref="Remote"/> plays the same strategy on a
 /// remote client (<c>connect</c>'s code, on a thread of this process) over a loopback TCP
 /// connection (<c>--strategy 0=remote:PORT</c>).
 /// </summary>
@@ -44,6 +45,7 @@ public class IsolationBenchmarks
     private PreparedStrategy _prepared = null!;
     private string _folder = null!;
     private int[] _fish0 = null!;
+    private HostProcess _waiting = null!;
 
     /// <summary>Compiles the strategy, plays 500 cycles and starts both line-ups (the host's first call included).</summary>
     [GlobalSetup]
@@ -115,7 +117,26 @@ public class IsolationBenchmarks
         return faults == 0 ? 0 : throw new InvalidOperationException("the host faulted: " + caller.Slots[0].FirstFault);
     }
 
-    private StrategyConnection Start() => HostedStrategy.Start(_prepared, HostSettings.Default, Assignment(), 10_000);
+    /// <summary>Starts a waiting host for the next <see cref="PooledHostToFirstDecision"/> and gives it time to warm up (a match's host has the match's setup for that).</summary>
+    [IterationSetup(Target = nameof(PooledHostToFirstDecision))]
+    public void StartWaitingHost()
+    {
+        _waiting = HostProcess.StartWaiting(_prepared.ReadOnly, HostSandbox.Use(SandboxMode.Auto), HostSettings.Default);
+        System.Threading.Thread.Sleep(2000);
+    }
+
+    /// <summary>Handing the compiled strategy to a waiting host up to its first decision, then stopping it.</summary>
+    [Benchmark]
+    public int PooledHostToFirstDecision()
+    {
+        var caller = new StrategyCaller([new StrategySlot("team 0", HostedStrategy.HandOver(_waiting, _prepared, Assignment(), 10_000), 0, _fish0)], MatchBuilder.DefaultStrategyTimeoutMs);
+        caller.Decide(_match.Snapshot, _match.World.Fish);
+        int faults = caller.TotalFaults;
+        caller.Stop();
+        return faults == 0 ? 0 : throw new InvalidOperationException("the host faulted: " + caller.Slots[0].FirstFault);
+    }
+
+    private StrategyConnection Start() => HostedStrategy.Start(_prepared, HostSettings.Default, Assignment(), 10_000, pooled: false);
 
     private URWPGSim2D.Protocol.AssignmentMessage Assignment() => new(
         1, 0, "", "match", _fish0, _match.World.Fish.Length, _match.World.Balls.Length, 0, MatchBuilder.DefaultStrategyTimeoutMs,

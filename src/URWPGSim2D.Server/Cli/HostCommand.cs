@@ -48,11 +48,12 @@ internal sealed class HostCommand : ICliCommand
                 "Loads the strategy SPEC (a .dll, .cs file or folder, as --strategy TEAM=SPEC) and plays it over standard\n" +
                 "input and output with the strategy protocol (docs/protocol.md). 'run' starts one host per team and match;\n" +
                 "exit codes: 0 the match ended, 3 the strategy cannot be loaded, 4 its constructor threw, 5 the server\n" +
-                "broke the protocol or closed the connection.\n");
+                "broke the protocol or closed the connection. SPEC '-' is a pre-started host: it reads 'CPU-SECONDS SPEC'\n" +
+                "from its first line of standard input, limits its CPU time to it and plays as 'host SPEC'.\n");
             return ExitCodes.Success;
         }
 
-        if (words.Count >= 1 && words[0].Text.StartsWith('-'))
+        if (words.Count >= 1 && words[0].Text.StartsWith('-') && words[0].Text != HostProcess.WaitingSpec)
         {
             throw CliUsageException.UnknownOption("host", words[0].Text, Syntax, $"{CliApp.ProgramName} {Synopsis}");
         }
@@ -67,10 +68,22 @@ internal sealed class HostCommand : ICliCommand
         var toServer = Console.OpenStandardOutput();
         Console.SetIn(System.IO.TextReader.Null);
         Console.SetOut(Console.Error);
+        string? spec = words[0].Text;
+        if (spec == HostProcess.WaitingSpec)
+        {
+            // A pre-started host: warm up, then wait for the strategy's line.
+            HostWarmUp.Run();
+            spec = HostWarmUp.ReadStrategy(fromServer);
+            if (spec is null)
+            {
+                return Disconnected;
+            }
+        }
+
         IStrategy strategy;
         try
         {
-            strategy = StrategyResolver.Load(words[0].Text, compileInThisProcess: true); // the host is the sandbox
+            strategy = StrategyResolver.Load(spec, compileInThisProcess: true); // the host is the sandbox
         }
         catch (StrategyLoadException e)
         {

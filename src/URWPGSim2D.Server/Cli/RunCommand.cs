@@ -299,7 +299,8 @@ internal sealed class RunCommand : ICliCommand
         var prepared = options.Isolation == IsolationMode.Process ? StrategyResolver.Prepare(spec, progress, options.HostSettings) : null;
         if (prepared is not null)
         {
-            HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
+            bool sandbox = HostSandbox.Use(options.Sandbox); // the warning or the refusal, before the match
+            HostPool.Reserve(prepared, options.HostSettings, sandbox); // its host starts now, while the match is set up
         }
 
         return prepared is null

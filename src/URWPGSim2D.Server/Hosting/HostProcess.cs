@@ -32,9 +32,10 @@ internal sealed class HostProcess : IStrategyLink
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
 
-    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed)
+    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting)
     {
         _process = process;
+        Waiting = waiting;
         _cgroup = cgroup;
         Scratch = scratch;
         Sandboxed = sandboxed;
@@ -63,6 +64,51 @@ internal sealed class HostProcess : IStrategyLink
 
     /// <summary>Whether it runs in the bubblewrap sandbox.</summary>
     public bool Sandboxed { get; }
+
+    /// <summary>Whether it was started waiting for its strategy (<see cref="StartWaiting"/>).</summary>
+    public bool Waiting { get; }
+
+    /// <summary>
+    /// Starts a host that waits for its strategy (<c>host -</c>): the runtime starts and warms up now,
+    /// and <see cref="HandOver"/> names the strategy later. Its sandbox is the one of a host started for
+    /// the strategy (it may read <paramref name="readOnly"/>); its CPU time is limited at the hand-over.
+    /// </summary>
+    /// <param name="readOnly">Files and folders of the strategy the host may read.</param>
+    /// <param name="sandbox">Whether to use bubblewrap (the caller has checked it works).</param>
+    /// <param name="settings">As for <see cref="Start"/>.</param>
+    public static HostProcess StartWaiting(IEnumerable<string> readOnly, bool sandbox, HostSettings settings) =>
+        Start(WaitingSpec, readOnly, sandbox, settings, WaitingCpuSeconds);
+
+    /// <summary>What a waiting host is started with instead of a SPEC: it reads <c>CPU-SECONDS SPEC</c> from its first line of standard input.</summary>
+    public const string WaitingSpec = "-";
+
+    /// <summary>CPU time limit of a waiting host until its hand-over sets the match's, s.</summary>
+    public const int WaitingCpuSeconds = 3600;
+
+    /// <summary>
+    /// Gives a waiting host (<see cref="StartWaiting"/>) its strategy: the line <c>CPU-SECONDS SPEC</c>.
+    /// False when the host has gone meanwhile (the caller then starts a fresh one).
+    /// </summary>
+    /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
+    /// <param name="cpuSeconds">CPU time limit of the whole host for its match, s.</param>
+    public bool HandOver(string loadSpec, int cpuSeconds)
+    {
+        if (!Waiting || _process.HasExited)
+        {
+            return false;
+        }
+
+        try
+        {
+            ToClient.Write(Encoding.UTF8.GetBytes(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{cpuSeconds} {loadSpec}\n")));
+            ToClient.Flush();
+            return true;
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException)
+        {
+            return false;
+        }
+    }
 
     /// <summary>Starts a host for the strategy <paramref name="loadSpec"/>.</summary>
     /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
@@ -128,7 +174,7 @@ internal sealed class HostProcess : IStrategyLink
             throw;
         }
 
-        return new HostProcess(process, cgroup, scratch, sandbox);
+        return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec);
     }
 
     /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
@@ -143,6 +189,9 @@ internal sealed class HostProcess : IStrategyLink
 
     /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
     public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
+
+    /// <summary>Whether the host's process has ended.</summary>
+    public bool HasExited => _process.HasExited;
 
     /// <summary>Waits up to <paramref name="ms"/> for the host to exit.</summary>
     public void Finish(int ms) => _process.WaitForExit(ms);
