@@ -43,6 +43,11 @@ internal sealed class TournamentCommand : ICliCommand
             return ExitCodes.Success;
         }
 
+        if (o.Check)
+        {
+            return CheckEntrants(o, console);
+        }
+
         TournamentSchedule schedule;
         try
         {
@@ -233,6 +238,29 @@ internal sealed class TournamentCommand : ICliCommand
         return ExitCodes.Success;
     }
 
+    // --check: each entrant loads and plays one short match against idle; the table on stdout, nothing written.
+    private static int CheckEntrants(TournamentOptions o, CliConsole console)
+    {
+        HostSandbox.Warn = console.ErrorLine;
+        var entrants = o.Entrants.Append(new Entrant("idle", "idle")).ToList();
+        var loader = new EntrantLoader(entrants, o.HostSettings, console.ErrorLine);
+        if (loader.AnyHosted)
+        {
+            try
+            {
+                HostSandbox.Use(o.Sandbox);
+            }
+            catch (StrategyLoadException e)
+            {
+                return Refuse(console, e.Message);
+            }
+        }
+
+        var lines = EntrantCheck.Run(o.Item, entrants, loader, o.Cycles, o.FirstSeed, o.StrategyTimeoutMs);
+        console.Out.Write(EntrantCheck.Format(lines, o.Item, o.Cycles, o.FirstSeed));
+        return ExitCodes.Success;
+    }
+
     // The replay pages of the matches kept from a run with other entrants, moved to their new index;
     // the pages of matches not kept are deleted (their index may now be another match's).
     private static void MoveReplays(string folder, Dictionary<int, int> moved)
@@ -403,10 +431,11 @@ internal sealed class TournamentCommand : ICliCommand
         "report.html (--replays: and every match's replay page in replays/). Run again into the same DIR, it plays\n" +
         "only missing or broken matches, and those of entrants whose code changed (each file or folder entrant has a\n" +
         "version, a hash of its files) or that were added. --entrants-dir DIR: every sub-folder, .cs file and .dll\n" +
-        "in DIR is an entrant named after it. Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo\n" +
-        "scale, mean 1500, with 95 % bootstrap intervals, and a points table (3 a win, 1 a draw; goal difference,\n" +
-        "goals, head to head); one-team: mean score with 95 % bootstrap intervals. An entrant that cannot be loaded\n" +
-        "forfeits.\n" +
+        "in DIR is an entrant named after it.\n" +
+        "--check: each entrant only loads and plays one match of at most a minute against idle; a table, nothing written.\n" +
+        "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
+        "intervals, and a points table (3 a win, 1 a draw; goal difference, goals, head to head); one-team: mean score\n" +
+        "with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +
         "Entrants' code runs as with 'run': each in its own strategy host per match (--isolation process, the default;\n" +
         "--sandbox auto|required|off, --strategy-memory MB), or in the server's process with --isolation none; faults\n" +
         "are charged to the team that made them and the match is played.\n" +

@@ -19,7 +19,7 @@ internal sealed class TournamentOptions
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] --out DIR [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] (--out DIR | --check) [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -102,6 +102,9 @@ internal sealed class TournamentOptions
     /// <summary>Whether --help was given.</summary>
     public bool Help { get; private set; }
 
+    /// <summary>Whether only to check the entrants (<c>--check</c>): each loads and plays one short match against idle; nothing is written.</summary>
+    public bool Check { get; private set; }
+
     /// <summary>Parses the arguments after <c>tournament</c>.</summary>
     public static TournamentOptions Parse(ReadOnlySpan<string> args) => Parse(CliApp.Default.Words("tournament", args));
 
@@ -156,6 +159,17 @@ internal sealed class TournamentOptions
                 }
 
                 break;
+            }
+
+            if (name == "--check")
+            {
+                if (!seen.Add(name))
+                {
+                    throw UsageError("--check given twice");
+                }
+
+                o.Check = true;
+                continue;
             }
 
             if (name is "--replays" or "--submit")
@@ -227,18 +241,18 @@ internal sealed class TournamentOptions
         }
 
         o.PassedOn = passedOn;
-        o.Check(seen);
+        o.CheckAll(seen);
         return o;
     }
 
-    private void Check(HashSet<string> seen)
+    private void CheckAll(HashSet<string> seen)
     {
         if (Item is null)
         {
             throw UsageError("--item ITEM is required (the item the entrants play)");
         }
 
-        if (Out is null)
+        if (Out is null && !Check)
         {
             throw UsageError("--out DIR is required (the folder of the results, standings and report)");
         }

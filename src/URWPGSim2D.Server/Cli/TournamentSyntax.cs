@@ -32,6 +32,7 @@ internal static class TournamentSyntax
             .. HostOptions.Declare(),
             CliSyntax.Value("--threads", "P", "matches at once"),
             CliSyntax.Flag("--replays", "write a replay page of every match"),
+            CliSyntax.Flag("--check", "check each entrant: loads, one minute against idle, faults, slowest call"),
             CliSyntax.Value("--out", "DIR", "the folder of the results, standings and report", CliCompletions.Folders),
             .. SlurmSyntax.Declare("SDIR", "the tournament"),
             CliSyntax.Value("--shard", "I/K", "play shard I of K"),

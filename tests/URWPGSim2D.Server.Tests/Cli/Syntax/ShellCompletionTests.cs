@@ -21,7 +21,8 @@ public sealed class ShellCompletionTests
     public void AnOptionPrefixCompletesToTheOption()
     {
         Assert.Equal(["--item"], Complete("urwpgsim2d run --it"));
-        Assert.Equal(["--entrant"], Complete("urwpgsim2d tournament --ent"));
+        Assert.Equal(["--entrant", "--entrants-dir"], Complete("urwpgsim2d tournament --ent"));
+        Assert.Equal(["--check"], Complete("urwpgsim2d tournament --ch"));
         Assert.Equal(["--svg"], Complete("urwpgsim2d render a.json --s"));
     }
 
