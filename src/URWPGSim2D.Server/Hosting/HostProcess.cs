@@ -59,6 +59,9 @@ internal sealed class HostProcess : IStrategyLink
     /// <inheritdoc/>
     public TimeSpan? CpuTime() => _cgroup?.CpuTime();
 
+    /// <inheritdoc/>
+    public TimeSpan? WaitingTime() => _cgroup?.WaitingTime();
+
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }
 

@@ -34,6 +34,9 @@ internal interface IConnectedStrategy : IDisposable
     /// <summary>The CPU time the client's processes have used so far, or null where it is not measured (<see cref="IStrategyLink.CpuTime"/>).</summary>
     TimeSpan? CpuTime();
 
+    /// <summary>How long so far the client's processes waited for a CPU, or null where it is not measured (<see cref="IStrategyLink.WaitingTime"/>).</summary>
+    TimeSpan? WaitingTime();
+
     /// <summary>Sends the end of the match to a client still there, lets it go, and disposes the connection.</summary>
     void Stop(EndMessage end);
 }

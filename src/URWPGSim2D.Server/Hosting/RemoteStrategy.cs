@@ -83,6 +83,9 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     public TimeSpan? CpuTime() => null;
 
     /// <inheritdoc/>
+    public TimeSpan? WaitingTime() => null;
+
+    /// <inheritdoc/>
     public DebugRecorder? Drawings => _current?.Drawings;
 
     /// <inheritdoc/>

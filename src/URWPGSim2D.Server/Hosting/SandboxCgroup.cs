@@ -25,6 +25,7 @@ internal sealed partial class SandboxCgroup : IDisposable
     private readonly string[] _folders;
     private readonly Layout _layout;
     private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuUsage;
+    private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuPressure;
     private int _disposed;
 
     private SandboxCgroup(Layout layout, string[] folders, long memoryBytes)
@@ -41,6 +42,18 @@ internal sealed partial class SandboxCgroup : IDisposable
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
                 _cpuUsage = null; // no CPU time of the whole sandbox: the wall time still counts
+            }
+        }
+
+        if (layout.PressureFolder is { } pressure)
+        {
+            try
+            {
+                _cpuPressure = File.OpenHandle(Path.Combine(folders[pressure], "cpu.pressure"));
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                _cpuPressure = null; // no pressure stall information: a busy machine's waits count as the call's wall time
             }
         }
     }
@@ -168,6 +181,47 @@ internal sealed partial class SandboxCgroup : IDisposable
         return TimeSpan.FromTicks(micro ? value * 10 : value / 100);
     }
 
+    /// <summary>
+    /// How long, so far, some process of the group was ready to run but waited for a CPU (the
+    /// kernel's pressure stall information, <c>cpu.pressure</c>'s <c>some total</c>): time a busy
+    /// machine took from the sandbox, not time the sandbox spent; null where the kernel does not
+    /// give it. One read of an open file; no allocation.
+    /// </summary>
+    public TimeSpan? WaitingTime()
+    {
+        if (_cpuPressure is not { } handle)
+        {
+            return null;
+        }
+
+        Span<byte> text = stackalloc byte[128];
+        int n;
+        try
+        {
+            n = RandomAccess.Read(handle, text, 0);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ObjectDisposedException)
+        {
+            return null;
+        }
+
+        // "some avg10=0.00 avg60=0.00 avg300=0.00 total=<microseconds>\n…"
+        var line = text[..n];
+        int nl = line.IndexOf((byte)'\n');
+        if (nl >= 0)
+        {
+            line = line[..nl];
+        }
+
+        int at = line.IndexOf("total="u8);
+        if (at < 0 || !System.Buffers.Text.Utf8Parser.TryParse(line[(at + 6)..], out long micro, out _))
+        {
+            return null;
+        }
+
+        return TimeSpan.FromTicks(micro * 10);
+    }
+
     /// <summary>Whether the kernel killed a process of the group for want of memory.</summary>
     public bool OutOfMemory()
     {
@@ -275,6 +329,7 @@ internal sealed partial class SandboxCgroup : IDisposable
 
         KillAll();
         _cpuUsage?.Dispose();
+        _cpuPressure?.Dispose();
         foreach (string folder in _folders)
         {
             // A killed process leaves the group when the kernel has finished with it: a few tries.
@@ -335,7 +390,7 @@ internal sealed partial class SandboxCgroup : IDisposable
             try
             {
                 Directory.CreateDirectory(folder);
-                bool limits = File.Exists(Path.Combine(folder, "cgroup.procs")) && (File.Exists(Path.Combine(folder, "memory.max")) || File.Exists(Path.Combine(folder, "memory.limit_in_bytes")) || File.Exists(Path.Combine(folder, "pids.max")) || File.Exists(Path.Combine(folder, "cpuacct.usage")));
+                bool limits = File.Exists(Path.Combine(folder, "cgroup.procs")) && (File.Exists(Path.Combine(folder, "memory.max")) || File.Exists(Path.Combine(folder, "memory.limit_in_bytes")) || File.Exists(Path.Combine(folder, "pids.max")) || File.Exists(Path.Combine(folder, "cpuacct.usage")) || File.Exists(Path.Combine(folder, "cpu.pressure")));
                 TryRemove(folder);
                 if (!limits)
                 {
@@ -409,10 +464,24 @@ internal sealed partial class SandboxCgroup : IDisposable
 
             if (memoryMount is not null && pidsMount is not null && own.TryGetValue("memory", out string? memoryPath) && own.TryGetValue("pids", out string? pidsPath))
             {
-                // The cpuacct group, where there is one, measures the CPU time of the whole sandbox.
-                return cpuMount is not null && own.TryGetValue("cpuacct", out string? cpuPath)
-                    ? new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath), Under(cpuMount, cpuPath)])
-                    : new Layout(false, [Under(memoryMount, memoryPath), Under(pidsMount, pidsPath)]);
+                // The cpuacct group, where there is one, measures the CPU time of the whole sandbox; a
+                // group in the unified hierarchy beside the v1 ones (hybrid mode), where the kernel
+                // gives pressure stall information there, measures how long it waited for a CPU.
+                var parents = new List<string> { Under(memoryMount, memoryPath), Under(pidsMount, pidsPath) };
+                int? cpu = null, pressure = null;
+                if (cpuMount is not null && own.TryGetValue("cpuacct", out string? cpuPath))
+                {
+                    cpu = parents.Count;
+                    parents.Add(Under(cpuMount, cpuPath));
+                }
+
+                if (unified is not null && own.TryGetValue(string.Empty, out string? unifiedPath) && File.Exists(Path.Combine(Under(unified, unifiedPath), "cpu.pressure")))
+                {
+                    pressure = parents.Count;
+                    parents.Add(Under(unified, unifiedPath));
+                }
+
+                return new Layout(false, [.. parents]) { CpuFolder = cpu, PressureFolder = pressure };
             }
 
             if (unified is not null && own.TryGetValue(string.Empty, out string? path))
@@ -428,7 +497,9 @@ internal sealed partial class SandboxCgroup : IDisposable
                 string parent = Under(unified, path == "/" ? "/" : Path.GetDirectoryName(path) ?? "/");
                 TryWrite(Path.Combine(parent, "cgroup.subtree_control"), "+memory +pids");
                 string[] enabled = File.ReadAllText(Path.Combine(parent, "cgroup.subtree_control")).Split(' ', StringSplitOptions.TrimEntries);
-                return Array.IndexOf(enabled, "memory") >= 0 && Array.IndexOf(enabled, "pids") >= 0 ? new Layout(true, [parent]) : null;
+                return Array.IndexOf(enabled, "memory") >= 0 && Array.IndexOf(enabled, "pids") >= 0
+                    ? new Layout(true, [parent]) { CpuFolder = 0, PressureFolder = File.Exists(Path.Combine(parent, "cpu.pressure")) ? 0 : null }
+                    : null;
             }
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
@@ -444,10 +515,16 @@ internal sealed partial class SandboxCgroup : IDisposable
     [LibraryImport("libc", EntryPoint = "kill", SetLastError = true)]
     private static partial int Kill(int pid, int signal);
 
-    /// <summary>v1: the memory group's parent, the pids group's parent and, where there is one, the cpuacct group's parent; v2: the one parent.</summary>
+    /// <summary>v1: the memory group's parent, the pids group's parent and, where there are, the cpuacct group's and a unified group's parents; v2: the one parent.</summary>
     private sealed record Layout(bool V2, string[] Parents)
     {
+        /// <summary>The index into <see cref="Parents"/> of the group that counts the CPU time, or null.</summary>
+        public int? CpuFolder { get; init; }
+
+        /// <summary>The index into <see cref="Parents"/> of the group whose <c>cpu.pressure</c> says how long it waited for a CPU, or null.</summary>
+        public int? PressureFolder { get; init; }
+
         /// <summary>The group folder (by index into <see cref="Parents"/>) and file that count the group's CPU time, or null.</summary>
-        public (int Folder, string File)? CpuUsage => V2 ? (0, "cpu.stat") : Parents.Length > 2 ? (2, "cpuacct.usage") : null;
+        public (int Folder, string File)? CpuUsage => CpuFolder is { } f ? (f, V2 ? "cpu.stat" : "cpuacct.usage") : null;
     }
 }

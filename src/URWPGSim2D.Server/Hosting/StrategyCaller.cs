@@ -250,6 +250,7 @@ internal sealed class StrategyCaller
         try
         {
             slot.LastCpuTime ??= hosted.CpuTime();
+            slot.LastWaitingTime ??= hosted.WaitingTime();
             started = Stopwatch.GetTimestamp();
             outcome = hosted.Decide(snapshot, slot.Scratch, waited, out message);
         }
@@ -262,12 +263,22 @@ internal sealed class StrategyCaller
 
         // The time of the call: wall time from the question to the answer; CPU time of the host's whole
         // sandbox since its last answer (what its threads and processes did between calls counts too).
+        // The time it waited for a CPU while runnable (a busy machine, measured by the kernel) is not the call's.
         var wall = Stopwatch.GetElapsedTime(started);
-        TimeSpan? cpu = null;
-        if (outcome is not (ConnectionOutcome.Absent or ConnectionOutcome.Ended or ConnectionOutcome.Disconnected or ConnectionOutcome.GivenUp) && hosted.CpuTime() is { } now)
+        TimeSpan? cpu = null, waiting = null;
+        if (outcome is not (ConnectionOutcome.Absent or ConnectionOutcome.Ended or ConnectionOutcome.Disconnected or ConnectionOutcome.GivenUp))
         {
-            cpu = slot.LastCpuTime is { } before ? now - before : null;
-            slot.LastCpuTime = now;
+            if (hosted.CpuTime() is { } now)
+            {
+                cpu = slot.LastCpuTime is { } before ? now - before : null;
+                slot.LastCpuTime = now;
+            }
+
+            if (hosted.WaitingTime() is { } stalled)
+            {
+                waiting = slot.LastWaitingTime is { } before ? stalled - before : null;
+                slot.LastWaitingTime = stalled;
+            }
         }
 
         if (outcome == ConnectionOutcome.GivenUp)
@@ -276,7 +287,7 @@ internal sealed class StrategyCaller
             return;
         }
 
-        if (outcome is ConnectionOutcome.Decided or ConnectionOutcome.Exception or ConnectionOutcome.BadAnswer or ConnectionOutcome.TimedOut && !bank.Charge(cpu, wall))
+        if (outcome is ConnectionOutcome.Decided or ConnectionOutcome.Exception or ConnectionOutcome.BadAnswer or ConnectionOutcome.TimedOut && !bank.Charge(cpu, wall, waiting))
         {
             Spent(slot, cycle, cpu, wall);
             return;

@@ -186,6 +186,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
     public TimeSpan? CpuTime() => _link.CpuTime();
 
     /// <inheritdoc/>
+    public TimeSpan? WaitingTime() => _link.WaitingTime();
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message)
     {
         message = null;

@@ -156,6 +156,9 @@ internal sealed class StrategySlot
     /// <summary>The CPU time of the strategy's host at its last answer (where it is measured), or null.</summary>
     public TimeSpan? LastCpuTime { get; set; }
 
+    /// <summary>How long the strategy's host had waited for a CPU at its last answer (where it is measured), or null.</summary>
+    public TimeSpan? LastWaitingTime { get; set; }
+
     /// <summary>The cycle (1-based) from which the team plays idle because it ran out of time, or 0.</summary>
     public int IdleFromCycle { get; private set; }
 

@@ -50,6 +50,10 @@ internal sealed class TcpLink : IStrategyLink
     /// <returns>Null.</returns>
     public TimeSpan? CpuTime() => null;
 
+    /// <summary>Null: a remote client's waits are not measured.</summary>
+    /// <returns>Null.</returns>
+    public TimeSpan? WaitingTime() => null;
+
     /// <inheritdoc/>
     public void BeginWait(TimeSpan limit) => _stream.Deadline = Stopwatch.GetTimestamp() + (long)(limit.TotalSeconds * Stopwatch.Frequency);
 

@@ -4,8 +4,9 @@ namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// A team's time for one match: each call has its deadline of CPU time, and twice the larger of that
-/// and its CPU time in wall time (a call that computes is not charged for a busy machine, one that
-/// sleeps or waits is), and a banked reserve pays for whatever a call uses beyond them. The match waits for a late
+/// and its CPU time in wall time, not counting the time it waited for a CPU where the kernel measures
+/// that (a call that computes is not charged for a busy machine, one that sleeps or waits is), and a
+/// banked reserve pays for whatever a call uses beyond them. The match waits for a late
 /// call's answer and takes the overrun from the bank, so how fast the server plays never changes
 /// which answers count; only a spent bank, or a call longer than <see cref="CallLimit"/> in wall
 /// time, makes the team play idle for the rest of the match. The first call (the strategy's code is
@@ -94,10 +95,12 @@ internal sealed class TimeBank
     /// </summary>
     /// <param name="cpu">CPU time of the call (all the strategy's threads and processes where that is measured), or null where only wall time is known.</param>
     /// <param name="wall">Wall time from the question to the answer.</param>
-    public bool Charge(TimeSpan? cpu, TimeSpan wall)
+    /// <param name="waiting">Of that wall time, how long the strategy was ready to run but waited for a CPU (a busy machine's doing, not the strategy's), or null where it is not measured.</param>
+    public bool Charge(TimeSpan? cpu, TimeSpan wall, TimeSpan? waiting = null)
     {
         TimeSpan computing = cpu is { } c ? c : TimeSpan.Zero;
-        TimeSpan overrun = Max(computing - CpuAllowance, wall - (Max(CpuAllowance, computing) * 2));
+        TimeSpan own = waiting is { } w && w > TimeSpan.Zero ? Max(wall - w, TimeSpan.Zero) : wall;
+        TimeSpan overrun = Max(computing - CpuAllowance, own - (Max(CpuAllowance, computing) * 2));
         _first = false;
         Slowest = Max(Slowest, Max(cpu ?? TimeSpan.Zero, wall));
         if (overrun <= TimeSpan.Zero)

@@ -63,6 +63,25 @@ public sealed class TimeBankTests
     }
 
     [Fact]
+    public void Time_spent_waiting_for_a_cpu_is_not_the_calls()
+    {
+        var bank = new TimeBank(Ms(100), TimeSpan.FromSeconds(10));
+        Assert.True(bank.Charge(Ms(10), Ms(20))); // the first call
+
+        // 300 ms of computing that took 2 s on a busy machine, 1.7 s of it waiting for a core: 200 ms over the deadline only.
+        Assert.True(bank.Charge(Ms(300), Ms(2000), Ms(1700)));
+        Assert.Equal(Ms(200), bank.Used);
+
+        // Unmeasured waiting: the wall time counts, beyond twice the call's CPU time.
+        Assert.True(bank.Charge(Ms(300), Ms(2000)));
+        Assert.Equal(Ms(200 + 1400), bank.Used);
+
+        // A sleeper waits for nothing: its sleep is charged whatever the machine does.
+        Assert.True(bank.Charge(Ms(1), Ms(950), TimeSpan.Zero));
+        Assert.Equal(Ms(200 + 1400 + 750), bank.Used);
+    }
+
+    [Fact]
     public void A_call_that_needs_more_than_is_left_spends_the_bank()
     {
         var bank = new TimeBank(Ms(100), Ms(300));
@@ -85,6 +104,18 @@ public sealed class TimeBankTests
         bank.GiveUp(bank.WaitLimit);
         Assert.True(bank.Spent);
         Assert.Equal(TimeSpan.FromSeconds(10), bank.Slowest);
+    }
+
+    [Fact]
+    public void A_hosts_group_measures_its_cpu_time_and_its_waits_for_a_cpu()
+    {
+        var group = SandboxCgroup.Create(256L << 20, 64, out string? problem);
+        Assert.True(group is not null, "CI runs where control groups can be made: " + problem);
+        using (group)
+        {
+            Assert.NotNull(group.CpuTime());
+            Assert.True(group.WaitingTime() is not null, "this kernel gives pressure stall information (cpu.pressure) in a group of the unified hierarchy");
+        }
     }
 
     [Fact]

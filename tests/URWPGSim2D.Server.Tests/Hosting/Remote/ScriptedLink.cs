@@ -36,6 +36,8 @@ internal sealed class ScriptedLink : IStrategyLink
 
     public TimeSpan? CpuTime() => null;
 
+    public TimeSpan? WaitingTime() => null;
+
     public bool Waiting { get; private set; }
 
     public bool Aborted { get; private set; }
