@@ -142,43 +142,16 @@ internal sealed partial class SandboxCgroup : IDisposable
     /// </summary>
     public TimeSpan? CpuTime()
     {
-        if (_cpuUsage is not { } handle)
-        {
-            return null;
-        }
-
-        Span<byte> text = stackalloc byte[64];
-        int n;
-        try
-        {
-            n = RandomAccess.Read(handle, text, 0);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ObjectDisposedException)
-        {
-            return null;
-        }
-
         // v1: "<nanoseconds>\n"; v2: "usage_usec <microseconds>\n…".
-        var line = text[..n];
-        int nl = line.IndexOf((byte)'\n');
-        if (nl >= 0)
-        {
-            line = line[..nl];
-        }
-
-        bool micro = _layout.V2;
-        if (micro)
+        Span<byte> text = stackalloc byte[64];
+        var line = FirstLine(_cpuUsage, text);
+        if (_layout.V2)
         {
             int space = line.IndexOf((byte)' ');
             line = space >= 0 ? line[(space + 1)..] : [];
         }
 
-        if (!System.Buffers.Text.Utf8Parser.TryParse(line, out long value, out int used) || used != line.Length)
-        {
-            return null;
-        }
-
-        return TimeSpan.FromTicks(micro ? value * 10 : value / 100);
+        return Number(line, out long value) ? TimeSpan.FromTicks(_layout.V2 ? value * 10 : value / 100) : null;
     }
 
     /// <summary>
@@ -189,38 +162,39 @@ internal sealed partial class SandboxCgroup : IDisposable
     /// </summary>
     public TimeSpan? WaitingTime()
     {
-        if (_cpuPressure is not { } handle)
+        // "some avg10=0.00 avg60=0.00 avg300=0.00 total=<microseconds>\n…"
+        Span<byte> text = stackalloc byte[128];
+        var line = FirstLine(_cpuPressure, text);
+        int at = line.IndexOf("total="u8);
+        return at >= 0 && Number(line[(at + 6)..], out long micro) ? TimeSpan.FromTicks(micro * 10) : null;
+    }
+
+    // The first line of a group file read whole into the buffer from its start; empty when there is no such file or it cannot be read.
+    private static ReadOnlySpan<byte> FirstLine(Microsoft.Win32.SafeHandles.SafeFileHandle? file, Span<byte> buffer)
+    {
+        if (file is null)
         {
-            return null;
+            return [];
         }
 
-        Span<byte> text = stackalloc byte[128];
         int n;
         try
         {
-            n = RandomAccess.Read(handle, text, 0);
+            n = RandomAccess.Read(file, buffer, 0);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or ObjectDisposedException)
         {
-            return null;
+            return [];
         }
 
-        // "some avg10=0.00 avg60=0.00 avg300=0.00 total=<microseconds>\n…"
-        var line = text[..n];
+        var line = buffer[..n];
         int nl = line.IndexOf((byte)'\n');
-        if (nl >= 0)
-        {
-            line = line[..nl];
-        }
-
-        int at = line.IndexOf("total="u8);
-        if (at < 0 || !System.Buffers.Text.Utf8Parser.TryParse(line[(at + 6)..], out long micro, out _))
-        {
-            return null;
-        }
-
-        return TimeSpan.FromTicks(micro * 10);
+        return nl >= 0 ? line[..nl] : line;
     }
+
+    // A whole decimal number, and nothing else.
+    private static bool Number(ReadOnlySpan<byte> text, out long value) =>
+        System.Buffers.Text.Utf8Parser.TryParse(text, out value, out int used) && used == text.Length && used > 0;
 
     /// <summary>Whether the kernel killed a process of the group for want of memory.</summary>
     public bool OutOfMemory()
