@@ -171,9 +171,12 @@ internal sealed class CliApp
             : new CliUsageException(message, Synopsis);
     }
 
+    /// <summary>The arguments of the first match a user sees, the program run with none: ball-grab, demo against demo, seed 6 (a match with goals, 3:4).</summary>
+    private static readonly string[] FirstMatch = ["--seed", "6"];
+
     /// <summary>
-    /// What an empty command line does: the <c>run</c> command with no arguments (the embedded
-    /// default match). A command line without a <c>run</c> command prints the help to stderr and fails.
+    /// What an empty command line does: the <c>run</c> command with <see cref="FirstMatch"/>. A command
+    /// line without a <c>run</c> command prints the help to stderr and fails.
     /// </summary>
     private int RunWithoutArguments(CliConsole console)
     {
@@ -184,6 +187,6 @@ internal sealed class CliApp
             return ExitCodes.BadInput;
         }
 
-        return run.Run([], console);
+        return run.Run(Words("run", FirstMatch), console);
     }
 }

@@ -70,7 +70,7 @@ public sealed class CliAppTests
     }
 
     [Fact]
-    public void NoArgumentsRunsTheRunCommandWithNoArguments()
+    public void NoArgumentsRunsTheFirstMatchASeedWithGoals()
     {
         var run = new ProbeCommand { NameValue = "run", Received = ["not called"] };
         var app = new CliApp([new ProbeCommand(), run]);
@@ -78,7 +78,7 @@ public sealed class CliAppTests
         int code = app.Run([], Streams(out var stdout, out var stderr));
 
         Assert.Equal(7, code);
-        Assert.Empty(run.Received);
+        Assert.Equal(["--seed", "6"], run.Received);
         Assert.Equal("probe ran\n", stdout.ToString());
         Assert.Equal(string.Empty, stderr.ToString());
     }
