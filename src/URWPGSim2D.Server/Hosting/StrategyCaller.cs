@@ -213,7 +213,7 @@ internal sealed class StrategyCaller
     private static void GiveUp(StrategySlot slot, int cycle, TimeSpan waited, string what)
     {
         var bank = slot.Bank!;
-        bool limit = bank.Remaining + bank.WallAllowance > bank.CallLimit;
+        bool limit = bank.WaitEndsAtCallLimit; // before GiveUp empties the bank
         bank.GiveUp(waited);
         slot.OutOfTime(cycle, limit
             ? $"{what} (the limit of one call); the team plays idle for the rest of the match"

@@ -83,7 +83,15 @@ internal sealed class TimeBank
     /// spending the bank (using its CPU allowance and the whole bank in CPU time, twice that in wall
     /// time, and the bank again), at most <see cref="CallLimit"/>.
     /// </summary>
-    public TimeSpan WaitLimit => Min((CpuLimit * 2) + Remaining, Max(CallLimit, WallAllowance));
+    public TimeSpan WaitLimit => Min(WaitOnBank, WaitCap);
+
+    /// <summary>Whether the next wait (<see cref="WaitLimit"/>) ends at the call limit rather than where the bank would be spent.</summary>
+    public bool WaitEndsAtCallLimit => WaitOnBank > WaitCap;
+
+    // As long as the next call could take without spending the bank, and the most any call is waited for.
+    private TimeSpan WaitOnBank => (CpuLimit * 2) + Remaining;
+
+    private TimeSpan WaitCap => Max(CallLimit, WallAllowance);
 
     /// <summary>How much CPU time the next call may use before the bank is spent.</summary>
     public TimeSpan CpuLimit => CpuAllowance + Remaining;

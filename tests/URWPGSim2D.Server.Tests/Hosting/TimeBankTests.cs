@@ -101,6 +101,9 @@ public sealed class TimeBankTests
         var bank = new TimeBank(Ms(100), TimeSpan.FromSeconds(100));
         bank.Charge(Ms(1), Ms(1));
         Assert.Equal(TimeSpan.FromSeconds(10), bank.WaitLimit);
+        Assert.True(bank.WaitEndsAtCallLimit);
+        Assert.False(new TimeBank(Ms(100), TimeSpan.FromSeconds(2)).WaitEndsAtCallLimit); // 2 × (1 s + 2 s) + 2 s = 8 s, under 10 s
+        Assert.True(new TimeBank(Ms(100), TimeSpan.FromSeconds(3)).WaitEndsAtCallLimit);  // 2 × (1 s + 3 s) + 3 s = 11 s
         bank.GiveUp(bank.WaitLimit);
         Assert.True(bank.Spent);
         Assert.Equal(TimeSpan.FromSeconds(10), bank.Slowest);
