@@ -5,6 +5,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Hosting;
@@ -43,7 +44,7 @@ internal sealed class TournamentOptions
     public int Cycles { get; private set; } = 6000;
 
     /// <summary>Strategies' time limit per call, ms.</summary>
-    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Where user entrants run (<see cref="HostOptions"/>): strategy hosts by default, as <c>run</c>.</summary>
     public HostSettings HostSettings { get; private set; } = HostSettings.Default;

@@ -1,4 +1,7 @@
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;

@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Trace;

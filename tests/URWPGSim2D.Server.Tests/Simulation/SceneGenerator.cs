@@ -2,6 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
