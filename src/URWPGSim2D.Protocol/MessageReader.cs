@@ -223,7 +223,7 @@ internal static class MessageReader
                 }
                 else if (drawings is not null && r.ValueTextEquals("draw"u8))
                 {
-                    DebugShapeJson.ReadArray(ref r, drawings);
+                    DrawingReader.ReadArray(ref r, drawings);
                 }
                 else if (log is not null && r.ValueTextEquals("log"u8))
                 {

@@ -1,7 +1,7 @@
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Collision.Benchmarks.Batch;
 

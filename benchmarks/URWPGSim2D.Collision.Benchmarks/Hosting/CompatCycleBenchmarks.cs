@@ -1,9 +1,9 @@
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Compat.Hosting;
-using URWPGSim2D.Server.BuiltInStrategies;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.BuiltInStrategies;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;

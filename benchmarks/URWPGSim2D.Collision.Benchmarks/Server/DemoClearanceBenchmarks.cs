@@ -2,10 +2,10 @@ using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.Demo;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Demo;
+using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Collision.Benchmarks.Server;

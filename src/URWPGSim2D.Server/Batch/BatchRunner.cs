@@ -1,8 +1,8 @@
 using System;
 using System.Threading;
 using System.Runtime.ExceptionServices;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Batch;
 

@@ -1,8 +1,8 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Batch;
 
@@ -37,7 +37,7 @@ internal sealed record MatchResult(
     /// <summary>The line of a match that failed inside the server: nothing played, the reason kept.</summary>
     public static MatchResult FailedMatch(int index, ulong seed, Exception e) =>
         new(index, seed, 0, 0, 0, new long[ContactNames.Length], 0, 0, 0, 0f, 0, 0,
-            Failed: Json.MessageText.Escape($"{e.GetType().Name}: {e.Message}"));
+            Failed: Engine.Messages.MessageText.Escape($"{e.GetType().Name}: {e.Message}"));
 
     /// <summary>Contact kinds as the result file and the summaries name them.</summary>
     public static readonly string[] ContactNames = ["fish-fish", "fish-ball", "fish-obstacle", "fish-border", "ball-ball", "ball-obstacle", "ball-border"];

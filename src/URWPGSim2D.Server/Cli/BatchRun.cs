@@ -6,7 +6,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -2,8 +2,8 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using System.Text;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

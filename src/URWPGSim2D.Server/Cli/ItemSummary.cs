@@ -1,8 +1,8 @@
 using System.Globalization;
 using System.Text;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -7,10 +7,10 @@ using System.Linq;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Viewer;
 
 namespace URWPGSim2D.Server.Cli;

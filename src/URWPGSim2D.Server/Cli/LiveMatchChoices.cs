@@ -2,9 +2,9 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Cli;
 

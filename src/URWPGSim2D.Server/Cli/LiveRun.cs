@@ -2,9 +2,9 @@ using System;
 using System.Runtime.InteropServices;
 using System.Threading;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
@@ -72,7 +72,7 @@ internal static class LiveRun
             board?.Control(action, query, player.Start, player.Restart)
             ?? (player.Control(action) ? LiveReply.Done
                 : board is null ? new LiveReply(400, "unknown action (pause, resume, step or restart)")
-                : LiveReply.Refused($"unknown action {Json.MessageText.Quote(action)} (pause, resume, step, restart, start or recompile)"));
+                : LiveReply.Refused($"unknown action {Engine.Messages.MessageText.Quote(action)} (pause, resume, step, restart, start or recompile)"));
 
         Match? summarised = null; // the last match whose summary is printed (on the playing thread, which is this one)
         player.Ended = ended =>

@@ -3,8 +3,8 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Cli;
 

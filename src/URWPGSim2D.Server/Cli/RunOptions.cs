@@ -4,8 +4,8 @@ using System.Globalization;
 using System.Linq;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
@@ -178,7 +178,7 @@ internal sealed class RunOptions
     public bool Help { get; private set; }
 
     /// <summary>Cycles to play: <c>--cycles</c>, else <c>--minutes</c> × 600, else the scenario's.</summary>
-    public int CyclesFor(global::URWPGSim2D.Server.Scenario.ScenarioDefinition scenario) => Cycles ?? (Minutes * 600) ?? scenario.Cycles;
+    public int CyclesFor(global::URWPGSim2D.Engine.Scenario.ScenarioDefinition scenario) => Cycles ?? (Minutes * 600) ?? scenario.Cycles;
 
     /// <summary>Parses the arguments after "run".</summary>
     public static RunOptions Parse(ReadOnlySpan<string> args) => Parse(CliApp.Default.Words("run", args));
@@ -262,7 +262,7 @@ internal sealed class RunOptions
                 case "--minutes":
                     o.Minutes = value switch { "10" => 10, "5" => 5, "3" => 3, "1" => 1, _ => throw UsageError($"--minutes must be 10, 5, 3 or 1, got {MessageText.Quote(value)}") };
                     break;
-                case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Server.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
+                case "--crowd": o.Crowd = (int)Number(name, value, global::URWPGSim2D.Engine.Scenario.CrowdScenario.MinimumMovers, 1_000_000); break;
                 case "--batch": o.Batch = (int)Number(name, value, 1, MaximumBatch); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--results": o.Results = value; break;

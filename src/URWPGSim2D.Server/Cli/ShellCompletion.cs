@@ -39,7 +39,7 @@ internal static class ShellCompletion
                 || !int.TryParse(directive.AsSpan(9, directive.Length - 10), NumberStyles.None, CultureInfo.InvariantCulture, out position)
                 || position > line.Length))
         {
-            throw new CliUsageException($"completion: the request must be [suggest:N] with N a cursor position 0..{line.Length} in the line, got {Json.MessageText.Quote(directive)}", null);
+            throw new CliUsageException($"completion: the request must be [suggest:N] with N a cursor position 0..{line.Length} in the line, got {Engine.Messages.MessageText.Quote(directive)}", null);
         }
 
         foreach (string completion in Complete(root, line, position))

@@ -171,7 +171,7 @@ internal static class CompilerProcess
         int notes = 0;
         while (notes < answer.Count && answer[notes].StartsWith(NotePrefix, StringComparison.Ordinal))
         {
-            note?.Invoke(Json.MessageText.Escape(answer[notes][NotePrefix.Length..]));
+            note?.Invoke(Engine.Messages.MessageText.Escape(answer[notes][NotePrefix.Length..]));
             notes++;
         }
 
@@ -332,7 +332,7 @@ internal static class CompilerProcess
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
             answer.WriteLine("error");
-            answer.WriteLine(Json.MessageText.Escape("cannot write the compiled image: " + e.Message));
+            answer.WriteLine(Engine.Messages.MessageText.Escape("cannot write the compiled image: " + e.Message));
             return Failed;
         }
     }

@@ -3,7 +3,7 @@ using System.Diagnostics;
 using System.IO;
 using System.Text;
 using System.Threading;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -5,7 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using System.Threading;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

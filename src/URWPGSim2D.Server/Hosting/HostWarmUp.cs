@@ -5,7 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.BuiltInStrategies;
+using URWPGSim2D.Engine.BuiltInStrategies;
 
 namespace URWPGSim2D.Server.Hosting;
 

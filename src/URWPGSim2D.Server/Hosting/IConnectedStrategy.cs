@@ -1,6 +1,6 @@
 using System;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -1,6 +1,6 @@
 using System;
 using System.Threading;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -1,7 +1,7 @@
 using System.Collections.Concurrent;
 using System.Collections.Generic;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -1,5 +1,5 @@
 using System;
-using URWPGSim2D.Server.Matches;
+using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -1,5 +1,5 @@
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Hosting;

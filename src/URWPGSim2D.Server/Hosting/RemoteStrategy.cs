@@ -1,7 +1,7 @@
 using System;
 using System.Diagnostics;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -164,5 +164,5 @@ internal sealed class RemoteStrategy : IConnectedStrategy
         return true;
     }
 
-    private static string MessageTextOf(string name) => Json.MessageText.Quote(name);
+    private static string MessageTextOf(string name) => Engine.Messages.MessageText.Quote(name);
 }

@@ -64,7 +64,7 @@ internal static class RunFolder
             problem = e.Message;
         }
 
-        HostSandbox.Warn?.Invoke($"warning: cannot delete the temporary folder {folder}: {Json.MessageText.Escape(problem ?? "unknown reason").ReplaceLineEndings(" ")}");
+        HostSandbox.Warn?.Invoke($"warning: cannot delete the temporary folder {folder}: {Engine.Messages.MessageText.Escape(problem ?? "unknown reason").ReplaceLineEndings(" ")}");
     }
 
     // Runs a tool for up to a minute; its first line of complaint, or null.

@@ -2,8 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
-using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

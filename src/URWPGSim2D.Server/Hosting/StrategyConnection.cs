@@ -3,7 +3,7 @@ using System.IO;
 using System.Security.Cryptography;
 using System.Text;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -327,13 +327,13 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private ConnectionOutcome Bad(int cycle, string why, out string? message)
     {
         message = why;
-        _log?.Invoke($"cycle {cycle + 1}: bad answer: {Json.MessageText.Escape(why)}");
+        _log?.Invoke($"cycle {cycle + 1}: bad answer: {Engine.Messages.MessageText.Escape(why)}");
         return ConnectionOutcome.BadAnswer;
     }
 
     private bool Refuse(string why, out string? message)
     {
-        _log?.Invoke("refused a client: " + Json.MessageText.Escape(why));
+        _log?.Invoke("refused a client: " + Engine.Messages.MessageText.Escape(why));
         try
         {
             _channel.WriteLine(_writer.Error(why));

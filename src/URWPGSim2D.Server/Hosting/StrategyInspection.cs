@@ -8,8 +8,8 @@ using System.Reflection.Metadata;
 using System.Reflection.Metadata.Ecma335;
 using System.Reflection.PortableExecutable;
 using URWPGSim2D.Compat.Retargeting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 
 namespace URWPGSim2D.Server.Hosting;
 

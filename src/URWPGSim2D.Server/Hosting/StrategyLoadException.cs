@@ -16,9 +16,9 @@ internal class StrategyLoadException : Exception
     /// <param name="message">What went wrong, one line.</param>
     /// <param name="details">Further lines (compile errors), or none.</param>
     public StrategyLoadException(string message, IReadOnlyList<string>? details = null)
-        : base(Json.MessageText.Escape(message))
+        : base(Engine.Messages.MessageText.Escape(message))
     {
-        Details = details is null ? [] : details.Select(Json.MessageText.Escape).ToArray();
+        Details = details is null ? [] : details.Select(Engine.Messages.MessageText.Escape).ToArray();
     }
 
     /// <summary>Lines printed after the message, one per compile error.</summary>

@@ -1,5 +1,5 @@
 using System;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -108,7 +108,7 @@ internal sealed class StrategySlot : ITeamSeat
     /// <summary>Counts a fault of <paramref name="kind"/> in <paramref name="cycle"/> (1-based) and remembers it for the summary and the trace.</summary>
     public void Charge(int cycle, FaultKind kind, string message)
     {
-        message = Json.MessageText.Escape(message); // the strategy's own text: no control or escape character reaches a terminal
+        message = Engine.Messages.MessageText.Escape(message); // the strategy's own text: no control or escape character reaches a terminal
         switch (kind)
         {
             case FaultKind.Exception: Exceptions++; break;

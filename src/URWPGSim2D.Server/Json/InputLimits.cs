@@ -24,9 +24,6 @@ internal static class InputLimits
     /// <summary>Most SHAPEs or pairs <c>render</c> draws (a bigger picture is no use to look at).</summary>
     public const int RenderElements = 10_000;
 
-    /// <summary>Most bodies (fish + balls + obstacles) of a scenario file.</summary>
-    public const int ScenarioBodies = 20_000;
-
     /// <summary>The message for an input above <see cref="InputBytes"/>.</summary>
     public static string TooLarge(long bytes) =>
         string.Create(CultureInfo.InvariantCulture, $"the input is {bytes} bytes, more than the limit of {InputBytes >> 20} MiB (docs/cli.md, Limits)");

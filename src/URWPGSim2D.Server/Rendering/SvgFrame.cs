@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Rendering;
 

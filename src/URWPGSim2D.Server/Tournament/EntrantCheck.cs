@@ -4,10 +4,10 @@ using System.Globalization;
 using System.Linq;
 using System.Text;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tournament;
 
@@ -88,7 +88,7 @@ internal static class EntrantCheck
             string slowest = l.SlowestMs is { } ms ? string.Create(CultureInfo.InvariantCulture, $"{ms:0} ms") : "-";
             string note = l.Error is { } error ? "not loaded: " + error : l.FirstFault ?? "-";
             t.Append(string.Create(CultureInfo.InvariantCulture,
-                $"{l.Name.PadRight(width)}  {(l.Ready ? "yes" : "no"),-5}  {l.Exceptions,10}  {l.Timeouts,8}  {l.BadAnswers,11}  {l.HostEnds,9}  {slowest,12}  {l.Score,5}  {Json.MessageText.Escape(StandingsText.Line(note))}\n"));
+                $"{l.Name.PadRight(width)}  {(l.Ready ? "yes" : "no"),-5}  {l.Exceptions,10}  {l.Timeouts,8}  {l.BadAnswers,11}  {l.HostEnds,9}  {slowest,12}  {l.Score,5}  {Engine.Messages.MessageText.Escape(StandingsText.Line(note))}\n"));
         }
 
         int ready = lines.Count(l => l.Ready);

@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tournament;
 

@@ -115,7 +115,7 @@ internal static class ReportPage
 
             h.Append("<tr><td class=\"l\">").Append(E(r.Name)).Append(Inv($"</td><td>{f.Exceptions}</td><td>{f.Timeouts}</td><td>{f.BadAnswers}</td><td>{f.HostEnds}</td><td>{f.Matches}</td><td class=\"l err\">"));
             h.Append(hasReplay(f.FirstMatch) ? "<a href=\"" + E(f.ReplayLink()) + "\">" + E(f.Where()) + "</a>" : E(f.Where()));
-            h.Append(": ").Append(E(Json.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append("</td></tr>\n");
+            h.Append(": ").Append(E(Engine.Messages.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append("</td></tr>\n");
         }
 
         h.Append("</table>\n");

@@ -61,7 +61,7 @@ internal static class StandingsMarkdown
                 var e = s.Header.Entrants[r.Entrant];
                 string? own = teamNames is not null && r.Entrant < teamNames.Count ? teamNames[r.Entrant] : null;
                 t.Append("| ").Append(Cell(r.Name)).Append(" | ").Append(Cell(e.Spec)).Append(" | ").Append(e.Version ?? "-").Append(" | ")
-                    .Append(own is null ? "-" : Cell(Json.MessageText.Escape(own))).Append(" |\n");
+                    .Append(own is null ? "-" : Cell(Engine.Messages.MessageText.Escape(own))).Append(" |\n");
             }
         }
 
@@ -79,7 +79,7 @@ internal static class StandingsMarkdown
 
                 string where = hasReplay?.Invoke(f.FirstMatch) == true ? $"[{f.Where()}]({f.ReplayLink()})" : f.Where();
                 t.Append(string.Create(CultureInfo.InvariantCulture, $"| {Cell(r.Name)} | {f.Exceptions} | {f.Timeouts} | {f.BadAnswers} | {f.HostEnds} | {f.Matches} | "))
-                    .Append(where).Append(": ").Append(Cell(Json.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append(" |\n");
+                    .Append(where).Append(": ").Append(Cell(Engine.Messages.MessageText.Escape(StandingsText.Line(f.FirstText)))).Append(" |\n");
             }
         }
 

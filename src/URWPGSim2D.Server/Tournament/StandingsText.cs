@@ -58,7 +58,7 @@ internal static class StandingsText
     /// An entrant's runtime faults in one line: <c>2 exceptions in 1 match; first: match 0, cycle 20:
     /// InvalidOperationException: boom</c> (control characters escaped, long messages cut).
     /// </summary>
-    public static string Faults(EntrantFaults f) => $"{f.Counts()}; first: {f.Where()}: {Cut(Json.MessageText.Escape(Line(f.FirstText)), 200)}";
+    public static string Faults(EntrantFaults f) => $"{f.Counts()}; first: {f.Where()}: {Cut(Engine.Messages.MessageText.Escape(Line(f.FirstText)), 200)}";
 
     private static string Cut(string text, int max) => text.Length <= max ? text : string.Concat(text.AsSpan(0, max), "…");
 

@@ -1,10 +1,10 @@
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Matches;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Server.Rendering;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Viewer;
 
 namespace URWPGSim2D.Server.Tournament;

@@ -2,8 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using System.Threading;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Tournament;

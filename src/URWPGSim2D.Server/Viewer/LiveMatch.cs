@@ -4,9 +4,9 @@ using System.Globalization;
 using System.Text;
 using System.Threading;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Server.Viewer;
 

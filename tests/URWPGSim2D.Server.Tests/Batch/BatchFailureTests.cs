@@ -3,8 +3,8 @@ using System.Collections.Generic;
 using System.IO;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch;

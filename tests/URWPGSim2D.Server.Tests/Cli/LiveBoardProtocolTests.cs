@@ -8,9 +8,9 @@ using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

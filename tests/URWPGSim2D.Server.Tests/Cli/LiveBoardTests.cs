@@ -5,10 +5,10 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Viewer;
 using Xunit;
 
@@ -53,7 +53,7 @@ public sealed class LiveBoardTests : IDisposable
     private (LiveBoard Board, Counter Starts) Board(params string[] extra)
     {
         var options = RunOptions.Parse(["--live", "--strategies", _folder, .. extra]);
-        var scenario = options.Item == "default" ? URWPGSim2D.Server.Scenario.DefaultScenario.Load() : ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
+        var scenario = options.Item == "default" ? URWPGSim2D.Engine.Scenario.DefaultScenario.Load() : ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
         var console = new CliConsole(new StringReader(string.Empty), new StringWriter(), new StringWriter());
         return (new LiveBoard(options, scenario, RunCommand.LoadTeams(options), console), new Counter());
     }

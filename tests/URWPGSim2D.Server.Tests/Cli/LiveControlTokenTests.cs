@@ -8,8 +8,8 @@ using System.Threading;
 using System.Threading.Tasks;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,8 +1,8 @@
 using System;
 using System.Linq;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,6 +1,6 @@
 using System;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Hosting;
 using Xunit;
 

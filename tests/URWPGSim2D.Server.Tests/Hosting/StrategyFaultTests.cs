@@ -1,5 +1,5 @@
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;

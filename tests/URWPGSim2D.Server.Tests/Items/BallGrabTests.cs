@@ -1,9 +1,9 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 using URWPGSim2D.Collision.Motion;
 
@@ -80,7 +80,7 @@ public sealed class BallGrabTests
     [InlineData(-1065f, 0f, 38f, 1, false)]   // the left box is not the right one
     [InlineData(1065f, 0f, 58f, 1, true)]
     public void ABallIsInABoxOnlyWhollyInside(float x, float z, float radius, int side, bool inside) =>
-        Assert.Equal(inside, URWPGSim2D.Server.Items.BallGrab.BallGrabLayout.InBox(new Vector2(x, z), radius, side));
+        Assert.Equal(inside, URWPGSim2D.Engine.Items.BallGrab.BallGrabLayout.InBox(new Vector2(x, z), radius, side));
 
     [Theory]
     [InlineData(-1065f, 0f, 0)]  // left box: team 0 in the first half

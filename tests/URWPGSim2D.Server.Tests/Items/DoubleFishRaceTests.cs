@@ -1,9 +1,9 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.DoubleFishRace;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.DoubleFishRace;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -3,7 +3,7 @@ using System.IO;
 using System.Linq;
 using System.Numerics;
 using System.Text.Json;
-using URWPGSim2D.Server.Items.FourTeams;
+using URWPGSim2D.Engine.Items.FourTeams;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 
@@ -53,7 +53,7 @@ public sealed class FourTeamsTests : IDisposable
         var match = ItemTestMatches.Build(Item, 50, "demo", 1, noise: true);
         Assert.Equal(50, match.PlayAll());
         Assert.Equal(new[] { 0, 0, 0, 0 }, match.Referee!.Scores);
-        Assert.Equal(new URWPGSim2D.Server.Items.MatchOutcome(-1, "no rules: a test of four teams"), match.Referee.Outcome);
+        Assert.Equal(new URWPGSim2D.Engine.Items.MatchOutcome(-1, "no rules: a test of four teams"), match.Referee.Outcome);
         Assert.Equal(new[] { "end" }, match.Referee.Events.Select(e => e.Kind).ToArray());
         Assert.Equal(4, match.TeamCount);
     }

@@ -1,6 +1,6 @@
 using System;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

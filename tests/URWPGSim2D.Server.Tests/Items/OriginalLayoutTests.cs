@@ -2,11 +2,11 @@ using System;
 using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Items.CrossCountry;
-using URWPGSim2D.Server.Items.Polo;
-using URWPGSim2D.Server.Items.Rescue;
-using URWPGSim2D.Server.Items.Snooker;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items.CrossCountry;
+using URWPGSim2D.Engine.Items.Polo;
+using URWPGSim2D.Engine.Items.Rescue;
+using URWPGSim2D.Engine.Items.Snooker;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

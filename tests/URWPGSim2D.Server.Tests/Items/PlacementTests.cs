@@ -1,5 +1,5 @@
 using System.Numerics;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

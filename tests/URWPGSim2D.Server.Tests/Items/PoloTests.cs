@@ -1,8 +1,8 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.Polo;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Polo;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 

@@ -1,10 +1,10 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.PushBallAvoidObstacles;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.PushBallAvoidObstacles;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

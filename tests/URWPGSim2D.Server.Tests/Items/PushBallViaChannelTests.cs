@@ -1,9 +1,9 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.PushBallViaChannel;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.PushBallViaChannel;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

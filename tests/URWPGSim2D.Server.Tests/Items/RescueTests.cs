@@ -1,8 +1,8 @@
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.Rescue;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Rescue;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
@@ -231,7 +231,7 @@ public sealed class RescueTests
         Assert.NotEqual(first, Play(8));
     }
 
-    private static System.Func<URWPGSim2D.Server.Scenario.ScenarioDefinition, URWPGSim2D.Server.Scenario.ScenarioDefinition> Idle(int team) =>
+    private static System.Func<URWPGSim2D.Engine.Scenario.ScenarioDefinition, URWPGSim2D.Engine.Scenario.ScenarioDefinition> Idle(int team) =>
         s => s with { Fish = s.Fish.Select(f => f.Team == team ? f with { Strategy = "idle" } : f).ToList() };
 
     private static string Describe(System.Collections.Generic.IEnumerable<(ulong Seed, int Rescued)> results) =>

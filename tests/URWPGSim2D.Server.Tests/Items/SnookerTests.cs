@@ -1,9 +1,9 @@
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.Snooker;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Snooker;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 

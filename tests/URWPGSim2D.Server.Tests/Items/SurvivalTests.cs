@@ -1,9 +1,9 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.Survival;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Survival;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 
@@ -199,7 +199,7 @@ public sealed class SurvivalTests
         Assert.Equal(new Vector2(1200f, -800f), w.Fish[Hunter0].Position);
         Assert.Equal((new Vector2(-2115f, 1591f), true), (w.Fish[1].Position, w.Fish[1].OutOfPlay));
         Assert.Equal((new Vector2(-1715f, 1591f), true), (w.Fish[2].Position, w.Fish[2].OutOfPlay));
-        var e = Assert.Throws<URWPGSim2D.Server.Scenario.ScenarioException>(() => ItemMatches.FromJson("""{ "item": "survival", "fish": [ {}, {"position": [-2115, 1591]} ] }"""));
+        var e = Assert.Throws<URWPGSim2D.Engine.Scenario.ScenarioException>(() => ItemMatches.FromJson("""{ "item": "survival", "fish": [ {}, {"position": [-2115, 1591]} ] }"""));
         Assert.Contains("fish[1].position", e.Message);
     }
 

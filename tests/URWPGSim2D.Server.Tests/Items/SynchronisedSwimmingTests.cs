@@ -4,8 +4,8 @@ using System.Linq;
 using System.Numerics;
 using System.Text;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Items.SynchronisedSwimming;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.SynchronisedSwimming;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;

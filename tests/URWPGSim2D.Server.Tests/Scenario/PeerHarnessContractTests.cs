@@ -4,7 +4,7 @@ using System.Numerics;
 using System.Reflection;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Scenario;
@@ -23,14 +23,14 @@ public sealed class PeerHarnessContractTests
     [Fact]
     public void TheHarnessBuildsAndStepsACrowdMatchByReflection()
     {
-        object scenario = Server.GetType("URWPGSim2D.Server.Scenario.CrowdScenario", true)!
+        object scenario = Server.GetType("URWPGSim2D.Engine.Scenario.CrowdScenario", true)!
             .GetMethod("Create", Static)!
             .Invoke(null, [100, 1UL, 3000])!;
         var build = Server.GetType("URWPGSim2D.Server.Hosting.MatchBuilder", true)!.GetMethod("Build", Static)!;
         object match = build.Invoke(null, [scenario, null, null, null, 100, BroadPhaseKind.UniformGrid, null])!;
         var step = (Action)Delegate.CreateDelegate(typeof(Action), match, match.GetType().GetMethod("Step")!);
         step();
-        Assert.Equal(1, ((URWPGSim2D.Server.Matches.Match)match).World.Cycle);
+        Assert.Equal(1, ((URWPGSim2D.Engine.Matches.Match)match).World.Cycle);
     }
 
     [Fact]
@@ -45,8 +45,8 @@ public sealed class PeerHarnessContractTests
             _ = (Vector2)Get(f, "Position");
             _ = (float)Get(f, "Heading");
             object d = Get(f, "Decision");
-            Assert.True(Table("URWPGSim2D.Server.Simulation.Kinematics.SpeedTable", "TargetSpeed", (int)Get(d, "VCode")) >= 0f);
-            _ = Table("URWPGSim2D.Server.Simulation.Kinematics.TurnTable", "TargetTurnRate", (int)Get(d, "TCode"));
+            Assert.True(Table("URWPGSim2D.Engine.Simulation.Kinematics.SpeedTable", "TargetSpeed", (int)Get(d, "VCode")) >= 0f);
+            _ = Table("URWPGSim2D.Engine.Simulation.Kinematics.TurnTable", "TargetTurnRate", (int)Get(d, "TCode"));
         }
 
         foreach (object b in (IEnumerable)Get(scenario, "Balls"))

@@ -1,6 +1,6 @@
 using System;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,4 +1,4 @@
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,7 +1,7 @@
 using URWPGSim2D.Collision.Fish;
 using System;
 using System.Numerics;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;

@@ -1,6 +1,6 @@
 using System;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 using Xunit.Abstractions;
 

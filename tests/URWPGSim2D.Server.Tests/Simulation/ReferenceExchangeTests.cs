@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 using URWPGSim2D.Collision.Motion;
 

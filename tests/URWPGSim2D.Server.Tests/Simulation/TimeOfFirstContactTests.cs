@@ -1,5 +1,5 @@
 using System.Linq;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Simulation;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

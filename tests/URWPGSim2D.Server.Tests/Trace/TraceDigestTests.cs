@@ -4,12 +4,12 @@ using System.Globalization;
 using System.Linq;
 using System.Security.Cryptography;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
-using URWPGSim2D.Server.Trace;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Engine.Trace;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Trace;

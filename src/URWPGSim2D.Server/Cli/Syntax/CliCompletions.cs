@@ -4,8 +4,8 @@ using System.CommandLine.Completions;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Catalog;
-using URWPGSim2D.Server.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Tournament;
 
 namespace URWPGSim2D.Server.Cli.Syntax;

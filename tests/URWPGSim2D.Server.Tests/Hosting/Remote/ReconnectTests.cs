@@ -6,7 +6,7 @@ using System.Net.Sockets;
 using System.Text;
 using System.Threading;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Scenario;
+using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
@@ -50,7 +50,7 @@ public sealed class ReconnectTests
         match.Step();
         Assert.All(slot.Fish, f => Assert.Equal(new Decision(11, 12), match.World.Fish[f].Decision));
         match.Step();
-        URWPGSim2D.Server.Matches.MatchLoop.StopStrategies(match);
+        URWPGSim2D.Engine.Matches.MatchLoop.StopStrategies(match);
         second.Join();
         Assert.Equal(1, slot.Faults);
         Assert.Equal("{\"type\":\"end\",\"cycle\":7,\"goals\":[0,0],\"faults\":1}", ended.Last);

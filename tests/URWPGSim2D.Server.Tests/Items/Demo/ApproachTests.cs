@@ -1,5 +1,5 @@
 using System;
-using URWPGSim2D.Server.Items.Demo;
+using URWPGSim2D.Engine.Items.Demo;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

@@ -1,7 +1,7 @@
 using System;
 using System.Linq;
 using System.Numerics;
-using URWPGSim2D.Server.Items.Demo;
+using URWPGSim2D.Engine.Items.Demo;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

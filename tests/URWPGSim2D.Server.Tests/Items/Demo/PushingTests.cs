@@ -4,10 +4,10 @@ using System.Collections.Generic;
 using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Items.Demo;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Items.Demo;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 

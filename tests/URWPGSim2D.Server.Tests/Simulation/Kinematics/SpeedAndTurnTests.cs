@@ -1,4 +1,4 @@
-using URWPGSim2D.Server.Simulation.Kinematics;
+using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 

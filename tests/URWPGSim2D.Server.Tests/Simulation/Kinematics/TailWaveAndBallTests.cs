@@ -1,5 +1,5 @@
 using System.Numerics;
-using URWPGSim2D.Server.Simulation.Kinematics;
+using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;
 

@@ -1,0 +1,45 @@
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Strategies;
+
+namespace URWPGSim2D.Engine.Items;
+
+/// <summary>
+/// One competition item of the original (抢球博弈 ball-grab, 生存挑战 survival, …): its names, how
+/// many teams and fish play it, its layout at cycle 0, a referee for its rules and a demo strategy.
+/// To add an item, write a folder under <c>Items/</c> with a subclass of this and a subclass of
+/// <see cref="ItemReferee"/> (and its demo strategy), and list it in <see cref="Catalog.ItemRegistry"/>;
+/// see docs/items.md, "Adding an item".
+/// </summary>
+internal abstract class CompetitionItem : IScenarioItem
+{
+    /// <summary>Cycles of the default duration, ten minutes.</summary>
+    public const int DefaultCycles = 6000;
+
+    /// <summary>English slug for <c>run --item</c>, e.g. "ball-grab".</summary>
+    public abstract string Slug { get; }
+
+    /// <summary>The original's name, e.g. "抢球博弈" (also accepted by <c>--item</c>).</summary>
+    public abstract string ChineseName { get; }
+
+    /// <summary>The rules in one line for <c>run --list-items</c>.</summary>
+    public abstract string Summary { get; }
+
+    /// <summary>Number of teams (1 or 2).</summary>
+    public abstract int TeamCount { get; }
+
+    /// <summary>Fish per team.</summary>
+    public abstract int FishPerTeam { get; }
+
+    /// <summary>
+    /// The layout at cycle 0 as a scenario: field, obstacles, balls, fish start poses (every fish on
+    /// the "demo" strategy), ball values and zones, <see cref="DefaultCycles"/> cycles, noise on.
+    /// Items with random start poses draw them from <paramref name="seed"/>.
+    /// </summary>
+    public abstract ScenarioDefinition CreateScenario(ulong seed);
+
+    /// <summary>A referee for one match of <paramref name="cycles"/> cycles on <paramref name="scenario"/> (this item's layout, positions possibly overridden).</summary>
+    public abstract ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed);
+
+    /// <summary>The built-in demo strategy of a team; it may read the referee's state.</summary>
+    public abstract IStrategy CreateDemoStrategy(int team, ItemReferee referee);
+}

@@ -1,0 +1,46 @@
+using URWPGSim2D.Engine.BuiltInStrategies;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Strategies;
+
+namespace URWPGSim2D.Engine.Items.PlainScene;
+
+/// <summary>
+/// The plain scene — the default scene, crowds and scenario files without an item — as an item
+/// like the others, so that every match is scored by one system, an item's referee
+/// (<see cref="PlainSceneReferee"/>: a ball in a goal mouth scores). It is not a competition item:
+/// <c>items</c> does not list it and <c>--item</c> does not take it; a match of a plain scene has no
+/// <see cref="Matches.Match.Referee"/> of a competition item.
+/// </summary>
+internal sealed class PlainScene : CompetitionItem
+{
+    private PlainScene()
+    {
+    }
+
+    /// <summary>The one instance.</summary>
+    public static PlainScene Instance { get; } = new();
+
+    /// <inheritdoc/>
+    public override string Slug => "default";
+
+    /// <inheritdoc/>
+    public override string ChineseName => "match";
+
+    /// <inheritdoc/>
+    public override string Summary => "the plain scene: a ball wholly inside a goal mouth scores for the attacking team";
+
+    /// <inheritdoc/>
+    public override int TeamCount => 2;
+
+    /// <inheritdoc/>
+    public override int FishPerTeam => 2;
+
+    /// <inheritdoc/>
+    public override ScenarioDefinition CreateScenario(ulong seed) => DefaultScenario.Load() with { Seed = seed };
+
+    /// <inheritdoc/>
+    public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new PlainSceneReferee(cycles);
+
+    /// <inheritdoc/>
+    public override IStrategy CreateDemoStrategy(int team, ItemReferee referee) => new ChaseBallStrategy();
+}

@@ -1,0 +1,42 @@
+using URWPGSim2D.Engine.Scenario;
+
+namespace URWPGSim2D.Engine.Items.PushBallAvoidObstacles;
+
+/// <summary>
+/// 带球避障 push a ball past obstacles: one fish swims right through a passage in each of two
+/// walls, then pushes the ball back through both until it is wholly past the black line at x = −500.
+/// Touching an obstacle costs time (fish 5 s, ball 3 s) and puts the fish or ball back; the score is
+/// the legs done (see <see cref="PushBallAvoidObstaclesReferee"/>).
+/// </summary>
+internal sealed class PushBallAvoidObstaclesItem : CompetitionItem
+{
+    /// <inheritdoc/>
+    public override string Slug => "push-ball-avoid-obstacles";
+
+    /// <inheritdoc/>
+    public override string ChineseName => "带球避障";
+
+    /// <inheritdoc/>
+    public override string Summary => "1 fish: 4 legs through two walls' passages (+1 each), the last two pushing the ball; ends when the ball is past x = -500; touching an obstacle: fish -5 s and back, ball -3 s and back";
+
+    /// <inheritdoc/>
+    public override int TeamCount => 1;
+
+    /// <inheritdoc/>
+    public override int FishPerTeam => 1;
+
+    /// <inheritdoc/>
+    public override ScenarioDefinition CreateScenario(ulong seed) => PushBallAvoidObstaclesLayout.Scenario() with
+    {
+        Cycles = DefaultCycles,
+        Seed = seed,
+        Item = this,
+        BallValues = [1],
+    };
+
+    /// <inheritdoc/>
+    public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new PushBallAvoidObstaclesReferee(this, scenario, cycles);
+
+    /// <inheritdoc/>
+    public override IStrategy CreateDemoStrategy(int team, ItemReferee referee) => new PushBallAvoidObstaclesDemo((PushBallAvoidObstaclesReferee)referee);
+}

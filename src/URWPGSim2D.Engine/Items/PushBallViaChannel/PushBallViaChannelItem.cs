@@ -1,0 +1,41 @@
+using URWPGSim2D.Engine.Scenario;
+
+namespace URWPGSim2D.Engine.Items.PushBallViaChannel;
+
+/// <summary>
+/// 协作过孔 two fish push a ball through channels: one team of two fish pushes the ball from the right
+/// goal mouth through the channel of each of three walls and into the left goal; each of the four
+/// stages scores 1 when both fish touched the ball during it (see <see cref="PushBallViaChannelReferee"/>).
+/// </summary>
+internal sealed class PushBallViaChannelItem : CompetitionItem
+{
+    /// <inheritdoc/>
+    public override string Slug => "push-ball-via-channel";
+
+    /// <inheritdoc/>
+    public override string ChineseName => "协作过孔";
+
+    /// <inheritdoc/>
+    public override string Summary => "2 fish push the ball past 3 walls through their channels and into the left goal; each of the 4 stages +1 if both fish touched the ball in it; ends when the ball is in the goal";
+
+    /// <inheritdoc/>
+    public override int TeamCount => 1;
+
+    /// <inheritdoc/>
+    public override int FishPerTeam => 2;
+
+    /// <inheritdoc/>
+    public override ScenarioDefinition CreateScenario(ulong seed) => PushBallViaChannelLayout.Scenario(seed) with
+    {
+        Cycles = DefaultCycles,
+        Seed = seed,
+        Item = this,
+        BallValues = [1],
+    };
+
+    /// <inheritdoc/>
+    public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new PushBallViaChannelReferee(this, scenario, cycles);
+
+    /// <inheritdoc/>
+    public override IStrategy CreateDemoStrategy(int team, ItemReferee referee) => new PushBallViaChannelDemo((PushBallViaChannelReferee)referee);
+}

@@ -1,0 +1,39 @@
+using URWPGSim2D.Engine.Scenario;
+
+namespace URWPGSim2D.Engine.Items.SynchronisedSwimming;
+
+/// <summary>
+/// 花样游泳 synchronised swimming: one team of ten fish from random start poses swims a routine for
+/// people to judge; the server drives fish 0 with random codes. No balls, no score.
+/// </summary>
+internal sealed class SynchronisedSwimmingItem : CompetitionItem
+{
+    /// <inheritdoc/>
+    public override string Slug => "synchronised-swimming";
+
+    /// <inheritdoc/>
+    public override string ChineseName => "花样游泳";
+
+    /// <inheritdoc/>
+    public override string Summary => "10 fish from random poses (seeded); the server drives fish 0 with random codes (seeded); judged by people: no score";
+
+    /// <inheritdoc/>
+    public override int TeamCount => 1;
+
+    /// <inheritdoc/>
+    public override int FishPerTeam => SynchronisedSwimmingLayout.FishCount;
+
+    /// <inheritdoc/>
+    public override ScenarioDefinition CreateScenario(ulong seed) => SynchronisedSwimmingLayout.Scenario(seed) with
+    {
+        Cycles = DefaultCycles,
+        Seed = seed,
+        Item = this,
+    };
+
+    /// <inheritdoc/>
+    public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new SynchronisedSwimmingReferee(this, scenario, cycles, seed);
+
+    /// <inheritdoc/>
+    public override IStrategy CreateDemoStrategy(int team, ItemReferee referee) => new SynchronisedSwimmingDemo((SynchronisedSwimmingReferee)referee);
+}

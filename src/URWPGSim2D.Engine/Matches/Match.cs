@@ -1,0 +1,144 @@
+using System.Collections.Generic;
+using System.Numerics;
+using URWPGSim2D.Collision.Motion;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.PlainScene;
+using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Engine.Teams;
+
+namespace URWPGSim2D.Engine.Matches;
+
+/// <summary>
+/// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
+/// read-only snapshot of the last cycle → fish locomotion → ball locomotion → motion with collision
+/// detection and response (<see cref="CycleMotion"/>) → rules (<see cref="Rules"/>: the competition
+/// item's referee, or the plain scene's goal rule). Everything iterates by index;
+/// the noise generators are seeded, so the same scenario and seed replay the same match. After the
+/// first cycles a step allocates nothing (built-in strategies).
+/// </summary>
+internal sealed class Match
+{
+    private readonly SeededRandom? _motionNoise;
+    private readonly SeededRandom? _viewNoise;
+
+    /// <summary>Creates a match.</summary>
+    /// <param name="world">The pool and its bodies.</param>
+    /// <param name="teams">Who decides for the fish.</param>
+    /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
+    /// <param name="seed">Seed of the noise generators.</param>
+    /// <param name="referee">The rules of a competition item, or null for the plain scene's goal rule (<see cref="PlainSceneReferee"/>).</param>
+    public Match(World world, IMatchTeams teams, bool noise, ulong seed, ItemReferee? referee = null)
+    {
+        World = world;
+        Teams = teams;
+        Referee = referee;
+        Seed = seed;
+        Rules = referee ?? new PlainSceneReferee(0);
+        Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
+        Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
+        Stepper = new CycleMotion(world, Contacts);
+        Rules.Start(world);
+        if (noise)
+        {
+            _motionNoise = new SeededRandom(seed);
+            _viewNoise = new SeededRandom(seed ^ 0x5DEECE66DUL);
+        }
+    }
+
+    /// <summary>The pool and its bodies.</summary>
+    public World World { get; }
+
+    /// <summary>The match's seed (its noise and its item's random placements): the same seed plays the same match.</summary>
+    public ulong Seed { get; }
+
+    /// <summary>Who decides for the fish.</summary>
+    public IMatchTeams Teams { get; }
+
+    /// <summary>What strategies see.</summary>
+    public MatchSnapshot Snapshot { get; }
+
+    /// <summary>The contacts of the last cycle and the match's counts.</summary>
+    public ContactLog Contacts { get; }
+
+    /// <summary>Motion interpolation and contact handling.</summary>
+    public CycleMotion Stepper { get; }
+
+    /// <summary>The competition item's referee, or null for a plain scene.</summary>
+    public ItemReferee? Referee { get; }
+
+    /// <summary>The rules the match is judged by, the one owner of its score and events: <see cref="Referee"/>, or the plain scene's goal rule.</summary>
+    public ItemReferee Rules { get; }
+
+    /// <summary>Whether the match is over (never for a plain scene: it plays every cycle asked for).</summary>
+    public bool IsOver => Rules.IsOver;
+
+    /// <summary>Totals for the summary.</summary>
+    public MatchStatistics Statistics { get; } = new();
+
+    /// <summary>Plays one cycle.</summary>
+    public void Step()
+    {
+        FillSnapshot();
+        Teams.Decide(Snapshot, World.Fish);
+        Rules.AfterDecisions(World);
+        Contacts.BeginCycle();
+        Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
+        Stepper.Run();
+        World.Cycle++;
+        if (Rules.Judge(World, Contacts.Cycle))
+        {
+            Stepper.Settle();
+        }
+
+        Locomotion.Finish(World);
+        Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+    }
+
+    /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
+    public int TeamCount => World.TeamCount;
+
+    /// <summary>The labels of the strategies playing for <paramref name="team"/>, joined with "+" ("no fish" for a team without fish).</summary>
+    public string TeamLabel(int team) => Teams.TeamLabel(team);
+
+    private void FillSnapshot()
+    {
+        Snapshot.SetHeader(World.Cycle, Rules.Scores);
+        if (Referee is { } item)
+        {
+            Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
+            Snapshot.SetSidesSwapped(item.SidesSwapped);
+        }
+
+        var fish = Snapshot.FishBuffer;
+        for (int i = 0; i < fish.Length; i++)
+        {
+            var f = World.Fish[i];
+            Vector2 position = f.Position;
+            float heading = f.Heading;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+                heading = Angle.Wrap(heading + (_viewNoise.NextSigned() * (5f * System.MathF.PI / 180f)));
+            }
+
+            fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)
+            {
+                Width = f.Size.Width, Joint1 = f.Joint1, Joint2 = f.Joint2, Joint3 = f.Joint3,
+                TailLength1 = f.Size.Joint1, TailLength2 = f.Size.Joint2, TailLength3 = f.Size.Joint3,
+            };
+        }
+
+        var balls = Snapshot.BallBuffer;
+        for (int i = 0; i < balls.Length; i++)
+        {
+            var b = World.Balls[i];
+            Vector2 position = b.Position;
+            if (_viewNoise is not null)
+            {
+                position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
+            }
+
+            balls[i] = new BallView(i, position, b.Velocity, b.Radius);
+        }
+    }
+}

@@ -1,0 +1,64 @@
+using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Collision.Motion;
+
+namespace URWPGSim2D.Engine.Simulation;
+
+/// <summary>
+/// The server's response hook for the motion world: at the time of first contact
+/// <see cref="ContactResponse"/> applies the reference's position correction and impulses to the
+/// two bodies where they are (their poses and velocities are the motion world's, changed in
+/// place), and the contact is logged for the trace and the summary. A rejected move (the body went
+/// back to where it ended the last cycle) stops the body for the rest of the cycle.
+/// </summary>
+internal sealed class ContactHandler(World world, ContactLog log) : IContactHandler
+{
+    private readonly ContactResponse _response = new(world);
+
+    /// <inheritdoc/>
+    public void OnContact(Stepper stepper, in Contact contact)
+    {
+        CandidatePair pair = world.PairOf(contact);
+        TakeInOrder(stepper, pair, contact.BodyA, contact.BodyB);
+        ContactKind kind = _response.Apply(pair, contact);
+        log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
+    }
+
+    /// <inheritdoc/>
+    public void OnMoveRejected(Stepper stepper, int body)
+    {
+        // The motion world put the body back and stopped it (velocity and noise drift zero) and
+        // remembers it (FishState.MoveRejected): a fish holds still, immovable in contacts, for
+        // the rest of the cycle. Nothing to keep here.
+    }
+
+    // The stepper re-plans the bodies a response changes in the order it first changes or involves
+    // them, and simultaneous contacts come in that order: the body the separation moves first is
+    // involved first (A, unless A is a fish whose move was rejected, which its partner alone is
+    // pushed away from), then the other.
+    private void TakeInOrder(Stepper stepper, in CandidatePair pair, int a, int b)
+    {
+        bool aStays = pair.Kind switch
+        {
+            PairKind.FishBall => world.Fish[pair.A].MoveRejected,
+            PairKind.FishFish => world.Fish[pair.A].MoveRejected && !world.Fish[pair.B].MoveRejected,
+            _ => false,
+        };
+        bool bMoves = pair.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.BallBall;
+        if (aStays && bMoves)
+        {
+            stepper.Involve(b);
+            stepper.Involve(a);
+        }
+        else
+        {
+            stepper.Involve(a);
+            if (bMoves)
+            {
+                stepper.Involve(b);
+            }
+        }
+    }
+
+    // A leaf index for the contact record, −1 for "not a fish".
+    private static sbyte Part(FishPart? part) => part.HasValue ? (sbyte)part.Value : (sbyte)-1;
+}

@@ -1,0 +1,62 @@
+using URWPGSim2D.Collision.Motion;
+
+namespace URWPGSim2D.Engine.Simulation;
+
+/// <summary>
+/// The motion stage of a cycle: the world's bodies move through the 100 ms cycle in the motion
+/// world (the collision library's <see cref="Stepper"/>: pseudo-continuous detection, every contact
+/// at its time of first contact, in time order), with the server's contact response plugged in
+/// (<see cref="ContactHandler"/>). See docs/motion.md.
+/// </summary>
+internal sealed class CycleMotion
+{
+    private readonly World _world;
+    private readonly ContactHandler _handler;
+
+    public CycleMotion(World world, ContactLog log)
+    {
+        _world = world;
+        _handler = new ContactHandler(world, log);
+    }
+
+    /// <summary>Threads the stepper spreads a cycle's islands over (1 by default; the same match whatever the number).</summary>
+    public int Threads
+    {
+        get => _world.Motion.Threads;
+        set => _world.Motion.Threads = value;
+    }
+
+    /// <summary>Fewest moving bodies for which the islands are spread over threads (tests lower it).</summary>
+    public int MinimumMoversForThreads
+    {
+        get => _world.Motion.MinimumMoversForThreads;
+        set => _world.Motion.MinimumMoversForThreads = value;
+    }
+
+    /// <summary>Chunks of islands the last cycle ran at once (1: the calling thread alone).</summary>
+    public int Chunks => _world.Motion.Chunks;
+
+    /// <summary>Distinct sample times of the last cycle.</summary>
+    public int SubSteps => _world.Motion.SubSteps;
+
+    /// <summary>Contact events (times of first contact) of the last cycle.</summary>
+    public int Events => _world.Motion.Events;
+
+    /// <summary>Deepest overlap of any pair (walls included) at the end of the last cycle (or settling), mm.</summary>
+    public float LeftoverOverlap => _world.Motion.LeftoverOverlap;
+
+    /// <summary>Moves every body through one cycle, resolving contacts on the way.</summary>
+    public void Run()
+    {
+        _world.Motion.Step(PhysicsConstants.CycleSeconds, _handler);
+    }
+
+    /// <summary>Resolves overlaps left by a jump (balls put back at their start after a goal), without motion.</summary>
+    public void Settle()
+    {
+        _world.Motion.Settle(_handler);
+    }
+
+    /// <summary>Deepest overlap among all pairs now (no motion), mm.</summary>
+    public float MeasureOverlap() => _world.Motion.MeasureOverlap();
+}
