@@ -44,7 +44,7 @@ internal sealed class GroupsKnockout
     {
         if (groups < 1 || entrants < 2 * groups)
         {
-            throw new ArgumentException($"--groups {groups}: {entrants} entrants make at most {entrants / 2} groups of two or more");
+            throw new ArgumentException($"--groups {groups}: {groups} groups need at least {2 * Math.Max(groups, 1)} entrants (two a group), got {entrants}");
         }
 
         int smallest = entrants / groups;
