@@ -591,6 +591,11 @@ internal sealed class TournamentCommand : ICliCommand
         "version, a hash of its files) or that were added. --entrants-dir DIR: every sub-folder, .cs file and .dll\n" +
         "in DIR is an entrant named after it.\n" +
         "--check: each entrant only loads and plays one match of at most a minute against idle; a table, nothing written.\n" +
+        "--format groups-knockout: snake-seeded groups (--groups G, default 2; --seeding NAME,... to seed by another\n" +
+        "order) play round robins ranked by the points table; the top --advance K (default 2) of each go into a\n" +
+        "single-elimination bracket (cross-over pairing, byes for the best seeds), each pairing both sides on --seeds\n" +
+        "seeds, the final on --final-seeds F; a pairing goes by wins, then goal difference, then a further seed, then\n" +
+        "the better seed. Played on one machine.\n" +
         "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
         "intervals, and a points table (3 a win, 1 a draw; goal difference, goals, head to head); one-team: mean score\n" +
         "with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +

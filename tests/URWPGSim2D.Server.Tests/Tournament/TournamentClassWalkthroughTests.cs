@@ -52,7 +52,7 @@ public sealed class TournamentClassWalkthroughTests : IDisposable
         """;
 
     private static CliRun Tournament(string dir, params string[] more) =>
-        CliRun.Of(string.Empty, ["tournament", "--item", "ball-grab", "--entrants-dir", dir, "--seeds", "1", "--cycles", "300", "--isolation", "none", "--strategy-timeout", "5000", "--threads", "2", .. more]);
+        CliRun.Of(string.Empty, ["tournament", "--item", "ball-grab", "--entrants-dir", dir, "--seeds", "1", "--cycles", "100", "--isolation", "none", "--strategy-timeout", "5000", "--threads", "2", .. more]);
 
     [Fact]
     public void A_class_of_eight_is_checked_played_changed_joined_late_and_played_as_groups_and_a_knockout()
@@ -80,7 +80,7 @@ public sealed class TournamentClassWalkthroughTests : IDisposable
         var check = Tournament(dir, "--check");
         Assert.True(check.ExitCode == 0, check.Stderr);
         string[] lines = check.Stdout.TrimEnd('\n').Split('\n');
-        Assert.Equal("check: ball-grab, 8 entrants, each in one 300-cycle match against idle (seed 1)", lines[0]);
+        Assert.Equal("check: ball-grab, 8 entrants, each in one 100-cycle match against idle (seed 1)", lines[0]);
         Assert.Equal(students.Select(s => s.Name), lines[2..10].Select(l => l.Split(' ')[0]));
         Assert.All(lines[2..10], l => Assert.Matches(@"^\w+ +yes +0 +0 +0 +0 ", l));
         Assert.Equal("8 of 8 entrants ready", lines[10]);
