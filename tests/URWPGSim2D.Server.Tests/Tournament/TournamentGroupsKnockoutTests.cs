@@ -267,6 +267,53 @@ public sealed class TournamentGroupsKnockoutTests
         }
     }
 
+    [Fact]
+    public void Every_file_shows_the_groups_the_bracket_with_its_bye_and_the_champion()
+    {
+        var cup = new GroupsKnockout(5, 1, 3, 1, 1, 1);
+        var b = Play(cup, Strength(5, 4, 3, 2, 1, 0));
+        var names = Names(5);
+        var records = b.Matches.Select(m => b.Records[m.Index]).ToList();
+        var header = new TournamentHeader("ball-grab", [.. names.Select(n => new Entrant(n, "idle"))], 1, 1, 100, 100, records.Count);
+        var s = Standings.Compute(header, 2, records, replicates: 20) with { Cup = b };
+
+        string json = StandingsJson.Format(s);
+        Assert.Contains("\n  \"groups\": [\n    {\"name\": \"A\", \"points\": [\n      {\"name\": \"e0\", \"rank\": 1, \"played\": 8, \"won\": 8,", json, StringComparison.Ordinal);
+        Assert.Contains("{\"entrants\": [\"e0\", null], \"from\": [\"A1\", null], \"seeded\": [1, null], \"matches\": [], \"wins\": [0, 0], \"goals\": [0, 0], \"winner\": \"e0\", \"decidedBy\": \"bye\"}", json, StringComparison.Ordinal);
+        Assert.Contains("{\"entrants\": [\"e1\", \"e2\"], \"from\": [\"A2\", \"A3\"], \"seeded\": [2, 3], \"matches\": [{\"match\": 20, \"seed\": 2, \"teams\": [\"e1\", \"e2\"], \"score\": [1, 0], \"winner\": \"e1\"}, {\"match\": 21, \"seed\": 2, \"teams\": [\"e2\", \"e1\"], \"score\": [0, 1], \"winner\": \"e1\"}], \"wins\": [2, 0], \"goals\": [2, 0], \"winner\": \"e1\", \"decidedBy\": \"wins\"}", json, StringComparison.Ordinal);
+        Assert.EndsWith("    ],\n    \"champion\": \"e0\"\n  }\n}\n", json, StringComparison.Ordinal);
+        using (var parsed = System.Text.Json.JsonDocument.Parse(json))
+        {
+            Assert.Equal(2, parsed.RootElement.GetProperty("knockout").GetProperty("rounds").GetArrayLength());
+        }
+
+        string md = StandingsMarkdown.Format(s);
+        Assert.Contains("\nGroup A (3 points a win, 1 a draw; ties: goal difference, goals scored, head to head, name):\n", md, StringComparison.Ordinal);
+        Assert.Contains("| semi-finals | e0 (A1), a bye | - | - | - | e0 | bye |\n| semi-finals | e1 (A2) v e2 (A3) | seed 2: 1:0, 1:0 | 2:0 | 2:0 | e1 | wins |\n| final | e0 (A1) v e1 (A2) | seed 2: 1:0, 1:0 | 2:0 | 2:0 | e0 | wins |\n", md, StringComparison.Ordinal);
+        Assert.Contains("\nChampion: e0.\n", md, StringComparison.Ordinal);
+
+        string html = ReportPage.Format(s, j => j == 20);
+        Assert.Contains("<h3>Group A</h3>", html, StringComparison.Ordinal);
+        Assert.Contains("<div class=\"side\"><span class=\"from\">bye</span></div>", html, StringComparison.Ordinal);
+        Assert.Contains("matches <a href=\"replays/match-20.html\">20</a>, 21</div>", html, StringComparison.Ordinal);
+        Assert.Contains("<h3>champion</h3><div class=\"tie champion\"><strong>e0</strong>", html, StringComparison.Ordinal);
+
+        string[] standings = StandingsCsv.Standings(s).Split("\r\n");
+        Assert.EndsWith(",group,group_rank,reached", standings[0], StringComparison.Ordinal);
+        Assert.Equal(["champion", "final", "semi-finals", "group", "group"], Enumerable.Range(0, 5).Select(e => standings.Single(l => l.Split(',').Length > 2 && l.Split(',')[1] == names[e]).Split(',')[^1]));
+        string[] matches = StandingsCsv.Matches(s).Split("\r\n");
+        Assert.EndsWith(",forfeited,stage,round", matches[0], StringComparison.Ordinal);
+        Assert.EndsWith(",group,A", matches[1], StringComparison.Ordinal);
+        Assert.EndsWith(",knockout,final", matches[^2], StringComparison.Ordinal);
+
+        // A round robin's files keep their columns and fields.
+        var plain = s with { Cup = null };
+        Assert.DoesNotContain("\"knockout\"", StandingsJson.Format(plain), StringComparison.Ordinal);
+        Assert.EndsWith(",host_ends,error", StandingsCsv.Standings(plain).Split("\r\n")[0], StringComparison.Ordinal);
+        Assert.EndsWith(",result,forfeited", StandingsCsv.Matches(plain).Split("\r\n")[0], StringComparison.Ordinal);
+        Assert.DoesNotContain("bracket", ReportPage.Format(plain, _ => false), StringComparison.Ordinal);
+    }
+
     private static (int, int, int) Random(Random random)
     {
         int a = random.Next(3), b = random.Next(3);
