@@ -10,4 +10,4 @@ namespace URWPGSim2D.Strategies;
 /// <param name="Radius">The circle's radius (else 0).</param>
 /// <param name="Rgb">Colour as 0xRRGGBB, or −1 for the team's colour.</param>
 /// <param name="Text">The text (text only, else null).</param>
-internal readonly record struct DebugShape(DebugShapeKind Kind, int Fish, Vector2 A, Vector2 B, float Radius, int Rgb, string? Text);
+public readonly record struct DebugShape(DebugShapeKind Kind, int Fish, Vector2 A, Vector2 B, float Radius, int Rgb, string? Text);

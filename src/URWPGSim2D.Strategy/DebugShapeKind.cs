@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Strategies;
 
 /// <summary>What a strategy's debug drawing is.</summary>
-internal enum DebugShapeKind : byte
+public enum DebugShapeKind : byte
 {
     /// <summary>A dot at <see cref="DebugShape.A"/>.</summary>
     Point,

@@ -10,7 +10,7 @@ namespace URWPGSim2D.Strategies;
 /// first set. The referee's table derives from it; a snapshot that a strategy reads on its own
 /// thread holds its own copy (<see cref="CopyFrom"/>), which allocates nothing once its keys are those of the source.
 /// </summary>
-internal class OrderedVariables : IReadOnlyDictionary<string, string>
+public class OrderedVariables : IReadOnlyDictionary<string, string>
 {
     private readonly List<string> _keys = [];
     private readonly Dictionary<string, string> _values = new(StringComparer.Ordinal);

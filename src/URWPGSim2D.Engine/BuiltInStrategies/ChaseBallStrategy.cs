@@ -14,7 +14,7 @@ namespace URWPGSim2D.Engine.BuiltInStrategies;
 /// plan (<see cref="DebugDraw"/>, shown with <c>run --debug-draw</c>): per fish the route head → aim →
 /// ball → goal, the target ball circled, the aim point and what it is doing (<c>line up</c>, <c>push</c>).
 /// </summary>
-internal sealed class ChaseBallStrategy : IStrategy
+public sealed class ChaseBallStrategy : IStrategy
 {
     private const float LineUpAngle = 0.6f;
     private const int PlanColour = 0x2e8b57; // the planned route after the aim point

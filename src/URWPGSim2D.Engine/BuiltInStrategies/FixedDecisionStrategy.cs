@@ -4,7 +4,7 @@ namespace URWPGSim2D.Engine.BuiltInStrategies;
 
 /// <summary>Built-in <c>fixed</c>: every fish repeats one decision forever.</summary>
 /// <param name="decision">The decision to repeat.</param>
-internal sealed class FixedDecisionStrategy(Decision decision) : IStrategy
+public sealed class FixedDecisionStrategy(Decision decision) : IStrategy
 {
     /// <summary>The repeated decision.</summary>
     public Decision Decision { get; } = decision;

@@ -3,7 +3,7 @@ using System;
 namespace URWPGSim2D.Engine.BuiltInStrategies;
 
 /// <summary>Built-in <c>idle</c>: every fish stands still (VCode 0, TCode 7).</summary>
-internal sealed class IdleStrategy : IStrategy
+public sealed class IdleStrategy : IStrategy
 {
     /// <inheritdoc/>
     public string TeamName => "idle";

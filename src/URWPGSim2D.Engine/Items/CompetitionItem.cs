@@ -10,7 +10,7 @@ namespace URWPGSim2D.Engine.Items;
 /// <see cref="ItemReferee"/> (and its demo strategy), and list it in <see cref="Catalog.ItemRegistry"/>;
 /// see docs/items.md, "Adding an item".
 /// </summary>
-internal abstract class CompetitionItem : IScenarioItem
+public abstract class CompetitionItem : IScenarioItem
 {
     /// <summary>Cycles of the default duration, ten minutes.</summary>
     public const int DefaultCycles = 6000;

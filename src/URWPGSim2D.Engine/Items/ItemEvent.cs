@@ -12,7 +12,7 @@ namespace URWPGSim2D.Engine.Items;
 /// <param name="Ball">The ball index, or −1.</param>
 /// <param name="Value">Points it scored, or NaN.</param>
 /// <param name="Text">A short human-readable line.</param>
-internal readonly record struct ItemEvent(int Cycle, string Kind, int Team, int Fish, int Ball, double Value, string Text)
+public readonly record struct ItemEvent(int Cycle, string Kind, int Team, int Fish, int Ball, double Value, string Text)
 {
     /// <summary>An event without team, fish, ball or value.</summary>
     public static ItemEvent Plain(int cycle, string kind, string text) => new(cycle, kind, -1, -1, -1, double.NaN, text);

@@ -17,7 +17,7 @@ namespace URWPGSim2D.Engine.Items;
 /// <see cref="HalfLength"/> = cycles / halves long; the last lasts the rest of the cycles, counted
 /// from its start (a half ended early does not shorten the next one).
 /// </summary>
-internal abstract class ItemReferee : ITraceItemInfo
+public abstract class ItemReferee : ITraceItemInfo
 {
     private readonly List<ItemEvent> _events;
     private int _traced;

@@ -10,7 +10,7 @@ namespace URWPGSim2D.Engine.Items;
 /// <c>Convert.ToInt32</c> reads). Keys keep the order they were added in (the SDK's ordered table).
 /// Refreshed by the referee after every cycle; setting a small integer, or the value a key already has, allocates nothing.
 /// </summary>
-internal sealed class MissionVariables : OrderedVariables
+public sealed class MissionVariables : OrderedVariables
 {
     private static readonly string[] Small = CreateSmall();
 

@@ -16,7 +16,7 @@ namespace URWPGSim2D.Engine.Matches;
 /// the noise generators are seeded, so the same scenario and seed replay the same match. After the
 /// first cycles a step allocates nothing (built-in strategies).
 /// </summary>
-internal sealed class Match
+public sealed class Match
 {
     private readonly SeededRandom? _motionNoise;
     private readonly SeededRandom? _viewNoise;

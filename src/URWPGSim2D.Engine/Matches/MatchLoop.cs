@@ -20,7 +20,7 @@ namespace URWPGSim2D.Engine.Matches;
 /// pauses and steps): <see cref="Start"/> once, then <see cref="Step"/> while <see cref="IsOver"/> is false.</para>
 /// <para>Not thread-safe: one thread plays a loop. Disposing it stops the match's strategy hosts.</para>
 /// </remarks>
-internal sealed class MatchLoop : IDisposable
+public sealed class MatchLoop : IDisposable
 {
     private readonly ITraceSink[] _sinks;
     private readonly TraceLine? _lines;

@@ -10,7 +10,7 @@ namespace URWPGSim2D.Engine.Messages;
 /// (<c>"\ud800"</c>): well-formed JSON that System.Text.Json refuses only when the text is read
 /// (an <see cref="InvalidOperationException"/>). The readers turn that into a bad-input line.
 /// </summary>
-internal static class LoneSurrogate
+public static class LoneSurrogate
 {
     /// <summary>The message for the first such string of <paramref name="text"/>: where it is and why it is refused.</summary>
     /// <param name="text">The whole JSON input.</param>

@@ -5,7 +5,7 @@ using System.Text.Json;
 namespace URWPGSim2D.Engine.Messages;
 
 /// <summary>Text helpers for one-line messages.</summary>
-internal static class MessageText
+public static class MessageText
 {
     /// <summary>A user-supplied string as a JSON string literal (quoted, control characters escaped), so a message stays on one line.</summary>
     /// <param name="value">Any string.</param>

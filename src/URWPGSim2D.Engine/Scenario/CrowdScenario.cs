@@ -14,7 +14,7 @@ namespace URWPGSim2D.Engine.Scenario;
 /// mm/s in random directions; obstacles are rectangles and round ones of the default sizes. Noise
 /// on. The same count and seed give the same scene (SplitMix64).
 /// </summary>
-internal static class CrowdScenario
+public static class CrowdScenario
 {
     /// <summary>Smallest count of fish and balls.</summary>
     public const int MinimumMovers = 13;

@@ -6,7 +6,7 @@ namespace URWPGSim2D.Engine.Scenario;
 /// 3 × 3 grid around the centre, two rectangular and two round obstacles, 3,000 cycles (five
 /// minutes), every fish on chase-ball, noise on, seed 1.
 /// </summary>
-internal static class DefaultScenario
+public static class DefaultScenario
 {
     /// <summary>The scenario file text.</summary>
     public const string Json = """

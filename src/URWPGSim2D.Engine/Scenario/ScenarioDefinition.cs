@@ -5,7 +5,7 @@ using URWPGSim2D.Engine.Simulation;
 namespace URWPGSim2D.Engine.Scenario;
 
 /// <summary>A validated scenario file (mm, rad, mm/s; vectors are [x, z]).</summary>
-internal sealed record ScenarioDefinition
+public sealed record ScenarioDefinition
 {
     /// <summary>Field length along X, mm.</summary>
     public float FieldLength { get; init; } = 3000f;
@@ -54,13 +54,13 @@ internal sealed record ScenarioDefinition
 /// <param name="Strategy">Built-in strategy name: idle, chase-ball, fixed, or demo (the item's demo strategy).</param>
 /// <param name="Decision">The decision of a fixed strategy.</param>
 /// <param name="TailPhase">The fish's own tail-wave phase p, rad.</param>
-internal sealed record FishDefinition(int Team, Vector2 Position, float Heading, string Strategy, Decision Decision, float TailPhase = 0f);
+public sealed record FishDefinition(int Team, Vector2 Position, float Heading, string Strategy, Decision Decision, float TailPhase = 0f);
 
 /// <summary>A ball of a scenario.</summary>
 /// <param name="Position">Centre, mm.</param>
 /// <param name="Velocity">mm/s.</param>
 /// <param name="Radius">mm.</param>
-internal sealed record BallDefinition(Vector2 Position, Vector2 Velocity, float Radius);
+public sealed record BallDefinition(Vector2 Position, Vector2 Velocity, float Radius);
 
 /// <summary>An obstacle of a scenario.</summary>
 /// <param name="Kind">Rectangle or round.</param>
@@ -69,4 +69,4 @@ internal sealed record BallDefinition(Vector2 Position, Vector2 Velocity, float 
 /// <param name="Width">Rectangle width, mm.</param>
 /// <param name="Heading">Rectangle direction, rad.</param>
 /// <param name="Radius">Round radius, mm.</param>
-internal sealed record ObstacleDefinition(ObstacleKind Kind, Vector2 Center, float Length, float Width, float Heading, float Radius);
+public sealed record ObstacleDefinition(ObstacleKind Kind, Vector2 Center, float Length, float Width, float Heading, float Radius);

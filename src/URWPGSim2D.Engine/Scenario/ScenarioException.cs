@@ -6,7 +6,7 @@ namespace URWPGSim2D.Engine.Scenario;
 /// A scenario is invalid. The message is one line: the JSON path and the problem, e.g.
 /// <c>balls[2].radius: must be > 0, got -5</c>.
 /// </summary>
-internal sealed class ScenarioException : Exception
+public sealed class ScenarioException : Exception
 {
     /// <summary>Creates the error for a JSON path.</summary>
     /// <param name="path">JSON path such as <c>balls[2].radius</c> (empty for the whole document).</param>

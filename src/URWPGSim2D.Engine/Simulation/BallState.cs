@@ -9,7 +9,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// world Z). Its body — radius, position, velocity, noise drift, whether it collides — is the
 /// motion world's (<see cref="Stepper"/>), reached by <see cref="Handle"/>.
 /// </summary>
-internal sealed class BallState
+public sealed class BallState
 {
     private readonly Stepper _motion;
 

@@ -5,4 +5,4 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <param name="A">First body (a fish or a ball).</param>
 /// <param name="B">Second body (fish, ball or static index; unused for walls).</param>
 /// <param name="Limit">Largest relative travel (mm) of the pair in one sub-step: half the sum of their thinnest widths.</param>
-internal readonly record struct CandidatePair(PairKind Kind, int A, int B, float Limit);
+public readonly record struct CandidatePair(PairKind Kind, int A, int B, float Limit);

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>The pair kinds counted in the summary (goal blocks and walls are the border).</summary>
-internal enum ContactKind
+public enum ContactKind
 {
     /// <summary>Fish against fish.</summary>
     FishFish,

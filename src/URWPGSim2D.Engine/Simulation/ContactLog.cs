@@ -7,7 +7,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// world up front and grows by doubling only when a cycle has more contacts than that) and the
 /// match's running counts by kind.
 /// </summary>
-internal sealed class ContactLog
+public sealed class ContactLog
 {
     private ContactRecord[] _records;
     private readonly long[] _byKind = new long[7];

@@ -10,4 +10,4 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <param name="Normal">Unit normal from B toward A.</param>
 /// <param name="Point">Action point, mm.</param>
 /// <param name="Time">When in the cycle it was resolved, as a fraction 0..1 of the cycle (the time of first contact).</param>
-internal readonly record struct ContactRecord(CandidatePair Pair, sbyte PartA, sbyte PartB, Vector2 Mtv, Vector2 Normal, Vector2 Point, double Time);
+public readonly record struct ContactRecord(CandidatePair Pair, sbyte PartA, sbyte PartB, Vector2 Mtv, Vector2 Normal, Vector2 Point, double Time);

@@ -8,11 +8,14 @@ namespace URWPGSim2D.Engine.Simulation;
 /// at its time of first contact, in time order), with the server's contact response plugged in
 /// (<see cref="ContactHandler"/>). See docs/motion.md.
 /// </summary>
-internal sealed class CycleMotion
+public sealed class CycleMotion
 {
     private readonly World _world;
     private readonly ContactHandler _handler;
 
+    /// <summary>Creates the motion stage of <paramref name="world"/>, recording contacts in <paramref name="log"/>.</summary>
+    /// <param name="world">The match's world.</param>
+    /// <param name="log">Where each cycle's contacts are recorded.</param>
     public CycleMotion(World world, ContactLog log)
     {
         _world = world;

@@ -15,7 +15,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <see cref="Velocity"/> (+ noise) and <see cref="AngularVelocity"/>; contacts may change both
 /// for the rest of the cycle (the swimming speed and turn rate are not changed by contacts).
 /// </summary>
-internal sealed class FishState
+public sealed class FishState
 {
     private readonly Stepper _motion;
 

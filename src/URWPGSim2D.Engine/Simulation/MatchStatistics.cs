@@ -3,7 +3,7 @@ using System;
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>Running totals of a match for the summary.</summary>
-internal sealed class MatchStatistics
+public sealed class MatchStatistics
 {
     /// <summary>Cycles played.</summary>
     public int Cycles { get; private set; }

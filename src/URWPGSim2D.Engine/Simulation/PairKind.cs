@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>The pair kinds the stepper tests (A and B index the arrays named by the kind).</summary>
-internal enum PairKind : byte
+public enum PairKind : byte
 {
     /// <summary>Fish A, fish B (A &lt; B).</summary>
     FishFish,

@@ -7,7 +7,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// A body that never moves: an obstacle (round: a circle; rectangle: a convex polygon) or a goal
 /// block (an axis-aligned box). Static partners always keep their place in a collision.
 /// </summary>
-internal sealed class StaticBody
+public sealed class StaticBody
 {
     private StaticBody(int id, bool isGoalBlock, ShapeKind kind, Circle circle, ConvexPolygon polygon, Aabb box, Aabb bounds, float thickness)
     {

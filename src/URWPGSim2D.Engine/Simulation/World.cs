@@ -13,7 +13,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// (<see cref="BodyTag"/>); the fish and balls here hold the game state and their body's handle.
 /// Arrays are fixed for the whole match; iteration is always by index.
 /// </summary>
-internal sealed class World
+public sealed class World
 {
     private readonly int[] _staticHandles;
 

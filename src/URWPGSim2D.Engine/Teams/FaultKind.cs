@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Engine.Teams;
 
 /// <summary>What a strategy's fault in a cycle was (the fault table of docs/strategies.md).</summary>
-internal enum FaultKind
+public enum FaultKind
 {
     /// <summary>The strategy threw.</summary>
     Exception,

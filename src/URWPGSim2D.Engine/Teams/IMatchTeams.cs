@@ -9,7 +9,7 @@ namespace URWPGSim2D.Engine.Teams;
 /// this and their seats (<see cref="ITeamSeat"/>): how strategies are run, timed and isolated is the
 /// implementation's business.
 /// </summary>
-internal interface IMatchTeams
+public interface IMatchTeams
 {
     /// <summary>Each strategy's seat, in decision order: its team, its name and what it did wrong, drew or printed.</summary>
     IReadOnlyList<ITeamSeat> Seats { get; }

@@ -1,10 +1,12 @@
+using System;
+
 namespace URWPGSim2D.Engine.Teams;
 
 /// <summary>
 /// One strategy's place in a match as the match's record sees it: the team it plays for, its name,
 /// its latest fault, and what it drew and printed in the cycle just decided.
 /// </summary>
-internal interface ITeamSeat
+public interface ITeamSeat
 {
     /// <summary>The team the strategy plays for.</summary>
     int Team { get; }
@@ -21,8 +23,8 @@ internal interface ITeamSeat
     /// <summary>The kind of the latest fault.</summary>
     FaultKind LastFaultKind { get; }
 
-    /// <summary>The strategy's debug drawings of the cycle just decided, or null when drawings are not recorded.</summary>
-    DebugRecorder? Drawings { get; }
+    /// <summary>The strategy's debug drawings of the cycle just decided (none when drawings are not recorded).</summary>
+    ReadOnlySpan<DebugShape> Drawn { get; }
 
     /// <summary>What the strategy printed in the cycle just decided, or null when its output is not recorded.</summary>
     StrategyLog? Log { get; }

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Engine.Teams;
 /// <c>System.Diagnostics.Debug</c>), kept up to <see cref="MaxChars"/> characters per cycle; what is
 /// over is counted, not kept, so a chatty strategy cannot fill memory or the trace.
 /// </summary>
-internal sealed class StrategyLog
+public sealed class StrategyLog
 {
     /// <summary>Characters kept per team and cycle.</summary>
     public const int MaxChars = 4096;

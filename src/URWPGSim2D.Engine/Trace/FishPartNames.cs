@@ -7,7 +7,7 @@ namespace URWPGSim2D.Engine.Trace;
 /// The names of the eight <see cref="FishPart"/>s in the program's JSON (collide's <c>partA</c> /
 /// <c>partB</c>, the keys of <c>shapes</c>' <c>leaves</c>, the trace): the enum names in camelCase.
 /// </summary>
-internal static class FishPartNames
+public static class FishPartNames
 {
     private static readonly string[] Names = ["leftPectoral", "body", "rightPectoral", "tail1", "tail2", "tail3", "leftCaudal", "rightCaudal"];
 

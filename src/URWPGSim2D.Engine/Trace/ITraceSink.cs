@@ -7,7 +7,7 @@ namespace URWPGSim2D.Engine.Trace;
 /// file, a replay page, the live view, a test's hash. Each line is one cycle's JSON object
 /// (<see cref="TraceLine"/>), without its newline; the span is valid only during the call.
 /// </summary>
-internal interface ITraceSink
+public interface ITraceSink
 {
     /// <summary>Receives the next cycle line (cycle 0 first, then one per cycle played, in order).</summary>
     void WriteLine(ReadOnlySpan<byte> line);

@@ -159,7 +159,8 @@ internal sealed class TraceLine
         bool any = false;
         foreach (var slot in _teamSeats.Seats)
         {
-            if (slot.Drawings is not { Count: > 0 } drawings)
+            var drawn = slot.Drawn;
+            if (drawn.IsEmpty)
             {
                 continue;
             }
@@ -170,7 +171,7 @@ internal sealed class TraceLine
                 any = true;
             }
 
-            foreach (ref readonly var s in drawings.Shapes)
+            foreach (ref readonly var s in drawn)
             {
                 DebugShapeJson.Write(w, s, slot.Team);
             }

@@ -11,7 +11,7 @@ namespace URWPGSim2D.Engine.Trace;
 /// written under a temporary name beside the target and renamed by <see cref="Complete"/>; if the
 /// run fails, <see cref="Dispose"/> deletes it, so no half trace is left.
 /// </summary>
-internal sealed class TraceWriter : ITraceSink, IDisposable
+public sealed class TraceWriter : ITraceSink, IDisposable
 {
     private static readonly byte[] NewLine = [(byte)'\n'];
 
@@ -20,6 +20,8 @@ internal sealed class TraceWriter : ITraceSink, IDisposable
     private readonly FileStream _stream;
     private bool _completed;
 
+    /// <summary>Starts writing the trace to <paramref name="path"/> (through a <c>.partial</c> file beside it, renamed when complete).</summary>
+    /// <param name="path">The trace file.</param>
     public TraceWriter(string path)
     {
         _path = Path.GetFullPath(path);

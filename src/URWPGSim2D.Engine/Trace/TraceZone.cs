@@ -9,7 +9,7 @@ namespace URWPGSim2D.Engine.Trace;
 /// one shape — a circle, an axis-aligned box or a polygon (mm; X = world X, Y = world Z).
 /// Create one with <see cref="Circle"/>, <see cref="Box"/> or <see cref="Polygon"/>.
 /// </summary>
-internal sealed class TraceZone
+public sealed class TraceZone
 {
     private TraceZone(string kind, int id, int? team, TraceZoneShape shape, Vector2 center, float radius, Vector2 min, Vector2 max, Vector2[] points)
     {
@@ -74,7 +74,7 @@ internal sealed class TraceZone
 }
 
 /// <summary>The shape of a <see cref="TraceZone"/>.</summary>
-internal enum TraceZoneShape
+public enum TraceZoneShape
 {
     /// <summary>Centre and radius.</summary>
     Circle,

@@ -4,6 +4,7 @@ using System.CommandLine;
 using System.IO;
 using System.Linq;
 using System.Text;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 

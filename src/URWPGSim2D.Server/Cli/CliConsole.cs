@@ -1,4 +1,5 @@
 using System.IO;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

@@ -1,5 +1,6 @@
 using System;
 using System.CommandLine;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 

@@ -5,6 +5,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Net.Sockets;
 using System.Threading;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;

@@ -1,6 +1,7 @@
 using System;
 using System.CommandLine;
 using System.Globalization;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Json;

@@ -4,6 +4,7 @@ using System.Linq;
 using System.Text;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

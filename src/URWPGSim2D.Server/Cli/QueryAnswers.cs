@@ -5,6 +5,7 @@ using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
+using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

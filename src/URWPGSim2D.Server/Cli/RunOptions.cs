@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;

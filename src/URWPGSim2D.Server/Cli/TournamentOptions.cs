@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Engine.Items.Catalog;

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.CommandLine;
 using System.IO;
 using System.Text;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;

@@ -87,7 +87,7 @@ internal static class MatchBuilder
         var referee = scenario.Item switch
         {
             null => null,
-            Items.CompetitionItem item => item.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed),
+            Engine.Items.CompetitionItem item => item.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed),
             var other => throw new ArgumentException($"the scenario's item {other.Slug} is not a competition item of this server", nameof(scenario)),
         };
         var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
@@ -109,7 +109,7 @@ internal static class MatchBuilder
         return new Match(world, host, noise ?? scenario.Noise, seed ?? scenario.Seed, referee);
     }
 
-    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Items.ItemReferee? referee, MatchFacts match)
+    private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Engine.Items.ItemReferee? referee, MatchFacts match)
     {
         var slots = new List<StrategySlot>();
         int teamCount = 2;
@@ -167,7 +167,7 @@ internal static class MatchBuilder
     }
 
     // What a strategy host is told of the match (docs/protocol.md, assignment).
-    private sealed record MatchFacts(World World, Items.ItemReferee? Referee, int DeadlineMs, int Cycles, bool DebugDraw, bool StrategyLog)
+    private sealed record MatchFacts(World World, Engine.Items.ItemReferee? Referee, int DeadlineMs, int Cycles, bool DebugDraw, bool StrategyLog)
     {
         public Protocol.AssignmentMessage Assignment(int team, int[] fish) => new(
             Protocol.ProtocolVersion.Current, team, Referee?.Item.Slug ?? "", Referee?.Item.ChineseName ?? "match", fish,

@@ -7,6 +7,7 @@ using System.Reflection;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Engine.BuiltInStrategies;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Hosting;

@@ -133,6 +133,9 @@ internal sealed class StrategySlot : ITeamSeat
     /// <summary>The strategy's debug drawings of the cycle just decided, or null when drawings are not recorded.</summary>
     public DebugRecorder? Drawings { get; private set; }
 
+    /// <inheritdoc/>
+    ReadOnlySpan<DebugShape> ITeamSeat.Drawn => Drawings is { } d ? d.Shapes : default;
+
     /// <summary>Records the strategy's debug drawings from now on (<c>run --debug-draw</c>).</summary>
     public void RecordDrawings()
     {

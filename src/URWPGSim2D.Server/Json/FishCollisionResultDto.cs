@@ -1,5 +1,6 @@
 using System.Text.Json.Serialization;
 using URWPGSim2D.Collision.Fish;
+using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Server.Json;
 

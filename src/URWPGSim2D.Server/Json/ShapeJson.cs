@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.Shapes;
+using URWPGSim2D.Engine.Messages;
 
 namespace URWPGSim2D.Server.Json;
 

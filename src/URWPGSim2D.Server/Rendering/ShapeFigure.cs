@@ -6,6 +6,7 @@ using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
+using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Rendering;

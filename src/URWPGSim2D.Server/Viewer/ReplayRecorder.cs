@@ -16,7 +16,7 @@ namespace URWPGSim2D.Server.Viewer;
 /// 10⁻⁴ rad), the contacts' action points and normals the same way, the score changes and the
 /// events, and what a body's details show (<see cref="ReplayDetails"/>) — all base64 inside one JSON object (docs/viewer.md, "The replay page's data").
 /// </summary>
-internal sealed class ReplayRecorder : Trace.ITraceSink
+internal sealed class ReplayRecorder : Engine.Trace.ITraceSink
 {
     /// <summary>Angle step of the packed data, rad.</summary>
     public const double AngleStep = 1e-4;
@@ -78,7 +78,7 @@ internal sealed class ReplayRecorder : Trace.ITraceSink
     }
 
     /// <inheritdoc/>
-    void Trace.ITraceSink.WriteLine(ReadOnlySpan<byte> line) => Add(line);
+    void Engine.Trace.ITraceSink.WriteLine(ReadOnlySpan<byte> line) => Add(line);
 
     /// <summary>Adds one parsed trace line.</summary>
     /// <exception cref="TraceFormatException">The line is not a cycle line the viewer can use.</exception>

@@ -18,12 +18,13 @@ public sealed class PeerHarnessContractTests
 {
     private const BindingFlags Static = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static;
     private const BindingFlags Instance = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Instance;
-    private static readonly Assembly Server = typeof(MatchBuilder).Assembly;
+    private static readonly Assembly Server = Assembly.Load("URWPGSim2D.Server");
+    private static readonly Assembly Engine = Assembly.Load("URWPGSim2D.Engine");
 
     [Fact]
     public void TheHarnessBuildsAndStepsACrowdMatchByReflection()
     {
-        object scenario = Server.GetType("URWPGSim2D.Engine.Scenario.CrowdScenario", true)!
+        object scenario = Engine.GetType("URWPGSim2D.Engine.Scenario.CrowdScenario", true)!
             .GetMethod("Create", Static)!
             .Invoke(null, [100, 1UL, 3000])!;
         var build = Server.GetType("URWPGSim2D.Server.Hosting.MatchBuilder", true)!.GetMethod("Build", Static)!;
@@ -68,5 +69,5 @@ public sealed class PeerHarnessContractTests
         o.GetType().GetProperty(name, Instance)!.GetValue(o)!;
 
     private static float Table(string type, string method, int code) =>
-        (float)Server.GetType(type, true)!.GetMethod(method, Static)!.Invoke(null, [code])!;
+        (float)Engine.GetType(type, true)!.GetMethod(method, Static)!.Invoke(null, [code])!;
 }

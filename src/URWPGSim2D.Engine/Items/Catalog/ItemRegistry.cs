@@ -7,7 +7,7 @@ namespace URWPGSim2D.Engine.Items.Catalog;
 /// Every competition item by its English slug and the original's Chinese name, in the order
 /// <c>run --list-items</c> prints them. An item is added here with one line.
 /// </summary>
-internal static class ItemRegistry
+public static class ItemRegistry
 {
     private static readonly CompetitionItem[] Known =
     [

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Engine.Items.Catalog;
 /// that item's layout and rules (<see cref="ItemScenarioParser"/>), any other a plain scene
 /// (<see cref="ScenarioParser"/>). Any problem throws <see cref="ScenarioException"/> naming the JSON path.
 /// </summary>
-internal static class ScenarioFile
+public static class ScenarioFile
 {
     /// <summary>Parses and validates scenario JSON text.</summary>
     /// <param name="json">The file's text.</param>

@@ -16,7 +16,7 @@ namespace URWPGSim2D.Engine.Simulation.Kinematics;
 /// snapped onto the table, so it can settle a few units off it (303.6 mm/s for VCode 14; about
 /// 3.2 mm/s for VCode 0 after a run at speed).
 /// </summary>
-internal struct GearApproach
+public struct GearApproach
 {
     /// <summary>Differences up to this size count as "at the table value" (rule 2).</summary>
     public const float Tolerance = 0.01f;
