@@ -17,6 +17,7 @@ internal sealed class MessageWriter
 {
     private readonly ArrayBufferWriter<byte> _buffer = new(4096);
     private readonly Utf8JsonWriter _json;
+    private byte[] _packed = [];
 
     /// <summary>Creates a writer.</summary>
     public MessageWriter()
@@ -24,11 +25,16 @@ internal sealed class MessageWriter
         _json = new Utf8JsonWriter(_buffer, new JsonWriterOptions { SkipValidation = true });
     }
 
-    /// <summary>A client's <c>hello</c>.</summary>
-    public ReadOnlySpan<byte> Hello(int version, string? token, string? name)
+    /// <summary>A client's <c>hello</c>; <paramref name="packed"/>: the client reads packed cycles (<see cref="PackedCycle"/>).</summary>
+    public ReadOnlySpan<byte> Hello(int version, string? token, string? name, bool packed = false)
     {
         Begin("hello");
         _json.WriteNumber("version", version);
+        if (packed)
+        {
+            _json.WriteBoolean("packed", true);
+        }
+
         WriteOptional("token", token);
         WriteOptional("name", name);
         return End();
@@ -65,6 +71,11 @@ internal sealed class MessageWriter
             _json.WriteBoolean("log", true);
         }
 
+        if (a.Packed)
+        {
+            _json.WriteBoolean("packed", true);
+        }
+
         _json.WriteStartObject("field");
         Number("length", a.FieldLength);
         Number("width", a.FieldWidth);
@@ -89,8 +100,11 @@ internal sealed class MessageWriter
         return End();
     }
 
-    /// <summary>The server's <c>cycle</c>: everything of <paramref name="s"/> that changes during a match.</summary>
-    public ReadOnlySpan<byte> Cycle(MatchSnapshot s)
+    /// <summary>
+    /// The server's <c>cycle</c>: everything of <paramref name="s"/> that changes during a match; with
+    /// <paramref name="packed"/>, the fish and balls as one <c>packed</c> field (<see cref="PackedCycle"/>) instead of <c>fish</c> and <c>balls</c>.
+    /// </summary>
+    public ReadOnlySpan<byte> Cycle(MatchSnapshot s, bool packed = false)
     {
         ArgumentNullException.ThrowIfNull(s);
         Begin("cycle");
@@ -113,6 +127,19 @@ internal sealed class MessageWriter
         }
 
         _json.WriteEndObject();
+        if (packed)
+        {
+            int length = PackedCycle.Length(s.Fish.Length, s.Balls.Length);
+            if (_packed.Length < length)
+            {
+                _packed = new byte[length];
+            }
+
+            PackedCycle.Write(s, _packed);
+            _json.WriteBase64String("packed", _packed.AsSpan(0, length));
+            return End();
+        }
+
         _json.WriteStartArray("fish");
         foreach (ref readonly var f in s.Fish)
         {
