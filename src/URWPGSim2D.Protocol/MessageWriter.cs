@@ -129,14 +129,22 @@ internal sealed class MessageWriter
         _json.WriteEndObject();
         if (packed)
         {
+            // The base64 text goes in as it is, quotes included (the writer's own base64 allocates a cycle, and its strings escape '+').
             int length = PackedCycle.Length(s.Fish.Length, s.Balls.Length);
-            if (_packed.Length < length)
+            int text = System.Buffers.Text.Base64.GetMaxEncodedToUtf8Length(length);
+            if (_packed.Length < length + text + 2)
             {
-                _packed = new byte[length];
+                _packed = new byte[length + text + 2];
             }
 
-            PackedCycle.Write(s, _packed);
-            _json.WriteBase64String("packed", _packed.AsSpan(0, length));
+            var bytes = _packed.AsSpan(0, length);
+            var quoted = _packed.AsSpan(length);
+            PackedCycle.Write(s, bytes);
+            System.Buffers.Text.Base64.EncodeToUtf8(bytes, quoted[1..], out _, out int written);
+            quoted[0] = (byte)'"';
+            quoted[written + 1] = (byte)'"';
+            _json.WritePropertyName("packed"u8);
+            _json.WriteRawValue(quoted[..(written + 2)], skipInputValidation: true);
             return End();
         }
 

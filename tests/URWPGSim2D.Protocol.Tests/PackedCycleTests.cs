@@ -100,6 +100,7 @@ public class PackedCycleTests
         var assignment = new AssignmentMessage(1, 0, "ball-grab", "match", [0, 1], 4, 9, 6000, 100, 3000, 2000, []) { Packed = true };
         var server = assignment.CreateSnapshot();
         RandomSnapshots.Fill(server, new Random(6), "match", 6000);
+        server.SetItem("match", new OrderedVariables(), 6000); // no variables: enumerating them through the dictionary's interface allocates, in either form
         var writer = new MessageWriter();
         var client = new CycleReader(assignment);
 
