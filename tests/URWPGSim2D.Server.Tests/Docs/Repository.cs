@@ -27,7 +27,7 @@ internal static class Repository
     /// <summary>A path relative to the root (forward slashes) made absolute.</summary>
     public static string PathOf(string relative) => Path.Combine(Root, relative.Replace('/', Path.DirectorySeparatorChar));
 
-    /// <summary>README.md and its translations, every Markdown file under docs/ and the package READMEs under src/, as paths relative to the root.</summary>
+    /// <summary>README.md and its translations, every Markdown file under docs/, the package READMEs under src/ and the Python client's READMEs, as paths relative to the root.</summary>
     public static IReadOnlyList<string> MarkdownFiles() =>
         [
             "README.md",
@@ -40,14 +40,24 @@ internal static class Repository
                 .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
                 .Where(f => !f.Contains("/bin/", StringComparison.Ordinal) && !f.Contains("/obj/", StringComparison.Ordinal))
                 .Order(StringComparer.Ordinal),
+            // The Python client's README and its translation.
+            "clients/python/README.md",
+            "clients/python/README.zh-CN.md",
         ];
 
-    /// <summary>The pages in Chinese: README.zh-CN.md and every Markdown file under docs/zh-CN/.</summary>
+    /// <summary>The pages in Chinese: README.zh-CN.md, every Markdown file under docs/zh-CN/ and the Python client's README.zh-CN.md.</summary>
     public static IReadOnlyList<string> TranslatedPages() =>
         [
             "README.zh-CN.md",
             .. Directory.EnumerateFiles(PathOf("docs/zh-CN"), "*.md", SearchOption.AllDirectories)
                 .Select(f => Path.GetRelativePath(Root, f).Replace(Path.DirectorySeparatorChar, '/'))
                 .Order(StringComparer.Ordinal),
+            "clients/python/README.zh-CN.md",
         ];
+
+    /// <summary>The English page a Chinese page translates: docs/zh-CN/X.md is docs/X.md, any other X.zh-CN.md is X.md.</summary>
+    public static string EnglishOf(string translated) =>
+        translated.StartsWith("docs/zh-CN/", StringComparison.Ordinal)
+            ? "docs/" + translated["docs/zh-CN/".Length..]
+            : translated.Replace(".zh-CN.md", ".md", StringComparison.Ordinal);
 }

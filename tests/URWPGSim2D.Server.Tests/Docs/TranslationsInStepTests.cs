@@ -10,7 +10,8 @@ namespace URWPGSim2D.Server.Tests.Docs;
 /// <summary>
 /// The Chinese strategies page keeps in step with the English one: its troubleshooting table has
 /// the same rows (the same compiler error codes, or the same program message, row by row), and the
-/// page names the same compiler codes as the English page.
+/// page names the same compiler codes as the English page. Every Chinese page's copies of outputs
+/// checked on its English page are the English page's outputs.
 /// </summary>
 public sealed partial class TranslationsInStepTests
 {
@@ -37,6 +38,46 @@ public sealed partial class TranslationsInStepTests
         Assert.True(
             english.SetEquals(chinese),
             $"only in {English}: {string.Join(", ", english.Except(chinese))}; only in {Chinese}: {string.Join(", ", chinese.Except(english))}");
+    }
+
+    /// <summary>
+    /// A Chinese page shows the outputs its English page shows: a block the docs test does not run
+    /// (marked <c>&lt;!-- output: not run (…) --&gt;</c> or <c>&lt;!-- .ci/… --&gt;</c>, checked on the
+    /// English page by the test or CI script the marker names) is a copy of the English page's block
+    /// with the same marker, timing figures aside, so a regenerated English output makes its copy fail
+    /// here until it is copied again.
+    /// </summary>
+    [Fact]
+    public void TheChinesePagesCopiesOfCheckedOutputsAreTheEnglishPagesOutputs()
+    {
+        var problems = new List<string>();
+        int copies = 0;
+        foreach (string page in Repository.TranslatedPages().Where(p => p != "README.zh-CN.md"))
+        {
+            string englishPage = Repository.EnglishOf(page);
+            if (!File.Exists(Repository.PathOf(englishPage)))
+            {
+                problems.Add($"{page}: no English page {englishPage}");
+                continue;
+            }
+
+            var english = MarkdownBlock.Read(englishPage).Where(b => b.Marker is not null).ToList();
+            foreach (var block in MarkdownBlock.Read(page).Where(b => !DocsOutputsTests.RunsForReal(b) && b.Text.StartsWith("$ ", StringComparison.Ordinal)))
+            {
+                copies++;
+                if (block.Marker is null)
+                {
+                    problems.Add($"{block.Where}: a transcript that is not run, without the marker of the English block it copies");
+                }
+                else if (!english.Any(e => e.Marker == block.Marker && Transcript.Matches(e.Text, block.Text)))
+                {
+                    problems.Add($"{block.Where}: no block of {englishPage} marked \"<!-- {block.Marker} -->\" shows this output; copy the English block again");
+                }
+            }
+        }
+
+        Assert.True(copies > 0, "the Chinese pages show copies of checked outputs");
+        Assert.True(problems.Count == 0, string.Join('\n', problems));
     }
 
     [Fact]
