@@ -16,7 +16,7 @@ namespace URWPGSim2D.Server.Tests;
 /// </summary>
 public sealed partial class LayeringTests
 {
-    private static readonly string[] Lower = ["Json", "Scenario", "Trace", "Simulation", "Items", "Rendering", "Batch", "Viewer", "Hosting", "Tournament"];
+    private static readonly string[] Lower = ["Json", "Scenario", "Trace", "Simulation", "Teams", "Matches", "BuiltInStrategies", "Items", "Rendering", "Batch", "Viewer", "Hosting", "Tournament"];
 
     [Fact]
     public void NoLowerFolderReachesUpIntoCli()

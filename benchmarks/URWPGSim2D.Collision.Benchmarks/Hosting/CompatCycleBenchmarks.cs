@@ -1,5 +1,7 @@
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Server.BuiltInStrategies;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;

@@ -1,5 +1,7 @@
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 

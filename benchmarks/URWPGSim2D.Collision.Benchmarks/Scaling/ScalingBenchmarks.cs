@@ -2,6 +2,8 @@ extern alias baseline;
 
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using BaselineBuilder = baseline::URWPGSim2D.Server.Scenario.MatchBuilder;

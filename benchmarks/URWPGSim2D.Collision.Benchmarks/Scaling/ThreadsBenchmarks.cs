@@ -1,4 +1,6 @@
 using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 

@@ -2,7 +2,10 @@ extern alias baseline;
 
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using BaselineBuilder = baseline::URWPGSim2D.Server.Scenario.MatchBuilder;

@@ -1,6 +1,8 @@
 using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Items.Demo;
 using URWPGSim2D.Server.Scenario;

@@ -1,6 +1,7 @@
 using System;
 using System.Threading;
 using System.Runtime.ExceptionServices;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Batch;

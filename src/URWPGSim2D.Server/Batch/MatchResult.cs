@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Batch;
@@ -52,7 +54,7 @@ internal sealed record MatchResult(
         return new MatchResult(
             index, seed, stats.Cycles, goals0, goals1, match.Contacts.ByKind.ToArray(),
             stats.SubSteps, stats.MostSubSteps, stats.Events, stats.LargestLeftoverOverlap, stats.LargestLeftoverCycle,
-            match.Strategies.TotalFaults, referee?.Item.Slug, (int[]?)referee?.Scores.Clone(), outcome?.Winner ?? -1, outcome?.Rule,
+            match.Caller().TotalFaults, referee?.Item.Slug, (int[]?)referee?.Scores.Clone(), outcome?.Winner ?? -1, outcome?.Rule,
             FaultsOf(match));
     }
 
@@ -60,7 +62,7 @@ internal sealed record MatchResult(
     private static TeamFaults[]? FaultsOf(Match match)
     {
         List<TeamFaults>? faults = null;
-        foreach (var slot in match.Strategies.Slots)
+        foreach (var slot in match.Caller().Slots)
         {
             if (slot.Faults > 0)
             {

@@ -5,6 +5,7 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 
 namespace URWPGSim2D.Server.Cli;
@@ -112,7 +113,7 @@ internal static class BatchRun
     private static string TeamsText(ScenarioDefinition scenario, RunOptions options)
     {
         var probe = MatchBuilder.Build(scenario, RunCommand.LoadTeams(options), options.Seed, options.Noise, options.StrategyTimeoutMs);
-        probe.Strategies.Stop();
+        probe.Teams.Stop();
         var labels = new List<string>();
         for (int t = 0; t < probe.TeamCount; t++)
         {

@@ -2,6 +2,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using System.Text;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
 

@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Text;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Cli;

@@ -2,6 +2,8 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 
 namespace URWPGSim2D.Server.Cli;
@@ -66,7 +68,7 @@ internal static class MatchSummary
         s.Append(stats.LargestLeftoverCycle > 0 ? string.Create(c, $" (cycle {stats.LargestLeftoverCycle})\n") : "\n");
         s.Append("strategy faults:");
         bool any = false;
-        foreach (var slot in match.Strategies.Slots)
+        foreach (var slot in match.Caller().Slots)
         {
             if (slot.Faults == 0)
             {
@@ -86,7 +88,7 @@ internal static class MatchSummary
         }
 
         s.Append(any ? "\n" : " none\n");
-        AppendTime(s, match.Strategies);
+        AppendTime(s, match.Caller());
         return s.ToString();
     }
 

@@ -8,8 +8,10 @@ using System.Security.Cryptography;
 using System.Text;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
@@ -150,19 +152,19 @@ internal sealed class RunCommand : ICliCommand
         try
         {
             // Every remote team's address first: a second team's client must know its port before the first client connects.
-            foreach (var slot in match.Strategies.Slots)
+            foreach (var slot in match.Caller().Slots)
             {
                 (slot.Hosted as RemoteStrategy)?.Announce();
             }
 
-            foreach (var slot in match.Strategies.Slots)
+            foreach (var slot in match.Caller().Slots)
             {
                 (slot.Hosted as RemoteStrategy)?.WaitForClient(announced: true);
             }
         }
         catch (RemoteWaitException e)
         {
-            match.Strategies.Stop();
+            match.Teams.Stop();
             console.ErrorLine(e.Message);
             return ExitCodes.BadInput;
         }
@@ -217,7 +219,7 @@ internal sealed class RunCommand : ICliCommand
     // error, each line as "cycle N, team T (NAME): TEXT".
     private static void PrintLogs(Match match, int cycle, CliConsole console)
     {
-        foreach (var slot in match.Strategies.Slots)
+        foreach (var slot in match.Caller().Slots)
         {
             if (slot.Log is not { } log || (log.Length == 0 && log.Dropped == 0))
             {
@@ -343,7 +345,7 @@ internal sealed class RunCommand : ICliCommand
         string text = ReadScenario(options.Scenario, console);
         string hash = Convert.ToHexStringLower(SHA256.HashData(Encoding.UTF8.GetBytes(text)));
         string name = options.Scenario == "-" ? "stdin" : Path.GetFileName(options.Scenario);
-        return (ScenarioParser.Parse(text), $"file {name} sha256 {hash}");
+        return (ScenarioFile.Parse(text), $"file {name} sha256 {hash}");
     }
 
     private static string ReadScenario(string path, CliConsole console)

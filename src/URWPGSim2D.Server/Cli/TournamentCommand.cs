@@ -58,7 +58,7 @@ internal sealed class TournamentCommand : ICliCommand
             return Refuse(console, $"--seeds {o.Seeds} --seed {o.FirstSeed}: {e.Message.Split(" (Parameter", 2)[0]}");
         }
 
-        var whole = new TournamentHeader(o.Item.Slug, o.Entrants, o.Seeds, o.FirstSeed, o.Cycles, o.StrategyTimeoutMs, schedule.Matches.Count);
+        var whole = new TournamentHeader(o.Item.Slug, o.Entrants, o.Seeds, o.FirstSeed, o.Cycles, o.StrategyTimeoutMs, o.Cup?.PlannedMatches ?? schedule.Matches.Count);
         string folder;
         try
         {
@@ -120,7 +120,7 @@ internal sealed class TournamentCommand : ICliCommand
             return Refuse(console, $"--out: cannot create {o.Out} ({e.Message})");
         }
 
-        return Play(o, header, schedule, folder, results, console);
+        return o.Cup is { } cup ? PlayCup(o, header, cup, folder, results, console) : Play(o, header, schedule, folder, results, console);
     }
 
     private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, CliConsole console)
@@ -236,6 +236,164 @@ internal sealed class TournamentCommand : ICliCommand
         }
 
         return ExitCodes.Success;
+    }
+
+    // --format groups-knockout: the group stage, then the knockout round by round as the results decide it.
+    // What the folder holds is kept by match (seed and entrants, each in the same version), wherever the new layout puts it.
+    private static int PlayCup(TournamentOptions o, TournamentHeader header, GroupsKnockout cup, string folder, string results, CliConsole console)
+    {
+        HostSandbox.Warn = console.ErrorLine;
+        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine);
+        var errors = entrants.Errors;
+        if (entrants.AnyHosted)
+        {
+            try
+            {
+                HostSandbox.Use(o.Sandbox);
+            }
+            catch (StrategyLoadException e)
+            {
+                return Refuse(console, e.Message);
+            }
+        }
+
+        for (int i = 0; i < errors.Count; i++)
+        {
+            if (errors[i] is { } error)
+            {
+                console.ErrorLine($"tournament: entrant {o.Entrants[i].Name} cannot be loaded and forfeits its matches: {error}");
+            }
+        }
+
+        var names = o.Entrants.Select(e => e.Name).ToArray();
+        TournamentCupPool pool;
+        try
+        {
+            pool = TournamentCupPool.Read(results, header, errors, folder);
+        }
+        catch (ResultFileException e)
+        {
+            return Refuse(console, e.Message);
+        }
+
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture,
+            $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, groups-knockout: {Plural(cup.Groups.Count, "group")}, the top {cup.Advance} of each into the knockout, the final on {Plural(cup.FinalSeeds, "seed")}{(pool.Broken > 0 ? $"; {pool.Broken} broken lines dropped" : string.Empty)}{(pool.Changed > 0 ? $"; {Plural(pool.Changed, "match")} of changed or removed entrants dropped" : string.Empty)}\n"));
+        TournamentFile.Write(results, header, pool.Records);
+        string? replays = o.Replays ? folder : null;
+        var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
+        int threads = o.Threads ?? Environment.ProcessorCount;
+        bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
+        var clock = Stopwatch.StartNew();
+        var failures = new List<string>();
+        int shown = 0, playedAll = 0;
+        Bracket bracket;
+        using (var append = new FileStream(results, FileMode.Append, FileAccess.Write, FileShare.Read))
+        {
+            while (true)
+            {
+                bracket = cup.Unfold(names, pool.Find);
+                var toPlay = new List<ScheduledMatch>();
+                for (; shown < bracket.Steps.Count; shown++)
+                {
+                    var step = bracket.Steps[shown];
+                    var missing = step.Matches.Where(m => !pool.Has(m) || (replays is not null && !pool.HasReplay(m))).ToList();
+                    console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"{step.Label}: {Plural(step.Matches.Count, "match")}; {missing.Count} to play, {step.Matches.Count - missing.Count} already there\n"));
+                    toPlay.AddRange(missing);
+                }
+
+                if (toPlay.Count == 0)
+                {
+                    break;
+                }
+
+                var progress = interactive ? new ProgressBar(console.Out, toPlay.Count, "match", clock) : null;
+                int done = 0;
+                runner.Run(toPlay, threads, (m, record, failure) =>
+                {
+                    done++;
+                    if (record is not null)
+                    {
+                        pool.Add(m, record);
+                        TournamentFile.WriteRecord(append, record);
+                        append.Flush();
+                    }
+
+                    if (failure is not null)
+                    {
+                        failures.Add(string.Create(CultureInfo.InvariantCulture, $"match {m.Index}: {failure}"));
+                    }
+
+                    progress?.Update(done);
+                });
+                progress?.Clear();
+                playedAll += toPlay.Count;
+                if (bracket.Complete)
+                {
+                    break; // the last step was only replays to write again
+                }
+            }
+        }
+
+        clock.Stop();
+        pool.PlaceReplays(bracket);
+        bracket = cup.Unfold(names, pool.Find);
+        var records = bracket.Matches.Select(m => pool.At(m)).ToList();
+        var final = header with { Matches = bracket.Matches.Count };
+        var standings = Standings.Compute(final, 2, records, errors) with { Cup = bracket };
+        TournamentOutputs.Write(folder, standings, records, entrants.TeamNames);
+        console.Out.Write(StandingsLines(standings));
+        console.Out.Write(CupLines(standings));
+        console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
+        console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
+        double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {playedAll / seconds:0.00} matches/s, {playedAll * header.Cycles * 0.1 / seconds:0}x real time\n"));
+        foreach (string f in failures.Take(5))
+        {
+            console.ErrorLine("tournament: " + f);
+        }
+
+        if (failures.Count > 0)
+        {
+            console.ErrorLine($"tournament: {failures.Count} matches failed inside the server; each is recorded as a forfeit of the team at fault");
+            return ExitCodes.InternalError;
+        }
+
+        return ExitCodes.Success;
+    }
+
+    // The groups' tables and the bracket in a few lines for the terminal.
+    private static string CupLines(Standings s)
+    {
+        if (s.Cup is not { } cup)
+        {
+            return string.Empty;
+        }
+
+        var t = new System.Text.StringBuilder();
+        foreach (var group in cup.Groups)
+        {
+            t.Append("group ").Append(group.Name).Append(": ")
+                .Append(string.Join(", ", group.Table.Select(p => string.Create(CultureInfo.InvariantCulture, $"{p.Rank} {p.Name} {p.Points} pts ({StandingsText.Signed(p.GoalDifference)})"))))
+                .Append('\n');
+        }
+
+        t.Append("knockout (").Append(StandingsText.KnockoutRule).Append("):\n");
+        foreach (var round in cup.Rounds)
+        {
+            foreach (var tie in round.Ties)
+            {
+                t.Append("  ").Append(round.Name).Append(": ").Append(StandingsText.Pairing(s, tie));
+                if (tie.A is not null && tie.B is not null)
+                {
+                    t.Append(": wins ").Append(StandingsText.Pair(tie.WinsA, tie.WinsB)).Append(", goals ").Append(StandingsText.Pair(tie.GoalsA, tie.GoalsB));
+                }
+
+                t.Append(" -> ").Append(StandingsText.GoesOn(s, tie)).Append(" (").Append(tie.DecidedBy ?? "not decided").Append(")\n");
+            }
+        }
+
+        t.Append("champion: ").Append(cup.Champion is null ? "not decided yet" : s.Header.Entrants[cup.Champion.Entrant].Name).Append('\n');
+        return t.ToString();
     }
 
     // --check: each entrant loads and plays one short match against idle; the table on stdout, nothing written.
@@ -433,6 +591,11 @@ internal sealed class TournamentCommand : ICliCommand
         "version, a hash of its files) or that were added. --entrants-dir DIR: every sub-folder, .cs file and .dll\n" +
         "in DIR is an entrant named after it.\n" +
         "--check: each entrant only loads and plays one match of at most a minute against idle; a table, nothing written.\n" +
+        "--format groups-knockout: snake-seeded groups (--groups G, default 2; --seeding NAME,... to seed by another\n" +
+        "order) play round robins ranked by the points table; the top --advance K (default 2) of each go into a\n" +
+        "single-elimination bracket (cross-over pairing, byes for the best seeds), each pairing both sides on --seeds\n" +
+        "seeds, the final on --final-seeds F; a pairing goes by wins, then goal difference, then a further seed, then\n" +
+        "the better seed. Played on one machine.\n" +
         "Two-team ratings: Bradley-Terry (a draw is half a win) on the Elo scale, mean 1500, with 95 % bootstrap\n" +
         "intervals, and a points table (3 a win, 1 a draw; goal difference, goals, head to head); one-team: mean score\n" +
         "with 95 % bootstrap intervals. An entrant that cannot be loaded forfeits.\n" +

@@ -5,6 +5,7 @@ using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Hosting;
@@ -19,7 +20,7 @@ internal sealed class TournamentOptions
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
     /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] (--out DIR | --check) [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] [--format round-robin|groups-knockout [--groups G] [--advance K] [--final-seeds F] [--seeding NAME,...]] (--out DIR | --check) [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -43,7 +44,7 @@ internal sealed class TournamentOptions
     public int Cycles { get; private set; } = 6000;
 
     /// <summary>Strategies' time limit per call, ms.</summary>
-    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Scenario.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Where user entrants run (<see cref="HostOptions"/>): strategy hosts by default, as <c>run</c>.</summary>
     public HostSettings HostSettings { get; private set; } = HostSettings.Default;
@@ -101,6 +102,30 @@ internal sealed class TournamentOptions
 
     /// <summary>Whether --help was given.</summary>
     public bool Help { get; private set; }
+
+    /// <summary>The format: <c>round-robin</c> (the default) or <c>groups-knockout</c> (<c>--format</c>).</summary>
+    public string Format { get; private set; } = RoundRobin;
+
+    /// <summary>The round robin's format name.</summary>
+    public const string RoundRobin = "round-robin";
+
+    /// <summary>The group stage and knockout's format name.</summary>
+    public const string GroupsKnockoutFormat = "groups-knockout";
+
+    /// <summary>Groups of the group stage (<c>--groups G</c>, default 2).</summary>
+    public int Groups { get; private set; } = 2;
+
+    /// <summary>Entrants of each group into the knockout (<c>--advance K</c>, default 2).</summary>
+    public int Advance { get; private set; } = 2;
+
+    /// <summary>Seeds of the final (<c>--final-seeds F</c>), or null for <see cref="Seeds"/>.</summary>
+    public int? FinalSeeds { get; private set; }
+
+    /// <summary>The entrants named first in the seeding (<c>--seeding NAME,…</c>), the others after them in entrant order.</summary>
+    public List<string> Seeding { get; } = [];
+
+    /// <summary>With <c>--format groups-knockout</c>: the groups and the group stage; null for a round robin.</summary>
+    public GroupsKnockout? Cup { get; private set; }
 
     /// <summary>Whether only to check the entrants (<c>--check</c>): each loads and plays one short match against idle; nothing is written.</summary>
     public bool Check { get; private set; }
@@ -235,6 +260,17 @@ internal sealed class TournamentOptions
                 case "--sbatch-arg": o.SbatchArguments.Add(SlurmJob.SbatchArgumentError(value) is { } why ? throw UsageError(why) : value); seen.Add(name); break;
                 case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
+                case "--format": o.Format = value is RoundRobin or GroupsKnockoutFormat ? value : throw UsageError($"--format must be {RoundRobin} or {GroupsKnockoutFormat}, got {MessageText.Quote(value)}"); break;
+                case "--groups": o.Groups = (int)Number(name, value, 1, MaximumEntrants / 2); break;
+                case "--advance": o.Advance = (int)Number(name, value, 1, MaximumEntrants); break;
+                case "--final-seeds": o.FinalSeeds = (int)Number(name, value, 1, 100_000); break;
+                case "--seeding":
+                    foreach (string entrant in value.Split(','))
+                    {
+                        o.Seeding.Add(entrant.Length > 0 ? entrant : throw UsageError($"--seeding must be entrant names separated by commas, got {MessageText.Quote(value)}"));
+                    }
+
+                    break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
                 default: throw CliUsageException.UnknownOption("tournament", name, TournamentSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
@@ -301,6 +337,7 @@ internal sealed class TournamentOptions
             }
         }
 
+        CheckFormat(seen);
         if ((ShardCount > 1 || seen.Contains("--shard")) != (Results is not null))
         {
             throw UsageError("--shard I/K and --results FILE go together (a Slurm task's share of the tournament)");
@@ -319,6 +356,62 @@ internal sealed class TournamentOptions
         if (Results is not null && Merge.Count > 0)
         {
             throw UsageError("--merge gathers shards into --out DIR; it does not go with --shard");
+        }
+    }
+
+    // --format groups-knockout and its options: a two-team item, one machine, and counts the entrants can fill.
+    private void CheckFormat(HashSet<string> seen)
+    {
+        if (Format == RoundRobin)
+        {
+            if (seen.Contains("--groups") || seen.Contains("--advance") || seen.Contains("--final-seeds") || seen.Contains("--seeding"))
+            {
+                throw UsageError("--groups, --advance, --final-seeds and --seeding belong to --format groups-knockout");
+            }
+
+            return;
+        }
+
+        if (Item.TeamCount != 2)
+        {
+            throw UsageError($"--format groups-knockout: {Item.Slug} is a {Item.TeamCount}-team item; a group stage and knockout needs a two-team item");
+        }
+
+        if (Slurm is not null || Results is not null || Merge.Count > 0)
+        {
+            throw UsageError("--format groups-knockout is played on one machine: --slurm, --shard, --results and --merge go with --format round-robin");
+        }
+
+        var index = new Dictionary<string, int>(StringComparer.Ordinal);
+        for (int i = 0; i < Entrants.Count; i++)
+        {
+            index[Entrants[i].Name] = i;
+        }
+
+        var order = new List<int>();
+        foreach (string name in Seeding)
+        {
+            if (!index.TryGetValue(name, out int e))
+            {
+                throw UsageError($"--seeding: {MessageText.Quote(name)} is not an entrant");
+            }
+
+            if (order.Contains(e))
+            {
+                throw UsageError($"--seeding: {MessageText.Quote(name)} is named twice");
+            }
+
+            order.Add(e);
+        }
+
+        order.AddRange(Enumerable.Range(0, Entrants.Count).Where(e => !order.Contains(e)));
+        try
+        {
+            Cup = new GroupsKnockout(Entrants.Count, Groups, Advance, Seeds, FinalSeeds ?? Seeds, FirstSeed, order);
+        }
+        catch (ArgumentException e)
+        {
+            throw UsageError(e.Message);
         }
     }
 

@@ -5,6 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using System.Threading;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -5,6 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.BuiltInStrategies;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -1,5 +1,6 @@
 using System;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

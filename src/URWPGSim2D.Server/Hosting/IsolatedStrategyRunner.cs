@@ -1,5 +1,6 @@
 using System;
 using System.Threading;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
 using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -14,7 +15,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// late call from its time bank (<see cref="TimeBank"/>): which answers count never depends on how
 /// fast the server plays. A team whose bank is spent, or whose call is given up on, plays idle.
 /// </summary>
-internal sealed class StrategyCaller
+internal sealed class StrategyCaller : IMatchTeams
 {
     /// <summary>Asks <paramref name="slots"/>; each isolated or hosted one gets a time bank of <paramref name="timeBank"/> for calls of <paramref name="timeoutMs"/>.</summary>
     /// <param name="slots">The slots, in decision order.</param>
@@ -36,6 +37,9 @@ internal sealed class StrategyCaller
 
     /// <summary>The slots, in decision order.</summary>
     public StrategySlot[] Slots { get; }
+
+    /// <inheritdoc/>
+    IReadOnlyList<ITeamSeat> IMatchTeams.Seats => Slots;
 
     /// <summary>The deadline of a call of an isolated or hosted strategy, ms of CPU time.</summary>
     public int TimeoutMs { get; }

@@ -3,6 +3,7 @@ using System.IO;
 using System.Security.Cryptography;
 using System.Text;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 

@@ -8,6 +8,7 @@ using System.Reflection.Metadata;
 using System.Reflection.Metadata.Ecma335;
 using System.Reflection.PortableExecutable;
 using URWPGSim2D.Compat.Retargeting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 
 namespace URWPGSim2D.Server.Hosting;

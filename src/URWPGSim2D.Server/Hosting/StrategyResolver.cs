@@ -6,6 +6,7 @@ using System.IO;
 using System.Reflection;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
 using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Server.BuiltInStrategies;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Hosting;

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -7,7 +8,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// Built-in strategies run inline; loaded (user) strategies run isolated on their own thread with
 /// a time limit, or in a strategy host process (<see cref="Hosted"/>).
 /// </summary>
-internal sealed class StrategySlot
+internal sealed class StrategySlot : ITeamSeat
 {
     /// <summary>A slot whose strategy runs in the server's process.</summary>
     public StrategySlot(string label, IStrategy strategy, int team, int[] fish, bool isolated, StrategyClock? clock = null)
@@ -43,7 +44,7 @@ internal sealed class StrategySlot
     /// <summary>
     /// The strategy's own name, once it is known: the hello of a strategy host (before the match)
     /// or of a remote client (when it connects); null before, and in the server's process, where
-    /// the label given holds the name already (<see cref="Scenario.TeamStrategy.InProcess"/>).
+    /// the label given holds the name already (<see cref="TeamStrategy.InProcess"/>).
     /// </summary>
     public string? Name => TeamName.Clean(Hosted?.TeamName);
 

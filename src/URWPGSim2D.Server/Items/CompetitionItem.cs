@@ -7,10 +7,10 @@ namespace URWPGSim2D.Server.Items;
 /// One competition item of the original (抢球博弈 ball-grab, 生存挑战 survival, …): its names, how
 /// many teams and fish play it, its layout at cycle 0, a referee for its rules and a demo strategy.
 /// To add an item, write a folder under <c>Items/</c> with a subclass of this and a subclass of
-/// <see cref="ItemReferee"/> (and its demo strategy), and list it in <see cref="ItemRegistry"/>;
+/// <see cref="ItemReferee"/> (and its demo strategy), and list it in <see cref="Catalog.ItemRegistry"/>;
 /// see docs/items.md, "Adding an item".
 /// </summary>
-internal abstract class CompetitionItem
+internal abstract class CompetitionItem : IScenarioItem
 {
     /// <summary>Cycles of the default duration, ten minutes.</summary>
     public const int DefaultCycles = 6000;

@@ -36,7 +36,7 @@ internal sealed record ScenarioDefinition
     public IReadOnlyList<ObstacleDefinition> Obstacles { get; init; } = [];
 
     /// <summary>The competition item played on this layout, or null for the plain goal rules.</summary>
-    public Items.CompetitionItem? Item { get; init; }
+    public IScenarioItem? Item { get; init; }
 
     /// <summary>Points of each ball in the item (empty: balls have no value).</summary>
     public IReadOnlyList<double> BallValues { get; init; } = [];

@@ -18,8 +18,14 @@ internal static class ScenarioParser
 {
     private static readonly JsonDocumentOptions Options = new() { AllowTrailingCommas = true, CommentHandling = JsonCommentHandling.Skip, MaxDepth = 16 };
 
-    /// <summary>Parses and validates scenario JSON text.</summary>
-    public static ScenarioDefinition Parse(string json)
+    /// <summary>Parses and validates the JSON text of a scenario that names no item (a scenario file with <c>"item"</c> is read by <c>Items.Catalog.ScenarioFile</c>).</summary>
+    public static ScenarioDefinition Parse(string json) => ParseDocument(json, ReadPlain);
+
+    /// <summary>Parses <paramref name="json"/> as scenario JSON (comments and trailing commas allowed) and reads its root object with <paramref name="read"/>; a syntax error or lone surrogate is a <see cref="ScenarioException"/>.</summary>
+    /// <typeparam name="T">What is read.</typeparam>
+    /// <param name="json">The text.</param>
+    /// <param name="read">Reads the root object (already checked to be an object).</param>
+    public static T ParseDocument<T>(string json, Func<JsonElement, T> read)
     {
         JsonDocument doc;
         try
@@ -36,7 +42,7 @@ internal static class ScenarioParser
         {
             try
             {
-                return Read(doc);
+                return read(Object(doc.RootElement, "(root)"));
             }
             catch (InvalidOperationException)
             {
@@ -45,14 +51,10 @@ internal static class ScenarioParser
         }
     }
 
-    private static ScenarioDefinition Read(JsonDocument doc)
+    /// <summary>Reads the root object of a scenario that names no item.</summary>
+    /// <param name="root">The root object.</param>
+    public static ScenarioDefinition ReadPlain(JsonElement root)
     {
-        JsonElement root = Object(doc.RootElement, "(root)");
-        if (root.TryGetProperty("item", out var item))
-        {
-            return ItemScenarioParser.Parse(root, item);
-        }
-
         OnlyKnown(root, string.Empty, "field", "cycles", "seed", "noise", "fish", "balls", "obstacles");
         var s = new ScenarioDefinition();
         if (root.TryGetProperty("field", out var field))

@@ -3,7 +3,6 @@ using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Simulation;
 
@@ -68,6 +67,21 @@ internal sealed class World
 
     /// <summary>Cycles completed.</summary>
     public int Cycle { get; set; }
+
+    /// <summary>The teams that play: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
+    public int TeamCount
+    {
+        get
+        {
+            int teams = 2;
+            foreach (var f in Fish)
+            {
+                teams = Math.Max(teams, f.Team + 1);
+            }
+
+            return teams;
+        }
+    }
 
     /// <summary>The team that scores when a ball ends in the goal on <paramref name="side"/> (−1 left, +1 right): team 0 attacks the right goal (+X), team 1 the left one.</summary>
     public static int ScoringTeam(int side) => side > 0 ? 0 : 1;

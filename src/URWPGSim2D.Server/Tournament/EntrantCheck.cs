@@ -3,7 +3,9 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using System.Text;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
@@ -64,7 +66,7 @@ internal static class EntrantCheck
             var settings = new MatchSettings(item.CreateScenario(seed), Math.Min(cycles, MostCycles), seed, Noise: null, teams, strategyTimeoutMs);
             using var loop = new MatchLoop(settings.Build(), settings.Cycles);
             loop.Play();
-            var mine = loop.Match.Strategies.Slots.Where(s => s.Team == 0).ToList();
+            var mine = loop.Match.Caller().Slots.Where(s => s.Team == 0).ToList();
             double? slowest = mine.Select(s => s.Bank?.Slowest.TotalMilliseconds).Where(x => x is not null).DefaultIfEmpty(null).Max();
             lines.Add(new Line(
                 entrants[e].Name, null, mine.Sum(s => s.Exceptions), mine.Sum(s => s.Timeouts), mine.Sum(s => s.BadAnswers), mine.Sum(s => s.Crashes),

@@ -11,7 +11,8 @@ namespace URWPGSim2D.Server.Tournament;
 /// DIR/report.html: one self-contained page (no script, no outside file but the replay pages it
 /// links to): the standings, their intervals as an inline SVG plot, the win/draw/loss matrix
 /// (two-team items), and every match with its entrants, score, winner and deciding rule, linked to
-/// its replay page (<c>replays/match-J.html</c>) when that page exists.
+/// its replay page (<c>replays/match-J.html</c>) when that page exists; a group stage and knockout adds each
+/// group's table and the bracket, a column per round.
 /// </summary>
 internal static class ReportPage
 {
@@ -37,6 +38,7 @@ internal static class ReportPage
         }
 
         Points(h, s);
+        Cup(h, s, hasReplay);
         Entrants(h, s, teamNames);
         Faults(h, s, hasReplay);
         h.Append("<h2>Intervals</h2>\n");
@@ -210,6 +212,79 @@ internal static class ReportPage
             }
 
             h.Append("</td></tr>\n");
+        }
+
+        h.Append("</table>\n");
+    }
+
+    // A group stage and knockout: each group's table, then the bracket, a column per round, each pairing's matches linked to their replay pages.
+    private static void Cup(StringBuilder h, Standings s, Func<int, bool> hasReplay)
+    {
+        if (s.Cup is not { } cup)
+        {
+            return;
+        }
+
+        h.Append("<style>.bracket{display:flex;gap:1.5em;align-items:stretch;margin:1em 0}.round{display:flex;flex-direction:column;justify-content:space-around;gap:1em;min-width:14em}")
+            .Append(".round h3{margin:0;font-size:1em}.tie{border:1px solid #ccc;border-radius:4px;padding:.3em .5em}.side{display:flex;justify-content:space-between;gap:1em}")
+            .Append(".side.win{font-weight:bold}.from{color:#777;font-weight:normal}.games{color:#555;font-size:.85em}.champion{font-size:1.2em}</style>\n");
+        h.Append("<h2>Groups</h2>\n<p class=\"note\">").Append(E(StandingsText.PointsRule)).Append(".</p>\n");
+        foreach (var group in cup.Groups)
+        {
+            h.Append("<h3>Group ").Append(E(group.Name)).Append("</h3>\n");
+            PointsRows(h, group.Table);
+        }
+
+        h.Append("<h2>Knockout</h2>\n<p class=\"note\">").Append(E(StandingsText.KnockoutRule)).Append(".</p>\n<div class=\"bracket\">\n");
+        foreach (var round in cup.Rounds)
+        {
+            h.Append("<div class=\"round\"><h3>").Append(E(round.Name)).Append("</h3>\n");
+            foreach (var tie in round.Ties)
+            {
+                h.Append("<div class=\"tie\">");
+                Side(h, s, tie, tie.A, tie.WinsA);
+                Side(h, s, tie, tie.B, tie.WinsB);
+                if (tie.A is not null && tie.B is not null)
+                {
+                    h.Append("<div class=\"games\">");
+                    var links = tie.Matches.Select(m => hasReplay(m.Index) ? Inv($"<a href=\"replays/match-{m.Index}.html\">{m.Index}</a>") : Inv($"{m.Index}"));
+                    h.Append(E(StandingsText.TieMatches(cup, tie))).Append("<br>goals ").Append(StandingsText.Pair(tie.GoalsA, tie.GoalsB))
+                        .Append("; matches ").Append(string.Join(", ", links)).Append("</div>");
+                }
+
+                h.Append("<div class=\"games\">").Append(E(tie.DecidedBy is null ? "not decided yet" : "decided by " + tie.DecidedBy)).Append("</div></div>\n");
+            }
+
+            h.Append("</div>\n");
+        }
+
+        string champion = cup.Champion is null ? "not decided yet" : s.Header.Entrants[cup.Champion.Entrant].Name;
+        h.Append("<div class=\"round\"><h3>champion</h3><div class=\"tie champion\"><strong>").Append(E(champion)).Append("</strong></div></div>\n</div>\n");
+    }
+
+    // One side of a knockout pairing: its name, where it came from, its wins; the side that goes on in bold.
+    private static void Side(StringBuilder h, Standings s, CupTie tie, CupSlot? slot, int wins)
+    {
+        if (slot is null)
+        {
+            h.Append("<div class=\"side\"><span class=\"from\">bye</span></div>");
+            return;
+        }
+
+        bool on = tie.Winner?.Entrant == slot.Entrant;
+        bool bye = tie.A is null || tie.B is null;
+        h.Append(on ? "<div class=\"side win\">" : "<div class=\"side\">").Append("<span>").Append(E(s.Header.Entrants[slot.Entrant].Name))
+            .Append(" <span class=\"from\">").Append(E(slot.From)).Append("</span></span><span>").Append(bye ? string.Empty : Inv($"{wins}")).Append("</span></div>");
+    }
+
+    // The rows of a points table.
+    private static void PointsRows(StringBuilder h, IReadOnlyList<PointsRow> rows)
+    {
+        h.Append("<table>\n<tr><th>Rank</th><th class=\"l\">Entrant</th><th>Played</th><th>Won</th><th>Drawn</th><th>Lost</th><th>Goals for</th><th>Goals against</th><th>Goal difference</th><th>Points</th></tr>\n");
+        foreach (var p in rows)
+        {
+            h.Append(Inv($"<tr><td>{p.Rank}</td><td class=\"l\">")).Append(E(p.Name))
+                .Append(Inv($"</td><td>{p.Played}</td><td>{p.Won}</td><td>{p.Drawn}</td><td>{p.Lost}</td><td>{p.GoalsFor}</td><td>{p.GoalsAgainst}</td><td>{StandingsText.Signed(p.GoalDifference)}</td><td>{p.Points}</td></tr>\n"));
         }
 
         h.Append("</table>\n");

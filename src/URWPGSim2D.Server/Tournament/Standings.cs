@@ -62,6 +62,9 @@ internal sealed record Standings(
     /// <summary>Items of two or more teams: the points table (<see cref="PointsTable"/>), best first; empty for a one-team item.</summary>
     public IReadOnlyList<PointsRow> Points { get; init; } = [];
 
+    /// <summary>With <c>--format groups-knockout</c>: the groups' tables and the bracket (<see cref="GroupsKnockout"/>); null for a round robin.</summary>
+    public Bracket? Cup { get; init; }
+
     /// <summary>Whether any entrant had a runtime fault.</summary>
     public bool AnyFaults => Rows.Any(r => r.Faults is not null);
 

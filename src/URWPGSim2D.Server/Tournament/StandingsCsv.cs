@@ -12,6 +12,9 @@ namespace URWPGSim2D.Server.Tournament;
 /// spreadsheet shows Chinese names as they are), one line per entrant in rank order or per match in
 /// index order. A text field (a name, a reason) that a spreadsheet would take for a formula
 /// (it starts with <c>=</c>, <c>+</c>, <c>-</c>, <c>@</c>, a tab or a carriage return) starts with <c>'</c>.
+/// A group stage and knockout adds columns at the end: <c>group,group_rank,reached</c> to the standings
+/// (<see cref="Bracket.Reached"/>) and <c>stage,round</c> to the matches (<c>group</c> and the group's name, or
+/// <c>knockout</c> and the round's name).
 /// </summary>
 internal static class StandingsCsv
 {
@@ -23,7 +26,7 @@ internal static class StandingsCsv
         bool one = s.Teams == 1;
         t.Append(one
             ? "rank,entrant,score,ci_low,ci_high,played,seconds,exceptions,timeouts,bad_answers,host_ends,error\r\n"
-            : "rank,entrant,rating,ci_low,ci_high,played,wins,draws,losses,points_rank,points,goals_for,goals_against,goal_difference,exceptions,timeouts,bad_answers,host_ends,error\r\n");
+            : "rank,entrant,rating,ci_low,ci_high,played,wins,draws,losses,points_rank,points,goals_for,goals_against,goal_difference,exceptions,timeouts,bad_answers,host_ends,error" + (s.Cup is null ? "\r\n" : ",group,group_rank,reached\r\n"));
         var points = s.Points.ToDictionary(p => p.Entrant);
         foreach (var r in s.Rows)
         {
@@ -43,6 +46,12 @@ internal static class StandingsCsv
 
             var f = r.Faults;
             fields.AddRange([Int(f?.Exceptions ?? 0), Int(f?.Timeouts ?? 0), Int(f?.BadAnswers ?? 0), Int(f?.HostEnds ?? 0), r.Error is null ? string.Empty : Text(StandingsText.Line(r.Error))]);
+            if (s.Cup is { } cup)
+            {
+                var group = cup.Groups.FirstOrDefault(g => g.Entrants.Contains(r.Entrant));
+                fields.AddRange([group?.Name ?? string.Empty, group is null ? string.Empty : Int(group.Table.First(p => p.Entrant == r.Entrant).Rank), cup.Reached(r.Entrant)]);
+            }
+
             Line(t, fields);
         }
 
@@ -58,6 +67,11 @@ internal static class StandingsCsv
         header.AddRange(Enumerable.Range(0, s.Teams).Select(k => "team_" + Int(k)));
         header.AddRange(Enumerable.Range(0, s.Teams).Select(k => "score_" + Int(k)));
         header.AddRange(["winner", "result", "forfeited"]);
+        if (s.Cup is not null)
+        {
+            header.AddRange(["stage", "round"]);
+        }
+
         Line(t, header);
         foreach (var m in s.Records)
         {
@@ -84,6 +98,12 @@ internal static class StandingsCsv
                 fields.Add(string.Empty);
                 fields.Add(m.Failed ? "failed" : "forfeit");
                 fields.Add(Text(string.Join(";", m.Forfeits.Select(k => m.Entrants[k]))));
+            }
+
+            if (s.Cup is { } cup)
+            {
+                var (stage, round) = cup.Stages.TryGetValue(m.Index, out var x) ? x : (string.Empty, string.Empty);
+                fields.AddRange([stage, round]);
             }
 
             Line(t, fields);

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Globalization;
 using System.Text;
 using System.Text.Encodings.Web;
@@ -18,6 +19,9 @@ namespace URWPGSim2D.Server.Tournament;
 /// relative to the folder, only when the page exists). Ratings and their intervals are rounded to 0.1, scores to 0.001, seconds to 0.1.
 /// An item of two or more teams also has <c>"points"</c>, the points table (<see cref="PointsTable"/>), best first:
 /// <c>[{"name", "rank", "played", "won", "drawn", "lost", "goalsFor", "goalsAgainst", "goalDifference", "points"}, …]</c>.
+/// A group stage and knockout (<see cref="Standings.Cup"/>) adds <c>"groups"</c> (each group's name and points table)
+/// and <c>"knockout"</c> (<c>{"rounds": [{"name", "pairs": [{"entrants", "from", "seeded", "matches": [{"match", "seed",
+/// "teams", "score", "winner"}], "wins", "goals", "winner", "decidedBy"}]}], "champion"}</c>).
 /// </summary>
 internal static class StandingsJson
 {
@@ -71,17 +75,87 @@ internal static class StandingsJson
             t.Append(",\n  \"points\": [\n");
             for (int k = 0; k < standings.Points.Count; k++)
             {
-                var p = standings.Points[k];
-                t.Append("    {\"name\": ").Append(Text(p.Name))
-                    .Append(Inv($", \"rank\": {p.Rank}, \"played\": {p.Played}, \"won\": {p.Won}, \"drawn\": {p.Drawn}, \"lost\": {p.Lost}, \"goalsFor\": {p.GoalsFor}, \"goalsAgainst\": {p.GoalsAgainst}, \"goalDifference\": {p.GoalDifference}, \"points\": {p.Points}}}"))
-                    .Append(k + 1 < standings.Points.Count ? ",\n" : "\n");
+                t.Append("    ").Append(PointsLine(standings.Points[k])).Append(k + 1 < standings.Points.Count ? ",\n" : "\n");
             }
 
             t.Append("  ]");
         }
 
+        if (standings.Cup is { } cup)
+        {
+            Cup(t, standings, cup);
+        }
+
         t.Append("\n}\n");
         return t.ToString();
+    }
+
+    // A line of a points table.
+    private static string PointsLine(PointsRow p) =>
+        "{\"name\": " + Text(p.Name)
+        + Inv($", \"rank\": {p.Rank}, \"played\": {p.Played}, \"won\": {p.Won}, \"drawn\": {p.Drawn}, \"lost\": {p.Lost}, \"goalsFor\": {p.GoalsFor}, \"goalsAgainst\": {p.GoalsAgainst}, \"goalDifference\": {p.GoalDifference}, \"points\": {p.Points}}}");
+
+    // "groups": each group's points table; "knockout": the bracket's rounds, pairs, their matches and winners, and the champion.
+    private static void Cup(StringBuilder t, Standings s, Bracket cup)
+    {
+        string Name(int entrant) => Text(s.Header.Entrants[entrant].Name);
+        t.Append(",\n  \"groups\": [\n");
+        for (int g = 0; g < cup.Groups.Count; g++)
+        {
+            var group = cup.Groups[g];
+            t.Append("    {\"name\": ").Append(Text(group.Name)).Append(", \"points\": [\n");
+            for (int k = 0; k < group.Table.Count; k++)
+            {
+                t.Append("      ").Append(PointsLine(group.Table[k])).Append(k + 1 < group.Table.Count ? ",\n" : "\n");
+            }
+
+            t.Append(g + 1 < cup.Groups.Count ? "    ]},\n" : "    ]}\n");
+        }
+
+        t.Append("  ],\n  \"knockout\": {\n    \"rounds\": [\n");
+        for (int r = 0; r < cup.Rounds.Count; r++)
+        {
+            var round = cup.Rounds[r];
+            t.Append("      {\"name\": ").Append(Text(round.Name)).Append(", \"pairs\": [\n");
+            for (int k = 0; k < round.Ties.Count; k++)
+            {
+                var tie = round.Ties[k];
+                string Side(CupSlot? x) => x is null ? "null" : Name(x.Entrant);
+                string From(CupSlot? x) => x is null ? "null" : Text(x.From);
+                string Seeded(CupSlot? x) => x is null ? "null" : x.Seed.ToString(CultureInfo.InvariantCulture);
+                t.Append("        {\"entrants\": [").Append(Side(tie.A)).Append(", ").Append(Side(tie.B))
+                    .Append("], \"from\": [").Append(From(tie.A)).Append(", ").Append(From(tie.B))
+                    .Append("], \"seeded\": [").Append(Seeded(tie.A)).Append(", ").Append(Seeded(tie.B)).Append("], \"matches\": [");
+                for (int j = 0; j < tie.Matches.Count; j++)
+                {
+                    var m = tie.Matches[j];
+                    t.Append(j == 0 ? string.Empty : ", ").Append(Inv($"{{\"match\": {m.Index}, \"seed\": {m.Seed}, \"teams\": [")).Append(Name(m.Sides[0])).Append(", ").Append(Name(m.Sides[1])).Append(']');
+                    if (cup.Records.TryGetValue(m.Index, out var record))
+                    {
+                        if (record.Result is { } result)
+                        {
+                            t.Append(Inv($", \"score\": [{GroupsKnockout.Goals(record, 0)}, {GroupsKnockout.Goals(record, 1)}]"));
+                            t.Append(", \"winner\": ").Append(result.Winner is 0 or 1 ? Text(record.Entrants[result.Winner]) : "null");
+                        }
+                        else
+                        {
+                            t.Append(", \"forfeit\": [").Append(string.Join(", ", record.Forfeits.Select(f => Text(record.Entrants[f])))).Append(']');
+                        }
+                    }
+
+                    t.Append('}');
+                }
+
+                t.Append(Inv($"], \"wins\": [{tie.WinsA}, {tie.WinsB}], \"goals\": [{tie.GoalsA}, {tie.GoalsB}], \"winner\": "))
+                    .Append(tie.Winner is null ? "null" : Name(tie.Winner.Entrant))
+                    .Append(", \"decidedBy\": ").Append(tie.DecidedBy is null ? "null" : Text(tie.DecidedBy))
+                    .Append(k + 1 < round.Ties.Count ? "},\n" : "}\n");
+            }
+
+            t.Append(r + 1 < cup.Rounds.Count ? "      ]},\n" : "      ]}\n");
+        }
+
+        t.Append("    ],\n    \"champion\": ").Append(cup.Champion is null ? "null" : Name(cup.Champion.Entrant)).Append("\n  }");
     }
 
     /// <summary>Rounded half away from zero, −0 as 0.</summary>

@@ -52,6 +52,36 @@ internal static class StandingsMarkdown
             }
         }
 
+        if (s.Cup is { } cup)
+        {
+            foreach (var group in cup.Groups)
+            {
+                t.Append("\nGroup ").Append(group.Name).Append(" (").Append(StandingsText.PointsRule).Append("):\n\n");
+                t.Append("| Rank | Entrant | Played | Won | Drawn | Lost | Goals for | Goals against | Goal difference | Points |\n");
+                t.Append("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                foreach (var p in group.Table)
+                {
+                    t.Append(string.Create(CultureInfo.InvariantCulture, $"| {p.Rank} | {Cell(p.Name)} | {p.Played} | {p.Won} | {p.Drawn} | {p.Lost} | {p.GoalsFor} | {p.GoalsAgainst} | {StandingsText.Signed(p.GoalDifference)} | {p.Points} |\n"));
+                }
+            }
+
+            t.Append("\nKnockout (").Append(StandingsText.KnockoutRule).Append("):\n\n");
+            t.Append("| Round | Pairing | Matches (seed: goals, both sides) | Wins | Goals | Goes on | Decided by |\n");
+            t.Append("|---|---|---|---:|---:|---|---|\n");
+            foreach (var round in cup.Rounds)
+            {
+                foreach (var tie in round.Ties)
+                {
+                    bool bye = tie.A is null || tie.B is null;
+                    t.Append("| ").Append(round.Name).Append(" | ").Append(Cell(StandingsText.Pairing(s, tie))).Append(" | ").Append(StandingsText.TieMatches(cup, tie))
+                        .Append(" | ").Append(bye ? "-" : StandingsText.Pair(tie.WinsA, tie.WinsB)).Append(" | ").Append(bye ? "-" : StandingsText.Pair(tie.GoalsA, tie.GoalsB))
+                        .Append(" | ").Append(Cell(StandingsText.GoesOn(s, tie))).Append(" | ").Append(tie.DecidedBy ?? "-").Append(" |\n");
+                }
+            }
+
+            t.Append("\nChampion: ").Append(cup.Champion is null ? "not decided yet" : Cell(s.Header.Entrants[cup.Champion.Entrant].Name)).Append(".\n");
+        }
+
         if (StandingsText.ShowsEntrants(s))
         {
             t.Append("\nEntrants (the version is a hash of the entrant's files: a new version plays its matches again):\n\n");

@@ -65,6 +65,54 @@ internal static class StandingsText
     /// <summary>Whether the standings list the entrants' code (some entrant is files, with a version).</summary>
     public static bool ShowsEntrants(Standings s) => s.Header.Entrants.Any(e => e.Version is not null);
 
+    /// <summary>How a knockout pairing is decided, in a few words.</summary>
+    public const string KnockoutRule = "both sides of the field on each seed; more wins go on (each match as the item decides it, its tie rules included), then the better goal difference, then a further seed (at most 3), then the better seed";
+
+    /// <summary>A knockout pairing: <c>alpha (A1) v delta (B2)</c>, or <c>alpha (A1), a bye</c>.</summary>
+    public static string Pairing(Standings s, CupTie t) =>
+        t.A is null || t.B is null ? Slot(s, (t.A ?? t.B)!) + ", a bye" : Slot(s, t.A) + " v " + Slot(s, t.B);
+
+    /// <summary>A pairing's matches seed by seed, each score the first side's goals first: <c>seed 3: 1:0, 0:0; seed 4: 2:1, 0:1</c> (<c>-</c> for a bye, <c>forfeit</c> for a match not played).</summary>
+    public static string TieMatches(Bracket cup, CupTie t)
+    {
+        if (t.A is null || t.B is null)
+        {
+            return "-";
+        }
+
+        var text = new StringBuilder();
+        foreach (var seed in t.Matches.GroupBy(m => m.Seed))
+        {
+            text.Append(text.Length > 0 ? "; " : string.Empty).Append(string.Create(CultureInfo.InvariantCulture, $"seed {seed.Key}: "));
+            text.Append(string.Join(", ", seed.Select(m =>
+            {
+                if (!cup.Records.TryGetValue(m.Index, out var r))
+                {
+                    return "not played";
+                }
+
+                if (r.Result is null)
+                {
+                    return "forfeit";
+                }
+
+                bool aFirst = m.Sides[0] == t.A.Entrant;
+                int a = GroupsKnockout.Goals(r, aFirst ? 0 : 1), b = GroupsKnockout.Goals(r, aFirst ? 1 : 0);
+                return string.Create(CultureInfo.InvariantCulture, $"{a}:{b}");
+            })));
+        }
+
+        return text.ToString();
+    }
+
+    /// <summary>Two counts as <c>2:1</c>.</summary>
+    public static string Pair(int a, int b) => string.Create(CultureInfo.InvariantCulture, $"{a}:{b}");
+
+    /// <summary>Who goes on from a pairing, or a dash while it is not decided.</summary>
+    public static string GoesOn(Standings s, CupTie t) => t.Winner is null ? "-" : s.Header.Entrants[t.Winner.Entrant].Name;
+
+    private static string Slot(Standings s, CupSlot slot) => s.Header.Entrants[slot.Entrant].Name + " (" + slot.From + ")";
+
     /// <summary>One line of a reason: line breaks as spaces.</summary>
     public static string Line(string text) => text.ReplaceLineEndings(" ").Trim();
 }

@@ -1,5 +1,7 @@
 using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;

@@ -3,7 +3,7 @@ using System;
 namespace URWPGSim2D.Server.Trace;
 
 /// <summary>
-/// Where a match's trace lines go as it is played (<see cref="Simulation.MatchLoop"/>): a trace
+/// Where a match's trace lines go as it is played (<see cref="Matches.MatchLoop"/>): a trace
 /// file, a replay page, the live view, a test's hash. Each line is one cycle's JSON object
 /// (<see cref="TraceLine"/>), without its newline; the span is valid only during the call.
 /// </summary>

@@ -3,6 +3,7 @@ using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Trace;
 
@@ -15,9 +16,8 @@ namespace URWPGSim2D.Server.Trace;
 internal static class TraceLayout
 {
     /// <summary>Writes the layout object as the writer's next value.</summary>
-    public static void Write(Utf8JsonWriter w, Match match, ITraceItemInfo item)
+    public static void Write(Utf8JsonWriter w, World world, IMatchTeams teams, ITraceItemInfo item)
     {
-        var world = match.World;
         var field = world.Field;
         float halfLength = field.Length / 2, halfWidth = field.Width / 2, mouth = Field.GoalWidth / 2;
         w.WriteStartObject();
@@ -80,23 +80,23 @@ internal static class TraceLayout
 
         w.WriteEndArray();
         w.WriteStartArray("teams");
-        int teams = match.TeamCount;
-        for (int team = 0; team < teams; team++)
+        int teamCount = world.TeamCount;
+        for (int team = 0; team < teamCount; team++)
         {
             w.WriteStartObject();
             w.WriteNumber("id", team);
-            w.WriteString("name", match.TeamLabel(team));
+            w.WriteString("name", teams.TeamLabel(team));
             w.WriteEndObject();
         }
 
         w.WriteEndArray();
         w.WriteStartArray("fish");
-        Span<int> inTeam = stackalloc int[teams];
+        Span<int> inTeam = stackalloc int[teamCount];
         foreach (var f in world.Fish)
         {
             w.WriteStartObject();
             w.WriteNumber("team", f.Team);
-            w.WriteNumber("index", (uint)f.Team < (uint)teams ? inTeam[f.Team]++ : 0);
+            w.WriteNumber("index", (uint)f.Team < (uint)teamCount ? inTeam[f.Team]++ : 0);
             w.WriteStartObject("size");
             w.WriteNumber("length", f.Size.Length);
             w.WriteNumber("width", f.Size.Width);

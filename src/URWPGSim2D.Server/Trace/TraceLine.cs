@@ -4,6 +4,7 @@ using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Trace;
 
@@ -15,7 +16,8 @@ namespace URWPGSim2D.Server.Trace;
 /// </summary>
 internal sealed class TraceLine
 {
-    private readonly Match _match;
+    private readonly World _world;
+    private readonly IMatchTeams _teamSeats;
     private readonly ITraceItemInfo _item;
     private readonly ArrayBufferWriter<byte> _buffer = new(1 << 12);
     private readonly Utf8JsonWriter _json;
@@ -23,14 +25,16 @@ internal sealed class TraceLine
     private readonly int _teams;
 
     /// <summary>Creates the serialiser of a match's lines.</summary>
-    /// <param name="match">The match.</param>
-    /// <param name="item">The item's information, or null for the match's rules' (its item's referee, or the plain scene's).</param>
-    public TraceLine(Match match, ITraceItemInfo? item = null)
+    /// <param name="world">The match's world.</param>
+    /// <param name="teams">Who decides for its fish (their names, faults, drawings and logs go into the lines).</param>
+    /// <param name="item">The item's information: the match's rules (its item's referee, or the plain scene's).</param>
+    public TraceLine(World world, IMatchTeams teams, ITraceItemInfo item)
     {
-        _match = match;
-        _item = item ?? match.Rules; // the referee reports itself
+        _world = world;
+        _teamSeats = teams;
+        _item = item;
         _json = new Utf8JsonWriter(_buffer);
-        _teams = match.TeamCount;
+        _teams = world.TeamCount;
     }
 
     /// <summary>The item information written into the lines.</summary>
@@ -40,7 +44,7 @@ internal sealed class TraceLine
     /// <param name="contacts">The contacts resolved in the cycle just played (empty for cycle 0).</param>
     public ReadOnlySpan<byte> Write(ReadOnlySpan<ContactRecord> contacts)
     {
-        var world = _match.World;
+        var world = _world;
         var w = _json;
         _buffer.ResetWrittenCount();
         w.Reset(_buffer);
@@ -50,7 +54,7 @@ internal sealed class TraceLine
         {
             w.WriteString("item", _item.Slug);
             w.WritePropertyName("layout");
-            TraceLayout.Write(w, _match, _item);
+            TraceLayout.Write(w, _world, _teamSeats, _item);
         }
 
         w.WriteStartArray("fish");
@@ -140,7 +144,7 @@ internal sealed class TraceLine
     // A `fault` event per strategy that faulted in this cycle (none for well-behaved strategies, so their lines are unchanged).
     private void AddFaults(int cycle)
     {
-        foreach (var slot in _match.Strategies.Slots)
+        foreach (var slot in _teamSeats.Seats)
         {
             if (slot.LastFaultCycle == cycle)
             {
@@ -153,7 +157,7 @@ internal sealed class TraceLine
     private void WriteDrawings(Utf8JsonWriter w)
     {
         bool any = false;
-        foreach (var slot in _match.Strategies.Slots)
+        foreach (var slot in _teamSeats.Seats)
         {
             if (slot.Drawings is not { Count: > 0 } drawings)
             {
@@ -182,7 +186,7 @@ internal sealed class TraceLine
     private void WriteLogs(Utf8JsonWriter w)
     {
         bool any = false;
-        foreach (var slot in _match.Strategies.Slots)
+        foreach (var slot in _teamSeats.Seats)
         {
             if (slot.Log is not { } log || (log.Length == 0 && log.Dropped == 0))
             {
@@ -207,12 +211,12 @@ internal sealed class TraceLine
         }
     }
 
-    private static string FaultText(Hosting.FaultKind kind) => kind switch
+    private static string FaultText(FaultKind kind) => kind switch
     {
-        Hosting.FaultKind.Exception => "exception",
-        Hosting.FaultKind.Timeout => "timeout",
-        Hosting.FaultKind.BadAnswer => "bad answer",
-        Hosting.FaultKind.Disconnected => "remote client disconnected, its fish stop",
+        FaultKind.Exception => "exception",
+        FaultKind.Timeout => "timeout",
+        FaultKind.BadAnswer => "bad answer",
+        FaultKind.Disconnected => "remote client disconnected, its fish stop",
         _ => "strategy ended, its fish stop",
     };
 

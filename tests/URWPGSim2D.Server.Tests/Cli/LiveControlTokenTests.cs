@@ -7,6 +7,7 @@ using System.Text.RegularExpressions;
 using System.Threading;
 using System.Threading.Tasks;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;

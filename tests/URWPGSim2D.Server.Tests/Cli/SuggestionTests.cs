@@ -1,6 +1,7 @@
 using System;
 using System.Linq;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using Xunit;
 

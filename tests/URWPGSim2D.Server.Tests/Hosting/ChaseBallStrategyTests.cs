@@ -1,6 +1,7 @@
 using System;
 using System.Globalization;
 using System.Numerics;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;

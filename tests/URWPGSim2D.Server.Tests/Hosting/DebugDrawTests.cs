@@ -5,6 +5,7 @@ using System.Linq;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items.BallGrab;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Tests.Cli;
@@ -171,7 +172,7 @@ public sealed class DebugDrawTests : IDisposable
     public void The_default_match_with_its_drawing_demo_strategy_allocates_nothing_per_cycle_without_debug_draw()
     {
         var match = MatchBuilder.Build(DefaultScenario.Load());
-        Assert.All(match.Strategies.Slots, s => Assert.Null(s.Drawings));
+        Assert.All(match.Caller().Slots, s => Assert.Null(s.Drawings));
         match.Play(300);
         long before = GC.GetAllocatedBytesForCurrentThread();
         match.Play(300);

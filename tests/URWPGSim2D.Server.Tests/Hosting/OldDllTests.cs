@@ -2,7 +2,9 @@ using System;
 using System.IO;
 using System.Linq;
 using Microsoft.CodeAnalysis;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
@@ -45,7 +47,7 @@ public sealed class OldDllTests : IDisposable
         Assert.Equal("Old dribbler", old.TeamName);
         var fromDll = Play(old);
         var fromSource = Play(StrategyResolver.Load(source));
-        Assert.Equal(0, fromDll.Strategies.TotalFaults);
+        Assert.Equal(0, fromDll.Caller().TotalFaults);
         Assert.Equal(300, OriginalStrategyTests.Field<int>(OriginalStrategyTests.Inner(old), "Calls"));
         Assert.True(fromDll.World.Balls[0].Position.X > 200f, $"ball pushed toward +X, at {fromDll.World.Balls[0].Position}");
         Assert.Equal(fromSource.World.Balls[0].Position, fromDll.World.Balls[0].Position);
@@ -70,8 +72,8 @@ public sealed class OldDllTests : IDisposable
             match.Step();
         }
 
-        match.Strategies.Stop();
-        Assert.Equal(0, match.Strategies.TotalFaults);
+        match.Teams.Stop();
+        Assert.Equal(0, match.Caller().TotalFaults);
         Assert.True(match.World.Cycle > 0);
     }
 
@@ -91,8 +93,8 @@ public sealed class OldDllTests : IDisposable
         scenario = scenario with { Balls = [scenario.Balls[0] with { Position = item == "new-ball-grab" ? scenario.Balls[0].Position : new System.Numerics.Vector2(400f, 0f) }, .. scenario.Balls.Skip(1)] };
         var match = MatchBuilder.Build(scenario, teams, seed: 1, cycles: 20);
         match.Play(5);
-        match.Strategies.Stop();
-        Assert.Equal(0, match.Strategies.TotalFaults);
+        match.Teams.Stop();
+        Assert.Equal(0, match.Caller().TotalFaults);
         Assert.Equal(seen, OriginalStrategyTests.Field<string>(OriginalStrategyTests.Inner(old), "Seen"));
     }
 
@@ -212,7 +214,7 @@ public sealed class OldDllTests : IDisposable
         var teams = new TeamStrategy?[] { new("test", strategy, Isolated: true, new ManualStrategyClock()), null };
         var match = URWPGSim2D.Server.Tests.Simulation.TestMatches.FromJson(OneFishOneBall, teams);
         match.Play(300);
-        match.Strategies.Stop();
+        match.Teams.Stop();
         return match;
     }
 

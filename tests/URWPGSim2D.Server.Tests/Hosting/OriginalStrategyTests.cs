@@ -5,6 +5,7 @@ using System.Reflection;
 using System.Runtime.Loader;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
@@ -36,7 +37,7 @@ public sealed class OriginalStrategyTests
         var teams = new TeamStrategy?[] { new("test", strategy, Isolated: true, clock ?? new ManualStrategyClock()), null };
         var match = TestMatches.FromJson(json, teams, timeoutMs);
         match.Play(cycles);
-        match.Strategies.Stop();
+        match.Teams.Stop();
         return match;
     }
 
@@ -46,7 +47,7 @@ public sealed class OriginalStrategyTests
         IStrategy strategy = StrategyResolver.Load(Folder("Dribbler"));
         Assert.Equal("Dribbler", strategy.TeamName);
         var match = Play(OneFishOneBall, strategy, 300);
-        Assert.Equal(0, match.Strategies.TotalFaults);
+        Assert.Equal(0, match.Caller().TotalFaults);
         Assert.Equal(300, Field<int>(Inner(strategy), "Calls"));
         Assert.True(match.World.Balls[0].Position.X > 200f, $"ball pushed toward +X, at {match.World.Balls[0].Position}");
     }
@@ -98,10 +99,10 @@ public sealed class OriginalStrategyTests
         var variables = new Dictionary<string, string> { ["Ball_0_Left_Status"] = "1", ["Ball_0_Right_Status"] = "0" };
         match.Snapshot.SetItem("抢球博弈", variables, 6000);
         match.Play(200);
-        match.Strategies.Stop();
+        match.Teams.Stop();
 
         object s = Inner(strategy);
-        Assert.Equal(0, match.Strategies.TotalFaults);
+        Assert.Equal(0, match.Caller().TotalFaults);
         Assert.Equal(200, Field<int>(s, "Calls"));
         Assert.Equal(2, Field<int>(s, "VariableCount"));
         Assert.Equal("left=1;right=0;", Field<string>(s, "VariableText"));
@@ -134,7 +135,7 @@ public sealed class OriginalStrategyTests
 
         match.Snapshot.SetSidesSwapped(true);
         match.Play(5);
-        match.Strategies.Stop();
+        match.Teams.Stop();
         Assert.Equal(1, Field<int>(s, "LastTeamId"));
         Assert.Equal(Common.HalfCourt.RIGHT, Field<Common.HalfCourt>(s, "MyHalf"));
         Assert.True(Field<bool>(s, "Exchanged"));
@@ -150,7 +151,7 @@ public sealed class OriginalStrategyTests
         object s = Inner(strategy);
         Assert.Equal(200, Field<int>(s, "Calls"));
         Assert.Equal(0, Field<int>(s, "Leaks"));
-        Assert.Equal(0, match.Strategies.TotalFaults); // five extra decisions are ignored
+        Assert.Equal(0, match.Caller().TotalFaults); // five extra decisions are ignored
         Assert.Equal(new Decision(15, 0), match.World.Fish[0].Decision); // V40 T−3 clamped to 0..15
         Assert.Single(match.World.Balls);
     }
@@ -160,7 +161,7 @@ public sealed class OriginalStrategyTests
     {
         IStrategy strategy = StrategyResolver.Load(Folder("OwnHelper"));
         var match = Play(OneFishOneBall, strategy, 50);
-        Assert.Equal(0, match.Strategies.TotalFaults);
+        Assert.Equal(0, match.Caller().TotalFaults);
         Assert.Equal(new Decision(3, 11), match.World.Fish[0].Decision);
         var uses = Inner(strategy).GetType().GetProperty("HelperUses")!.GetValue(Inner(strategy));
         Assert.Equal(50, uses);
@@ -181,7 +182,7 @@ public sealed class OriginalStrategyTests
             seen.Add(match.World.Fish[0].Decision);
         }
 
-        var slot = match.Strategies.Slots[0];
+        var slot = match.Caller().Slots[0];
         try
         {
             Assert.Equal(30, match.World.Cycle);
@@ -202,7 +203,7 @@ public sealed class OriginalStrategyTests
         finally
         {
             clock.Release();
-            match.Strategies.Stop();
+            match.Teams.Stop();
         }
     }
 
@@ -211,7 +212,7 @@ public sealed class OriginalStrategyTests
     {
         IStrategy strategy = StrategyResolver.Load(Folder("Faulty"));
         var match = Play(OneFishOneBall, strategy, 10);
-        Assert.Equal("cycle 5: InvalidOperationException: faulty on purpose", match.Strategies.Slots[0].FirstFault);
+        Assert.Equal("cycle 5: InvalidOperationException: faulty on purpose", match.Caller().Slots[0].FirstFault);
         var adapter = Assert.IsType<OriginalStrategyAdapter>(strategy);
         var e = Assert.Throws<StrategyContractException>(() => adapter.Decide(match.Snapshot, [0], new Decision[1]));
         Assert.Equal("GetDecision returned 0 decisions for 1 fish", e.Message);

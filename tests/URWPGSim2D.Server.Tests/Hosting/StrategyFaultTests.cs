@@ -20,7 +20,7 @@ public sealed class StrategyFaultTests
         var match = TestMatches.FromJson(TwoFish, teams);
         match.Play(20);
 
-        var slot = match.Strategies.Slots[0];
+        var slot = match.Caller().Slots[0];
         Assert.Equal(15, slot.Exceptions);
         Assert.Equal(0, slot.Timeouts);
         Assert.Equal(new Decision(15, 7), match.World.Fish[0].Decision);
@@ -44,8 +44,8 @@ public sealed class StrategyFaultTests
             seen[k] = match.World.Fish[0].Decision;
         }
 
-        match.Strategies.Stop();
-        var slot = match.Strategies.Slots[0];
+        match.Teams.Stop();
+        var slot = match.Caller().Slots[0];
         Assert.Equal([new(9, 9), new(9, 9), new(9, 9), new(1, 1), new(9, 9), new(9, 9), new(9, 9), new(9, 9)], seen);
         Assert.Equal(0, slot.Faults);
         Assert.Equal(1, slot.Bank!.LateCalls);
@@ -69,8 +69,8 @@ public sealed class StrategyFaultTests
             seen[k] = match.World.Fish[0].Decision;
         }
 
-        match.Strategies.Stop();
-        var slot = match.Strategies.Slots[0];
+        match.Teams.Stop();
+        var slot = match.Caller().Slots[0];
         Assert.Equal([new(9, 9), new(9, 9), new(9, 9), Decision.Stop, Decision.Stop, Decision.Stop, Decision.Stop, Decision.Stop], seen);
         Assert.Equal(4, slow.Calls); // not asked again after its bank was spent
         Assert.Equal(1, slot.Timeouts);
@@ -90,9 +90,9 @@ public sealed class StrategyFaultTests
         var teams = new TeamStrategy?[] { new("slow", new SlowStrategy(clock) { Spend = System.TimeSpan.FromMilliseconds(50) }, Isolated: true, clock), null };
         var match = TestMatches.FromJson(TwoFish, teams, timeoutMs: 50);
         match.Play(5);
-        match.Strategies.Stop();
-        Assert.Equal(0, match.Strategies.Slots[0].Timeouts);
-        Assert.Equal(0, match.Strategies.Slots[0].Bank!.LateCalls);
+        match.Teams.Stop();
+        Assert.Equal(0, match.Caller().Slots[0].Timeouts);
+        Assert.Equal(0, match.Caller().Slots[0].Bank!.LateCalls);
         Assert.Equal(new Decision(9, 9), match.World.Fish[0].Decision);
         Assert.Equal(new Decision(1, 1), Cycle3Answer(clock));
     }
@@ -105,8 +105,8 @@ public sealed class StrategyFaultTests
         var match = TestMatches.FromJson(TwoFish, teams, timeoutMs: 50, timeBank: System.TimeSpan.FromSeconds(2));
         match.Play(10);
         clock.Release();
-        match.Strategies.Stop();
-        var slot = match.Strategies.Slots[0];
+        match.Teams.Stop();
+        var slot = match.Caller().Slots[0];
         Assert.Equal(10, match.World.Cycle);
         Assert.Equal(1, slot.Timeouts); // given up on once; idle after
         Assert.Equal(3, slot.IdleFromCycle);
@@ -120,7 +120,7 @@ public sealed class StrategyFaultTests
         var teams = new TeamStrategy?[] { new("slow", new SlowStrategy(clock) { Spend = System.TimeSpan.FromMilliseconds(50) }, Isolated: true, clock), null };
         var match = TestMatches.FromJson(TwoFish, teams, timeoutMs: 50);
         match.Play(4);
-        match.Strategies.Stop();
+        match.Teams.Stop();
         return match.World.Fish[0].Decision;
     }
 

@@ -41,7 +41,7 @@ public sealed class StrategyLoaderTests
         Assert.Equal(approached, match.World.Fish[0].Speed.Value, 1e-2f);
         Assert.Equal(approached, match.World.Fish[1].Speed.Value, 1e-2f);
         Assert.Equal(0f, match.World.Fish[2].Speed.Value);
-        Assert.Equal([0, 1], match.Strategies.Slots[0].Fish);
+        Assert.Equal([0, 1], match.Caller().Slots[0].Fish);
     }
 
     [Fact]

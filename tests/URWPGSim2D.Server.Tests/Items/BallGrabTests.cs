@@ -1,6 +1,7 @@
 using System;
 using System.Linq;
 using System.Numerics;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Simulation;
 using Xunit;

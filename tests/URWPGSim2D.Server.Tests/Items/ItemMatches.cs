@@ -1,4 +1,7 @@
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
@@ -11,7 +14,7 @@ internal static class ItemMatches
     /// <summary>A match of an item scenario file's JSON (noise off unless the JSON says otherwise).</summary>
     public static Match FromJson(string json, int? cycles = null)
     {
-        var scenario = ScenarioParser.Parse(json);
+        var scenario = ScenarioFile.Parse(json);
         bool noise = json.Contains("\"noise\"", System.StringComparison.Ordinal) && scenario.Noise;
         return MatchBuilder.Build(scenario, noise: noise, cycles: cycles);
     }

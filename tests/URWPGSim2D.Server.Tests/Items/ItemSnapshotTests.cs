@@ -1,3 +1,4 @@
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using Xunit;
 

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using Xunit;
 

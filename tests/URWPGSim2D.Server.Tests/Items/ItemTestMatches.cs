@@ -1,6 +1,8 @@
 using System.Collections.Generic;
 using System.Linq;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 

@@ -2,6 +2,7 @@ using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Items.Snooker;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using Xunit;

@@ -3,6 +3,7 @@ using System.Collections;
 using System.Numerics;
 using System.Reflection;
 using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 using Xunit;
 
@@ -25,11 +26,11 @@ public sealed class PeerHarnessContractTests
         object scenario = Server.GetType("URWPGSim2D.Server.Scenario.CrowdScenario", true)!
             .GetMethod("Create", Static)!
             .Invoke(null, [100, 1UL, 3000])!;
-        var build = Server.GetType("URWPGSim2D.Server.Scenario.MatchBuilder", true)!.GetMethod("Build", Static)!;
+        var build = Server.GetType("URWPGSim2D.Server.Hosting.MatchBuilder", true)!.GetMethod("Build", Static)!;
         object match = build.Invoke(null, [scenario, null, null, null, 100, BroadPhaseKind.UniformGrid, null])!;
         var step = (Action)Delegate.CreateDelegate(typeof(Action), match, match.GetType().GetMethod("Step")!);
         step();
-        Assert.Equal(1, ((URWPGSim2D.Server.Simulation.Match)match).World.Cycle);
+        Assert.Equal(1, ((URWPGSim2D.Server.Matches.Match)match).World.Cycle);
     }
 
     [Fact]

@@ -1,4 +1,7 @@
 using System.Linq;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
@@ -11,7 +14,7 @@ public sealed class ScenarioParserTests
     [Fact]
     public void EverythingButFishAndBallsHasTheDocumentedDefaults()
     {
-        var s = ScenarioParser.Parse("""{"fish":[{"team":1,"position":[10,20]}],"balls":[{"position":[0,0]}]}""");
+        var s = ScenarioFile.Parse("""{"fish":[{"team":1,"position":[10,20]}],"balls":[{"position":[0,0]}]}""");
         Assert.Equal((3000f, 2000f, true), (s.FieldLength, s.FieldWidth, s.GoalBlocks));
         Assert.Equal((3000, 1UL, true), (s.Cycles, s.Seed, s.Noise));
         Assert.Empty(s.Obstacles);
@@ -24,7 +27,7 @@ public sealed class ScenarioParserTests
     [Fact]
     public void TheIssueExampleParses()
     {
-        var s = ScenarioParser.Parse("""
+        var s = ScenarioFile.Parse("""
             { "field": {"length": 3000, "width": 2000, "goalBlocks": true},
               "cycles": 3000, "seed": 1, "noise": true,
               "fish": [ {"team": 0, "position": [-500, 0], "heading": 0.0, "strategy": "chase-ball"},
@@ -82,7 +85,7 @@ public sealed class ScenarioParserTests
     [InlineData("""{"fish":[],""", "invalid JSON at line 1, column 11")]
     public void BadScenariosFailWithOneLineNamingThePath(string json, string message)
     {
-        var e = Assert.Throws<ScenarioException>(() => ScenarioParser.Parse(json));
+        var e = Assert.Throws<ScenarioException>(() => ScenarioFile.Parse(json));
         Assert.Equal(message, e.Message);
         Assert.DoesNotContain('\n', e.Message);
     }

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 using Xunit;
 

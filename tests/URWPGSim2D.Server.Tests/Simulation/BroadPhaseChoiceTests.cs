@@ -1,6 +1,8 @@
 using System;
 using System.IO;
 using URWPGSim2D.Collision.BroadPhase;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Trace;
@@ -31,7 +33,7 @@ public sealed class BroadPhaseChoiceTests
     [MemberData(nameof(Scenarios))]
     public void EveryBroadPhaseGivesTheBruteForceTrace(int index)
     {
-        var scenario = ScenarioParser.Parse(RandomScenarios.Json(index));
+        var scenario = ScenarioFile.Parse(RandomScenarios.Json(index));
         byte[] truth = Trace(scenario, BroadPhaseKind.BruteForce);
         Assert.Equal(truth, Trace(scenario, BroadPhaseKind.UniformGrid));
         Assert.Equal(truth, Trace(scenario, BroadPhaseKind.SweepAndPrune));

@@ -1,4 +1,6 @@
 using System;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;

@@ -1,5 +1,7 @@
 using System;
 using System.IO;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Trace;
@@ -34,7 +36,7 @@ public sealed class InvariantTests
     public void NothingEscapesAndNothingOverlapsAfterAnyCycle(int index)
     {
         string json = RandomScenarios.Json(index);
-        var match = MatchBuilder.Build(ScenarioParser.Parse(json));
+        var match = MatchBuilder.Build(ScenarioFile.Parse(json));
         for (int k = 1; k <= Cycles; k++)
         {
             match.Step();
@@ -95,7 +97,7 @@ public sealed class InvariantTests
         int fish = 0, balls = 0, obstacles = 0;
         for (int i = 0; i < Scenarios; i++)
         {
-            var s = ScenarioParser.Parse(RandomScenarios.Json(i));
+            var s = ScenarioFile.Parse(RandomScenarios.Json(i));
             fish += s.Fish.Count;
             balls += s.Balls.Count;
             obstacles += s.Obstacles.Count;
@@ -110,7 +112,7 @@ public sealed class InvariantTests
     [InlineData(15)]
     public void TheSameScenarioAndSeedGiveByteIdenticalTraces(int index)
     {
-        var scenario = ScenarioParser.Parse(RandomScenarios.Json(index));
+        var scenario = ScenarioFile.Parse(RandomScenarios.Json(index));
         byte[] first = Trace(scenario, seed: 5);
         byte[] second = Trace(scenario, seed: 5);
         Assert.Equal(first, second);

@@ -2,7 +2,10 @@ using System;
 using System.Linq;
 using System.Text;
 using System.Threading;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Tests.Trace;
@@ -81,6 +84,6 @@ public sealed class MatchLoopTests
         var match = new MatchSettings(DefaultScenario.Load(), 3).Build();
         var e = Assert.Throws<ArgumentOutOfRangeException>(() => new MatchLoop(match, -1));
         Assert.Equal("cycles", e.ParamName);
-        match.Strategies.Stop();
+        match.Teams.Stop();
     }
 }

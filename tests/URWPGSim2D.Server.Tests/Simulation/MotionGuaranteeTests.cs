@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
 using Xunit.Abstractions;

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 using Xunit;
 using URWPGSim2D.Collision.Motion;

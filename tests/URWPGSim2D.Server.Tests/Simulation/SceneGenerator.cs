@@ -2,6 +2,9 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
@@ -106,7 +109,7 @@ internal static class SceneGenerator
 
     private static Match Parse(string json)
     {
-        var scenario = ScenarioParser.Parse(json);
+        var scenario = ScenarioFile.Parse(json);
         return MatchBuilder.Build(scenario, noise: scenario.Noise);
     }
 

@@ -1,4 +1,7 @@
 using System.Numerics;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 
@@ -10,7 +13,7 @@ internal static class TestMatches
     /// <summary>A match from scenario JSON; "noise" defaults to false here.</summary>
     public static Match FromJson(string json, TeamStrategy?[]? teams = null, int timeoutMs = MatchBuilder.DefaultStrategyTimeoutMs, System.TimeSpan? timeBank = null)
     {
-        var scenario = ScenarioParser.Parse(json);
+        var scenario = ScenarioFile.Parse(json);
         bool noise = json.Contains("\"noise\"", System.StringComparison.Ordinal) && scenario.Noise;
         return MatchBuilder.BuildRecording(scenario, teams, noise: noise, strategyTimeoutMs: timeoutMs, timeBank: timeBank);
     }

@@ -77,7 +77,7 @@ public sealed class TournamentHostileTests : IDisposable
     public void A_match_that_failed_inside_the_server_is_a_forfeit_of_the_team_at_fault_and_stands()
     {
         var header = new TournamentHeader("ball-grab", [new Entrant("a", "idle"), new Entrant("b", "idle")], 1, 1, 10, 100, 2);
-        var runner = new TournamentRunner(URWPGSim2D.Server.Items.ItemRegistry.Find("ball-grab")!, header, null!, null);
+        var runner = new TournamentRunner(URWPGSim2D.Server.Items.Catalog.ItemRegistry.Find("ball-grab")!, header, null!, null);
         var match = new ScheduledMatch(1, 1, [1, 0]);
         var record = runner.Failed(match, new TeamFaultException(1, new IOException("disk on fire")));
         Assert.Equal(["b", "a"], record.Entrants);

@@ -11,7 +11,7 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// <summary>
 /// docs/tournament.md's walkthrough is real: each block marked
 /// <c>&lt;!-- output: not run (… TournamentWalkthroughTests: NAME) --&gt;</c> is played in order in a fresh
-/// folder standing for <c>tour</c> (a <c>tournament</c> command in process from the repository root's
+/// folder standing for <c>tour</c> (and one for <c>cup</c>) (a <c>tournament</c> command in process from the repository root's
 /// paths, or <c>cat tour/FILE</c>) and must show exactly its output, wall time aside. With
 /// <c>URWPGSIM2D_REGENERATE_DOCS=1</c> the test writes the real outputs into the page instead.
 /// </summary>
@@ -33,7 +33,7 @@ public sealed class TournamentWalkthroughTests : IDisposable
     {
         string tour = Path.Combine(_folder, "tour");
         var blocks = MarkdownBlock.Read(Page).Where(b => b.Marker?.Contains(Marker, StringComparison.Ordinal) == true).ToList();
-        Assert.Equal(["run", "json", "md", "again"], blocks.Select(b => b.Marker![(b.Marker!.IndexOf(Marker, StringComparison.Ordinal) + Marker.Length)..].TrimEnd(')')));
+        Assert.Equal(["run", "json", "md", "again", "cup"], blocks.Select(b => b.Marker![(b.Marker!.IndexOf(Marker, StringComparison.Ordinal) + Marker.Length)..].TrimEnd(')')));
         var problems = new List<string>();
         var rewritten = new List<(MarkdownBlock Block, string Text)>();
         foreach (var block in blocks)
@@ -67,11 +67,12 @@ public sealed class TournamentWalkthroughTests : IDisposable
     {
         string[] words = command.Split(' ', StringSplitOptions.RemoveEmptyEntries);
         Assert.Equal("URWPGSim2D.Server", words[1]);
-        var args = words.Skip(2).Select(w => w == "tour" ? tour : w.Contains("=samples/", StringComparison.Ordinal) ? w[..(w.IndexOf('=', StringComparison.Ordinal) + 1)] + Repository.PathOf(w[(w.IndexOf('=', StringComparison.Ordinal) + 1)..]) : w).ToArray();
+        string cup = Path.Combine(Path.GetDirectoryName(tour)!, "cup");
+        var args = words.Skip(2).Select(w => w == "tour" ? tour : w == "cup" ? cup : w.Contains("=samples/", StringComparison.Ordinal) ? w[..(w.IndexOf('=', StringComparison.Ordinal) + 1)] + Repository.PathOf(w[(w.IndexOf('=', StringComparison.Ordinal) + 1)..]) : w).ToArray();
         URWPGSim2D.Server.Hosting.CompiledImages.Forget(); // each command is a process of its own: it compiles the sample again
         var run = CliRun.Of(string.Empty, args);
         Assert.True(run.ExitCode == 0, run.Stderr);
-        return (run.Stdout + run.Stderr).TrimEnd('\n').Replace(tour, "tour", StringComparison.Ordinal)
+        return (run.Stdout + run.Stderr).TrimEnd('\n').Replace(cup, "cup", StringComparison.Ordinal).Replace(tour, "tour", StringComparison.Ordinal)
             .Replace(Repository.PathOf("samples/"), "samples/", StringComparison.Ordinal); // the compile lines name the spec as given
     }
 

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Trace;
 

@@ -25,7 +25,7 @@ public sealed class TraceLineTests
     public void Cycle0LineCarriesTheLayoutOfTheWorld()
     {
         var match = TestMatches.FromJson(DefaultLikeScenario);
-        var line = Line(new TraceLine(match), ReadOnlySpan<ContactRecord>.Empty);
+        var line = Line(new TraceLine(match.World, match.Teams, match.Rules), ReadOnlySpan<ContactRecord>.Empty);
         Assert.Equal(0, line.GetProperty("cycle").GetInt32());
         Assert.Equal("default", line.GetProperty("item").GetString());
         var layout = line.GetProperty("layout");
@@ -61,7 +61,7 @@ public sealed class TraceLineTests
     public void LaterLinesHaveScoreAndEventsButNoLayout()
     {
         var match = TestMatches.FromJson(DefaultLikeScenario);
-        var lines = new TraceLine(match);
+        var lines = new TraceLine(match.World, match.Teams, match.Rules);
         _ = lines.Write(ReadOnlySpan<ContactRecord>.Empty);
         var goalCycles = new List<(int Cycle, int Team, int Ball)>();
         var score = new double[2];
@@ -101,7 +101,7 @@ public sealed class TraceLineTests
     {
         var match = TestMatches.FromJson(DefaultLikeScenario);
         var item = new StubItem();
-        var lines = new TraceLine(match, item);
+        var lines = new TraceLine(match.World, match.Teams, item);
         var line0 = Line(lines, ReadOnlySpan<ContactRecord>.Empty);
         Assert.Equal("ball-grab", line0.GetProperty("item").GetString());
         Assert.Equal(

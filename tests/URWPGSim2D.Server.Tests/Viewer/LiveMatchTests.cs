@@ -5,6 +5,8 @@ using System.Text;
 using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Viewer;
@@ -44,7 +46,7 @@ public sealed class LiveMatchTests
 
         stop.Cancel();
         await playing;
-        player.Match.Strategies.Stop();
+        player.Match.Teams.Stop();
 
         int cycle = last.Value.GetProperty("cycle").GetInt32();
         Assert.True(cycle > 300, $"the live match ended at cycle {cycle}");

@@ -4,6 +4,7 @@ using System.CommandLine.Completions;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Tournament;
 

@@ -1,3 +1,4 @@
+using URWPGSim2D.Server.BuiltInStrategies;
 using URWPGSim2D.Server.Hosting;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Strategies;
@@ -9,7 +10,7 @@ namespace URWPGSim2D.Server.Items.PlainScene;
 /// like the others, so that every match is scored by one system, an item's referee
 /// (<see cref="PlainSceneReferee"/>: a ball in a goal mouth scores). It is not a competition item:
 /// <c>items</c> does not list it and <c>--item</c> does not take it; a match of a plain scene has no
-/// <see cref="Simulation.Match.Referee"/> of a competition item.
+/// <see cref="Matches.Match.Referee"/> of a competition item.
 /// </summary>
 internal sealed class PlainScene : CompetitionItem
 {

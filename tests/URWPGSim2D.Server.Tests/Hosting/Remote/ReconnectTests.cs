@@ -24,7 +24,7 @@ public sealed class ReconnectTests
         var log = new System.Collections.Generic.List<string>();
         using var seat = new RemoteSeat(0, IPAddress.Loopback, 0, "k", TimeSpan.FromSeconds(30), l => { lock (log) { log.Add(l); } });
         var match = MatchBuilder.Build(DefaultScenario.Load(), [TeamStrategy.RemoteClient("remote", seat), null], cycles: 1000, strategyTimeoutMs: 20_000);
-        var slot = match.Strategies.Slots.Single(s => s.Team == 0);
+        var slot = match.Caller().Slots.Single(s => s.Team == 0);
         var remote = (RemoteStrategy)slot.Hosted!;
 
         // The first client answers cycles 0..2 with (3, 4) and goes away when it is sent cycle 3.
@@ -50,7 +50,7 @@ public sealed class ReconnectTests
         match.Step();
         Assert.All(slot.Fish, f => Assert.Equal(new Decision(11, 12), match.World.Fish[f].Decision));
         match.Step();
-        URWPGSim2D.Server.Simulation.MatchLoop.StopStrategies(match);
+        URWPGSim2D.Server.Matches.MatchLoop.StopStrategies(match);
         second.Join();
         Assert.Equal(1, slot.Faults);
         Assert.Equal("{\"type\":\"end\",\"cycle\":7,\"goals\":[0,0],\"faults\":1}", ended.Last);

@@ -4,6 +4,7 @@ using System.IO;
 using System.Text.RegularExpressions;
 using System.Threading;
 using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Items.Catalog;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Linq;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using Xunit;

@@ -1,10 +1,12 @@
 using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Items.PlainScene;
+using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Server.Teams;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Server.Matches;
 
 /// <summary>
 /// A match in progress. <see cref="Step"/> plays one 100 ms cycle: strategies decide from a
@@ -21,14 +23,14 @@ internal sealed class Match
 
     /// <summary>Creates a match.</summary>
     /// <param name="world">The pool and its bodies.</param>
-    /// <param name="strategies">Who decides for the fish.</param>
+    /// <param name="teams">Who decides for the fish.</param>
     /// <param name="noise">Whether the reference's motion and observation noise is on.</param>
     /// <param name="seed">Seed of the noise generators.</param>
     /// <param name="referee">The rules of a competition item, or null for the plain scene's goal rule (<see cref="PlainSceneReferee"/>).</param>
-    public Match(World world, StrategyCaller strategies, bool noise, ulong seed, Items.ItemReferee? referee = null)
+    public Match(World world, IMatchTeams teams, bool noise, ulong seed, ItemReferee? referee = null)
     {
         World = world;
-        Strategies = strategies;
+        Teams = teams;
         Referee = referee;
         Seed = seed;
         Rules = referee ?? new PlainSceneReferee(0);
@@ -49,8 +51,8 @@ internal sealed class Match
     /// <summary>The match's seed (its noise and its item's random placements): the same seed plays the same match.</summary>
     public ulong Seed { get; }
 
-    /// <summary>The strategies.</summary>
-    public StrategyCaller Strategies { get; }
+    /// <summary>Who decides for the fish.</summary>
+    public IMatchTeams Teams { get; }
 
     /// <summary>What strategies see.</summary>
     public MatchSnapshot Snapshot { get; }
@@ -62,10 +64,10 @@ internal sealed class Match
     public CycleMotion Stepper { get; }
 
     /// <summary>The competition item's referee, or null for a plain scene.</summary>
-    public Items.ItemReferee? Referee { get; }
+    public ItemReferee? Referee { get; }
 
     /// <summary>The rules the match is judged by, the one owner of its score and events: <see cref="Referee"/>, or the plain scene's goal rule.</summary>
-    public Items.ItemReferee Rules { get; }
+    public ItemReferee Rules { get; }
 
     /// <summary>Whether the match is over (never for a plain scene: it plays every cycle asked for).</summary>
     public bool IsOver => Rules.IsOver;
@@ -77,7 +79,7 @@ internal sealed class Match
     public void Step()
     {
         FillSnapshot();
-        Strategies.Decide(Snapshot, World.Fish);
+        Teams.Decide(Snapshot, World.Fish);
         Rules.AfterDecisions(World);
         Contacts.BeginCycle();
         Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
@@ -93,34 +95,10 @@ internal sealed class Match
     }
 
     /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
-    public int TeamCount
-    {
-        get
-        {
-            int teams = 2;
-            foreach (var f in World.Fish)
-            {
-                teams = System.Math.Max(teams, f.Team + 1);
-            }
-
-            return teams;
-        }
-    }
+    public int TeamCount => World.TeamCount;
 
     /// <summary>The labels of the strategies playing for <paramref name="team"/>, joined with "+" ("no fish" for a team without fish).</summary>
-    public string TeamLabel(int team)
-    {
-        var labels = new List<string>();
-        foreach (var slot in Strategies.Slots)
-        {
-            if (slot.Team == team && !labels.Contains(slot.Label))
-            {
-                labels.Add(slot.Label);
-            }
-        }
-
-        return labels.Count == 0 ? "no fish" : string.Join("+", labels);
-    }
+    public string TeamLabel(int team) => Teams.TeamLabel(team);
 
     private void FillSnapshot()
     {

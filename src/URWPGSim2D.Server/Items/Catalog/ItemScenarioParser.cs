@@ -4,10 +4,11 @@ using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Json;
+using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Strategies;
 using static URWPGSim2D.Server.Scenario.JsonReader;
 
-namespace URWPGSim2D.Server.Scenario;
+namespace URWPGSim2D.Server.Items.Catalog;
 
 /// <summary>
 /// A scenario file with <c>"item": NAME</c>: the item's layout and rules, with the file's

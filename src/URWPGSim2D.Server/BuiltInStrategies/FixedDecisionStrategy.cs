@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Hosting;
+namespace URWPGSim2D.Server.BuiltInStrategies;
 
 /// <summary>Built-in <c>fixed</c>: every fish repeats one decision forever.</summary>
 /// <param name="decision">The decision to repeat.</param>

@@ -1,7 +1,7 @@
 using System;
 using System.Text;
 
-namespace URWPGSim2D.Server.Hosting;
+namespace URWPGSim2D.Server.Teams;
 
 /// <summary>
 /// What one team's strategy printed during one cycle's call (<c>Console.Out</c>, <c>Console.Error</c>,

@@ -1,7 +1,7 @@
 using System;
 using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Server.Scenario;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>A strategy that takes over a whole team (from <c>--strategy TEAM=path</c> or a test).</summary>
 /// <param name="Label">What to call it in the summary.</param>

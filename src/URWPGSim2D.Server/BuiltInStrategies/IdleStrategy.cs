@@ -1,6 +1,6 @@
 using System;
 
-namespace URWPGSim2D.Server.Hosting;
+namespace URWPGSim2D.Server.BuiltInStrategies;
 
 /// <summary>Built-in <c>idle</c>: every fish stands still (VCode 0, TCode 7).</summary>
 internal sealed class IdleStrategy : IStrategy

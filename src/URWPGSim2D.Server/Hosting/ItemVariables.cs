@@ -1,8 +1,9 @@
 using System.Collections.Concurrent;
 using System.Collections.Generic;
+using URWPGSim2D.Server.Items;
 using URWPGSim2D.Server.Scenario;
 
-namespace URWPGSim2D.Server.Items;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>The keys of an item's mission variables (the original's <c>HtMissionVariables</c>), read from a match of the item once it is ready to play.</summary>
 internal static class ItemVariables
@@ -15,7 +16,7 @@ internal static class ItemVariables
     {
         var match = MatchBuilder.Build(item.CreateScenario(1), new TeamStrategy?[System.Math.Max(2, item.TeamCount)], seed: 1, cycles: 2);
         match.Step();
-        match.Strategies.Stop();
+        match.Teams.Stop();
         return [.. match.Rules.Variables.Keys];
     });
 }

@@ -1,7 +1,8 @@
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Everything that decides a match before it is played: the scene (a competition item's layout, the

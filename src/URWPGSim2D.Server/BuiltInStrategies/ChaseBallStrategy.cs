@@ -2,7 +2,7 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Server.Items.Demo;
 
-namespace URWPGSim2D.Server.Hosting;
+namespace URWPGSim2D.Server.BuiltInStrategies;
 
 /// <summary>
 /// Built-in <c>chase-ball</c>: each fish swims to the ball nearest to it and pushes it toward the

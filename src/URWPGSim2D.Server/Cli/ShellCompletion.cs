@@ -3,8 +3,9 @@ using System.CommandLine;
 using System.CommandLine.Completions;
 using System.Globalization;
 using System.Linq;
+using URWPGSim2D.Server.Cli.Syntax;
 
-namespace URWPGSim2D.Server.Cli.Syntax;
+namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
 /// The completion request of the shell scripts (<c>completion bash</c>): System.CommandLine's

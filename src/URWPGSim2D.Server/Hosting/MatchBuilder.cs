@@ -4,10 +4,13 @@ using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
+using URWPGSim2D.Server.BuiltInStrategies;
+using URWPGSim2D.Server.Matches;
+using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Hosting;
 
-namespace URWPGSim2D.Server.Scenario;
+namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// Builds a ready-to-play <see cref="Match"/> from a scenario: the field, fish (deployed sizes),
@@ -81,7 +84,12 @@ internal static class MatchBuilder
         }
 
         var world = new World(motion, field, fish, balls, views, statics);
-        var referee = scenario.Item?.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
+        var referee = scenario.Item switch
+        {
+            null => null,
+            Items.CompetitionItem item => item.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed),
+            var other => throw new ArgumentException($"the scenario's item {other.Slug} is not a competition item of this server", nameof(scenario)),
+        };
         var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
         var slots = Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match);
         foreach (var slot in slots)

@@ -1,4 +1,4 @@
-namespace URWPGSim2D.Server.Hosting;
+namespace URWPGSim2D.Server.Teams;
 
 /// <summary>What a strategy's fault in a cycle was (the fault table of docs/strategies.md).</summary>
 internal enum FaultKind

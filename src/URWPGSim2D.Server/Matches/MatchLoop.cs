@@ -1,9 +1,10 @@
 using System;
 using System.Linq;
 using System.Threading;
+using URWPGSim2D.Server.Simulation;
 using URWPGSim2D.Server.Trace;
 
-namespace URWPGSim2D.Server.Simulation;
+namespace URWPGSim2D.Server.Matches;
 
 /// <summary>
 /// The one loop that plays a match, used by every command that plays one (<c>run</c>, batches, the
@@ -26,7 +27,7 @@ internal sealed class MatchLoop : IDisposable
     private bool _started;
 
     /// <summary>Creates the loop of a freshly built match (cycle 0).</summary>
-    /// <param name="match">The match (<see cref="MatchSettings.Build"/>).</param>
+    /// <param name="match">The match (<see cref="Hosting.MatchSettings.Build"/>).</param>
     /// <param name="cycles">Cycles of regular time (the cycles the match was built for).</param>
     /// <param name="trace">Where each cycle's trace line goes; nulls are skipped (none: no line is made).</param>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="cycles"/> is below 0.</exception>
@@ -37,7 +38,7 @@ internal sealed class MatchLoop : IDisposable
         Match = match;
         Cycles = cycles;
         _sinks = [.. (trace ?? []).OfType<ITraceSink>()];
-        _lines = _sinks.Length == 0 ? null : new TraceLine(match);
+        _lines = _sinks.Length == 0 ? null : new TraceLine(match.World, match.Teams, match.Rules);
     }
 
     /// <summary>The match played.</summary>
@@ -101,7 +102,7 @@ internal sealed class MatchLoop : IDisposable
     /// <summary>Stops <paramref name="match"/>'s strategies, telling hosts the cycles played and the final score.</summary>
     public static void StopStrategies(Match match)
     {
-        match.Strategies.Stop(match.World.Cycle, match.Rules.Scores);
+        match.Teams.Stop(match.World.Cycle, match.Rules.Scores);
     }
 
     private void Write(ReadOnlySpan<ContactRecord> contacts)

@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 
-namespace URWPGSim2D.Server.Items;
+namespace URWPGSim2D.Server.Items.Catalog;
 
 /// <summary>
 /// Every competition item by its English slug and the original's Chinese name, in the order

@@ -1,0 +1,262 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using Mono.Cecil;
+using Mono.Cecil.Cil;
+using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Tests.Docs;
+using Xunit;
+
+namespace URWPGSim2D.Server.Tests;
+
+/// <summary>
+/// The server's folders depend on each other one way: no folder uses a folder that uses it back,
+/// directly or round a longer loop. A folder is its namespace (checked on every source file), and
+/// what a folder uses is read from the compiled assembly: every type named in a signature, field,
+/// local, base type, or instruction of a type declared there.
+/// </summary>
+public sealed partial class FolderCycleTests
+{
+    private const string Root = "URWPGSim2D.Server";
+
+    [Fact]
+    public void EveryFilesNamespaceIsItsFolder()
+    {
+        string server = Repository.PathOf("src/" + Root);
+        var wrong = new List<string>();
+        int files = 0;
+        foreach (string file in Directory.EnumerateFiles(server, "*.cs", SearchOption.AllDirectories))
+        {
+            string relative = Path.GetRelativePath(server, file);
+            if (relative.StartsWith("obj" + Path.DirectorySeparatorChar, StringComparison.Ordinal) || relative.StartsWith("bin" + Path.DirectorySeparatorChar, StringComparison.Ordinal))
+            {
+                continue;
+            }
+
+            files++;
+            string folder = Path.GetDirectoryName(relative) ?? string.Empty;
+            string expected = folder.Length == 0 ? Root : Root + "." + folder.Replace(Path.DirectorySeparatorChar, '.');
+            string? actual = Namespace().Match(File.ReadAllText(file)) is { Success: true } m ? m.Groups[1].Value : null;
+            if (actual != expected)
+            {
+                wrong.Add($"{relative}: namespace {actual ?? "(none)"}, folder {expected}");
+            }
+        }
+
+        Assert.True(files > 250, $"only {files} source files seen");
+        Assert.Empty(wrong);
+    }
+
+    [Fact]
+    public void NoFolderDependsOnItselfRoundALoop()
+    {
+        var uses = FolderUses(typeof(MatchBuilder).Assembly.Location);
+        Assert.Contains("Hosting", uses["Cli"]); // the scan sees uses
+        Assert.Contains("Simulation", uses["Matches"]);
+        var loops = Loops(uses.ToDictionary(kv => kv.Key, kv => (IReadOnlyCollection<string>)kv.Value.Keys));
+        Assert.True(loops.Count == 0, "folder loops:\n" + string.Join("\n", loops.Select(loop =>
+            string.Join(", ", loop.SelectMany(a => loop.Where(b => uses[a].ContainsKey(b)).Select(b => $"{a} -> {b} ({uses[a][b]})"))))));
+    }
+
+    [Fact]
+    public void TheLoopFinderFindsLoops()
+    {
+        var graph = new Dictionary<string, IReadOnlyCollection<string>>
+        {
+            ["a"] = ["b"], ["b"] = ["c"], ["c"] = ["a", "d"], ["d"] = [], ["e"] = ["e"], ["f"] = ["d"],
+        };
+        var loops = Loops(graph);
+        Assert.Equal(2, loops.Count);
+        Assert.Contains(loops, l => l.SetEquals(["a", "b", "c"]));
+        Assert.Contains(loops, l => l.SetEquals(["e"]));
+        Assert.Empty(Loops(new Dictionary<string, IReadOnlyCollection<string>> { ["a"] = ["b"], ["b"] = [] }));
+    }
+
+    // For each folder (namespace below the root, "" for the root), the folders its types use, each with one type pair as evidence.
+    private static Dictionary<string, Dictionary<string, string>> FolderUses(string assemblyPath)
+    {
+        using var assembly = AssemblyDefinition.ReadAssembly(assemblyPath);
+        var uses = new Dictionary<string, Dictionary<string, string>>(StringComparer.Ordinal);
+        foreach (var type in assembly.MainModule.GetTypes())
+        {
+            string? from = Folder(type);
+            if (from is null)
+            {
+                continue;
+            }
+
+            if (!uses.TryGetValue(from, out var set))
+            {
+                uses[from] = set = new Dictionary<string, string>(StringComparer.Ordinal);
+            }
+
+            void Use(TypeReference? to)
+            {
+                switch (to)
+                {
+                    case null or GenericParameter:
+                        return;
+                    case GenericInstanceType g:
+                        foreach (var a in g.GenericArguments)
+                        {
+                            Use(a);
+                        }
+
+                        Use(g.ElementType);
+                        return;
+                    case TypeSpecification s:
+                        Use(s.ElementType);
+                        return;
+                }
+
+                if (Folder(to) is { } target && target != from && !set.ContainsKey(target))
+                {
+                    set[target] = $"{Outer(type).Name} uses {Outer(to).Name}";
+                }
+            }
+
+            Use(type.BaseType);
+            foreach (var i in type.Interfaces)
+            {
+                Use(i.InterfaceType);
+            }
+
+            foreach (var f in type.Fields)
+            {
+                Use(f.FieldType);
+            }
+
+            foreach (var p in type.Properties)
+            {
+                Use(p.PropertyType);
+            }
+
+            foreach (var m in type.Methods)
+            {
+                Use(m.ReturnType);
+                foreach (var p in m.Parameters)
+                {
+                    Use(p.ParameterType);
+                }
+
+                if (!m.HasBody)
+                {
+                    continue;
+                }
+
+                foreach (var v in m.Body.Variables)
+                {
+                    Use(v.VariableType);
+                }
+
+                foreach (var instruction in m.Body.Instructions)
+                {
+                    switch (instruction.Operand)
+                    {
+                        case TypeReference t:
+                            Use(t);
+                            break;
+                        case MethodReference r:
+                            Use(r.DeclaringType);
+                            Use(r.ReturnType);
+                            foreach (var p in r.Parameters)
+                            {
+                                Use(p.ParameterType);
+                            }
+
+                            break;
+                        case FieldReference r:
+                            Use(r.DeclaringType);
+                            Use(r.FieldType);
+                            break;
+                    }
+                }
+            }
+        }
+
+        foreach (var targets in uses.Values.SelectMany(s => s.Keys).ToList())
+        {
+            uses.TryAdd(targets, new Dictionary<string, string>(StringComparer.Ordinal));
+        }
+
+        return uses;
+    }
+
+    private static TypeReference Outer(TypeReference t)
+    {
+        while (t.IsNested)
+        {
+            t = t.DeclaringType;
+        }
+
+        return t;
+    }
+
+    private static string? Folder(TypeReference t)
+    {
+        string ns = Outer(t).Namespace;
+        return ns == Root ? string.Empty : ns.StartsWith(Root + ".", StringComparison.Ordinal) ? ns[(Root.Length + 1)..] : null;
+    }
+
+    // The strongly connected sets of more than one folder, or of one that uses itself (Tarjan).
+    private static List<HashSet<string>> Loops(IReadOnlyDictionary<string, IReadOnlyCollection<string>> graph)
+    {
+        var index = new Dictionary<string, int>(StringComparer.Ordinal);
+        var low = new Dictionary<string, int>(StringComparer.Ordinal);
+        var stack = new Stack<string>();
+        var onStack = new HashSet<string>(StringComparer.Ordinal);
+        var loops = new List<HashSet<string>>();
+        int next = 0;
+
+        void Visit(string v)
+        {
+            index[v] = low[v] = next++;
+            stack.Push(v);
+            onStack.Add(v);
+            foreach (string w in graph.TryGetValue(v, out var ws) ? ws : [])
+            {
+                if (!index.ContainsKey(w))
+                {
+                    Visit(w);
+                    low[v] = Math.Min(low[v], low[w]);
+                }
+                else if (onStack.Contains(w))
+                {
+                    low[v] = Math.Min(low[v], index[w]);
+                }
+            }
+
+            if (low[v] == index[v])
+            {
+                var component = new HashSet<string>(StringComparer.Ordinal);
+                string w;
+                do
+                {
+                    w = stack.Pop();
+                    onStack.Remove(w);
+                    component.Add(w);
+                }
+                while (w != v);
+                if (component.Count > 1 || (graph.TryGetValue(v, out var self) && self.Contains(v)))
+                {
+                    loops.Add(component);
+                }
+            }
+        }
+
+        foreach (string v in graph.Keys)
+        {
+            if (!index.ContainsKey(v))
+            {
+                Visit(v);
+            }
+        }
+
+        return loops;
+    }
+
+    [GeneratedRegex(@"^namespace ([\w.]+);", RegexOptions.Multiline)]
+    private static partial Regex Namespace();
+}
