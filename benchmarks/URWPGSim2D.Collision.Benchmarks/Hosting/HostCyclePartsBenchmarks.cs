@@ -2,6 +2,7 @@ using System;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Server.Matches;
 using URWPGSim2D.Server.Scenario;
 using URWPGSim2D.Server.Simulation;
 

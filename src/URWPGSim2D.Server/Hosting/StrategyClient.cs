@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
