@@ -25,6 +25,9 @@ internal sealed record AssignmentMessage(
     /// <summary>Whether the server records what the strategy prints: the client then sends it in each <c>decisions</c> message's <c>log</c>.</summary>
     public bool Log { get; init; }
 
+    /// <summary>Whether every <c>cycle</c> message carries the fish and balls packed (<see cref="PackedCycle"/>): only for a client whose hello asked for it.</summary>
+    public bool Packed { get; init; }
+
     /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
     public MatchSnapshot CreateSnapshot() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
 }

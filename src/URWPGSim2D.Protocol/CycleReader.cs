@@ -18,6 +18,7 @@ internal sealed class CycleReader
     private readonly List<string> _keys = [];
     private readonly List<string> _values = [];
     private OrderedVariables _variables = new();
+    private byte[] _packed = [];
 
     /// <summary>Creates the reader and the snapshot it fills.</summary>
     public CycleReader(AssignmentMessage assignment)
@@ -69,6 +70,11 @@ internal sealed class CycleReader
                 {
                     balls = Balls(ref r);
                 }
+                else if (r.ValueTextEquals("packed"u8))
+                {
+                    Packed(ref r);
+                    (fish, balls) = (_assignment.FishCount, _assignment.BallCount);
+                }
                 else
                 {
                     JsonFields.Skip(ref r);
@@ -94,6 +100,30 @@ internal sealed class CycleReader
         {
             throw MessageReader.NotJson(e);
         }
+    }
+
+    // The fish and balls of a packed cycle (PackedCycle): base64 of their bytes, decoded in a reused buffer.
+    private void Packed(ref Utf8JsonReader r)
+    {
+        r.Read();
+        if (r.TokenType != JsonTokenType.String)
+        {
+            throw new ProtocolException($"packed: expected a string, got {JsonFields.Describe(ref r)}");
+        }
+
+        int length = r.HasValueSequence ? (int)r.ValueSequence.Length : r.ValueSpan.Length;
+        if (_packed.Length < length)
+        {
+            _packed = new byte[length];
+        }
+
+        int copied = r.CopyString(_packed);
+        if (System.Buffers.Text.Base64.DecodeFromUtf8InPlace(_packed.AsSpan(0, copied), out int bytes) != System.Buffers.OperationStatus.Done)
+        {
+            throw new ProtocolException("packed: not base64");
+        }
+
+        PackedCycle.Read(_packed.AsSpan(0, bytes), Snapshot.FishBuffer, Snapshot.BallBuffer);
     }
 
     private void Variables(ref Utf8JsonReader r)

@@ -60,11 +60,16 @@ internal static class MessageReader
             int? version = null;
             string? token = null;
             string? name = null;
+            bool packed = false;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("version"u8))
                 {
                     version = JsonFields.Int(ref r, "version");
+                }
+                else if (r.ValueTextEquals("packed"u8))
+                {
+                    packed = JsonFields.Bool(ref r, "packed");
                 }
                 else if (r.ValueTextEquals("token"u8))
                 {
@@ -80,7 +85,7 @@ internal static class MessageReader
                 }
             }
 
-            return new HelloMessage(version ?? throw Missing("version"), token, name);
+            return new HelloMessage(version ?? throw Missing("version"), token, name) { Packed = packed };
         }
         catch (JsonException e)
         {
@@ -100,7 +105,7 @@ internal static class MessageReader
             int[]? fish = null;
             float? length = null, width = null;
             ObstacleView[] obstacles = [];
-            bool draw = false, log = false;
+            bool draw = false, log = false, packed = false;
             while (JsonFields.NextProperty(ref r))
             {
                 if (r.ValueTextEquals("version"u8))
@@ -155,6 +160,10 @@ internal static class MessageReader
                 {
                     log = JsonFields.Bool(ref r, "log");
                 }
+                else if (r.ValueTextEquals("packed"u8))
+                {
+                    packed = JsonFields.Bool(ref r, "packed");
+                }
                 else
                 {
                     JsonFields.Skip(ref r);
@@ -168,6 +177,7 @@ internal static class MessageReader
             {
                 Draw = draw,
                 Log = log,
+                Packed = packed,
             };
             Check(a);
             return a;

@@ -17,6 +17,7 @@ internal sealed class MessageWriter
 {
     private readonly ArrayBufferWriter<byte> _buffer = new(4096);
     private readonly Utf8JsonWriter _json;
+    private byte[] _packed = [];
 
     /// <summary>Creates a writer.</summary>
     public MessageWriter()
@@ -24,11 +25,16 @@ internal sealed class MessageWriter
         _json = new Utf8JsonWriter(_buffer, new JsonWriterOptions { SkipValidation = true });
     }
 
-    /// <summary>A client's <c>hello</c>.</summary>
-    public ReadOnlySpan<byte> Hello(int version, string? token, string? name)
+    /// <summary>A client's <c>hello</c>; <paramref name="packed"/>: the client reads packed cycles (<see cref="PackedCycle"/>).</summary>
+    public ReadOnlySpan<byte> Hello(int version, string? token, string? name, bool packed = false)
     {
         Begin("hello");
         _json.WriteNumber("version", version);
+        if (packed)
+        {
+            _json.WriteBoolean("packed", true);
+        }
+
         WriteOptional("token", token);
         WriteOptional("name", name);
         return End();
@@ -65,6 +71,11 @@ internal sealed class MessageWriter
             _json.WriteBoolean("log", true);
         }
 
+        if (a.Packed)
+        {
+            _json.WriteBoolean("packed", true);
+        }
+
         _json.WriteStartObject("field");
         Number("length", a.FieldLength);
         Number("width", a.FieldWidth);
@@ -89,8 +100,11 @@ internal sealed class MessageWriter
         return End();
     }
 
-    /// <summary>The server's <c>cycle</c>: everything of <paramref name="s"/> that changes during a match.</summary>
-    public ReadOnlySpan<byte> Cycle(MatchSnapshot s)
+    /// <summary>
+    /// The server's <c>cycle</c>: everything of <paramref name="s"/> that changes during a match; with
+    /// <paramref name="packed"/>, the fish and balls as one <c>packed</c> field (<see cref="PackedCycle"/>) instead of <c>fish</c> and <c>balls</c>.
+    /// </summary>
+    public ReadOnlySpan<byte> Cycle(MatchSnapshot s, bool packed = false)
     {
         ArgumentNullException.ThrowIfNull(s);
         Begin("cycle");
@@ -113,6 +127,27 @@ internal sealed class MessageWriter
         }
 
         _json.WriteEndObject();
+        if (packed)
+        {
+            // The base64 text goes in as it is, quotes included (the writer's own base64 allocates a cycle, and its strings escape '+').
+            int length = PackedCycle.Length(s.Fish.Length, s.Balls.Length);
+            int text = System.Buffers.Text.Base64.GetMaxEncodedToUtf8Length(length);
+            if (_packed.Length < length + text + 2)
+            {
+                _packed = new byte[length + text + 2];
+            }
+
+            var bytes = _packed.AsSpan(0, length);
+            var quoted = _packed.AsSpan(length);
+            PackedCycle.Write(s, bytes);
+            System.Buffers.Text.Base64.EncodeToUtf8(bytes, quoted[1..], out _, out int written);
+            quoted[0] = (byte)'"';
+            quoted[written + 1] = (byte)'"';
+            _json.WritePropertyName("packed"u8);
+            _json.WriteRawValue(quoted[..(written + 2)], skipInputValidation: true);
+            return End();
+        }
+
         _json.WriteStartArray("fish");
         foreach (ref readonly var f in s.Fish)
         {

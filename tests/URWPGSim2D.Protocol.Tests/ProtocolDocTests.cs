@@ -53,6 +53,6 @@ public partial class ProtocolDocTests
             seen++;
         }
 
-        Assert.Equal(8, seen);
+        Assert.Equal(9, seen);
     }
 }

@@ -13,8 +13,9 @@ namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 /// process. Both cases ask team 0 (two fish, a small SDK strategy compiled from source) for one
 /// cycle's decisions on the default match's snapshot 500 cycles in: <see cref="InProcess"/> (the
 /// baseline) on its own thread in the server (<c>--isolation none</c>), <see cref="Hosted"/> in its
-/// host process (snapshot out as a protocol line, decisions back). The difference is the per-cycle
-/// cost of isolation. <see cref="HostStartToFirstDecision"/> starts a host for the already compiled
+/// host process (snapshot out as a protocol line, packed as the server's hosts ask for it, decisions
+/// back; the host decides on the thread that reads the line). The difference is the per-cycle cost of
+/// isolation; <see cref="HostCyclePartsBenchmarks"/> times its parts besides the hand-overs. <see cref="HostStartToFirstDecision"/> starts a host for the already compiled
 /// strategy, takes its first decision and stops it; <see cref="PooledHostToFirstDecision"/> does the same
 /// with a host started ahead and waiting (<see cref="HostPool"/>), as matches get theirs. <see cref="Remote"/> plays the same strategy on a
 /// remote client (<c>connect</c>'s code, on a thread of this process) over a loopback TCP

@@ -50,10 +50,13 @@ internal static class CompilerProcess
     /// <param name="files">Its source files.</param>
     /// <param name="settings">The sandbox mode and the memory and process limits.</param>
     /// <param name="note">Told the compiler's notes (a source read as GB18030), one line each.</param>
+    /// <param name="timeLimitSeconds">CPU and wall time the compilation may take, s (<see cref="TimeLimitSeconds"/>; tests set less).</param>
+    /// <param name="started">Told the process ID of the compiler child as soon as it has started, or null.</param>
     /// <returns>The image, and the file of the run's folder that holds it.</returns>
     /// <exception cref="StrategyLoadException">The sources do not compile, or the compiler went past a limit (one line naming it).</exception>
-    public static (byte[] Image, string File) Compile(string name, string path, IReadOnlyList<string> files, HostSettings settings, Action<string>? note = null)
+    public static (byte[] Image, string File) Compile(string name, string path, IReadOnlyList<string> files, HostSettings settings, Action<string>? note = null, int timeLimitSeconds = TimeLimitSeconds, Action<int>? started = null)
     {
+        ArgumentOutOfRangeException.ThrowIfLessThan(timeLimitSeconds, 1);
         bool sandbox = HostSandbox.Use(settings.Sandbox);
         string scratch = RunFolder.NewScratch();
         string output = RunFolder.NewStrategyFolder();
@@ -62,7 +65,7 @@ internal static class CompilerProcess
         var cgroup = HostCgroup.Create(settings);
         try
         {
-            var result = Run(name, path, files, settings, sandbox, cgroup, scratch, image, note);
+            var result = Run(name, path, files, settings, sandbox, cgroup, scratch, image, note, timeLimitSeconds, started);
             done = true;
             return (result, image);
         }
@@ -77,7 +80,7 @@ internal static class CompilerProcess
         }
     }
 
-    private static byte[] Run(string name, string path, IReadOnlyList<string> files, HostSettings settings, bool sandbox, SandboxCgroup? cgroup, string scratch, string image, Action<string>? note)
+    private static byte[] Run(string name, string path, IReadOnlyList<string> files, HostSettings settings, bool sandbox, SandboxCgroup? cgroup, string scratch, string image, Action<string>? note, int timeLimitSeconds, Action<int>? started)
     {
         var command = new List<string>();
         if (cgroup is not null)
@@ -95,7 +98,7 @@ internal static class CompilerProcess
 
         if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
         {
-            command.AddRange(["/usr/bin/prlimit", $"--cpu={TimeLimitSeconds}", "--core=0"]);
+            command.AddRange(["/usr/bin/prlimit", string.Create(CultureInfo.InvariantCulture, $"--cpu={timeLimitSeconds}"), "--core=0"]);
             if (cgroup is null)
             {
                 command.Add(string.Create(CultureInfo.InvariantCulture, $"--as={((long)settings.MemoryMb + AddressSpaceMb) * 1024 * 1024}"));
@@ -131,6 +134,7 @@ internal static class CompilerProcess
         }
 
         using var process = Process.Start(start) ?? throw new StrategyLoadException("the compiler did not start");
+        started?.Invoke(process.Id);
         process.StandardInput.Close();
         int timedOut = 0;
         using var timer = new Timer(
@@ -140,7 +144,7 @@ internal static class CompilerProcess
                 End(process, cgroup);
             },
             null,
-            TimeSpan.FromSeconds(TimeLimitSeconds),
+            TimeSpan.FromSeconds(timeLimitSeconds),
             Timeout.InfiniteTimeSpan);
         var tail = new List<string>();
         var errors = new Thread(() => ReadLines(process.StandardError.BaseStream, tail, TailLines, keepLast: true)) { IsBackground = true, Name = "compiler stderr" };
@@ -154,7 +158,7 @@ internal static class CompilerProcess
 
         if (Volatile.Read(ref timedOut) == 1 || code == 128 + 24)
         {
-            throw new StrategyLoadException($"the compiler took longer than its time limit of {TimeLimitSeconds} s, stopped");
+            throw new StrategyLoadException(string.Create(CultureInfo.InvariantCulture, $"the compiler took longer than its time limit of {timeLimitSeconds} s, stopped"));
         }
 
         string stderr;

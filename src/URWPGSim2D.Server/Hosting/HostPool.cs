@@ -12,8 +12,10 @@ namespace URWPGSim2D.Server.Hosting;
 /// strategy, so every match still starts from fresh strategy state. Hosts wait per strategy (its
 /// sandbox binds the strategy's files, as a host started for it), settings and sandbox: a team loaded
 /// for hosts reserves one (<see cref="Reserve"/>); a host taken after the
-/// reserved ones have all been taken once (the second match of a batch or a tournament on) is
-/// replaced at once, for the next match. Waiting hosts end with the program.
+/// reserved ones have all been taken once (the second match of a batch on) is
+/// replaced at once, for the next match. A tournament's entrant, which plays many matches, is
+/// reserved to be kept waiting: every host of it taken is replaced at once, so each of its matches
+/// gets a host that has warmed up during the match before. Waiting hosts end with the program.
 /// </summary>
 internal static class HostPool
 {
@@ -28,12 +30,14 @@ internal static class HostPool
     /// <param name="strategy">The team's strategy.</param>
     /// <param name="settings">The hosts' settings.</param>
     /// <param name="sandbox">Whether hosts use bubblewrap.</param>
-    public static void Reserve(PreparedStrategy strategy, HostSettings settings, bool sandbox)
+    /// <param name="keep">Whether every host of the strategy taken is replaced at once (a tournament's entrant), not only those taken beyond the reserved ones.</param>
+    public static void Reserve(PreparedStrategy strategy, HostSettings settings, bool sandbox, bool keep = false)
     {
         Kind kind;
         lock (Gate)
         {
             kind = Of(strategy, settings, sandbox);
+            kind.Keep |= keep;
             if (kind.Target >= MostWaiting)
             {
                 return;
@@ -77,7 +81,7 @@ internal static class HostPool
             }
 
             kind.Taken++;
-            refill = kind.Taken > kind.Target && kind.Waiting.Count + kind.Starting < kind.Target;
+            refill = (kind.Keep || kind.Taken > kind.Target) && kind.Waiting.Count + kind.Starting < kind.Target;
             if (refill)
             {
                 kind.Starting++;
@@ -163,5 +167,7 @@ internal static class HostPool
         public int Starting { get; set; }
 
         public int Taken { get; set; }
+
+        public bool Keep { get; set; }
     }
 }

@@ -12,7 +12,7 @@ namespace URWPGSim2D.Server.Hosting;
 /// <summary>
 /// What a waiting strategy host (<c>host -</c>, <see cref="HostPool"/>) does before it has a strategy:
 /// it runs the code a strategy's start runs (loading an assembly through the strategy loader, the
-/// protocol's hello, assignment, one cycle and its answer on the strategy's own thread, with a built-in
+/// protocol's hello, assignment, one cycle and its answer on the thread that reads it, with a built-in
 /// strategy over streams in memory) so the JIT has compiled it, then reads its strategy's line,
 /// <c>CPU-SECONDS SPEC</c>, limits its CPU time to it and goes on as <c>host SPEC</c>.
 /// </summary>

@@ -1,29 +1,29 @@
 using System;
 using System.IO;
 using URWPGSim2D.Protocol;
+using URWPGSim2D.Server.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
 /// <summary>
 /// The client side of the strategy protocol (docs/protocol.md): says hello, takes the assignment,
-/// then answers every cycle with the strategy's decisions until the server's end. The strategy runs
-/// on its own thread (<see cref="IsolatedStrategyRunner"/>) and every call is answered when it
-/// returns, however long it takes: the server measures the time and takes a late call's overrun
-/// from the team's time bank (<see cref="TimeBank"/>). An exception or a contract violation is
-/// answered as that cycle's fault, and the decisions in force stay as they were. A strategy host
-/// runs this over its standard input and output.
+/// then answers every cycle with the strategy's decisions until the server's end. The strategy is
+/// called on the thread that reads the cycle, and every call is answered when it returns, however
+/// long it takes: the server measures the time and takes a late call's overrun from the team's time
+/// bank (<see cref="TimeBank"/>), so the client never gives a call up and needs no thread of its own
+/// for it (a cycle passes no thread hand-over inside the client). An exception or a contract
+/// violation is answered as that cycle's fault, and the decisions in force stay as they were. A
+/// strategy host runs this over its standard input and output.
 /// </summary>
 internal sealed class StrategyClient
 {
     private readonly LineChannel _channel;
     private readonly MessageWriter _writer = new();
-    private readonly Func<StrategyClock> _clock;
 
     /// <summary>Creates a client over the streams from and to the server.</summary>
-    public StrategyClient(Stream fromServer, Stream toServer, Func<StrategyClock>? clock = null)
+    public StrategyClient(Stream fromServer, Stream toServer)
     {
         _channel = new LineChannel(fromServer, toServer, ProtocolLimits.ServerLineBytes);
-        _clock = clock ?? (() => new ThreadTimeClock());
     }
 
     /// <summary>How a connection ended.</summary>
@@ -60,7 +60,7 @@ internal sealed class StrategyClient
             name = null; // the name is for display only
         }
 
-        _channel.WriteLine(_writer.Hello(ProtocolVersion.Current, token, name));
+        _channel.WriteLine(_writer.Hello(ProtocolVersion.Current, token, name, packed: true));
         if (!_channel.TryReadLine(out var line))
         {
             return Ending.Closed;
@@ -79,67 +79,110 @@ internal sealed class StrategyClient
 
         var assignment = MessageReader.ReadAssignment(line);
         var reader = new CycleReader(assignment);
-        var runner = new IsolatedStrategyRunner(strategy, assignment.Fish.Length, assignment.Team, _clock());
-        if (assignment.Draw)
-        {
-            runner.RecordDrawings();
-        }
-
+        var drawings = assignment.Draw ? new DebugRecorder() : null;
+        StrategyLog? log = null;
         if (assignment.Log)
         {
             ConsoleRouter.Install(); // this process plays one strategy: its console is the strategy's
-            runner.RecordLog();
+            log = new StrategyLog();
         }
 
-        var inForce = new Decision[assignment.Fish.Length];
-        Array.Fill(inForce, Decision.Stop);
-        try
+        var call = new Call(strategy, assignment.Fish, drawings, log);
+        while (_channel.TryReadLine(out line))
         {
-            while (_channel.TryReadLine(out line))
+            switch (MessageReader.TypeOf(line))
             {
-                switch (MessageReader.TypeOf(line))
-                {
-                    case MessageType.Cycle:
-                        int cycle = reader.Read(line);
-                        Answer(runner, reader.Snapshot, assignment, cycle, inForce);
-                        break;
-                    case MessageType.End:
-                        End = MessageReader.ReadEnd(line);
-                        return Ending.Ended;
-                    case MessageType.Error:
-                        Error = MessageReader.ReadError(line);
-                        return Ending.Refused;
-                    default:
-                        break; // a later version's message this client does not need
-                }
+                case MessageType.Cycle:
+                    int cycle = reader.Read(line);
+                    Answer(call, reader.Snapshot, cycle);
+                    break;
+                case MessageType.End:
+                    End = MessageReader.ReadEnd(line);
+                    return Ending.Ended;
+                case MessageType.Error:
+                    Error = MessageReader.ReadError(line);
+                    return Ending.Refused;
+                default:
+                    break; // a later version's message this client does not need
             }
-
-            return Ending.Closed;
         }
-        finally
+
+        return Ending.Closed;
+    }
+
+    private static string? LogOf(StrategyLog? log) => log is { Length: > 0 } ? log.Kept : null;
+
+    // One cycle: the strategy decides on this thread, and its answer (decisions or fault) goes back in one write.
+    private void Answer(Call call, MatchSnapshot snapshot, int cycle)
+    {
+        var error = call.Decide(snapshot);
+        var log = call.Log;
+        switch (error)
         {
-            runner.Stop();
+            case null:
+                _channel.WriteLine(_writer.Decisions(cycle, call.InForce, call.Drawings, LogOf(log), log?.Dropped ?? 0));
+                break;
+            case StrategyContractException:
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message, call.Drawings, LogOf(log), log?.Dropped ?? 0));
+                break;
+            default:
+                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error.GetType().Name}: {error.Message}", call.Drawings, LogOf(log), log?.Dropped ?? 0));
+                break;
         }
     }
 
-    private static string? LogOf(IsolatedStrategyRunner runner) => runner.Log is { Length: > 0 } log ? log.Kept : null;
-
-    private void Answer(IsolatedStrategyRunner runner, MatchSnapshot snapshot, AssignmentMessage assignment, int cycle, Decision[] inForce)
+    // The strategy's calls: its decisions in force, where a call writes, and what it draws and prints.
+    private sealed class Call(IStrategy strategy, int[] fish, DebugRecorder? drawings, StrategyLog? log)
     {
-        switch (runner.Decide(snapshot, assignment.Fish, inForce, System.Threading.Timeout.InfiniteTimeSpan, System.Threading.Timeout.InfiniteTimeSpan, out Exception? error, out _, out _))
+        private readonly Decision[] _work = new Decision[fish.Length];
+
+        public Decision[] InForce { get; } = CreateInForce(fish.Length);
+
+        public DebugRecorder? Drawings => drawings;
+
+        public StrategyLog? Log => log;
+
+        // Calls the strategy on this thread; null when it decided (InForce replaced), else what it threw (InForce kept).
+        public Exception? Decide(MatchSnapshot snapshot)
         {
-            case IsolatedStrategyRunner.Outcome.Decided:
-                _channel.WriteLine(_writer.Decisions(cycle, inForce, runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
-                break;
-            case IsolatedStrategyRunner.Outcome.Threw when error is StrategyContractException:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.BadAnswer, error.Message, runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
-                break;
-            case IsolatedStrategyRunner.Outcome.Threw:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Exception, $"{error!.GetType().Name}: {error.Message}", runner.Drawings, LogOf(runner), runner.Log?.Dropped ?? 0));
-                break;
-            default:
-                _channel.WriteLine(_writer.Fault(cycle, AnswerKind.Timeout, $"no decision within {assignment.DeadlineMs} ms"));
-                break;
+            InForce.CopyTo(_work, 0);
+            drawings?.Enter(fish);
+            if (log is not null)
+            {
+                log.Clear();
+                ConsoleRouter.Enter(log);
+            }
+
+            try
+            {
+                strategy.Decide(snapshot, fish, _work);
+            }
+            catch (Exception e)
+            {
+                return e;
+            }
+            finally
+            {
+                if (drawings is not null)
+                {
+                    DebugRecorder.Exit();
+                }
+
+                if (log is not null)
+                {
+                    ConsoleRouter.Exit();
+                }
+            }
+
+            _work.CopyTo(InForce, 0);
+            return null;
+        }
+
+        private static Decision[] CreateInForce(int count)
+        {
+            var decisions = new Decision[count];
+            Array.Fill(decisions, Decision.Stop);
+            return decisions;
         }
     }
 }

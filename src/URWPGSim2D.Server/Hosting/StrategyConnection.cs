@@ -35,6 +35,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly StrategyLog? _printed;
     private readonly PrintedOutput? _printedText;
     private bool _answered;
+    private bool _packed; // the client asked for packed cycles
     private bool _started;
     private bool _stopped;
 
@@ -139,7 +140,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
             }
 
             TeamName = hello.Name;
-            _channel.WriteLine(_writer.Assignment(_assignment));
+            _packed = hello.Packed;
+            _channel.WriteLine(_writer.Assignment(_packed ? _assignment with { Packed = true } : _assignment));
             _started = true;
             return true;
         }
@@ -212,7 +214,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
         int cycle = snapshot.Cycle;
         try
         {
-            _channel.WriteLine(_writer.Cycle(snapshot));
+            _channel.WriteLine(_writer.Cycle(snapshot, _packed));
             if (!ReadAnswer(cycle, waitLimit, out var line))
             {
                 var ended = End(ref message);

@@ -14,7 +14,9 @@ namespace URWPGSim2D.Server.Tournament;
 /// process: fresh instance and statics); with <c>--isolation none</c> a fresh instance is created in
 /// the server's process for each match. Either way a constructor that throws is a fault of that match
 /// (charged, the match is played), not a load error. The item's demo strategy is no team strategy
-/// (null: the item's layout puts its demo on the team); built-in strategies run in process.
+/// (null: the item's layout puts its demo on the team); built-in strategies run in process. Each
+/// hosted entrant reserves a pre-started host when it is readied, kept waiting for its next match
+/// (<see cref="HostPool.Reserve"/>), so its matches' hosts start warm.
 /// </summary>
 internal sealed class EntrantLoader
 {
@@ -41,6 +43,7 @@ internal sealed class EntrantLoader
 
         Errors = errors;
         TeamNames = names;
+        Reserve(settings);
     }
 
     /// <summary>
@@ -77,6 +80,33 @@ internal sealed class EntrantLoader
         }
 
         return TeamStrategy.InProcess(entrant.Name, entrant.Spec, settings: Settings);
+    }
+
+    // A waiting host for each hosted entrant, started now (while the tournament is set up) and replaced whenever taken.
+    private void Reserve(HostSettings settings)
+    {
+        if (!AnyHosted)
+        {
+            return;
+        }
+
+        bool sandbox;
+        try
+        {
+            sandbox = HostSandbox.Use(settings.Sandbox);
+        }
+        catch (StrategyLoadException)
+        {
+            return; // --sandbox required and no sandbox here: the tournament refuses to play
+        }
+
+        foreach (var prepared in _prepared)
+        {
+            if (prepared is not null)
+            {
+                HostPool.Reserve(prepared, settings, sandbox, keep: true);
+            }
+        }
     }
 
     /// <summary>The one-line reason of a load failure: the message, and the first compile error when there are some.</summary>

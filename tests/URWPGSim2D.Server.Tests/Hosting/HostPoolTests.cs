@@ -49,6 +49,37 @@ public sealed class HostPoolTests : IDisposable
         Assert.Contains("host= host -; cpu=66 66;", report, StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void A_tournaments_hosted_entrant_plays_every_match_in_a_waiting_host()
+    {
+        // The strategy throws every cycle with the command line of its host: "host -" for a pre-started one, "host PATH" for one started for it.
+        string file = Path.Combine(_folder, "Which.cs");
+        File.WriteAllText(file, """
+            using System; using System.IO; using URWPGSim2D.Strategies;
+            public sealed class Which : IStrategy
+            {
+                public string TeamName => "Which";
+                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
+                {
+                    string args = File.ReadAllText("/proc/self/cmdline").Replace('\0', ' ').Trim();
+                    throw new Exception("host=" + args.Substring(args.IndexOf(" host ") + 6) + ";");
+                }
+            }
+            """);
+
+        // Two seeds against the demo, ends swapped: four matches, one after the other; a scratch size of its own, as above.
+        string output = Path.Combine(_folder, "t");
+        var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "which=" + file,
+            "--seeds", "2", "--cycles", "3", "--strategy-timeout", "5000", "--strategy-scratch", "62", "--threads", "1", "--out", output);
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        string[] matches = File.ReadAllLines(Path.Combine(output, "results.jsonl"))[1..];
+        Assert.Equal(4, matches.Length);
+        foreach (string line in matches)
+        {
+            Assert.Contains("cycle 1: Exception: host=-;", line, StringComparison.Ordinal);
+        }
+    }
+
     [Theory]
     [InlineData("")]
     [InlineData("not a line\n")]
