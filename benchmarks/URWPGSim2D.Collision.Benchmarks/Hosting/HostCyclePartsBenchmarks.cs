@@ -2,9 +2,9 @@ using System;
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Matches;
-using URWPGSim2D.Server.Scenario;
-using URWPGSim2D.Server.Simulation;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 

@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Teams;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Server.Hosting;
 
