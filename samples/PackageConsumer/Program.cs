@@ -23,8 +23,8 @@ Check("ball–box MTV is (−38, 0, 0)", MathF.Abs(hit.MinimumTranslationVector.
 // touches it after (200 − 116) / 1000 s = 0.084 s of the 0.1 s step (the stepper finds the time
 // of first contact to within about 0.5 mm of travel: here 0.005 of the step).
 var stepper = new Stepper();
-int a = stepper.AddCircle(58f, new Vector2(0f, 0f));
-int b = stepper.AddCircle(58f, new Vector2(200f, 0f));
+BodyId a = stepper.AddCircle(58f, new Vector2(0f, 0f));
+BodyId b = stepper.AddCircle(58f, new Vector2(200f, 0f));
 stepper.SetVelocity(a, new Vector2(1000f, 0f));
 var firstContact = new FirstContact();
 stepper.Step(0.1f, firstContact);
@@ -69,7 +69,7 @@ internal sealed class FirstContact : IContactHandler
         stepper.SetVelocity(contact.BodyA, Vector2.Zero); // the striker stops
     }
 
-    public void OnMoveRejected(Stepper stepper, int body)
+    public void OnMoveRejected(Stepper stepper, BodyId body)
     {
     }
 }

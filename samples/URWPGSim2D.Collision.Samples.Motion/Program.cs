@@ -23,10 +23,10 @@ foreach (var block in field.GoalBlocks)
 }
 
 // A fish swimming at 300 mm/s toward a resting ball, and a fast ball rolling at a wall.
-int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-600f, 0f), 0f, 0.1f, -0.05f, 0.1f));
+BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-600f, 0f), 0f, 0.1f, -0.05f, 0.1f));
 stepper.SetVelocity(fish, new Vector2(300f, 0f), 0.2f);
-int ball = stepper.AddCircle(58f, new Vector2(-300f, 10f));
-int fast = stepper.AddCircle(38f, new Vector2(1200f, -600f));
+BodyId ball = stepper.AddCircle(58f, new Vector2(-300f, 10f));
+BodyId fast = stepper.AddCircle(38f, new Vector2(1200f, -600f));
 stepper.SetVelocity(fast, new Vector2(2000f, -1000f));
 
 // Ten cycles of 100 ms; every contact comes to the response, in time order.
@@ -61,7 +61,7 @@ internal sealed class StopAndSeparate : IContactHandler
     public void OnContact(Stepper stepper, in Contact contact)
     {
         Contacts++;
-        int a = contact.BodyA, b = contact.BodyB;
+        BodyId a = contact.BodyA, b = contact.BodyB;
         bool bMoves = stepper.KindOf(b) is BodyKind.Circle or BodyKind.Polygon or BodyKind.Fish;
         float share = bMoves ? 0.5f : 1f;
         var mtv = new Vector2(contact.Result.MinimumTranslationVector.X, contact.Result.MinimumTranslationVector.Z);
@@ -85,6 +85,6 @@ internal sealed class StopAndSeparate : IContactHandler
         }
     }
 
-    public void OnMoveRejected(Stepper stepper, int body) => Console.WriteLine($"body {body}: move rejected");
+    public void OnMoveRejected(Stepper stepper, BodyId body) => Console.WriteLine($"{body}: move rejected");
 }
 // </snippet>

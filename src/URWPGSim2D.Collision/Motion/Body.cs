@@ -65,6 +65,9 @@ internal sealed class Body
     /// <summary>The body's number in its stepper.</summary>
     public int Id { get; }
 
+    /// <summary>The id the stepper returned for the body (its number, its stepper's, whether it is static).</summary>
+    public BodyId Handle { get; set; }
+
     /// <summary>What the body is.</summary>
     public BodyKind Kind { get; }
 

@@ -7,10 +7,10 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>One contact the <see cref="Stepper"/> reports: two bodies overlapping at a time of the step.</summary>
 public readonly struct Contact
 {
-    internal Contact(int bodyA, int bodyB, in Hit hit, double time)
+    internal Contact(Body bodyA, Body bodyB, in Hit hit, double time)
     {
-        BodyA = bodyA;
-        BodyB = bodyB;
+        BodyA = bodyA.Handle;
+        BodyB = bodyB.Handle;
         Result = hit.Result;
         PartA = hit.PartA < 0 ? null : (FishPart)hit.PartA;
         PartB = hit.PartB < 0 ? null : (FishPart)hit.PartB;
@@ -22,10 +22,10 @@ public readonly struct Contact
     }
 
     /// <summary>The first body (always a moving one): <see cref="Result"/>'s translation moves it out of <see cref="BodyB"/>.</summary>
-    public int BodyA { get; }
+    public BodyId BodyA { get; }
 
     /// <summary>The second body: moving, static or the walls.</summary>
-    public int BodyB { get; }
+    public BodyId BodyB { get; }
 
     /// <summary>The overlap: minimum translation of A, unit normal from B toward A, action point (X–Z plane, mm).</summary>
     public CollisionDetectionResult Result { get; }

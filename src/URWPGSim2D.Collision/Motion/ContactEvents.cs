@@ -165,7 +165,7 @@ internal sealed class ContactEvents
         Hit hit = _sampler.Memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
-            _world.Report(new Contact(pair.A, pair.B, hit, _world.Time));
+            _world.Report(new Contact(a, b, hit, _world.Time));
         }
     }
 

@@ -22,5 +22,5 @@ public interface IContactHandler
     /// </summary>
     /// <param name="stepper">The stepper.</param>
     /// <param name="body">The body whose move was rejected.</param>
-    void OnMoveRejected(Stepper stepper, int body);
+    void OnMoveRejected(Stepper stepper, BodyId body);
 }

@@ -110,7 +110,7 @@ internal sealed class Settling
                 Hit hit = memo.DetectIfNear(a, b);
                 if (hit.Depth > MotionTolerances.ContactSlop)
                 {
-                    _world.Report(new Contact(pair.A, pair.B, memo.Detect(a, b), _world.Time));
+                    _world.Report(new Contact(a, b, memo.Detect(a, b), _world.Time));
                     next.AddPair(pair);
                 }
                 else
@@ -269,7 +269,7 @@ internal sealed class Settling
         body.Stop();
         body.Invalidate();
         body.Rebase(_world.Time);
-        _world.ReportRejected(body.Id);
+        _world.ReportRejected(body.Handle);
     }
 
     private void CollectPairsOf(BodySet set)

@@ -16,12 +16,13 @@ namespace URWPGSim2D.Collision.Motion;
 public sealed partial class Stepper
 {
     private readonly List<Body> _bodies = [];
+    private readonly int _world = BodyId.NextWorld();
     private readonly LeafContacts _leaves = new();
     private BodySet _changed = new(0);
     private bool _loaded;
     private bool _stepping;
 
-    /// <summary>Number of bodies (ids are 0 … BodyCount − 1, in the order they were added).</summary>
+    /// <summary>Number of bodies (their ids' <see cref="BodyId.Index"/> are 0 … BodyCount − 1, in the order they were added).</summary>
     public int BodyCount => _bodies.Count;
 
     /// <summary>Adds a moving circle (a ball).</summary>
@@ -29,7 +30,7 @@ public sealed partial class Stepper
     /// <param name="position">Centre, mm.</param>
     /// <returns>The body's id.</returns>
     /// <exception cref="ArgumentException">The radius or position is invalid, or a step is running.</exception>
-    public int AddCircle(float radius, Vector2 position)
+    public BodyId AddCircle(float radius, Vector2 position)
     {
         _ = new Circle(position, radius);
         return Add(Body.Circle(_bodies.Count, radius, position));
@@ -41,7 +42,7 @@ public sealed partial class Stepper
     /// <param name="heading">How far the outline is turned, rad (positive from +X toward +Z).</param>
     /// <returns>The body's id.</returns>
     /// <exception cref="ArgumentException">The polygon is default, the pose is not finite, or a step is running.</exception>
-    public int AddPolygon(in ConvexPolygon shape, Vector2 position, float heading)
+    public BodyId AddPolygon(in ConvexPolygon shape, Vector2 position, float heading)
     {
         if (shape.Vertices.Length == 0)
         {
@@ -58,13 +59,13 @@ public sealed partial class Stepper
     /// <param name="pose">Its position, heading and joint angles.</param>
     /// <returns>The body's id.</returns>
     /// <exception cref="ArgumentException">The size is default, or a step is running.</exception>
-    public int AddFish(FishSize size, in FishPose pose) => Add(Body.Fish(_bodies.Count, size, pose));
+    public BodyId AddFish(FishSize size, in FishPose pose) => Add(Body.Fish(_bodies.Count, size, pose));
 
     /// <summary>Adds a static body: a circle, box, 8-DOP, convex polygon or segment (each converts to <see cref="Shape"/>).</summary>
     /// <param name="shape">The shape, mm.</param>
     /// <returns>The body's id.</returns>
     /// <exception cref="ArgumentException">The shape is default, or a step is running.</exception>
-    public int AddStatic(in Shape shape)
+    public BodyId AddStatic(in Shape shape)
     {
         if (shape.Kind == ShapeKind.Polygon && shape.AsPolygon().Vertices.Length == 0)
         {
@@ -78,14 +79,14 @@ public sealed partial class Stepper
     /// <param name="field">The pool.</param>
     /// <returns>The walls' id.</returns>
     /// <exception cref="ArgumentException">The stepper has walls already, or a step is running.</exception>
-    public int AddWalls(Field field)
+    public BodyId AddWalls(Field field)
     {
         ArgumentNullException.ThrowIfNull(field);
         foreach (Body b in _bodies)
         {
             if (b.Kind == BodyKind.Walls)
             {
-                throw new ArgumentException($"the stepper has walls already (body {b.Id})", nameof(field));
+                throw new ArgumentException($"the stepper has walls already ({b.Handle})", nameof(field));
             }
         }
 
@@ -95,49 +96,49 @@ public sealed partial class Stepper
     /// <summary>What a body is.</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>Its kind.</returns>
-    public BodyKind KindOf(int body) => Get(body).Kind;
+    public BodyKind KindOf(BodyId body) => Get(body).Kind;
 
     /// <summary>A body's position now, mm (a static body: its bounding circle's centre).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The position.</returns>
-    public Vector2 PositionOf(int body) => Get(body).Position;
+    public Vector2 PositionOf(BodyId body) => Get(body).Position;
 
     /// <summary>A body's heading now, rad.</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The heading, wrapped to [−π, π).</returns>
-    public float HeadingOf(int body) => Get(body).Heading;
+    public float HeadingOf(BodyId body) => Get(body).Heading;
 
     /// <summary>A moving body's own velocity, mm/s (it moves with this plus its <see cref="DriftOf"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The velocity.</returns>
-    public Vector2 VelocityOf(int body) => Get(body).OwnVelocity;
+    public Vector2 VelocityOf(BodyId body) => Get(body).OwnVelocity;
 
     /// <summary>A moving body's own angular velocity, rad/s (it turns with this plus its <see cref="AngularDriftOf"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The angular velocity.</returns>
-    public float AngularVelocityOf(int body) => Get(body).OwnAngularVelocity;
+    public float AngularVelocityOf(BodyId body) => Get(body).OwnAngularVelocity;
 
     /// <summary>A moving body's drift, mm/s: added to its motion, not to its velocity (see <see cref="SetDrift"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The drift.</returns>
-    public Vector2 DriftOf(int body) => Get(body).Drift;
+    public Vector2 DriftOf(BodyId body) => Get(body).Drift;
 
     /// <summary>A moving body's turning drift, rad/s (see <see cref="SetDrift"/>).</summary>
     /// <param name="body">The body's id.</param>
     /// <returns>The turning drift.</returns>
-    public float AngularDriftOf(int body) => Get(body).AngularDrift;
+    public float AngularDriftOf(BodyId body) => Get(body).AngularDrift;
 
     /// <summary>A fish's collision model at its current pose (read only: the stepper owns it).</summary>
     /// <param name="fish">The fish's id.</param>
     /// <returns>The model.</returns>
     /// <exception cref="ArgumentException">The body is not a fish.</exception>
-    public FishModel FishModelOf(int fish) => Moving(fish, BodyKind.Fish, nameof(fish)).PosedModel;
+    public FishModel FishModelOf(BodyId fish) => Moving(fish, BodyKind.Fish, nameof(fish)).PosedModel;
 
     /// <summary>A fish's pose now: position, heading and joint angles, as the stepper holds them.</summary>
     /// <param name="fish">The fish's id.</param>
     /// <returns>The pose a <see cref="FishModel"/> of the fish's size is laid out at to show the fish now.</returns>
     /// <exception cref="ArgumentException">The body is not a fish.</exception>
-    public FishPose FishPoseOf(int fish)
+    public FishPose FishPoseOf(BodyId fish)
     {
         Body b = Moving(fish, BodyKind.Fish, nameof(fish));
         return new FishPose(b.Position, b.Heading, b.Joint1, b.Joint2, b.Joint3);
@@ -152,7 +153,7 @@ public sealed partial class Stepper
     /// <param name="position">Position, mm.</param>
     /// <param name="heading">Heading, rad (ignored for a circle).</param>
     /// <exception cref="ArgumentException">The body does not move, or the pose is not finite.</exception>
-    public void SetPose(int body, Vector2 position, float heading)
+    public void SetPose(BodyId body, Vector2 position, float heading)
     {
         Body b = Moving(body, null, nameof(body));
         Guard.Finite(position, nameof(position));
@@ -175,7 +176,7 @@ public sealed partial class Stepper
     /// <param name="joint2">Joint 2, rad.</param>
     /// <param name="joint3">Joint 3, rad.</param>
     /// <exception cref="ArgumentException">The body is not a fish, or an angle is not finite.</exception>
-    public void SetJoints(int fish, float joint1, float joint2, float joint3)
+    public void SetJoints(BodyId fish, float joint1, float joint2, float joint3)
     {
         Body b = Moving(fish, BodyKind.Fish, nameof(fish));
         Finite(joint1, nameof(joint1));
@@ -195,7 +196,7 @@ public sealed partial class Stepper
     /// <param name="velocity">Velocity, mm/s.</param>
     /// <param name="angularVelocity">Angular velocity, rad/s (ignored for a circle).</param>
     /// <exception cref="ArgumentException">The body does not move, or a value is not finite.</exception>
-    public void SetVelocity(int body, Vector2 velocity, float angularVelocity = 0f)
+    public void SetVelocity(BodyId body, Vector2 velocity, float angularVelocity = 0f)
     {
         Body b = Moving(body, null, nameof(body));
         Guard.Finite(velocity, nameof(velocity));
@@ -217,7 +218,7 @@ public sealed partial class Stepper
     /// <param name="drift">Drift, mm/s.</param>
     /// <param name="angularDrift">Turning drift, rad/s (ignored for a circle).</param>
     /// <exception cref="ArgumentException">The body does not move, or a value is not finite.</exception>
-    public void SetDrift(int body, Vector2 drift, float angularDrift = 0f)
+    public void SetDrift(BodyId body, Vector2 drift, float angularDrift = 0f)
     {
         Body b = Moving(body, null, nameof(body));
         Guard.Finite(drift, nameof(drift));
@@ -237,7 +238,7 @@ public sealed partial class Stepper
     /// <param name="body">The body's id.</param>
     /// <param name="collides">True (the default for every body) to take part in contacts.</param>
     /// <exception cref="ArgumentException">The body does not move.</exception>
-    public void SetCollides(int body, bool collides)
+    public void SetCollides(BodyId body, bool collides)
     {
         Body b = Moving(body, null, nameof(body));
         Touch(b);
@@ -254,7 +255,7 @@ public sealed partial class Stepper
     /// </summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The body does not move.</exception>
-    public void Involve(int body)
+    public void Involve(BodyId body)
     {
         Body b = Moving(body, null, nameof(body));
         Touch(b);
@@ -269,7 +270,7 @@ public sealed partial class Stepper
     /// <param name="body">The body's id.</param>
     /// <returns>True when the move was rejected.</returns>
     /// <exception cref="ArgumentException">The body does not move.</exception>
-    public bool WasRejected(int body) => Moving(body, null, nameof(body)).Rejected;
+    public bool WasRejected(BodyId body) => Moving(body, null, nameof(body)).Rejected;
 
     /// <summary>
     /// The caller's tag of a body: a number the caller chooses (0 until set) to find its own record
@@ -278,35 +279,35 @@ public sealed partial class Stepper
     /// </summary>
     /// <param name="body">The body's id (any body: moving, static or the walls).</param>
     /// <returns>The tag.</returns>
-    /// <exception cref="ArgumentException">The body does not exist.</exception>
-    public int TagOf(int body) => Existing(body, nameof(body)).Tag;
+    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    public int TagOf(BodyId body) => Existing(body, nameof(body)).Tag;
 
     /// <summary>Sets the caller's tag of a body (see <see cref="TagOf"/>); allowed at any time, it changes nothing of the motion.</summary>
     /// <param name="body">The body's id (any body: moving, static or the walls).</param>
     /// <param name="tag">The tag.</param>
-    /// <exception cref="ArgumentException">The body does not exist.</exception>
-    public void SetTag(int body, int tag) => Existing(body, nameof(body)).Tag = tag;
+    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    public void SetTag(BodyId body, int tag) => Existing(body, nameof(body)).Tag = tag;
 
     /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
     /// <param name="body">The body's id.</param>
-    /// <exception cref="ArgumentException">The id is out of range.</exception>
-    public bool CollidesOf(int body) => Get(body).Collides;
+    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    public bool CollidesOf(BodyId body) => Get(body).Collides;
 
     /// <summary>Tests two bodies at their current poses (for a handler that separates them step by step).</summary>
     /// <param name="bodyA">The first body (moving): the result's translation moves it.</param>
     /// <param name="bodyB">The second body.</param>
     /// <returns>The contact now, or one whose <see cref="Contact.Intersect"/> is false.</returns>
-    /// <exception cref="ArgumentException">A body is out of range, A does not move, or A and B are the same.</exception>
-    public Contact Detect(int bodyA, int bodyB)
+    /// <exception cref="ArgumentException">An id is not one of this stepper's bodies, A does not move, or A and B are the same.</exception>
+    public Contact Detect(BodyId bodyA, BodyId bodyB)
     {
         Body a = Moving(bodyA, null, nameof(bodyA));
-        Body b = Get(bodyB);
+        Body b = Existing(bodyB, nameof(bodyB));
         if (a == b)
         {
-            throw new ArgumentException($"a body cannot be tested against itself (body {bodyA})", nameof(bodyB));
+            throw new ArgumentException($"a body cannot be tested against itself ({bodyA})", nameof(bodyB));
         }
 
-        return new Contact(bodyA, bodyB, _schedule.Sampler.Memo.Detect(a, b), Time);
+        return new Contact(a, b, _schedule.Sampler.Memo.Detect(a, b), Time);
     }
 
     /// <summary>
@@ -322,14 +323,14 @@ public sealed partial class Stepper
     /// <param name="body">The other body: a fish, a circle or a static body (not the walls or a moving polygon).</param>
     /// <param name="contacts">Where to write the contacts: <see cref="FishCollision.MaxContactsWithFish"/> always suffice.</param>
     /// <returns>The number of contacts written.</returns>
-    /// <exception cref="ArgumentException">A body is out of range, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
-    public int DetectLeaves(int fish, int body, Span<FishContact> contacts)
+    /// <exception cref="ArgumentException">An id is not one of this stepper's bodies, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
+    public int DetectLeaves(BodyId fish, BodyId body, Span<FishContact> contacts)
     {
         Body a = Moving(fish, BodyKind.Fish, nameof(fish));
         Body b = Existing(body, nameof(body));
         if (b == a || b.Kind is BodyKind.Walls or BodyKind.Polygon)
         {
-            throw new ArgumentException($"body {body} is {(b == a ? "the fish itself" : "a " + b.Kind + " body")}: leaf contacts are found with another fish, a circle or a static body", nameof(body));
+            throw new ArgumentException($"{body} is {(b == a ? "the fish itself" : "a " + b.Kind + " body")}: leaf contacts are found with another fish, a circle or a static body", nameof(body));
         }
 
         EnsureLoaded();
@@ -337,6 +338,9 @@ public sealed partial class Stepper
     }
 
     internal Body BodyAt(int id) => _bodies[id];
+
+    /// <summary>The id of the body added <paramref name="index"/>-th (tests that walk every body).</summary>
+    internal BodyId IdAt(int index) => _bodies[index].Handle;
 
     /// <summary>The movers (by slot) a response changed since the stages last took them, in the order first changed.</summary>
     internal ReadOnlySpan<int> ChangedBodies => _changed.Items;
@@ -380,7 +384,7 @@ public sealed partial class Stepper
         b.StartJoint3 = b.Joint3;
     }
 
-    private int Add(Body body)
+    private BodyId Add(Body body)
     {
         if (_stepping)
         {
@@ -391,42 +395,33 @@ public sealed partial class Stepper
         body.BaseHeading = body.Heading;
         Remember(body);
         body.KeepStepStart();
+        body.Handle = new BodyId(body.Id, _world, 1, !body.IsMoving);
         _bodies.Add(body);
         _loaded = false;
-        return body.Id;
+        return body.Handle;
     }
 
-    private Body Get(int id)
+    private Body Get(BodyId body) => Existing(body, nameof(body));
+
+    private Body Existing(BodyId id, string name)
     {
-        if ((uint)id >= (uint)_bodies.Count)
+        int index = id.Index;
+        if ((uint)index >= (uint)_bodies.Count || _bodies[index].Handle != id)
         {
-            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", nameof(id));
+            throw new ArgumentException(id.IsNull
+                ? "default(BodyId) names no body: use an id an Add method returned"
+                : $"{id} is not a body of this stepper (it has {_bodies.Count}; an id is valid only in the stepper that returned it)", name);
         }
 
-        return _bodies[id];
+        return _bodies[index];
     }
 
-    private Body Existing(int id, string name)
+    private Body Moving(BodyId id, BodyKind? kind, string name)
     {
-        if ((uint)id >= (uint)_bodies.Count)
-        {
-            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", name);
-        }
-
-        return _bodies[id];
-    }
-
-    private Body Moving(int id, BodyKind? kind, string name)
-    {
-        if ((uint)id >= (uint)_bodies.Count)
-        {
-            throw new ArgumentException($"body {id} does not exist (the stepper has {_bodies.Count})", name);
-        }
-
-        Body b = _bodies[id];
+        Body b = Existing(id, name);
         if (!b.IsMoving || (kind.HasValue && b.Kind != kind.Value))
         {
-            throw new ArgumentException($"body {id} is a {b.Kind} body, not {(kind.HasValue ? "a " + kind.Value : "a moving")} one", name);
+            throw new ArgumentException($"{id} is a {b.Kind} body, not {(kind.HasValue ? "a " + kind.Value : "a moving")} one", name);
         }
 
         return b;

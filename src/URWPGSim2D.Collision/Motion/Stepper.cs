@@ -143,12 +143,12 @@ public sealed partial class Stepper
     /// </summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The body does not move, or no step (or <see cref="Settle"/>) is running.</exception>
-    public void RejectMove(int body)
+    public void RejectMove(BodyId body)
     {
         Body b = Moving(body, null, nameof(body));
         if (!_stepping)
         {
-            throw new ArgumentException($"body {body}: a move can be rejected only from a handler, while a step or Settle runs", nameof(body));
+            throw new ArgumentException($"{body}: a move can be rejected only from a handler, while a step or Settle runs", nameof(body));
         }
 
         Touch(b);
@@ -211,16 +211,16 @@ public sealed partial class Stepper
     internal int IslandCount => _islands.IslandCount;
 
     /// <summary>The island of a moving body in the last step, or −1 when it did not need them (tests).</summary>
-    internal int IslandOf(int body) => _islands.IslandOfMover(_bodies[body].Slot);
+    internal int IslandOf(BodyId body) => _islands.IslandOfMover(Get(body).Slot);
 
     /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
-    internal Disc SweptCircleOf(int body) => _schedule.Planner.SweptCircle(_bodies[body].Slot);
+    internal Disc SweptCircleOf(BodyId body) => _schedule.Planner.SweptCircle(Get(body).Slot);
 
     /// <summary>The response to one contact, from the handler.</summary>
     internal void Report(in Contact contact) => _handler!.OnContact(this, contact);
 
     /// <summary>Tells the handler a body's move was rejected.</summary>
-    internal void ReportRejected(int body) => _handler!.OnMoveRejected(this, body);
+    internal void ReportRejected(BodyId body) => _handler!.OnMoveRejected(this, body);
 
     // Every body starts the step at its current state; every pair is planned from time 0.
     private void Begin(float seconds, IContactHandler handler)

@@ -36,8 +36,8 @@ public static class TimeOfImpact
         }
 
         var world = new Stepper();
-        int first = Add(world, a);
-        int second = Add(world, b);
+        BodyId first = Add(world, a);
+        BodyId second = Add(world, b);
 
         // Overlapping at the start: the contact is at time 0 (the stepper's first sample would find it later).
         bool aMoves = IsMoving(a.Kind);
@@ -73,9 +73,9 @@ public static class TimeOfImpact
     }
 
     // The body in the two-body world, with its motion over the interval.
-    private static int Add(Stepper world, in MovingBody m)
+    private static BodyId Add(Stepper world, in MovingBody m)
     {
-        int id = m.Kind switch
+        BodyId id = m.Kind switch
         {
             BodyKind.Circle => world.AddCircle(m.CircleShape.Radius, m.CircleShape.Center),
             BodyKind.Polygon => world.AddPolygon(m.Outline, m.Position, m.Heading),
@@ -113,7 +113,7 @@ public static class TimeOfImpact
             }
         }
 
-        public void OnMoveRejected(Stepper stepper, int body)
+        public void OnMoveRejected(Stepper stepper, BodyId body)
         {
         }
     }

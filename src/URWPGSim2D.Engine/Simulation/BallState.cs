@@ -29,7 +29,7 @@ public sealed class BallState
     public int Index { get; }
 
     /// <summary>The ball's body in the motion world.</summary>
-    public int Handle { get; }
+    public BodyId Handle { get; }
 
     /// <summary>Radius, mm.</summary>
     public float Radius { get; }

@@ -24,7 +24,7 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     }
 
     /// <inheritdoc/>
-    public void OnMoveRejected(Stepper stepper, int body)
+    public void OnMoveRejected(Stepper stepper, BodyId body)
     {
         // The motion world put the body back and stopped it (velocity and noise drift zero) and
         // remembers it (FishState.MoveRejected): a fish holds still, immovable in contacts, for
@@ -35,7 +35,7 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     // them, and simultaneous contacts come in that order: the body the separation moves first is
     // involved first (A, unless A is a fish whose move was rejected, which its partner alone is
     // pushed away from), then the other.
-    private void TakeInOrder(Stepper stepper, in CandidatePair pair, int a, int b)
+    private void TakeInOrder(Stepper stepper, in CandidatePair pair, BodyId a, BodyId b)
     {
         bool aStays = pair.Kind switch
         {

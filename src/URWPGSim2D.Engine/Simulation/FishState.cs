@@ -37,7 +37,7 @@ public sealed class FishState
     public int Index { get; }
 
     /// <summary>The fish's body in the motion world.</summary>
-    public int Handle { get; }
+    public BodyId Handle { get; }
 
     /// <summary>Team 0 or 1.</summary>
     public int Team { get; }

@@ -15,7 +15,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// </summary>
 public sealed class World
 {
-    private readonly int[] _staticHandles;
+    private readonly BodyId[] _staticHandles;
 
     /// <summary>Creates the world over a motion world that already holds its fish and balls (each tagged by its state); adds the static bodies and the walls, tagged likewise.</summary>
     public World(Stepper motion, Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
@@ -26,7 +26,7 @@ public sealed class World
         Balls = balls;
         Obstacles = obstacles;
         Statics = statics;
-        _staticHandles = new int[statics.Length];
+        _staticHandles = new BodyId[statics.Length];
         for (int i = 0; i < statics.Length; i++)
         {
             StaticBody s = statics[i];
@@ -48,7 +48,7 @@ public sealed class World
     public Stepper Motion { get; }
 
     /// <summary>The walls' handle in the motion world.</summary>
-    public int WallsHandle { get; }
+    public BodyId WallsHandle { get; }
 
     /// <summary>The pool: bounds, walls, goal blocks, goal mouths.</summary>
     public Field Field { get; }
@@ -121,14 +121,14 @@ public sealed class World
             (BodyRole.Ball, BodyRole.Ball) => PairKind.BallBall,
             (BodyRole.Ball, BodyRole.Static) => PairKind.BallStatic,
             (BodyRole.Ball, BodyRole.Walls) => PairKind.BallWall,
-            _ => throw new InvalidOperationException($"the motion world reported a contact of bodies {contact.BodyA} and {contact.BodyB} tagged {tagA} and {tagB}, not a pair of the match"),
+            _ => throw new InvalidOperationException($"the motion world reported a contact of {contact.BodyA} and {contact.BodyB} tagged {tagA} and {tagB}, not a pair of the match"),
         };
         return new CandidatePair(kind, a, b, 0f);
     }
 
-    private int HandleOfA(in CandidatePair p) => p.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic or PairKind.FishWall ? Fish[p.A].Handle : Balls[p.A].Handle;
+    private BodyId HandleOfA(in CandidatePair p) => p.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.FishStatic or PairKind.FishWall ? Fish[p.A].Handle : Balls[p.A].Handle;
 
-    private int HandleOfB(in CandidatePair p) => p.Kind switch
+    private BodyId HandleOfB(in CandidatePair p) => p.Kind switch
     {
         PairKind.FishFish => Fish[p.B].Handle,
         PairKind.FishBall or PairKind.BallBall => Balls[p.B].Handle,

@@ -13,8 +13,8 @@ public sealed class ContactTests
     public void TwoBallsOverlappingAlongADiagonal()
     {
         var stepper = new Stepper();
-        int a = stepper.AddCircle(50f, new Vector2(0f, 0f));
-        int b = stepper.AddCircle(50f, new Vector2(60f, 80f)); // centres 100 mm apart: touching
+        BodyId a = stepper.AddCircle(50f, new Vector2(0f, 0f));
+        BodyId b = stepper.AddCircle(50f, new Vector2(60f, 80f)); // centres 100 mm apart: touching
         stepper.SetPose(a, new Vector2(6f, 8f), 0f);          // now 90 mm apart: 10 mm deep along (−0.6, −0.8)
 
         Contact c = stepper.Detect(a, b);
@@ -34,8 +34,8 @@ public sealed class ContactTests
     {
         var random = new Random(5);
         var stepper = new Stepper();
-        int fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
-        int ball = stepper.AddCircle(58f, new Vector2(1000f, 0f));
+        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
+        BodyId ball = stepper.AddCircle(58f, new Vector2(1000f, 0f));
         int hits = 0;
         for (int i = 0; i < 2_000; i++)
         {

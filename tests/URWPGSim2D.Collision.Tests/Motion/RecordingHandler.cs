@@ -15,7 +15,7 @@ internal sealed class RecordingHandler(float restitution = 0f, float leaveOverla
 {
     public List<Contact> Contacts { get; } = new(1024);
 
-    public List<int> Rejected { get; } = new(16);
+    public List<BodyId> Rejected { get; } = new(16);
 
     public bool Record { get; set; } = true;
 
@@ -26,7 +26,7 @@ internal sealed class RecordingHandler(float restitution = 0f, float leaveOverla
             Contacts.Add(contact);
         }
 
-        int a = contact.BodyA, b = contact.BodyB;
+        BodyId a = contact.BodyA, b = contact.BodyB;
         bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
         Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
         Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
@@ -52,7 +52,7 @@ internal sealed class RecordingHandler(float restitution = 0f, float leaveOverla
         }
     }
 
-    public void OnMoveRejected(Stepper stepper, int body)
+    public void OnMoveRejected(Stepper stepper, BodyId body)
     {
         if (Record)
         {

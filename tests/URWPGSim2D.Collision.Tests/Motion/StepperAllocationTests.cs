@@ -77,18 +77,18 @@ public sealed class StepperAllocationTests
             switch (i % 5)
             {
                 case 0:
-                    int fish = stepper.AddFish(FishSize.Default, new FishPose(at, heading, 0.1f, -0.1f, 0.2f));
+                    BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(at, heading, 0.1f, -0.1f, 0.2f));
                     stepper.SetVelocity(fish, 300f * new Vector2(MathF.Cos(heading), MathF.Sin(heading)), 0.3f);
                     break;
                 case 1:
-                    int polygon = stepper.AddPolygon(square, at, heading);
+                    BodyId polygon = stepper.AddPolygon(square, at, heading);
                     stepper.SetVelocity(polygon, velocity * 0.2f, 1f);
                     break;
                 case 2:
                     stepper.AddStatic(new Circle(at, 25f));
                     break;
                 default:
-                    int ball = stepper.AddCircle(38f, at);
+                    BodyId ball = stepper.AddCircle(38f, at);
                     stepper.SetVelocity(ball, velocity * 0.5f);
                     break;
             }

@@ -12,7 +12,7 @@ public sealed class StepperDriftTests
     public void ABallMovesWithItsVelocityPlusItsDrift()
     {
         var stepper = new Stepper();
-        int ball = stepper.AddCircle(50f, new Vector2(0f, 0f));
+        BodyId ball = stepper.AddCircle(50f, new Vector2(0f, 0f));
         stepper.SetVelocity(ball, new Vector2(1000f, 0f));
         stepper.SetDrift(ball, new Vector2(0f, 500f), angularDrift: 3f);
         stepper.Step(0.1f, new RecordingHandler());
@@ -29,7 +29,7 @@ public sealed class StepperDriftTests
     public void AFishTurnsWithItsAngularVelocityPlusItsTurningDrift()
     {
         var stepper = new Stepper();
-        int fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
+        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
         stepper.SetVelocity(fish, Vector2.Zero, 1f);
         stepper.SetDrift(fish, Vector2.Zero, 0.5f);
         stepper.Step(0.1f, new RecordingHandler());
@@ -44,7 +44,7 @@ public sealed class StepperDriftTests
     {
         // A bar 200 × 40 mm turning between two boxes 150 mm apart jams; settling cannot free it, so
         // a step's move is rejected (see StepperWedgeTests). Its turn is half velocity, half drift.
-        var stepper = StepperWedgeTests.BarInSlot(out int body);
+        var stepper = StepperWedgeTests.BarInSlot(out BodyId body);
         var handler = new RecordingHandler { Record = false };
         int rejected = 0;
         for (int step = 0; step < 30 && rejected == 0; step++)
@@ -65,7 +65,7 @@ public sealed class StepperDriftTests
     public void ADriftThatIsNotFiniteIsRefused()
     {
         var stepper = new Stepper();
-        int ball = stepper.AddCircle(50f, Vector2.Zero);
+        BodyId ball = stepper.AddCircle(50f, Vector2.Zero);
         Assert.Contains("drift", Assert.Throws<System.ArgumentException>(() => stepper.SetDrift(ball, new Vector2(float.NaN, 0f))).Message);
     }
 }

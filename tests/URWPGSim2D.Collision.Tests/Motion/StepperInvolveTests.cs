@@ -32,7 +32,7 @@ public sealed class StepperInvolveTests
     public void BetweenStepsInvolvingChangesNothing()
     {
         var stepper = new Stepper();
-        int ball = stepper.AddCircle(50f, new Vector2(10f, 20f));
+        BodyId ball = stepper.AddCircle(50f, new Vector2(10f, 20f));
         stepper.SetVelocity(ball, new Vector2(300f, -40f));
         stepper.SetDrift(ball, new Vector2(5f, 6f));
         stepper.Involve(ball);
@@ -48,17 +48,19 @@ public sealed class StepperInvolveTests
     public void AStaticBodyOrAMissingOneIsRefusedByName()
     {
         var stepper = new Stepper();
-        int wall = stepper.AddStatic(new URWPGSim2D.Collision.Shapes.Circle(Vector2.Zero, 10f));
+        BodyId wall = stepper.AddStatic(new URWPGSim2D.Collision.Shapes.Circle(Vector2.Zero, 10f));
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.Involve(wall)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.Involve(3)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.Involve(default)).ParamName);
+        BodyId elsewhere = new Stepper().AddCircle(10f, Vector2.Zero);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.Involve(elsewhere)).ParamName);
     }
 
     private static (Vector2[] Positions, int Contacts) Run(bool involve)
     {
         var stepper = new Stepper();
-        int a = stepper.AddCircle(50f, new Vector2(0f, 0f));
-        int b = stepper.AddCircle(50f, new Vector2(300f, 0f));
-        int c = stepper.AddCircle(50f, new Vector2(-1000f, 600f));
+        BodyId a = stepper.AddCircle(50f, new Vector2(0f, 0f));
+        BodyId b = stepper.AddCircle(50f, new Vector2(300f, 0f));
+        BodyId c = stepper.AddCircle(50f, new Vector2(-1000f, 600f));
         stepper.SetVelocity(a, new Vector2(3000f, 0f));
         stepper.SetVelocity(c, new Vector2(800f, -400f));
         var handler = new InvolvingHandler(involve ? [c, b, a] : []);
@@ -67,13 +69,13 @@ public sealed class StepperInvolveTests
     }
 
     // Involves the given bodies, then responds as the recording handler does.
-    private sealed class InvolvingHandler(int[] involve) : IContactHandler
+    private sealed class InvolvingHandler(BodyId[] involve) : IContactHandler
     {
         public RecordingHandler Inner { get; } = new(restitution: 1f);
 
         public void OnContact(Stepper stepper, in Contact contact)
         {
-            foreach (int body in involve)
+            foreach (BodyId body in involve)
             {
                 stepper.Involve(body);
             }
@@ -81,6 +83,6 @@ public sealed class StepperInvolveTests
             Inner.OnContact(stepper, contact);
         }
 
-        public void OnMoveRejected(Stepper stepper, int body) => Inner.OnMoveRejected(stepper, body);
+        public void OnMoveRejected(Stepper stepper, BodyId body) => Inner.OnMoveRejected(stepper, body);
     }
 }

@@ -26,11 +26,11 @@ public sealed class StepperIslandTests
         {
             // Each mover's swept circle from its state at the start of the step, computed here from
             // the definition (bounding circle grown by the most any of its points moves in the step).
-            var movers = new List<int>();
+            var movers = new List<BodyId>();
             var circles = new List<(Vector2 Center, float Radius)>();
             for (int id = 0; id < stepper.BodyCount; id++)
             {
-                if (stepper.KindOf(id) > BodyKind.Fish)
+                if (stepper.KindOf(stepper.IdAt(id)) > BodyKind.Fish)
                 {
                     continue;
                 }
@@ -39,7 +39,7 @@ public sealed class StepperIslandTests
                 Disc bound = body.Bound();
                 float reach = body.Kind == BodyKind.Circle ? 0f : Vector2.Distance(bound.Center, body.Position) + bound.Radius;
                 float travel = (body.Velocity.Length() * Seconds) + (MathF.Abs(body.AngularVelocity) * reach * Seconds);
-                movers.Add(id);
+                movers.Add(stepper.IdAt(id));
                 circles.Add((bound.Center, bound.Radius + travel));
             }
 
@@ -92,9 +92,9 @@ public sealed class StepperIslandTests
             Assert.Equal(two.IslandCount, one.IslandCount);
             for (int id = 0; id < one.BodyCount; id++)
             {
-                if (one.KindOf(id) <= BodyKind.Fish)
+                if (one.KindOf(one.IdAt(id)) <= BodyKind.Fish)
                 {
-                    Assert.True(one.IslandOf(id) == two.IslandOf(id), $"step {step}: body {id} in island {one.IslandOf(id)} on one thread, {two.IslandOf(id)} on two");
+                    Assert.True(one.IslandOf(one.IdAt(id)) == two.IslandOf(two.IdAt(id)), $"step {step}: body {id} in island {one.IslandOf(one.IdAt(id))} on one thread, {two.IslandOf(two.IdAt(id))} on two");
                 }
             }
         }
@@ -154,10 +154,10 @@ public sealed class StepperIslandTests
             lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}");
             for (int id = 0; id < stepper.BodyCount; id++)
             {
-                if (stepper.KindOf(id) <= BodyKind.Fish)
+                if (stepper.KindOf(stepper.IdAt(id)) <= BodyKind.Fish)
                 {
-                    Vector2 p = stepper.PositionOf(id), v = stepper.VelocityOf(id);
-                    lines.Add($"{id}: {Bits(p.X)} {Bits(p.Y)} {Bits(stepper.HeadingOf(id))} {Bits(v.X)} {Bits(v.Y)} {Bits(stepper.AngularVelocityOf(id))}");
+                    Vector2 p = stepper.PositionOf(stepper.IdAt(id)), v = stepper.VelocityOf(stepper.IdAt(id));
+                    lines.Add($"{id}: {Bits(p.X)} {Bits(p.Y)} {Bits(stepper.HeadingOf(stepper.IdAt(id)))} {Bits(v.X)} {Bits(v.Y)} {Bits(stepper.AngularVelocityOf(stepper.IdAt(id)))}");
                 }
             }
         }
@@ -167,7 +167,7 @@ public sealed class StepperIslandTests
     }
 
     private static bool Same(in Contact a, in Contact b) =>
-        a.BodyA == b.BodyA && a.BodyB == b.BodyB && a.Time == b.Time
+        a.BodyA.Index == b.BodyA.Index && a.BodyB.Index == b.BodyB.Index && a.Time == b.Time
         && a.Result.MinimumTranslationVector == b.Result.MinimumTranslationVector
         && a.Result.NormalAxis == b.Result.NormalAxis && a.Result.ActionPoint == b.Result.ActionPoint;
 

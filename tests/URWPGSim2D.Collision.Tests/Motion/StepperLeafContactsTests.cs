@@ -22,10 +22,10 @@ public sealed class StepperLeafContactsTests
     public void TheContactsAreThoseOfFreshModelsAtThePosesNow()
     {
         var stepper = new Stepper();
-        int big = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
-        int small = stepper.AddFish(Small, new FishPose(new Vector2(100f, 0f), 0f, 0f, 0f, 0f));
-        int other = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-100f, 0f), 0f, 0f, 0f, 0f));
-        int ball = stepper.AddCircle(58f, new Vector2(0f, 100f));
+        BodyId big = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        BodyId small = stepper.AddFish(Small, new FishPose(new Vector2(100f, 0f), 0f, 0f, 0f, 0f));
+        BodyId other = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-100f, 0f), 0f, 0f, 0f, 0f));
+        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 100f));
         Shape[] shapes =
         [
             new Circle(new Vector2(60f, -40f), 45f),
@@ -34,7 +34,7 @@ public sealed class StepperLeafContactsTests
             new ConvexPolygon([new Vector2(-60f, -20f), new Vector2(50f, -70f), new Vector2(80f, 40f), new Vector2(-30f, 50f)]),
             new Segment(new Vector2(-120f, 30f), new Vector2(90f, -50f)),
         ];
-        var statics = new List<int>();
+        var statics = new List<BodyId>();
         foreach (Shape shape in shapes)
         {
             statics.Add(stepper.AddStatic(shape));
@@ -46,16 +46,16 @@ public sealed class StepperLeafContactsTests
         int compared = 0;
         for (int trial = 0; trial < 300; trial++)
         {
-            foreach (int f in (int[])[big, small, other])
+            foreach (BodyId f in (BodyId[])[big, small, other])
             {
                 stepper.SetPose(f, new Vector2(Next(random, 150f), Next(random, 150f)), Next(random, 3f));
                 stepper.SetJoints(f, Next(random, 0.5f), Next(random, 0.5f), Next(random, 0.5f));
             }
 
             stepper.SetPose(ball, new Vector2(Next(random, 150f), Next(random, 150f)), 0f);
-            int fish = trial % 2 == 0 ? big : small;
+            BodyId fish = trial % 2 == 0 ? big : small;
             FishModel a = new(fish == small ? Small : FishSize.Default, stepper.FishPoseOf(fish));
-            foreach (int partner in (int[])[fish == big ? small : big, other, ball, .. statics])
+            foreach (BodyId partner in (BodyId[])[fish == big ? small : big, other, ball, .. statics])
             {
                 int n = stepper.DetectLeaves(fish, partner, got);
                 int expected = stepper.KindOf(partner) switch
@@ -93,9 +93,9 @@ public sealed class StepperLeafContactsTests
     public void AfterWarmUpTheQueryAllocatesNothing()
     {
         var stepper = new Stepper();
-        int a = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0.2f, 0f, -0.2f));
-        int b = stepper.AddFish(Small, new FishPose(new Vector2(150f, 40f), 1f, 0f, 0.1f, 0f));
-        int ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
+        BodyId a = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0.2f, 0f, -0.2f));
+        BodyId b = stepper.AddFish(Small, new FishPose(new Vector2(150f, 40f), 1f, 0f, 0.1f, 0f));
+        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
         var contacts = new FishContact[FishCollision.MaxContactsWithFish];
         stepper.DetectLeaves(a, b, contacts);
         stepper.DetectLeaves(b, ball, contacts);
@@ -114,15 +114,15 @@ public sealed class StepperLeafContactsTests
     public void WhatIsNotAFishOrHasNoShapeIsRefusedByName()
     {
         var stepper = new Stepper();
-        int fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
-        int ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
-        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
+        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         var contacts = new FishContact[FishCollision.MaxContactsWithFish];
         Assert.Equal("fish", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(ball, fish, contacts)).ParamName);
-        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(9, fish, contacts)).ParamName);
+        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(default, fish, contacts)).ParamName);
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, walls, contacts)).ParamName);
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, fish, contacts)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, 9, contacts)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, new Stepper().AddCircle(58f, Vector2.Zero), contacts)).ParamName);
     }
 
     private static (Vector2[] Positions, int Contacts) Run(bool query)
@@ -130,17 +130,17 @@ public sealed class StepperLeafContactsTests
         var stepper = new Stepper();
         stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         var random = new Random(7);
-        var ids = new List<int>();
+        var ids = new List<BodyId>();
         for (int i = 0; i < 6; i++)
         {
-            int f = stepper.AddFish(i % 2 == 0 ? FishSize.Default : Small, new FishPose(new Vector2(-900f + (i * 350f), (i % 3 * 300f) - 300f), i, 0.2f, -0.1f, 0.1f));
+            BodyId f = stepper.AddFish(i % 2 == 0 ? FishSize.Default : Small, new FishPose(new Vector2(-900f + (i * 350f), (i % 3 * 300f) - 300f), i, 0.2f, -0.1f, 0.1f));
             stepper.SetVelocity(f, new Vector2(Next(random, 2500f), Next(random, 2500f)), Next(random, 4f));
             ids.Add(f);
         }
 
         for (int i = 0; i < 6; i++)
         {
-            int b = stepper.AddCircle(58f, new Vector2(-800f + (i * 320f), 400f - (i % 2 * 700f)));
+            BodyId b = stepper.AddCircle(58f, new Vector2(-800f + (i * 320f), 400f - (i % 2 * 700f)));
             stepper.SetVelocity(b, new Vector2(Next(random, 3000f), Next(random, 3000f)));
             ids.Add(b);
         }
@@ -188,6 +188,6 @@ public sealed class StepperLeafContactsTests
             Inner.OnContact(stepper, contact);
         }
 
-        public void OnMoveRejected(Stepper stepper, int body) => Inner.OnMoveRejected(stepper, body);
+        public void OnMoveRejected(Stepper stepper, BodyId body) => Inner.OnMoveRejected(stepper, body);
     }
 }

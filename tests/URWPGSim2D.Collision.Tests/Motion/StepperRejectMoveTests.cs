@@ -17,7 +17,7 @@ public sealed class StepperRejectMoveTests
         var stepper = new Stepper();
         stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         var start = new FishPose(new Vector2(1250f, 0f), 0.3f, 0.1f, -0.1f, 0.2f);
-        int fish = stepper.AddFish(FishSize.Default, start);
+        BodyId fish = stepper.AddFish(FishSize.Default, start);
 
         // Between steps the joints change and the fish swims into the wall at x = 1500.
         stepper.SetJoints(fish, 0.2f, 0.2f, 0.2f);
@@ -43,10 +43,10 @@ public sealed class StepperRejectMoveTests
     public void WhileSettlingTheMoveRejectedIsTheLastStepsOne()
     {
         var stepper = new Stepper();
-        int a = stepper.AddCircle(50f, new Vector2(0f, 0f));
-        int b = stepper.AddCircle(50f, new Vector2(400f, 0f));
+        BodyId a = stepper.AddCircle(50f, new Vector2(0f, 0f));
+        BodyId b = stepper.AddCircle(50f, new Vector2(400f, 0f));
         stepper.SetVelocity(a, new Vector2(1000f, 0f));
-        stepper.Step(0.1f, new RejectOnContact(-1));
+        stepper.Step(0.1f, new RejectOnContact(default));
         Assert.Equal(new Vector2(100f, 0f), stepper.PositionOf(a));
 
         // A jump after the step lands a inside b; the response rejects a's move while settling.
@@ -64,14 +64,14 @@ public sealed class StepperRejectMoveTests
     public void OutsideAStepOrForAStaticBodyItIsRefusedByName()
     {
         var stepper = new Stepper();
-        int ball = stepper.AddCircle(50f, Vector2.Zero);
-        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId ball = stepper.AddCircle(50f, Vector2.Zero);
+        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
 
         var outside = Assert.Throws<ArgumentException>(() => stepper.RejectMove(ball));
         Assert.Equal("body", outside.ParamName);
         Assert.Contains("only from a handler", outside.Message, StringComparison.Ordinal);
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.RejectMove(walls)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.RejectMove(7)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.RejectMove(default)).ParamName);
     }
 
     [Fact]
@@ -79,8 +79,8 @@ public sealed class StepperRejectMoveTests
     {
         var stepper = new Stepper();
         stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(1250f, 0f), 0.3f, 0.1f, -0.1f, 0.2f));
-        int ball = stepper.AddCircle(50f, new Vector2(-1000f, 0f));
+        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(1250f, 0f), 0.3f, 0.1f, -0.1f, 0.2f));
+        BodyId ball = stepper.AddCircle(50f, new Vector2(-1000f, 0f));
         stepper.SetVelocity(fish, new Vector2(3000f, 0f), 1f);
         Assert.False(stepper.WasRejected(fish));
 
@@ -90,7 +90,7 @@ public sealed class StepperRejectMoveTests
 
         // Still so between steps (a Settle after the step sees it); the next step begins without it.
         Assert.True(stepper.WasRejected(fish));
-        stepper.Step(0.1f, new RejectOnContact(-1));
+        stepper.Step(0.1f, new RejectOnContact(default));
         Assert.False(stepper.WasRejected(fish));
     }
 
@@ -103,10 +103,10 @@ public sealed class StepperRejectMoveTests
         var stepper = new Stepper();
         stepper.AddWalls(new Field(1000f, 800f, goalBlocks: false));
         var random = new Random(40);
-        var balls = new List<int>();
+        var balls = new List<BodyId>();
         for (int i = 0; i < 12; i++)
         {
-            int id = stepper.AddCircle(40f, new Vector2(-400f + (i % 4 * 260f), -250f + (i / 4 * 250f)));
+            BodyId id = stepper.AddCircle(40f, new Vector2(-400f + (i % 4 * 260f), -250f + (i / 4 * 250f)));
             stepper.SetVelocity(id, new Vector2((float)(random.NextDouble() - 0.5) * 6000f, (float)(random.NextDouble() - 0.5) * 6000f));
             balls.Add(id);
         }
@@ -116,14 +116,14 @@ public sealed class StepperRejectMoveTests
         {
             var handler = new RecordingHandler(leaveOverlap: 2f);
             stepper.Step(0.1f, handler);
-            var heard = new HashSet<int>(handler.Rejected);
-            foreach (int id in balls)
+            var heard = new HashSet<BodyId>(handler.Rejected);
+            foreach (BodyId id in balls)
             {
                 Assert.True(heard.Contains(id) == stepper.WasRejected(id), $"step {step}: ball {id} heard {heard.Contains(id)}, WasRejected {stepper.WasRejected(id)}");
             }
 
             rejectedSteps += heard.Count > 0 ? 1 : 0;
-            foreach (int id in balls)
+            foreach (BodyId id in balls)
             {
                 if (stepper.VelocityOf(id) == Vector2.Zero)
                 {
@@ -139,27 +139,27 @@ public sealed class StepperRejectMoveTests
     public void WasRejectedOfABodyThatDoesNotMoveIsRefusedByName()
     {
         var stepper = new Stepper();
-        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.WasRejected(walls)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.WasRejected(5)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.WasRejected(default)).ParamName);
     }
 
-    // Rejects the move of one body at its first contact (none when the body is −1); records what the stepper reports.
-    private sealed class RejectOnContact(int body) : IContactHandler
+    // Rejects the move of one body at its first contact (none when the body is default); records what the stepper reports.
+    private sealed class RejectOnContact(BodyId body) : IContactHandler
     {
-        public List<int> Rejected { get; } = [];
+        public List<BodyId> Rejected { get; } = [];
 
         public double ContactTime { get; private set; } = -1.0;
 
         public void OnContact(Stepper stepper, in Contact contact)
         {
-            if (body >= 0 && (contact.BodyA == body || contact.BodyB == body) && Rejected.Count == 0)
+            if (!body.IsNull && (contact.BodyA == body || contact.BodyB == body) && Rejected.Count == 0)
             {
                 ContactTime = contact.Time;
                 stepper.RejectMove(body);
             }
         }
 
-        public void OnMoveRejected(Stepper stepper, int rejected) => Rejected.Add(rejected);
+        public void OnMoveRejected(Stepper stepper, BodyId rejected) => Rejected.Add(rejected);
     }
 }

@@ -25,7 +25,7 @@ public sealed class StepperSettleTests
         // fresh measurement of all pairs, and be the small overlap the response leaves.
         var stepper = new Stepper();
         stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        var balls = new int[6];
+        var balls = new BodyId[6];
         for (int i = 0; i < balls.Length; i++)
         {
             balls[i] = stepper.AddCircle(40f + (5f * i), new Vector2(1500f - (40f + (5f * i)) - (3f * i), -750f + (300f * i)));
@@ -61,7 +61,7 @@ public sealed class StepperSettleTests
         stepper.AddWalls(new Field(2000f, 1500f, goalBlocks: false));
         for (int i = 0; i < 30; i++)
         {
-            int b = stepper.AddCircle(30f + (20f * random.NextSingle()), new Vector2((1600f * random.NextSingle()) - 800f, (1100f * random.NextSingle()) - 550f));
+            BodyId b = stepper.AddCircle(30f + (20f * random.NextSingle()), new Vector2((1600f * random.NextSingle()) - 800f, (1100f * random.NextSingle()) - 550f));
             stepper.SetVelocity(b, new Vector2((3000f * random.NextSingle()) - 1500f, (3000f * random.NextSingle()) - 1500f));
         }
 

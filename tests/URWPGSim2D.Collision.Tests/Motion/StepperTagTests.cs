@@ -15,15 +15,15 @@ public sealed class StepperTagTests
     public void EveryKindOfBodyKeepsItsTagAndContactsCarryTheTaggedBodies()
     {
         var stepper = new Stepper();
-        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        int block = stepper.AddStatic(new URWPGSim2D.Collision.Shapes.Circle(new Vector2(400f, 0f), 60f));
-        int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f));
-        int ball = stepper.AddCircle(58f, new Vector2(0f, 0f));
+        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId block = stepper.AddStatic(new URWPGSim2D.Collision.Shapes.Circle(new Vector2(400f, 0f), 60f));
+        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f));
+        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 0f));
         Assert.Equal(0, stepper.TagOf(ball));
 
         // Tags unrelated to the ids, set before and between steps.
-        var tags = new Dictionary<int, int> { [walls] = -7, [block] = 1 << 30, [fish] = 12345, [ball] = int.MinValue };
-        foreach ((int body, int tag) in tags)
+        var tags = new Dictionary<BodyId, int> { [walls] = -7, [block] = 1 << 30, [fish] = 12345, [ball] = int.MinValue };
+        foreach ((BodyId body, int tag) in tags)
         {
             stepper.SetTag(body, tag);
         }
@@ -37,12 +37,12 @@ public sealed class StepperTagTests
         }
 
         Assert.True(handler.Seen.Count >= 2, "too few contacts: the scene does not test the tags");
-        foreach ((int body, int tag) in handler.Seen)
+        foreach ((BodyId body, int tag) in handler.Seen)
         {
             Assert.Equal(tags[body], tag);
         }
 
-        foreach ((int body, int tag) in tags)
+        foreach ((BodyId body, int tag) in tags)
         {
             Assert.Equal(tag, stepper.TagOf(body));
         }
@@ -53,8 +53,11 @@ public sealed class StepperTagTests
     {
         var stepper = new Stepper();
         stepper.AddCircle(10f, Vector2.Zero);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.TagOf(1)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.SetTag(-1, 3)).ParamName);
+        var other = new Stepper();
+        other.AddCircle(10f, Vector2.Zero);
+        BodyId elsewhere = other.AddCircle(10f, Vector2.Zero);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.TagOf(elsewhere)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.SetTag(default, 3)).ParamName);
     }
 
     // Records the tag of each contact's bodies as the handler sees them, and bounces the bodies apart.
@@ -62,7 +65,7 @@ public sealed class StepperTagTests
     {
         private readonly RecordingHandler _inner = new(restitution: 1f);
 
-        public List<(int Body, int Tag)> Seen { get; } = [];
+        public List<(BodyId Body, int Tag)> Seen { get; } = [];
 
         public void OnContact(Stepper stepper, in Contact contact)
         {
@@ -71,6 +74,6 @@ public sealed class StepperTagTests
             _inner.OnContact(stepper, contact);
         }
 
-        public void OnMoveRejected(Stepper stepper, int body) => _inner.OnMoveRejected(stepper, body);
+        public void OnMoveRejected(Stepper stepper, BodyId body) => _inner.OnMoveRejected(stepper, body);
     }
 }

@@ -17,8 +17,8 @@ public sealed class StepperTests
     public void BallMeetsTheWallAtItsTimeOfFirstContact()
     {
         var stepper = new Stepper();
-        int walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        int ball = stepper.AddCircle(50f, new Vector2(1400f, 0f));
+        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId ball = stepper.AddCircle(50f, new Vector2(1400f, 0f));
         stepper.SetVelocity(ball, new Vector2(2000f, 0f));
         var handler = new RecordingHandler();
         stepper.Step(0.1f, handler);
@@ -42,7 +42,7 @@ public sealed class StepperTests
             stepper.AddStatic(new Circle(new Vector2(0f, i * 300f), 50f));
         }
 
-        var balls = new int[obstacles.Length];
+        var balls = new BodyId[obstacles.Length];
         for (int i = 0; i < obstacles.Length; i++)
         {
             // Centre distance at contact is 100 mm: ball i starts 100 + gap_i to the left, at 2000 mm/s.
@@ -72,7 +72,7 @@ public sealed class StepperTests
     {
         var stepper = new Stepper();
         stepper.AddStatic(new Aabb(new Vector2(300f, -500f), new Vector2(300f + thickness, 500f)));
-        int ball = stepper.AddCircle(20f, new Vector2(0f, 0f));
+        BodyId ball = stepper.AddCircle(20f, new Vector2(0f, 0f));
         stepper.SetVelocity(ball, new Vector2(speed, 0f));
         var handler = new RecordingHandler();
         stepper.Step(0.1f, handler);
@@ -85,8 +85,8 @@ public sealed class StepperTests
     {
         var stepper = new Stepper();
         var bar = new ConvexPolygon([new Vector2(-200f, -5f), new Vector2(200f, -5f), new Vector2(200f, 5f), new Vector2(-200f, 5f)]);
-        int polygon = stepper.AddPolygon(bar, Vector2.Zero, 0f);
-        int ball = stepper.AddCircle(10f, new Vector2(0f, 150f));
+        BodyId polygon = stepper.AddPolygon(bar, Vector2.Zero, 0f);
+        BodyId ball = stepper.AddCircle(10f, new Vector2(0f, 150f));
         stepper.SetVelocity(polygon, Vector2.Zero, MathF.PI * 10f); // half a turn in 0.1 s
         var handler = new RecordingHandler();
         stepper.Step(0.1f, handler);
@@ -117,11 +117,11 @@ public sealed class StepperTests
             var random = new Random(5);
             for (int i = 0; i < 40; i++)
             {
-                int b = stepper.AddCircle(30f, new Vector2((float)(random.NextDouble() * 2400 - 1200), (float)(random.NextDouble() * 1600 - 800)));
+                BodyId b = stepper.AddCircle(30f, new Vector2((float)(random.NextDouble() * 2400 - 1200), (float)(random.NextDouble() * 1600 - 800)));
                 stepper.SetVelocity(b, new Vector2((float)(random.NextDouble() * 4000 - 2000), (float)(random.NextDouble() * 4000 - 2000)));
             }
 
-            int fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(100f, 50f), 0.3f, 0.2f, -0.1f, 0.3f));
+            BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(100f, 50f), 0.3f, 0.2f, -0.1f, 0.3f));
             stepper.SetVelocity(fish, new Vector2(300f, 100f), 0.4f);
             var handler = new RecordingHandler(0.5f);
             for (int k = 0; k < 20; k++)
@@ -142,8 +142,8 @@ public sealed class StepperTests
             {
                 Assert.Equal(h1.Contacts[i].Time, h2.Contacts[i].Time);
                 Assert.Equal(h1.Contacts[i].Result, h2.Contacts[i].Result);
-                Assert.Equal(h1.Contacts[i].BodyA, h2.Contacts[i].BodyA);
-                Assert.Equal(h1.Contacts[i].BodyB, h2.Contacts[i].BodyB);
+                Assert.Equal(h1.Contacts[i].BodyA.Index, h2.Contacts[i].BodyA.Index);
+                Assert.Equal(h1.Contacts[i].BodyB.Index, h2.Contacts[i].BodyB.Index);
             }
             catch (XunitException e)
             {
@@ -153,7 +153,7 @@ public sealed class StepperTests
 
         for (int b = 0; b < s1.BodyCount; b++)
         {
-            Assert.Equal(s1.PositionOf(b), s2.PositionOf(b));
+            Assert.Equal(s1.PositionOf(s1.IdAt(b)), s2.PositionOf(s2.IdAt(b)));
         }
     }
 
@@ -161,12 +161,14 @@ public sealed class StepperTests
     public void BadArgumentsNameTheFieldAndValue()
     {
         var stepper = new Stepper();
-        int wall = stepper.AddStatic(new Circle(Vector2.Zero, 5f));
-        int ball = stepper.AddCircle(5f, new Vector2(100f, 0f));
+        BodyId wall = stepper.AddStatic(new Circle(Vector2.Zero, 5f));
+        BodyId ball = stepper.AddCircle(5f, new Vector2(100f, 0f));
         var handler = new RecordingHandler();
         Assert.Contains("positive and finite", Assert.Throws<ArgumentException>(() => stepper.Step(0f, handler)).Message);
         Assert.Throws<ArgumentNullException>(() => stepper.Step(0.1f, null!));
-        Assert.Contains("body 7 does not exist", Assert.Throws<ArgumentException>(() => stepper.PositionOf(7)).Message);
+        BodyId elsewhere = new Stepper().AddCircle(5f, Vector2.Zero);
+        Assert.Contains("body 0 is not a body of this stepper", Assert.Throws<ArgumentException>(() => stepper.PositionOf(elsewhere)).Message);
+        Assert.Contains("default(BodyId) names no body", Assert.Throws<ArgumentException>(() => stepper.PositionOf(default)).Message);
         Assert.Contains("Static", Assert.Throws<ArgumentException>(() => stepper.SetVelocity(wall, Vector2.One)).Message);
         Assert.Contains("not a Fish", Assert.Throws<ArgumentException>(() => stepper.SetJoints(ball, 0f, 0f, 0f)).Message);
         Assert.Contains("finite", Assert.Throws<ArgumentException>(() => stepper.SetVelocity(ball, new Vector2(float.NaN, 0f))).Message);

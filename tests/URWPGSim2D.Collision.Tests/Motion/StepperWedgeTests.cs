@@ -22,7 +22,7 @@ public sealed class StepperWedgeTests
     {
         // A bar 200 × 40 mm turning at 3 rad/s between two boxes 150 mm apart: once it jams, pushing
         // one end out of one box pushes the other end into the other one, and it keeps turning.
-        var stepper = BarInSlot(out int body);
+        var stepper = BarInSlot(out BodyId body);
         var handler = new RecordingHandler { Record = false };
         int most = 0, rejected = 0;
         for (int step = 0; step < 30; step++)
@@ -45,7 +45,7 @@ public sealed class StepperWedgeTests
     }
 
     /// <summary>A bar 200 × 40 mm standing (heading π/2) between two boxes 150 mm apart, in a pool.</summary>
-    internal static Stepper BarInSlot(out int bar)
+    internal static Stepper BarInSlot(out BodyId bar)
     {
         var stepper = new Stepper();
         stepper.AddWalls(new Field());

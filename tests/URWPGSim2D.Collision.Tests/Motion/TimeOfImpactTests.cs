@@ -203,8 +203,8 @@ public sealed class TimeOfImpactTests
     private static bool Overlaps(FishPose start, float seconds, float radius)
     {
         var world = new Stepper();
-        int fish = world.AddFish(FishSize.Default, start.Translated(new Vector2(500f * seconds, 0f)));
-        int ball = world.AddCircle(radius, Vector2.Zero);
+        BodyId fish = world.AddFish(FishSize.Default, start.Translated(new Vector2(500f * seconds, 0f)));
+        BodyId ball = world.AddCircle(radius, Vector2.Zero);
         return world.Detect(fish, ball).Depth > MotionTolerances.ContactSlop;
     }
 }
