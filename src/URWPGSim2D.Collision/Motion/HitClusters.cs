@@ -41,7 +41,7 @@ internal sealed class HitClusters
     }
 
     /// <summary>Copies the hits of a sample.</summary>
-    public void Load(int[] slots, Hit[] values, int count, PairTable table)
+    public void Load(ReadOnlySpan<int> slots, ReadOnlySpan<Hit> values, int count, PairTable table)
     {
         Size(count);
         Count = count;

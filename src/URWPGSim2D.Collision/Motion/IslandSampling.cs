@@ -162,7 +162,6 @@ internal sealed class IslandSampling
                 continue;
             }
 
-            sampler.HitCount = 0;
             sampler.SampleDue(time, _table, _bodies, seconds, null);
             if (sampler.HitCount > 0)
             {
@@ -196,7 +195,9 @@ internal sealed class IslandSampling
     private void HoldByIsland(PairSampler sampler, int tick)
     {
         BuildIslands();
-        int count = sampler.HitCount;
+        ReadOnlySpan<int> hitSlots = sampler.HitSlots;
+        ReadOnlySpan<Hit> hitValues = sampler.HitValues;
+        int count = hitSlots.Length;
         if (_order.Length < count)
         {
             _order = new int[count * 2];
@@ -204,9 +205,9 @@ internal sealed class IslandSampling
 
         for (int h = 0; h < count; h++)
         {
-            int island = IslandOfSlot(sampler.HitSlots[h]);
+            int island = IslandOfSlot(hitSlots[h]);
             int at = h;
-            while (at > 0 && IslandOfSlot(sampler.HitSlots[_order[at - 1]]) > island)
+            while (at > 0 && IslandOfSlot(hitSlots[_order[at - 1]]) > island)
             {
                 _order[at] = _order[at - 1];
                 at--;
@@ -218,8 +219,8 @@ internal sealed class IslandSampling
         for (int i = 0; i < count; i++)
         {
             int h = _order[i];
-            int slot = sampler.HitSlots[h];
-            _held.Add(tick, slot, _table.Generation(slot), sampler.HitValues[h]);
+            int slot = hitSlots[h];
+            _held.Add(tick, slot, _table.Generation(slot), hitValues[h]);
             _stopped[IslandOfSlot(slot)] = true;
         }
     }
@@ -316,15 +317,16 @@ internal sealed class IslandSampling
                     continue;
                 }
 
-                sampler.HitCount = 0;
                 sampler.SampleDue(time, _table, _bodies, seconds, null);
                 if (sampler.HitCount > 0)
                 {
                     int tick = (int)(time * Ticks);
-                    for (int h = 0; h < sampler.HitCount; h++)
+                    ReadOnlySpan<int> hitSlots = sampler.HitSlots;
+                    ReadOnlySpan<Hit> hitValues = sampler.HitValues;
+                    for (int h = 0; h < hitSlots.Length; h++)
                     {
-                        int slot = sampler.HitSlots[h];
-                        worker.Held.Add(tick, slot, _table.Generation(slot), sampler.HitValues[h]);
+                        int slot = hitSlots[h];
+                        worker.Held.Add(tick, slot, _table.Generation(slot), hitValues[h]);
                     }
 
                     sampler.Queue.DrainInto(worker.Handoff);

@@ -18,6 +18,8 @@ internal sealed class PairSampler
     private ulong[] _sampled = new ulong[(Ticks + 64) / 64];
     private int[] _due = new int[256];
     private int _dueCount;
+    private int[] _hitSlots = new int[64];
+    private Hit[] _hitValues = new Hit[64];
 
     /// <summary>When each pair is next sampled.</summary>
     public TickQueue Queue { get; } = new();
@@ -26,24 +28,24 @@ internal sealed class PairSampler
     public TestMemo Memo { get; } = new();
 
     /// <summary>Pair slot of each hit of the current sample.</summary>
-    public int[] HitSlots { get; private set; } = new int[64];
+    public ReadOnlySpan<int> HitSlots => _hitSlots.AsSpan(0, HitCount);
 
     /// <summary>The contact of each hit of the current sample.</summary>
-    public Hit[] HitValues { get; private set; } = new Hit[64];
+    public ReadOnlySpan<Hit> HitValues => _hitValues.AsSpan(0, HitCount);
 
-    /// <summary>Number of hits of the current sample.</summary>
-    public int HitCount { get; set; }
+    /// <summary>Number of hits of the current sample (a take of due pairs starts a new sample).</summary>
+    public int HitCount { get; private set; }
 
     /// <summary>Deepest overlap (within the contact slop) of the pairs sampled at the end of the step, mm.</summary>
-    public float DeepestAtEnd { get; set; }
+    public float DeepestAtEnd { get; private set; }
 
     /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers.</summary>
     public void Reserve(int movers)
     {
         Queue.Reserve((32 * movers) + 1024);
         _due = new int[(8 * movers) + 256];
-        HitSlots = new int[(2 * movers) + 64];
-        HitValues = new Hit[(2 * movers) + 64];
+        _hitSlots = new int[(2 * movers) + 64];
+        _hitValues = new Hit[(2 * movers) + 64];
         Memo.Reserve(movers);
     }
 
@@ -56,10 +58,11 @@ internal sealed class PairSampler
         DeepestAtEnd = 0f;
     }
 
-    /// <summary>Takes the live entries of a sample time; returns their number (the tick counts as sampled when there are any).</summary>
+    /// <summary>Takes the live entries of a sample time, starting a new sample (no hits yet); returns their number (the tick counts as sampled when there are any).</summary>
     public int TakeDue(double time, PairTable table)
     {
         _dueCount = 0;
+        HitCount = 0;
         int first = Queue.Take(time);
         for (int node = first; node >= 0; node = Queue.Next(node))
         {
@@ -82,6 +85,7 @@ internal sealed class PairSampler
     public int TakeDueOfRunning(double time, PairTable table, ReadOnlySpan<int> islandOf, ReadOnlySpan<bool> stopped, QueueEntries parked)
     {
         _dueCount = 0;
+        HitCount = 0;
         int tick = (int)(time * Ticks);
         int first = Queue.Take(time);
         for (int node = first; node >= 0; node = Queue.Next(node))
@@ -189,14 +193,14 @@ internal sealed class PairSampler
     /// <summary>Adds a hit of the current sample.</summary>
     public void AddHit(int slot, in Hit hit)
     {
-        if (HitCount == HitSlots.Length)
+        if (HitCount == _hitSlots.Length)
         {
-            HitSlots = Resized(HitSlots, HitCount * 2);
-            HitValues = Resized(HitValues, HitCount * 2);
+            _hitSlots = Resized(_hitSlots, HitCount * 2);
+            _hitValues = Resized(_hitValues, HitCount * 2);
         }
 
-        HitSlots[HitCount] = slot;
-        HitValues[HitCount++] = hit;
+        _hitSlots[HitCount] = slot;
+        _hitValues[HitCount++] = hit;
     }
 
     /// <summary>Marks a grid time as sampled.</summary>

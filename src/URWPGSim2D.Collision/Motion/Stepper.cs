@@ -79,7 +79,6 @@ public sealed partial class Stepper
         for (double time; (time = _islands.NextTime()) >= 0.0;)
         {
             int due = sampler.TakeDue(time, table);
-            sampler.HitCount = 0;
             if (_islands.TakeHeld(time) + due > 0)
             {
                 sampler.MarkSampled(time);
