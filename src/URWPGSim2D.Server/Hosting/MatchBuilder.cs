@@ -1,14 +1,10 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -51,45 +47,8 @@ internal static class MatchBuilder
     /// <param name="timeBank">Each team's time bank for late calls, or null for <see cref="TimeBank.DefaultFor"/>.</param>
     public static Match BuildRecording(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false, TimeSpan? timeBank = null)
     {
-        var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
-        var motion = new Stepper(broadPhase);
-        var fish = new FishState[scenario.Fish.Count];
-        for (int i = 0; i < fish.Length; i++)
-        {
-            var d = scenario.Fish[i];
-            fish[i] = new FishState(motion, i, d.Team, FishSize.Default, d.Position, d.Heading) { TailPhase = d.TailPhase };
-        }
-
-        var balls = new BallState[scenario.Balls.Count];
-        for (int i = 0; i < balls.Length; i++)
-        {
-            var d = scenario.Balls[i];
-            balls[i] = new BallState(motion, i, d.Radius, d.Position, d.Velocity);
-        }
-
-        var views = new ObstacleView[scenario.Obstacles.Count];
-        var statics = new StaticBody[scenario.Obstacles.Count + field.GoalBlocks.Length];
-        for (int i = 0; i < views.Length; i++)
-        {
-            var o = scenario.Obstacles[i];
-            views[i] = new ObstacleView(i, o.Kind, o.Center, o.Length, o.Width, o.Heading, o.Radius);
-            statics[i] = o.Kind == ObstacleKind.Round
-                ? StaticBody.Round(i, o.Center, o.Radius)
-                : StaticBody.Rectangle(i, o.Center, o.Length, o.Width, o.Heading);
-        }
-
-        for (int g = 0; g < field.GoalBlocks.Length; g++)
-        {
-            statics[views.Length + g] = StaticBody.GoalBlock(g, field.GoalBlocks[g]);
-        }
-
-        var world = new World(motion, field, fish, balls, views, statics);
-        var referee = scenario.Item switch
-        {
-            null => null,
-            Engine.Items.CompetitionItem item => item.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed),
-            var other => throw new ArgumentException($"the scenario's item {other.Slug} is not a competition item of this server", nameof(scenario)),
-        };
+        var world = MatchSetup.BuildWorld(scenario, broadPhase);
+        var referee = MatchSetup.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
         var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
         var slots = Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match);
         foreach (var slot in slots)
