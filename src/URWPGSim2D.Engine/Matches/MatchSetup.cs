@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
@@ -6,6 +7,7 @@ using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Matches;
 
@@ -16,6 +18,33 @@ namespace URWPGSim2D.Engine.Matches;
 /// </summary>
 public static class MatchSetup
 {
+    /// <summary>
+    /// A match of <paramref name="scenario"/> whose strategies run in the calling program
+    /// (<see cref="StrategyTeams"/>): each team given a strategy plays it with all of its fish, the
+    /// others play what the scenario names (built-in strategies, the item's demo), as <see cref="SeatPlan.Of"/> says.
+    /// </summary>
+    /// <param name="scenario">The scenario (an item's: <c>item.CreateScenario(seed)</c>).</param>
+    /// <param name="teams">Per team, its strategy, or null (or a list too short) for the scenario's.</param>
+    /// <param name="seed">Seed override, or null for the scenario's.</param>
+    /// <param name="noise">Noise override, or null for the scenario's.</param>
+    /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
+    /// <param name="broadPhase">The motion world's broad phase (every kind gives the same match).</param>
+    public static Match Create(ScenarioDefinition scenario, IReadOnlyList<IStrategy?>? teams = null, ulong? seed = null, bool? noise = null, int? cycles = null, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
+    {
+        ArgumentNullException.ThrowIfNull(scenario);
+        IStrategy? Team(int t) => teams is not null && t < teams.Count ? teams[t] : null;
+        var world = BuildWorld(scenario, broadPhase);
+        var referee = CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
+        var seats = new List<StrategySeat>();
+        foreach (var plan in SeatPlan.Of(scenario, referee, t => Team(t) is null ? TeamChoice.Scenario : TeamChoice.Own))
+        {
+            var strategy = plan.Strategy ?? Team(plan.Team)!;
+            seats.Add(new StrategySeat(plan.Spec ?? strategy.TeamName, strategy, plan.Team, plan.Fish));
+        }
+
+        return new Match(world, new StrategyTeams(seats), noise ?? scenario.Noise, seed ?? scenario.Seed, referee);
+    }
+
     /// <summary>
     /// The world of <paramref name="scenario"/>: the field, the fish (deployed sizes), the balls,
     /// the obstacles (indices as in the scenario) and the goal blocks (static bodies after the

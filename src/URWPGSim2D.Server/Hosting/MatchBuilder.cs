@@ -70,49 +70,24 @@ internal static class MatchBuilder
 
     private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Engine.Items.ItemReferee? referee, MatchFacts match)
     {
+        TeamStrategy? Team(int t) => t < teams.Length ? teams[t] : null;
         var slots = new List<StrategySlot>();
-        int teamCount = 2;
-        foreach (var f in scenario.Fish)
+        foreach (var plan in SeatPlan.Of(scenario, referee, t => Team(t) switch { null => TeamChoice.Scenario, { Demo: true } => TeamChoice.Demo, _ => TeamChoice.Own }))
         {
-            teamCount = Math.Max(teamCount, f.Team + 1);
-        }
+            if (plan.Strategy is { } builtIn)
+            {
+                slots.Add(new StrategySlot(plan.Spec!, builtIn, plan.Team, plan.Fish, isolated: false));
+                continue;
+            }
 
-        var teamDone = new bool[teamCount];
-        var demoDone = new bool[teamCount];
-        for (int i = 0; i < scenario.Fish.Count; i++)
-        {
-            var d = scenario.Fish[i];
-            TeamStrategy? team = d.Team < teams.Length ? teams[d.Team] : null;
-            if ((team is null && d.Strategy == "demo") || team is { Demo: true })
+            var team = Team(plan.Team)!;
+            slots.Add(team switch
             {
-                // The item's demo strategy takes every demo fish of the team.
-                if (referee is null)
-                {
-                    throw new ArgumentException("the demo strategy needs a competition item", nameof(scenario));
-                }
-
-                if (!demoDone[d.Team])
-                {
-                    demoDone[d.Team] = true;
-                    slots.Add(new StrategySlot(referee.Item.Slug + " demo", referee.Item.CreateDemoStrategy(d.Team, referee), d.Team, Members(scenario, d.Team, team is null ? "demo" : null), isolated: false));
-                }
-            }
-            else if (team is null)
-            {
-                slots.Add(new StrategySlot(d.Strategy, BuiltIn(d), d.Team, [i], isolated: false));
-            }
-            else if (!teamDone[d.Team])
-            {
-                teamDone[d.Team] = true;
-                int[] members = Members(scenario, d.Team, null);
-                slots.Add(team switch
-                {
-                    { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(d.Team, members)), d.Team, members),
-                    { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
-                    { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, d.Team, members),
-                    _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
-                });
-            }
+                { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(plan.Team, plan.Fish)), plan.Team, plan.Fish),
+                { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(plan.Team, plan.Fish), match.Cycles), plan.Team, plan.Fish),
+                { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, plan.Team, plan.Fish),
+                _ => new StrategySlot(team.Label, team.Strategy!, plan.Team, plan.Fish, team.Isolated, team.Clock),
+            });
         }
 
         // Every strategy host says hello before the match (they start side by side): their names are
@@ -136,27 +111,4 @@ internal static class MatchBuilder
             Log = StrategyLog,
         };
     }
-
-    // The fish of a team (those on the given built-in strategy, or all when null), by index.
-    private static int[] Members(ScenarioDefinition scenario, int team, string? strategy)
-    {
-        var members = new List<int>();
-        for (int j = 0; j < scenario.Fish.Count; j++)
-        {
-            if (scenario.Fish[j].Team == team && (strategy is null || scenario.Fish[j].Strategy == strategy))
-            {
-                members.Add(j);
-            }
-        }
-
-        return members.ToArray();
-    }
-
-    private static IStrategy BuiltIn(FishDefinition d) => d.Strategy switch
-    {
-        "idle" => new IdleStrategy(),
-        "chase-ball" => new ChaseBallStrategy(),
-        "fixed" => new FixedDecisionStrategy(d.Decision),
-        _ => throw new ArgumentException($"unknown built-in strategy \"{d.Strategy}\"", nameof(d)),
-    };
 }
