@@ -24,10 +24,9 @@ internal static class ScenarioParser
     public static ScenarioDefinition Parse(string json) => ParseDocument(json, ReadPlain);
 
     /// <summary>Parses <paramref name="json"/> as scenario JSON (comments and trailing commas allowed) and reads its root object with <paramref name="read"/>; a syntax error or lone surrogate is a <see cref="ScenarioException"/>.</summary>
-    /// <typeparam name="T">What is read.</typeparam>
     /// <param name="json">The text.</param>
     /// <param name="read">Reads the root object (already checked to be an object).</param>
-    public static T ParseDocument<T>(string json, Func<JsonElement, T> read)
+    public static ScenarioDefinition ParseDocument(string json, Func<JsonElement, ScenarioDefinition> read)
     {
         JsonDocument doc;
         try
@@ -48,7 +47,7 @@ internal static class ScenarioParser
             }
             catch (InvalidOperationException)
             {
-                throw new ScenarioException(string.Empty, Engine.Messages.LoneSurrogate.Describe(json, new JsonReaderOptions { AllowTrailingCommas = true, CommentHandling = JsonCommentHandling.Skip }));
+                throw new ScenarioException(string.Empty, LoneSurrogate.Describe(json, new JsonReaderOptions { AllowTrailingCommas = true, CommentHandling = JsonCommentHandling.Skip }));
             }
         }
     }

@@ -218,24 +218,10 @@ internal sealed class TournamentCommand : ICliCommand
             TournamentOutputs.Write(folder, standings, mine, entrants.TeamNames);
             console.Out.Write(StandingsLines(standings));
             console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
-            console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
+            console.Out.Write(Wrote(o));
         }
 
-        double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
-        double simulated = toPlay.Count * header.Cycles * 0.1;
-        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {toPlay.Count / seconds:0.00} matches/s, {simulated / seconds:0}x real time\n"));
-        foreach (string f in failures.Take(5))
-        {
-            console.ErrorLine("tournament: " + f);
-        }
-
-        if (failures.Count > 0)
-        {
-            console.ErrorLine($"tournament: {failures.Count} matches failed inside the server; each is recorded as a forfeit of the team at fault");
-            return ExitCodes.InternalError;
-        }
-
-        return ExitCodes.Success;
+        return Finish(console, clock.Elapsed, threads, toPlay.Count, header.Cycles, failures);
     }
 
     // --format groups-knockout: the group stage, then the knockout round by round as the results decide it.
@@ -344,9 +330,19 @@ internal sealed class TournamentCommand : ICliCommand
         console.Out.Write(StandingsLines(standings));
         console.Out.Write(CupLines(standings));
         console.Out.Write(FaultLines(standings, o.Out, j => File.Exists(TournamentOutputs.ReplayPage(folder, j))));
-        console.Out.Write($"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n");
-        double seconds = Math.Max(clock.Elapsed.TotalSeconds, 1e-9);
-        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {playedAll / seconds:0.00} matches/s, {playedAll * header.Cycles * 0.1 / seconds:0}x real time\n"));
+        console.Out.Write(Wrote(o));
+        return Finish(console, clock.Elapsed, threads, playedAll, header.Cycles, failures);
+    }
+
+    // What a finished tournament wrote into its folder.
+    private static string Wrote(TournamentOptions o) =>
+        $"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n";
+
+    // The wall-time line of the PLAYED matches of CYCLES each, then the first failures inside the server; the exit code.
+    private static int Finish(CliConsole console, TimeSpan elapsed, int threads, int played, int cycles, List<string> failures)
+    {
+        double seconds = Math.Max(elapsed.TotalSeconds, 1e-9);
+        console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"wall time: {seconds:0.000} s on {threads} threads, {played / seconds:0.00} matches/s, {played * cycles * 0.1 / seconds:0}x real time\n"));
         foreach (string f in failures.Take(5))
         {
             console.ErrorLine("tournament: " + f);

@@ -139,7 +139,7 @@ internal static class SvgFrame
     // The key: each team's colour, name and score, then the ball and obstacle colours.
     private static void Legend(SvgWriter s, World world, System.Collections.Generic.IReadOnlyList<int> scores, System.Collections.Generic.IReadOnlyList<string>? teamNames, float x, float y)
     {
-        int teams = Teams(world);
+        int teams = world.TeamCount;
         for (int team = 0; team < teams; team++)
         {
             s.Element("rect").Attribute("x", x).Attribute("y", y - 35).Attribute("width", 40).Attribute("height", 40)
@@ -161,25 +161,13 @@ internal static class SvgFrame
     private static string Caption(World world, System.Collections.Generic.IReadOnlyList<int> scores)
     {
         var text = new System.Text.StringBuilder(string.Create(CultureInfo.InvariantCulture, $"cycle {world.Cycle} — "));
-        int teams = Teams(world);
+        int teams = world.TeamCount;
         for (int team = 0; team < teams; team++)
         {
             text.Append(CultureInfo.InvariantCulture, $"{(team > 0 ? ", " : string.Empty)}team {team}: {Goals(scores, team)}");
         }
 
         return text.ToString();
-    }
-
-    // Teams drawn: 2, or as many as the fish play for (four-teams).
-    private static int Teams(World world)
-    {
-        int teams = 2;
-        foreach (var f in world.Fish)
-        {
-            teams = Math.Max(teams, f.Team + 1);
-        }
-
-        return teams;
     }
 
     private static int Goals(System.Collections.Generic.IReadOnlyList<int> scores, int team) => team < scores.Count ? scores[team] : 0;
