@@ -6,13 +6,13 @@ namespace URWPGSim2D.Engine.Teams;
 /// <summary>
 /// Who decides for a match's fish: asked once a cycle with the snapshot of the last cycle, it writes
 /// every fish's decision; told when the match ends. The match engine knows its teams only through
-/// this and their seats (<see cref="ITeamSeat"/>): how strategies are run, timed and isolated is the
+/// this and their seats (<see cref="TeamSeat"/>): how strategies are run, timed and isolated is the
 /// implementation's business.
 /// </summary>
 public interface IMatchTeams
 {
     /// <summary>Each strategy's seat, in decision order: its team, its name and what it did wrong, drew or printed.</summary>
-    IReadOnlyList<ITeamSeat> Seats { get; }
+    IReadOnlyList<TeamSeat> Seats { get; }
 
     /// <summary>Writes every fish's decision for the next cycle.</summary>
     /// <param name="snapshot">What the strategies see: the last cycle.</param>

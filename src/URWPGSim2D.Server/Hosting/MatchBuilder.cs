@@ -1,14 +1,10 @@
 using System;
 using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Hosting;
 
 namespace URWPGSim2D.Server.Hosting;
 
@@ -51,45 +47,8 @@ internal static class MatchBuilder
     /// <param name="timeBank">Each team's time bank for late calls, or null for <see cref="TimeBank.DefaultFor"/>.</param>
     public static Match BuildRecording(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null, bool debugDraw = false, bool strategyLog = false, TimeSpan? timeBank = null)
     {
-        var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
-        var motion = new Stepper(broadPhase);
-        var fish = new FishState[scenario.Fish.Count];
-        for (int i = 0; i < fish.Length; i++)
-        {
-            var d = scenario.Fish[i];
-            fish[i] = new FishState(motion, i, d.Team, FishSize.Default, d.Position, d.Heading) { TailPhase = d.TailPhase };
-        }
-
-        var balls = new BallState[scenario.Balls.Count];
-        for (int i = 0; i < balls.Length; i++)
-        {
-            var d = scenario.Balls[i];
-            balls[i] = new BallState(motion, i, d.Radius, d.Position, d.Velocity);
-        }
-
-        var views = new ObstacleView[scenario.Obstacles.Count];
-        var statics = new StaticBody[scenario.Obstacles.Count + field.GoalBlocks.Length];
-        for (int i = 0; i < views.Length; i++)
-        {
-            var o = scenario.Obstacles[i];
-            views[i] = new ObstacleView(i, o.Kind, o.Center, o.Length, o.Width, o.Heading, o.Radius);
-            statics[i] = o.Kind == ObstacleKind.Round
-                ? StaticBody.Round(i, o.Center, o.Radius)
-                : StaticBody.Rectangle(i, o.Center, o.Length, o.Width, o.Heading);
-        }
-
-        for (int g = 0; g < field.GoalBlocks.Length; g++)
-        {
-            statics[views.Length + g] = StaticBody.GoalBlock(g, field.GoalBlocks[g]);
-        }
-
-        var world = new World(motion, field, fish, balls, views, statics);
-        var referee = scenario.Item switch
-        {
-            null => null,
-            Engine.Items.CompetitionItem item => item.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed),
-            var other => throw new ArgumentException($"the scenario's item {other.Slug} is not a competition item of this server", nameof(scenario)),
-        };
+        var world = MatchSetup.BuildWorld(scenario, broadPhase);
+        var referee = MatchSetup.CreateReferee(scenario, cycles ?? scenario.Cycles, seed ?? scenario.Seed);
         var match = new MatchFacts(world, referee, strategyTimeoutMs, cycles ?? scenario.Cycles, debugDraw, strategyLog);
         var slots = Slots(scenario, teamStrategies ?? new TeamStrategy?[2], referee, match);
         foreach (var slot in slots)
@@ -111,49 +70,24 @@ internal static class MatchBuilder
 
     private static StrategySlot[] Slots(ScenarioDefinition scenario, TeamStrategy?[] teams, Engine.Items.ItemReferee? referee, MatchFacts match)
     {
+        TeamStrategy? Team(int t) => t < teams.Length ? teams[t] : null;
         var slots = new List<StrategySlot>();
-        int teamCount = 2;
-        foreach (var f in scenario.Fish)
+        foreach (var plan in SeatPlan.Of(scenario, referee, t => Team(t) switch { null => TeamChoice.Scenario, { Demo: true } => TeamChoice.Demo, _ => TeamChoice.Own }))
         {
-            teamCount = Math.Max(teamCount, f.Team + 1);
-        }
+            if (plan.Strategy is { } builtIn)
+            {
+                slots.Add(new StrategySlot(plan.Spec!, builtIn, plan.Team, plan.Fish, isolated: false));
+                continue;
+            }
 
-        var teamDone = new bool[teamCount];
-        var demoDone = new bool[teamCount];
-        for (int i = 0; i < scenario.Fish.Count; i++)
-        {
-            var d = scenario.Fish[i];
-            TeamStrategy? team = d.Team < teams.Length ? teams[d.Team] : null;
-            if ((team is null && d.Strategy == "demo") || team is { Demo: true })
+            var team = Team(plan.Team)!;
+            slots.Add(team switch
             {
-                // The item's demo strategy takes every demo fish of the team.
-                if (referee is null)
-                {
-                    throw new ArgumentException("the demo strategy needs a competition item", nameof(scenario));
-                }
-
-                if (!demoDone[d.Team])
-                {
-                    demoDone[d.Team] = true;
-                    slots.Add(new StrategySlot(referee.Item.Slug + " demo", referee.Item.CreateDemoStrategy(d.Team, referee), d.Team, Members(scenario, d.Team, team is null ? "demo" : null), isolated: false));
-                }
-            }
-            else if (team is null)
-            {
-                slots.Add(new StrategySlot(d.Strategy, BuiltIn(d), d.Team, [i], isolated: false));
-            }
-            else if (!teamDone[d.Team])
-            {
-                teamDone[d.Team] = true;
-                int[] members = Members(scenario, d.Team, null);
-                slots.Add(team switch
-                {
-                    { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(d.Team, members)), d.Team, members),
-                    { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(d.Team, members), match.Cycles), d.Team, members),
-                    { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, d.Team, members),
-                    _ => new StrategySlot(team.Label, team.Strategy!, d.Team, members, team.Isolated, team.Clock),
-                });
-            }
+                { Remote: { } seat } => new StrategySlot(team.Label, seat.Open(match.Assignment(plan.Team, plan.Fish)), plan.Team, plan.Fish),
+                { Host: { } prepared } => new StrategySlot(team.Label, HostedStrategy.Start(prepared, team.Settings ?? HostSettings.Default, match.Assignment(plan.Team, plan.Fish), match.Cycles), plan.Team, plan.Fish),
+                { NotCreated: { } why } => StrategySlot.NotCreated(team.Label, why, plan.Team, plan.Fish),
+                _ => new StrategySlot(team.Label, team.Strategy!, plan.Team, plan.Fish, team.Isolated, team.Clock),
+            });
         }
 
         // Every strategy host says hello before the match (they start side by side): their names are
@@ -177,27 +111,4 @@ internal static class MatchBuilder
             Log = StrategyLog,
         };
     }
-
-    // The fish of a team (those on the given built-in strategy, or all when null), by index.
-    private static int[] Members(ScenarioDefinition scenario, int team, string? strategy)
-    {
-        var members = new List<int>();
-        for (int j = 0; j < scenario.Fish.Count; j++)
-        {
-            if (scenario.Fish[j].Team == team && (strategy is null || scenario.Fish[j].Strategy == strategy))
-            {
-                members.Add(j);
-            }
-        }
-
-        return members.ToArray();
-    }
-
-    private static IStrategy BuiltIn(FishDefinition d) => d.Strategy switch
-    {
-        "idle" => new IdleStrategy(),
-        "chase-ball" => new ChaseBallStrategy(),
-        "fixed" => new FixedDecisionStrategy(d.Decision),
-        _ => throw new ArgumentException($"unknown built-in strategy \"{d.Strategy}\"", nameof(d)),
-    };
 }

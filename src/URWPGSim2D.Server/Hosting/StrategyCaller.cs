@@ -39,7 +39,7 @@ internal sealed class StrategyCaller : IMatchTeams
     public StrategySlot[] Slots { get; }
 
     /// <inheritdoc/>
-    IReadOnlyList<ITeamSeat> IMatchTeams.Seats => Slots;
+    IReadOnlyList<TeamSeat> IMatchTeams.Seats => Slots;
 
     /// <summary>The deadline of a call of an isolated or hosted strategy, ms of CPU time.</summary>
     public int TimeoutMs { get; }
@@ -135,12 +135,7 @@ internal sealed class StrategyCaller : IMatchTeams
 
                 try
                 {
-                    slot.Strategy!.Decide(snapshot, slot.Fish, slot.Scratch);
-                    slot.Scratch.CopyTo(slot.Decisions, 0);
-                }
-                catch (Exception e)
-                {
-                    Fault(slot, cycle, e);
+                    slot.DecideInProcess(slot.Strategy!, snapshot, cycle);
                 }
                 finally
                 {
@@ -160,11 +155,7 @@ internal sealed class StrategyCaller : IMatchTeams
                 Isolated(slot, slot.Runner, snapshot, cycle);
             }
 
-            for (int k = 0; k < slot.Fish.Length; k++)
-            {
-                Decision d = slot.Decisions[k];
-                fish[slot.Fish[k]].Decision = new Decision(d.VCode, d.TCode);
-            }
+            slot.WriteDecisions(fish);
         }
     }
 
@@ -207,7 +198,7 @@ internal sealed class StrategyCaller : IMatchTeams
         }
         else
         {
-            Fault(slot, cycle, error!);
+            slot.ChargeThrown(cycle, error!);
         }
 
         CopyDrawings(slot, runner.Drawings, runner.Log);
@@ -337,16 +328,5 @@ internal sealed class StrategyCaller : IMatchTeams
         {
             slot.Charge(cycle, FaultKind.Ended, $"strategy host ended: {how}");
         }
-    }
-
-    private static void Fault(StrategySlot slot, int cycle, Exception e)
-    {
-        if (e is StrategyContractException)
-        {
-            slot.Charge(cycle, FaultKind.BadAnswer, e.Message);
-            return;
-        }
-
-        slot.Charge(cycle, FaultKind.Exception, $"{e.GetType().Name}: {e.Message}");
     }
 }
