@@ -9,7 +9,7 @@ linker=()
 command -v clang >/dev/null 2>&1 || linker=(-p:CppCompilerAndLinker=gcc)
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
-dotnet publish "$root/src/URWPGSim2D.Learning/URWPGSim2D.Learning.csproj" -c Release -r "$rid" "${linker[@]}" -o "$out" --nologo -v quiet
+dotnet publish "$root/src/URWPGSim2D.Learning/URWPGSim2D.Learning.csproj" -c Release -r "$rid" -p:IlcInstructionSet=native "${linker[@]}" -o "$out" --nologo -v quiet
 mkdir -p "$root/clients/python/urwpgsim2d/native"
 cp "$out/URWPGSim2D.Learning.so" "$root/clients/python/urwpgsim2d/native/liburwpgsim2d.so"
 echo "built clients/python/urwpgsim2d/native/liburwpgsim2d.so"

@@ -272,7 +272,8 @@ public sealed class MatchBatch
             };
         }
 
-        var match = MatchSetup.Create(_item.CreateScenario(seed), teams, seed: seed, cycles: Cycles, broadPhase: BroadPhaseKind.UniformGrid);
+        // Every broad phase plays the same match; with three to a dozen bodies trying every pair is the fastest.
+        var match = MatchSetup.Create(_item.CreateScenario(seed), teams, seed: seed, cycles: Cycles, broadPhase: BroadPhaseKind.BruteForce);
         _matches[i] = match;
         _teams[i] = pushed;
         _seeds[i] = seed;
