@@ -7,7 +7,7 @@ using System.Linq;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Engine.Scenario;

@@ -4,7 +4,7 @@ using System.Globalization;
 using System.Linq;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
@@ -142,7 +142,7 @@ internal sealed class RunOptions
     public HostSettings HostSettings { get; private set; } = HostSettings.Default;
 
     /// <summary>Deadline of a loaded strategy per call, ms of its thread's CPU time.</summary>
-    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Folder of a Slurm job array for the batch (<c>--slurm DIR</c>), or null to play the batch here.</summary>
     public string? Slurm { get; private set; }

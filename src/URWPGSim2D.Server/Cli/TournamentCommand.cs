@@ -8,7 +8,7 @@ using System.Linq;
 using URWPGSim2D.Server.Batch;
 using URWPGSim2D.Server.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tournament;
 
 namespace URWPGSim2D.Server.Cli;

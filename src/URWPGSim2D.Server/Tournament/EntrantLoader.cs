@@ -1,6 +1,6 @@
 using System;
 using System.Collections.Generic;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tournament;

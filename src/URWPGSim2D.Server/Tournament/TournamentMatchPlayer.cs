@@ -1,5 +1,5 @@
 using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Server.Rendering;

@@ -4,7 +4,7 @@ using System.Linq;
 using System.Threading;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tournament;
 
