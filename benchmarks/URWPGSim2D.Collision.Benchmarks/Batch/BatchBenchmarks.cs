@@ -1,5 +1,5 @@
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 

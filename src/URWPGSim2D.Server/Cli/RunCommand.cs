@@ -17,7 +17,8 @@ using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 

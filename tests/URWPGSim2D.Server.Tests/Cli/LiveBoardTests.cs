@@ -9,7 +9,7 @@ using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Viewer;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -4,7 +4,7 @@ using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Hosting;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

@@ -6,7 +6,7 @@ using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli.Syntax;
 
