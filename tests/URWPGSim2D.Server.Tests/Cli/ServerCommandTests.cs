@@ -1,9 +1,11 @@
 using System;
 using System.IO;
+using URWPGSim2D.Server.Cli;
+using URWPGSim2D.Server.Tests.Batch.Slurm;
 using URWPGSim2D.Tournament.Batch.Slurm;
 using Xunit;
 
-namespace URWPGSim2D.Server.Tests.Batch.Slurm;
+namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>
 /// <see cref="ServerCommand"/>: in a framework-dependent build (as here, where the tests run the

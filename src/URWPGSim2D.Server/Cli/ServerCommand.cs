@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Runtime.InteropServices;
 
-namespace URWPGSim2D.Tournament.Batch.Slurm;
+namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
 /// How a Slurm task starts this very server, by absolute paths: <c>dotnet</c> (the host of the
@@ -12,7 +12,7 @@ namespace URWPGSim2D.Tournament.Batch.Slurm;
 /// file). The tasks run the build that wrote their scripts, whatever their working directory and
 /// PATH.
 /// </summary>
-public static class ServerCommand
+internal static class ServerCommand
 {
     /// <summary>The command words of the running server (before <c>run</c> or <c>merge</c>).</summary>
     public static IReadOnlyList<string> OfThisProcess()
