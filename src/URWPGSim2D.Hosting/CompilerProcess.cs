@@ -210,7 +210,7 @@ public static class CompilerProcess
     {
         if (cgroup is not null)
         {
-            cgroup.KillAll();
+            _ = cgroup.KillAll();
             return;
         }
 

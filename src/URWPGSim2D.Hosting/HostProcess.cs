@@ -32,6 +32,7 @@ public sealed class HostProcess : IStrategyLink
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
+    private bool _remembered;
 
     private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting)
     {
@@ -188,8 +189,16 @@ public sealed class HostProcess : IStrategyLink
         Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
     }
 
-    /// <summary>Stops the watchdog.</summary>
-    public void EndWait() => Volatile.Write(ref _deadline, long.MaxValue);
+    /// <summary>Stops the watchdog. The first time (the host has answered, so its sandbox is up) its control group notes the sandbox's processes (<see cref="SandboxCgroup.Remember"/>).</summary>
+    public void EndWait()
+    {
+        Volatile.Write(ref _deadline, long.MaxValue);
+        if (!_remembered)
+        {
+            _remembered = true;
+            _cgroup?.Remember();
+        }
+    }
 
     /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
     public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
@@ -227,7 +236,7 @@ public sealed class HostProcess : IStrategyLink
             how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
         }
 
-        _cgroup?.KillAll(); // whatever the host left running in its sandbox
+        _ = _cgroup?.KillAll(); // whatever the host left running in its sandbox
 
         _errors.Join(2000); // the rest of standard error
         string tail;
@@ -251,7 +260,7 @@ public sealed class HostProcess : IStrategyLink
         {
             // Every process of the sandbox at once, the host's bubblewrap included, and wait until they have
             // ended (its PID namespace's init ends last, after all the others).
-            _cgroup.KillAll();
+            _ = _cgroup.KillAll();
             return;
         }
 

@@ -26,6 +26,8 @@ internal sealed partial class SandboxCgroup : IDisposable
     private readonly Layout _layout;
     private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuUsage;
     private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuPressure;
+    private readonly string? _killFile;
+    private readonly HashSet<int> _seen = [];
     private int _disposed;
 
     private SandboxCgroup(Layout layout, string[] folders, long memoryBytes)
@@ -43,6 +45,11 @@ internal sealed partial class SandboxCgroup : IDisposable
             {
                 _cpuUsage = null; // no CPU time of the whole sandbox: the wall time still counts
             }
+        }
+
+        if (layout.UnifiedFolder is { } unified && File.Exists(Path.Combine(folders[unified], "cgroup.kill")))
+        {
+            _killFile = Path.Combine(folders[unified], "cgroup.kill");
         }
 
         if (layout.PressureFolder is { } pressure)
@@ -243,54 +250,129 @@ internal sealed partial class SandboxCgroup : IDisposable
         return pids;
     }
 
-    /// <summary>Ends every process of the group (a fork bomb included: the pids limit bounds it) and waits until none is left, at most about 5 s.</summary>
-    public void KillAll()
+    /// <summary>
+    /// Ends every process of the group (a fork bomb included) and returns when the kernel has reaped
+    /// them all (or all that are left are zombies of it, <see cref="Remember"/>), so that nothing of
+    /// the sandbox runs any more: true then; false (and one warning line) when some still run after
+    /// <see cref="ReapLimit"/>.
+    /// </summary>
+    /// <remarks>
+    /// A process leaves <c>cgroup.procs</c> as it starts to exit, before it has finished; and when the
+    /// init of the sandbox's PID namespace dies, the kernel ends the namespace's other processes and
+    /// holds the init back (out of the group's list, still running) until they are all reaped. An
+    /// empty <c>cgroup.procs</c> therefore does not mean an ended sandbox; the group's
+    /// <c>pids.current</c>, which counts every task of the group until it is reaped, reaching 0 does.
+    /// Where a v2 group has <c>cgroup.kill</c> (Linux 5.14 and later; also the unified group of a
+    /// hybrid machine) the kernel kills the whole group at once, processes forking meanwhile included;
+    /// elsewhere whatever is listed is killed until nothing is (the pids limit bounds the forks).
+    /// </remarks>
+    public bool KillAll()
     {
-        var killed = new HashSet<int>(Processes());
-        bool all = _layout.V2 && TryWrite(Path.Combine(_folders[0], "cgroup.kill"), "1");
-
-        // SIGKILL whatever is listed until nothing is: a process forked meanwhile is listed next round.
-        for (int round = 0; round < 1000 && !all; round++)
+        lock (_seen)
         {
-            var pids = Processes();
-            if (pids.Count == 0)
-            {
-                break;
-            }
-
-            foreach (int pid in pids)
-            {
-                _ = Kill(pid, 9);
-                killed.Add(pid);
-            }
-
-            Thread.Sleep(round < 10 ? 1 : 5);
+            return KillAllOnce();
         }
+    }
 
-        // A process leaves the group as it starts to exit: wait until each has finished (at most about 2 s).
-        for (int round = 0; round < 400 && killed.Count > 0; round++)
+    private bool KillAllOnce()
+    {
+        bool atOnce = _killFile is not null && TryWrite(_killFile, "1");
+        long until = Environment.TickCount64 + (long)ReapLimit.TotalMilliseconds;
+        for (int round = 0; ; round++)
         {
-            killed.RemoveWhere(pid => !Exiting(pid));
-            if (killed.Count > 0)
+            foreach (int pid in Processes())
             {
-                Thread.Sleep(5);
+                _seen.Add(pid);
+                if (!atOnce || round > 0)
+                {
+                    _ = Kill(pid, 9); // one forked meanwhile is listed next round
+                }
+            }
+
+            long left = Tasks();
+            if (left == 0 || left == Zombies())
+            {
+                return true;
+            }
+
+            if (Environment.TickCount64 > until)
+            {
+                HostSandbox.Warn?.Invoke(string.Create(CultureInfo.InvariantCulture, $"warning: {left} processes of a strategy sandbox were not reaped within {ReapLimit.TotalSeconds:0} s"));
+                return false;
+            }
+
+            Thread.Sleep(round < 20 ? 1 : 5);
+        }
+    }
+
+    /// <summary>
+    /// Notes the processes of the group now (the sandbox's PID namespace's init among them, once
+    /// the sandbox is up), so that <see cref="KillAll"/> knows them as its own when they are zombies
+    /// left to a parent outside the group: an ended process no longer listed in the group, which
+    /// only the machine's init can reap, and which may never be (a container's first process).
+    /// </summary>
+    public void Remember()
+    {
+        lock (_seen)
+        {
+            foreach (int pid in Processes())
+            {
+                _seen.Add(pid);
             }
         }
     }
 
-    // Whether the process is still on its way out (not yet a zombie, not gone).
-    private static bool Exiting(int pid)
+    /// <summary>How many of the processes seen in the group (<see cref="Remember"/>, <see cref="KillAll"/>) are zombies now: ended, not yet reaped.</summary>
+    public int Zombies()
     {
+        int zombies = 0;
+        lock (_seen)
+        {
+            foreach (int pid in _seen)
+            {
+                try
+                {
+                    string stat = File.ReadAllText("/proc/" + pid.ToString(CultureInfo.InvariantCulture) + "/stat");
+                    int after = stat.LastIndexOf(')') + 2;
+                    zombies += after < stat.Length && stat[after] == 'Z' ? 1 : 0;
+                }
+                catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+                {
+                    // reaped
+                }
+            }
+        }
+
+        return zombies;
+    }
+
+    /// <summary>How long <see cref="KillAll"/> waits for the kernel to reap the group's processes before it gives up with a warning.</summary>
+    public static readonly TimeSpan ReapLimit = TimeSpan.FromSeconds(10);
+
+    /// <summary>
+    /// How many tasks (processes and threads) of the group the kernel has not reaped yet: its
+    /// <c>pids.current</c>, running, exiting and zombie ones alike; where that file cannot be read,
+    /// the processes <c>cgroup.procs</c> lists (0 once the group is removed).
+    /// </summary>
+    public long Tasks()
+    {
+        Span<byte> text = stackalloc byte[32];
+        string folder = _folders[_layout.PidsFolder];
         try
         {
-            string stat = File.ReadAllText("/proc/" + pid.ToString(CultureInfo.InvariantCulture) + "/stat");
-            int after = stat.LastIndexOf(')') + 2;
-            return after < stat.Length && stat[after] is not ('Z' or 'X');
+            using var handle = File.OpenHandle(Path.Combine(folder, "pids.current"));
+            var line = FirstLine(handle, text);
+            if (Number(line, out long count))
+            {
+                return count;
+            }
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            return false;
+            // not there: count the listed processes
         }
+
+        return Processes().Count;
     }
 
     /// <summary>Ends every process of the group and removes the group.</summary>
@@ -301,7 +383,7 @@ internal sealed partial class SandboxCgroup : IDisposable
             return;
         }
 
-        KillAll();
+        _ = KillAll();
         _cpuUsage?.Dispose();
         _cpuPressure?.Dispose();
         foreach (string folder in _folders)
@@ -455,7 +537,7 @@ internal sealed partial class SandboxCgroup : IDisposable
                     parents.Add(Under(unified, unifiedPath));
                 }
 
-                return new Layout(false, [.. parents]) { CpuFolder = cpu, PressureFolder = pressure };
+                return new Layout(false, [.. parents]) { CpuFolder = cpu, PressureFolder = pressure, UnifiedFolder = pressure };
             }
 
             if (unified is not null && own.TryGetValue(string.Empty, out string? path))
@@ -472,7 +554,7 @@ internal sealed partial class SandboxCgroup : IDisposable
                 TryWrite(Path.Combine(parent, "cgroup.subtree_control"), "+memory +pids");
                 string[] enabled = File.ReadAllText(Path.Combine(parent, "cgroup.subtree_control")).Split(' ', StringSplitOptions.TrimEntries);
                 return Array.IndexOf(enabled, "memory") >= 0 && Array.IndexOf(enabled, "pids") >= 0
-                    ? new Layout(true, [parent]) { CpuFolder = 0, PressureFolder = File.Exists(Path.Combine(parent, "cpu.pressure")) ? 0 : null }
+                    ? new Layout(true, [parent]) { CpuFolder = 0, PressureFolder = File.Exists(Path.Combine(parent, "cpu.pressure")) ? 0 : null, UnifiedFolder = 0 }
                     : null;
             }
         }
@@ -497,6 +579,12 @@ internal sealed partial class SandboxCgroup : IDisposable
 
         /// <summary>The index into <see cref="Parents"/> of the group whose <c>cpu.pressure</c> says how long it waited for a CPU, or null.</summary>
         public int? PressureFolder { get; init; }
+
+        /// <summary>The index into <see cref="Parents"/> of the group in a v2 hierarchy (where the kernel gives <c>cgroup.kill</c>), or null.</summary>
+        public int? UnifiedFolder { get; init; }
+
+        /// <summary>The index into <see cref="Parents"/> of the group whose <c>pids.current</c> counts the group's tasks.</summary>
+        public int PidsFolder => V2 ? 0 : 1;
 
         /// <summary>The group folder (by index into <see cref="Parents"/>) and file that count the group's CPU time, or null.</summary>
         public (int Folder, string File)? CpuUsage => CpuFolder is { } f ? (f, V2 ? "cpu.stat" : "cpuacct.usage") : null;

@@ -96,12 +96,13 @@ class FishEnv(_Base):
     metadata = {"render_modes": []}
 
     def __init__(self, item: str = "polo-1v1", opponent: Optional[str] = "chase-ball", team: int = 0, cycles: int = 600,
-                 server: Optional[Sequence[str]] = None, deadline_ms: int = 60000):
+                 server: Optional[Sequence[str]] = None, deadline_ms: int = 60000, run_args: Sequence[str] = ()):
         if team not in (0, 1):
             raise ValueError("team must be 0 or 1, got %r" % (team,))
         if cycles < 1:
             raise ValueError("cycles must be at least 1, got %r" % (cycles,))
         self.item, self.opponent, self.team, self.cycles, self.deadline_ms = item, opponent, team, cycles, deadline_ms
+        self._run_args = list(run_args)  # more options of `run`, e.g. ["--html", "match.html"] (written when a match ends)
         self._server_command = list(server) if server is not None else default_server()
         self._process: Optional[subprocess.Popen] = None
         self._connection: Optional[protocol.Connection] = None
@@ -183,6 +184,7 @@ class FishEnv(_Base):
             "--strategy-timeout", str(self.deadline_ms), "--remote-wait", "60"]
         if self.opponent is not None:
             command += ["--strategy", "%d=%s" % (1 - self.team, self.opponent)]
+        command += self._run_args
         self._process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         host, port = self._wait_for_port()
         self._connection = protocol.Connection(host, port, timeout=30)

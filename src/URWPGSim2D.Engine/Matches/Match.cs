@@ -20,6 +20,7 @@ public sealed class Match
 {
     private readonly SeededRandom? _motionNoise;
     private readonly SeededRandom? _viewNoise;
+    private int _observedCycle = -1;
 
     /// <summary>Creates a match.</summary>
     /// <param name="world">The pool and its bodies.</param>
@@ -78,7 +79,7 @@ public sealed class Match
     /// <summary>Plays one cycle.</summary>
     public void Step()
     {
-        FillSnapshot();
+        Observe();
         Teams.Decide(Snapshot, World.Fish);
         Rules.AfterDecisions(World);
         Contacts.BeginCycle();
@@ -92,6 +93,22 @@ public sealed class Match
 
         Locomotion.Finish(World);
         Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+    }
+
+    /// <summary>
+    /// Fills <see cref="Snapshot"/> with the current cycle (once a cycle: <see cref="Step"/> then
+    /// decides from the same snapshot, its noise drawn once), and returns it: what the strategies
+    /// will see, read before the cycle is played (a learning environment's observation).
+    /// </summary>
+    public MatchSnapshot Observe()
+    {
+        if (_observedCycle != World.Cycle)
+        {
+            FillSnapshot();
+            _observedCycle = World.Cycle;
+        }
+
+        return Snapshot;
     }
 
     /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>

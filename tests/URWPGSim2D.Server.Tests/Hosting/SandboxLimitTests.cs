@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
+using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
@@ -138,6 +139,74 @@ public sealed class SandboxLimitTests : IDisposable
         Assert.StartsWith("pid:[", ns, StringComparison.Ordinal);
         Assert.True(int.Parse(Field(faults, "seen"), CultureInfo.InvariantCulture) >= 5, faults); // the daemons ran
         Assert.Empty(InNamespace(ns));
+    }
+
+    // Says its PID namespace, then starts processes that fork without end (until the process limit)
+    // while their sandbox is torn down: double-forked sleepers, a fork-and-exec loop and a spinner,
+    // each in a new session; says "forking" when they have had a moment (its own work, no fork).
+    private const string Forkers = """
+        readlink /proc/self/ns/pid
+        setsid sh -c 'while :; do (sleep 1000 &); done' >/dev/null 2>&1 &
+        setsid sh -c 'while :; do /bin/true; done' >/dev/null 2>&1 &
+        setsid sh -c 'while :; do :; done' >/dev/null 2>&1 &
+        i=0; while [ $i -lt 20000 ]; do i=$((i + 1)); done
+        echo forking
+
+        """;
+
+    [Theory]
+    [InlineData(true)] // the first process ends by itself, as a host does at the end of its match: its bubblewrap ends the namespace
+    [InlineData(false)] // the server ends the sandbox while its first process runs
+    public void A_sandbox_forking_while_it_is_torn_down_has_nothing_running_when_teardown_returns(bool endsByItself)
+    {
+        Assert.Null(Sandbox.Unavailable);
+        Assert.Null(SandboxCgroup.Unavailable);
+        for (int i = 0; i < 12; i++)
+        {
+            var group = SandboxCgroup.Create(256L << 20, 300, out string? problem);
+            Assert.True(group is not null, problem);
+            var start = new System.Diagnostics.ProcessStartInfo("/bin/sh") { UseShellExecute = false, RedirectStandardOutput = true };
+            foreach (string arg in group.Wrapper().Skip(1))
+            {
+                start.ArgumentList.Add(arg);
+            }
+
+            start.ArgumentList.Add(Sandbox.Bwrap);
+            foreach (string arg in Sandbox.Arguments([], Path.Combine(_folder, "scratch"), new Dictionary<string, string> { ["PATH"] = "/usr/bin:/bin" }, 1 << 20))
+            {
+                start.ArgumentList.Add(arg);
+            }
+
+            start.ArgumentList.Add("/bin/sh");
+            start.ArgumentList.Add("-c");
+            start.ArgumentList.Add(Forkers + (endsByItself ? "exit 0" : "exec sleep 1000"));
+            using var process = System.Diagnostics.Process.Start(start)!;
+            try
+            {
+                string ns = process.StandardOutput.ReadLine() ?? "";
+                Assert.StartsWith("pid:[", ns, StringComparison.Ordinal);
+                Assert.Equal("forking", process.StandardOutput.ReadLine());
+                group.Remember(); // as the server does at a host's first answer
+                if (endsByItself)
+                {
+                    process.WaitForExit(); // the outer bubblewrap has gone: the kernel now ends the namespace on its own
+                }
+                else
+                {
+                    Assert.InRange(group.Tasks(), 5, 300); // the sandbox is busy forking
+                }
+
+                Assert.True(group.KillAll());
+                Assert.Equal(0, group.Tasks() - group.Zombies()); // every task of the sandbox reaped, or a zombie of it: none runs
+                Assert.Empty(InNamespace(ns));
+                group.Dispose();
+            }
+            finally
+            {
+                group.Dispose();
+                process.WaitForExit();
+            }
+        }
     }
 
     [Fact]

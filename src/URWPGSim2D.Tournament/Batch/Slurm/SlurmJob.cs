@@ -19,7 +19,7 @@ namespace URWPGSim2D.Tournament.Batch.Slurm;
 /// wrote them unless the environment variables <see cref="DotnetVariable"/> and
 /// <see cref="ServerVariable"/> say otherwise, after sourcing the <see cref="Setup"/> file if any.
 /// </summary>
-/// <param name="Server">The command words that start the server (<see cref="ServerCommand"/>).</param>
+/// <param name="Server">The command words that start the server (the running server's dotnet host and DLL, or its program, by absolute paths).</param>
 /// <param name="RunArguments">The options of <c>run</c> every task passes on (the batch, its scene, cycles, seed, noise, strategies…).</param>
 /// <param name="WorkingDirectory">The absolute directory the batch was asked from.</param>
 /// <param name="Folder">The batch's absolute folder: scripts, shard files, <c>logs/</c>.</param>
