@@ -118,7 +118,14 @@ internal sealed class MessageWriter
         _json.WriteEndArray();
         _json.WriteBoolean("sidesSwapped", s.SidesSwapped);
         _json.WriteStartObject("variables");
-        if (s.Variables.Count > 0)
+        if (s.Variables is OrderedVariables ordered)
+        {
+            foreach (var pair in ordered) // its own enumerator: no allocation a cycle
+            {
+                _json.WriteString(pair.Key, pair.Value);
+            }
+        }
+        else if (s.Variables.Count > 0)
         {
             foreach (var pair in s.Variables)
             {

@@ -69,17 +69,51 @@ public class OrderedVariables : IReadOnlyDictionary<string, string>
     /// <inheritdoc/>
     public bool TryGetValue(string key, [MaybeNullWhen(false)] out string value) => _values.TryGetValue(key, out value);
 
+    /// <summary>The variables in their order, without allocating (a <c>foreach</c> over this table itself; through an interface the enumerator is boxed).</summary>
+    public Enumerator GetEnumerator() => new(this);
+
     /// <inheritdoc/>
-    public IEnumerator<KeyValuePair<string, string>> GetEnumerator()
-    {
-        foreach (string key in _keys)
-        {
-            yield return new KeyValuePair<string, string>(key, _values[key]);
-        }
-    }
+    IEnumerator<KeyValuePair<string, string>> IEnumerable<KeyValuePair<string, string>>.GetEnumerator() => GetEnumerator();
 
     /// <inheritdoc/>
     IEnumerator IEnumerable.GetEnumerator() => GetEnumerator();
+
+    /// <summary>Walks the variables in their order; a value type, so a <c>foreach</c> over the table allocates nothing.</summary>
+    public struct Enumerator : IEnumerator<KeyValuePair<string, string>>
+    {
+        private readonly OrderedVariables _table;
+        private int _index;
+
+        internal Enumerator(OrderedVariables table)
+        {
+            _table = table;
+            _index = -1;
+        }
+
+        /// <inheritdoc/>
+        public readonly KeyValuePair<string, string> Current
+        {
+            get
+            {
+                string key = _table._keys[_index];
+                return new KeyValuePair<string, string>(key, _table._values[key]);
+            }
+        }
+
+        /// <inheritdoc/>
+        readonly object IEnumerator.Current => Current;
+
+        /// <inheritdoc/>
+        public bool MoveNext() => ++_index < _table._keys.Count;
+
+        /// <inheritdoc/>
+        public void Reset() => _index = -1;
+
+        /// <inheritdoc/>
+        public readonly void Dispose()
+        {
+        }
+    }
 
     private bool SameKeys(OrderedVariables source)
     {

@@ -1,4 +1,5 @@
 using System;
+using URWPGSim2D.Strategies;
 using Xunit;
 
 namespace URWPGSim2D.Protocol.Tests;
@@ -6,13 +7,23 @@ namespace URWPGSim2D.Protocol.Tests;
 /// <summary>The per-cycle messages allocate nothing once the buffers have grown (the hot path of an isolated team).</summary>
 public class ProtocolAllocationTests
 {
-    [Fact]
-    public void A_cycle_and_its_decisions_allocate_nothing_in_a_steady_state()
+    [Theory]
+    [InlineData(false)]
+    [InlineData(true)] // an item's mission variables, as every item's match has them
+    public void A_cycle_and_its_decisions_allocate_nothing_in_a_steady_state(bool variables)
     {
         var random = new Random(5);
         var assignment = new AssignmentMessage(1, 0, "ball-grab", "match", [0, 1], 4, 1, 6000, 100, 3000, 2000, []);
         var server = assignment.CreateSnapshot();
         RandomSnapshots.Fill(server, random, "match", 6000);
+        if (variables)
+        {
+            var table = new OrderedVariables();
+            table.Set("phase", "first half");
+            table.Set("剩余时间", "600");
+            table.Set("score", "3:4");
+            server.SetItem("match", table, 6000);
+        }
         var writer = new MessageWriter();
         var client = new CycleReader(assignment);
         var answer = new MessageWriter();
@@ -37,5 +48,6 @@ public class ProtocolAllocationTests
 
         Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
         Assert.Equal(decisions, read);
+        Assert.Equal(server.Variables, client.Snapshot.Variables);
     }
 }
