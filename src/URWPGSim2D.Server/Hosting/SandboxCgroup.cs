@@ -85,6 +85,17 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         string name = "urwpgsim2d-" + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-" + Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture);
+        return Create(layout, name, memoryBytes, tasks, out problem);
+    }
+
+    /// <summary>
+    /// A new group <paramref name="name"/> in each parent of <paramref name="layout"/> (a hierarchy
+    /// chosen by the caller: v1 or v2, the machine's or a folder that stands for one), limited as
+    /// <see cref="Create(long, int, out string?)"/> limits it, or null (and why).
+    /// </summary>
+    internal static SandboxCgroup? Create(Layout layout, string name, long memoryBytes, int tasks, out string? problem)
+    {
+        problem = null;
         var made = new List<string>();
         try
         {
@@ -572,7 +583,7 @@ internal sealed partial class SandboxCgroup : IDisposable
     private static partial int Kill(int pid, int signal);
 
     /// <summary>v1: the memory group's parent, the pids group's parent and, where there are, the cpuacct group's and a unified group's parents; v2: the one parent.</summary>
-    private sealed record Layout(bool V2, string[] Parents)
+    internal sealed record Layout(bool V2, string[] Parents)
     {
         /// <summary>The index into <see cref="Parents"/> of the group that counts the CPU time, or null.</summary>
         public int? CpuFolder { get; init; }
