@@ -171,9 +171,9 @@ public sealed class LiveMatch : ITraceSink
                     deadline = clock.Elapsed;
                     continue;
                 }
-                else if (!_paused && clock.Elapsed < deadline)
+                else if (!_paused && deadline - clock.Elapsed is { Ticks: > 0 } left)
                 {
-                    Monitor.Wait(_gate, deadline - clock.Elapsed);
+                    Monitor.Wait(_gate, left); // the clock read once: read twice, the wait could come out negative on a busy machine
                     continue;
                 }
                 else
