@@ -3,7 +3,7 @@
 # off-by-one in the response, the rules, the referees, locomotion, the built-in strategy),
 # rebuilds the server, runs the server tests that could see it, and counts the mutations the
 # tests catch (some test fails) and those they miss. The sources are restored after each one.
-# Not part of CI (about 40 s per mutation on a quiet machine). Results: docs/testing.md.
+# Not part of CI (about 40 s per mutation on a quiet machine). How to read it: docs/development.md.
 #   bash scripts/mutation-spot-check.sh                # every mutation
 #   bash scripts/mutation-spot-check.sh M05 M17        # only these
 # Run it in a clean clone (it edits src/ while it runs): git clone . /tmp/m && bash /tmp/m/scripts/mutation-spot-check.sh

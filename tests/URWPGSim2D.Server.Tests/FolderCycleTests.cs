@@ -20,7 +20,10 @@ public sealed partial class FolderCycleTests
 {
     [Theory]
     [InlineData("URWPGSim2D.Engine", 120)]
-    [InlineData("URWPGSim2D.Server", 150)]
+    [InlineData("URWPGSim2D.Hosting", 45)]
+    [InlineData("URWPGSim2D.Viewer", 10)]
+    [InlineData("URWPGSim2D.Tournament", 40)]
+    [InlineData("URWPGSim2D.Server", 80)]
     public void EveryFilesNamespaceIsItsFolder(string project, int atLeast)
     {
         string server = Repository.PathOf("src/" + project);
@@ -50,7 +53,8 @@ public sealed partial class FolderCycleTests
 
     [Theory]
     [InlineData("URWPGSim2D.Engine", "Matches", "Simulation")]
-    [InlineData("URWPGSim2D.Server", "Cli", "Hosting")]
+    [InlineData("URWPGSim2D.Tournament", "", "Batch")]
+    [InlineData("URWPGSim2D.Server", "Cli", "Json")]
     public void NoFolderDependsOnItselfRoundALoop(string project, string user, string used)
     {
         var uses = FolderUses(System.Reflection.Assembly.Load(project).Location, project);

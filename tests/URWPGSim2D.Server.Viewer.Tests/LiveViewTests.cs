@@ -8,7 +8,7 @@ using System.Threading;
 using System.Threading.Tasks;
 using Microsoft.Playwright;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using Xunit;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;

@@ -4,7 +4,7 @@ using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 

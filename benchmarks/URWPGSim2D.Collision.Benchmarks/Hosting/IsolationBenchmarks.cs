@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;

@@ -1,6 +1,6 @@
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;

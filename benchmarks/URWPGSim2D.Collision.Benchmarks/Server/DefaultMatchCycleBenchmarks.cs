@@ -2,7 +2,7 @@ extern alias baseline;
 
 using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Benchmarks.Reporting;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;

@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
 using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Demo;

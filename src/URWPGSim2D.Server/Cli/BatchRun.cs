@@ -4,8 +4,8 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Cli;

@@ -8,7 +8,7 @@ using System.Threading;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

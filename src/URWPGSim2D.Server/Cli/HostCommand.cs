@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.CommandLine;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Cli;
 

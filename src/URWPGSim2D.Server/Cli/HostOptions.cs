@@ -3,7 +3,7 @@ using System.CommandLine;
 using System.Globalization;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;

@@ -7,12 +7,12 @@ using System.Linq;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,11 +1,11 @@
 using System;
 using System.Runtime.InteropServices;
 using System.Threading;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -67,7 +67,14 @@ internal static class LiveRun
 
         var board = options.StrategiesFolder is null ? null : new LiveBoard(options, scenario, teams, console);
         var feed = new LiveFeed();
-        var player = new LiveMatch(board is null ? Default : board.Next, options.Speed, options.Paused, feed);
+        Func<MatchSettings> next = board is null ? Default : board.Next;
+        (Match, int) Build()
+        {
+            var settings = next();
+            return (settings.Build(), settings.Cycles);
+        }
+
+        var player = new LiveMatch(Build, options.Speed, options.Paused, feed);
         LiveReply Control(string action, System.Collections.Specialized.NameValueCollection query) =>
             board?.Control(action, query, player.Start, player.Restart)
             ?? (player.Control(action) ? LiveReply.Done

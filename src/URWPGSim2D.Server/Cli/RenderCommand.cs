@@ -5,6 +5,7 @@ using System.IO;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
+using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Server.Cli;
 

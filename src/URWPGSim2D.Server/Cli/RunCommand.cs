@@ -8,7 +8,7 @@ using System.Security.Cryptography;
 using System.Text;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
@@ -17,7 +17,8 @@ using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -152,16 +153,7 @@ internal sealed class RunCommand : ICliCommand
         Match match = settings.Build();
         try
         {
-            // Every remote team's address first: a second team's client must know its port before the first client connects.
-            foreach (var slot in match.Caller().Slots)
-            {
-                (slot.Hosted as RemoteStrategy)?.Announce();
-            }
-
-            foreach (var slot in match.Caller().Slots)
-            {
-                (slot.Hosted as RemoteStrategy)?.WaitForClient(announced: true);
-            }
+            match.Caller().ConnectRemoteTeams();
         }
         catch (RemoteWaitException e)
         {

@@ -4,7 +4,7 @@ using System.Globalization;
 using System.Linq;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
@@ -142,7 +142,7 @@ internal sealed class RunOptions
     public HostSettings HostSettings { get; private set; } = HostSettings.Default;
 
     /// <summary>Deadline of a loaded strategy per call, ms of its thread's CPU time.</summary>
-    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Folder of a Slurm job array for the batch (<c>--slurm DIR</c>), or null to play the batch here.</summary>
     public string? Slurm { get; private set; }
@@ -268,10 +268,10 @@ internal sealed class RunOptions
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--results": o.Results = value; break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;
-                case "--shards": o.SlurmShards = (int)Number(name, value, 1, global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.MaximumShards); break;
-                case "--partition": o.Partition = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
-                case "--time": o.TimeLimit = global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
-                case "--sbatch-arg": o._sbatchArguments.Add(global::URWPGSim2D.Server.Batch.Slurm.SlurmJob.SbatchArgumentError(value) is { } why ? throw UsageError(why) : value); seen.Add(name); break;
+                case "--shards": o.SlurmShards = (int)Number(name, value, 1, global::URWPGSim2D.Tournament.Batch.Slurm.SlurmJob.MaximumShards); break;
+                case "--partition": o.Partition = global::URWPGSim2D.Tournament.Batch.Slurm.SlurmJob.IsPartition(value) ? value : throw UsageError($"--partition must be a Slurm partition name (letters, digits, '_', '-', '.', comma-separated), got {MessageText.Quote(value)}"); break;
+                case "--time": o.TimeLimit = global::URWPGSim2D.Tournament.Batch.Slurm.SlurmJob.IsTimeLimit(value) ? value : throw UsageError($"--time must be a Slurm time limit (M, M:S, H:M:S, D-H, D-H:M, D-H:M:S or infinite), got {MessageText.Quote(value)}"); break;
+                case "--sbatch-arg": o._sbatchArguments.Add(global::URWPGSim2D.Tournament.Batch.Slurm.SlurmJob.SbatchArgumentError(value) is { } why ? throw UsageError(why) : value); seen.Add(name); break;
                 case "--slurm-setup": o.SlurmSetup = value; break;
                 case "--shard": o.ParseShard(value); break;
                 case "--trace": o.Trace = value; break;

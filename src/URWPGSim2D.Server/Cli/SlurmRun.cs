@@ -3,8 +3,8 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Tournament.Batch.Slurm;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -5,11 +5,11 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Tournament.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Hosting;
+using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -4,13 +4,13 @@ using System.Globalization;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch.Slurm;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Json;
-using URWPGSim2D.Server.Hosting;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Hosting;
+using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli;
 
@@ -45,7 +45,7 @@ internal sealed class TournamentOptions
     public int Cycles { get; private set; } = 6000;
 
     /// <summary>Strategies' time limit per call, ms.</summary>
-    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Server.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
+    public int StrategyTimeoutMs { get; private set; } = global::URWPGSim2D.Hosting.MatchBuilder.DefaultStrategyTimeoutMs;
 
     /// <summary>Where user entrants run (<see cref="HostOptions"/>): strategy hosts by default, as <c>run</c>.</summary>
     public HostSettings HostSettings { get; private set; } = HostSettings.Default;

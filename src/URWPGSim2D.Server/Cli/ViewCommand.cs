@@ -7,7 +7,8 @@ using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Cli;
 

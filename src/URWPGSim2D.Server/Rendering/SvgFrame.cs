@@ -4,6 +4,7 @@ using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Server.Rendering;
 

@@ -1,8 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using Xunit;

@@ -1,6 +1,6 @@
 using System.Collections.Generic;
 using System.IO;
-using URWPGSim2D.Server.Batch;
+using URWPGSim2D.Tournament.Batch;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch;

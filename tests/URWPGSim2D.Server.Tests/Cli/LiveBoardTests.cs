@@ -4,12 +4,12 @@ using System.Collections.Specialized;
 using System.IO;
 using System.Linq;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Viewer;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -5,7 +5,7 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -5,7 +5,7 @@ using System.Linq;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.BallGrab;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Server.Tests.Cli;

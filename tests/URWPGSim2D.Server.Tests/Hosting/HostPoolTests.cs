@@ -2,7 +2,7 @@ using System;
 using System.Diagnostics;
 using System.IO;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 

@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

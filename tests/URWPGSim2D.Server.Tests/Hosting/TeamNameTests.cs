@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 
@@ -104,7 +104,7 @@ public sealed class TeamNameTests : IDisposable
             _ => [.. System.Text.Encoding.Unicode.GetPreamble(), .. System.Text.Encoding.Unicode.GetBytes(source)],
         };
         File.WriteAllBytes(Path.Combine(folder, "Strategy.cs"), bytes);
-        URWPGSim2D.Server.Hosting.CompiledImages.Forget();
+        URWPGSim2D.Hosting.CompiledImages.Forget();
         var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "5", "--strategy", "0=" + folder, "--strategy", "1=idle");
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Contains($"score: team 0 (蓝鲨队 [old-{encoding}]) ", run.Stdout, StringComparison.Ordinal);

@@ -1,6 +1,6 @@
 using System;
 using System.Threading;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,5 +1,5 @@
 using System;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

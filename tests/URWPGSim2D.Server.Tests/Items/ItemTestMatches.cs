@@ -1,6 +1,6 @@
 using System.Collections.Generic;
 using System.Linq;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;

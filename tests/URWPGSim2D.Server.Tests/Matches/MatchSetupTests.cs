@@ -8,7 +8,7 @@ using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Strategies;
 using Xunit;

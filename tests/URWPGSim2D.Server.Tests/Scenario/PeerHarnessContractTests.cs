@@ -3,7 +3,7 @@ using System.Collections;
 using System.Numerics;
 using System.Reflection;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using Xunit;
 
@@ -18,7 +18,7 @@ public sealed class PeerHarnessContractTests
 {
     private const BindingFlags Static = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Static;
     private const BindingFlags Instance = BindingFlags.Public | BindingFlags.NonPublic | BindingFlags.Instance;
-    private static readonly Assembly Server = Assembly.Load("URWPGSim2D.Server");
+    private static readonly Assembly Hosting = Assembly.Load("URWPGSim2D.Hosting");
     private static readonly Assembly Engine = Assembly.Load("URWPGSim2D.Engine");
 
     [Fact]
@@ -27,7 +27,7 @@ public sealed class PeerHarnessContractTests
         object scenario = Engine.GetType("URWPGSim2D.Engine.Scenario.CrowdScenario", true)!
             .GetMethod("Create", Static)!
             .Invoke(null, [100, 1UL, 3000])!;
-        var build = Server.GetType("URWPGSim2D.Server.Hosting.MatchBuilder", true)!.GetMethod("Build", Static)!;
+        var build = Hosting.GetType("URWPGSim2D.Hosting.MatchBuilder", true)!.GetMethod("Build", Static)!;
         object match = build.Invoke(null, [scenario, null, null, null, 100, BroadPhaseKind.UniformGrid, null])!;
         var step = (Action)Delegate.CreateDelegate(typeof(Action), match, match.GetType().GetMethod("Step")!);
         step();

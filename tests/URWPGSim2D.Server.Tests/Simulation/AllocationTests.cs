@@ -1,5 +1,5 @@
 using System;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using Xunit;
 

@@ -1,6 +1,6 @@
 using System;
 using System.Collections.Generic;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

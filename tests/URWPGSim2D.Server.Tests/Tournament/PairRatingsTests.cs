@@ -1,7 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 using Xunit;
 using Xunit.Abstractions;
 

@@ -36,7 +36,7 @@ public sealed class TournamentEntrantsDirTests : IDisposable
 
     private CliRun Tournament(string dir, string tour, params string[] more)
     {
-        URWPGSim2D.Server.Hosting.CompiledImages.Forget();
+        URWPGSim2D.Hosting.CompiledImages.Forget();
         return CliRun.Of(string.Empty, ["tournament", "--item", "ball-grab", "--entrants-dir", dir, "--seeds", "1", "--cycles", "10", "--isolation", "none",
             "--strategy-timeout", "5000", "--replays", "--out", tour, .. more]);
     }

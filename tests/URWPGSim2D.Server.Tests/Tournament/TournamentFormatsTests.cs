@@ -5,7 +5,7 @@ using System.Linq;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Server.Tests.Cli;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

@@ -1,8 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Tournament;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

@@ -69,7 +69,7 @@ public sealed class TournamentWalkthroughTests : IDisposable
         Assert.Equal("URWPGSim2D.Server", words[1]);
         string cup = Path.Combine(Path.GetDirectoryName(tour)!, "cup");
         var args = words.Skip(2).Select(w => w == "tour" ? tour : w == "cup" ? cup : w.Contains("=samples/", StringComparison.Ordinal) ? w[..(w.IndexOf('=', StringComparison.Ordinal) + 1)] + Repository.PathOf(w[(w.IndexOf('=', StringComparison.Ordinal) + 1)..]) : w).ToArray();
-        URWPGSim2D.Server.Hosting.CompiledImages.Forget(); // each command is a process of its own: it compiles the sample again
+        URWPGSim2D.Hosting.CompiledImages.Forget(); // each command is a process of its own: it compiles the sample again
         var run = CliRun.Of(string.Empty, args);
         Assert.True(run.ExitCode == 0, run.Stderr);
         return (run.Stdout + run.Stderr).TrimEnd('\n').Replace(cup, "cup", StringComparison.Ordinal).Replace(tour, "tour", StringComparison.Ordinal)

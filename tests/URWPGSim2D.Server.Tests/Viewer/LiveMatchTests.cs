@@ -5,11 +5,11 @@ using System.Text;
 using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Viewer;
+using URWPGSim2D.Viewer;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Viewer;
@@ -23,7 +23,7 @@ public sealed class LiveMatchTests
         var item = ItemRegistry.Find("polo-1v1")!;
         var settings = new MatchSettings(item.CreateScenario(1), 300, 1);
         var feed = new LiveFeed();
-        var player = new LiveMatch(() => settings, speed: 1e9, paused: false, feed);
+        var player = new LiveMatch(() => (settings.Build(), settings.Cycles), speed: 1e9, paused: false, feed);
         using var stop = new CancellationTokenSource();
         var playing = Task.Run(() => player.Run(stop.Token));
 

@@ -3,10 +3,10 @@ using System.Collections.Generic;
 using System.CommandLine.Completions;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Tournament;
+using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli.Syntax;
 

@@ -1,8 +1,8 @@
 using System;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Batch;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Tournament.Batch.Slurm;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;
 

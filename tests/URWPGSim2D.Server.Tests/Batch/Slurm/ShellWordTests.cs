@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 using System.Text;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch.Slurm;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;

@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Batch.Slurm;
+using URWPGSim2D.Tournament.Batch.Slurm;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Tests.Cli;
 using Xunit;

@@ -2,7 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Text;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

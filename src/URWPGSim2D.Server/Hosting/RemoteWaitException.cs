@@ -1,4 +1,0 @@
-namespace URWPGSim2D.Server.Hosting;
-
-/// <summary>No client took a remote team's slot within <c>--remote-wait</c>; the message is one line for the command line.</summary>
-internal sealed class RemoteWaitException(string message) : StrategyLoadException(message);

@@ -1,7 +1,0 @@
-using System.Text.Json.Serialization;
-
-namespace URWPGSim2D.Server.Tournament;
-
-/// <summary>Source-generated JSON of the tournament's files (strings only: the files are written field by field).</summary>
-[JsonSerializable(typeof(string))]
-internal sealed partial class TournamentJsonContext : JsonSerializerContext;

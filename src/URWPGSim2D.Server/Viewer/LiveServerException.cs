@@ -1,6 +1,0 @@
-using System;
-
-namespace URWPGSim2D.Server.Viewer;
-
-/// <summary>The live view cannot listen where it was asked to (the message says where and why).</summary>
-internal sealed class LiveServerException(string message) : Exception(message);

@@ -1,7 +1,0 @@
-using System.Text.Json.Serialization;
-
-namespace URWPGSim2D.Server.Viewer;
-
-/// <summary>Source-generated JSON for the viewer's few serialised values (no reflection).</summary>
-[JsonSerializable(typeof(string))]
-internal sealed partial class ViewerJsonContext : JsonSerializerContext;

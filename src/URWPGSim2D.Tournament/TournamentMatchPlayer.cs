@@ -1,0 +1,39 @@
+using URWPGSim2D.Tournament.Batch;
+using URWPGSim2D.Hosting;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Matches;
+using URWPGSim2D.Engine.Scenario;
+using URWPGSim2D.Engine.Simulation;
+using URWPGSim2D.Viewer;
+
+namespace URWPGSim2D.Tournament;
+
+/// <summary>
+/// Plays one match of a tournament through the server's one match loop (<see cref="MatchLoop"/>):
+/// the item's layout of the match's seed, the entrants' teams (a demo entrant keeps the item's demo
+/// strategy), the seed, the length and the strategies' time limit; optionally recorded into a
+/// replay page (the viewer's page writer).
+/// </summary>
+internal static class TournamentMatchPlayer
+{
+    /// <summary>Plays the match and returns its result (index and seed as scheduled).</summary>
+    /// <param name="item">The item.</param>
+    /// <param name="match">The scheduled match.</param>
+    /// <param name="teams">Per team, the entrant's strategy, or null for the item's demo strategy.</param>
+    /// <param name="cycles">Cycles of the match.</param>
+    /// <param name="strategyTimeoutMs">Time limit of loaded strategies per call, ms.</param>
+    /// <param name="replayPage">Where to write the replay page, or null for none.</param>
+    public static MatchResult Play(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs, string? replayPage)
+    {
+        var settings = new MatchSettings(item.CreateScenario(match.Seed), cycles, match.Seed, Noise: null, teams, strategyTimeoutMs);
+        var replay = replayPage is null ? null : new ReplayRecorder();
+        using var loop = new MatchLoop(settings.Build(), settings.Cycles, replay);
+        loop.Play();
+        if (replay is not null)
+        {
+            AtomicFile.WriteAllText(replayPage!, ReplayPage.Replay(replay.ToJson()));
+        }
+
+        return MatchResult.Of(match.Index, match.Seed, loop.Match);
+    }
+}
