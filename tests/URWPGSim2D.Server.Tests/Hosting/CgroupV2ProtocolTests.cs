@@ -1,7 +1,7 @@
 using System;
 using System.IO;
 using System.Linq;
-using URWPGSim2D.Server.Hosting;
+using URWPGSim2D.Hosting;
 using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
