@@ -98,7 +98,9 @@ public static class CompilerProcess
 
         if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
         {
-            command.AddRange(["/usr/bin/prlimit", string.Create(CultureInfo.InvariantCulture, $"--cpu={timeLimitSeconds}"), "--core=0"]);
+            // Soft CPU limit at the time limit (SIGXCPU, read below as "took longer"), the hard one a
+            // second later as a backstop: with both equal the kernel sends SIGKILL at once, which reads as a crash.
+            command.AddRange(["/usr/bin/prlimit", string.Create(CultureInfo.InvariantCulture, $"--cpu={timeLimitSeconds}:{timeLimitSeconds + 1}"), "--core=0"]);
             if (cgroup is null)
             {
                 command.Add(string.Create(CultureInfo.InvariantCulture, $"--as={((long)settings.MemoryMb + AddressSpaceMb) * 1024 * 1024}"));

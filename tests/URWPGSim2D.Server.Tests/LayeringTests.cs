@@ -9,14 +9,15 @@ using Xunit;
 namespace URWPGSim2D.Server.Tests;
 
 /// <summary>
-/// The server's floors point one way: the commands (<c>Cli/</c>) sit on top and the folders below
-/// them never name a command's type (no error type, summary or option of the command line leaks
-/// down). Checked on the sources: no file of a lower folder names a type declared under <c>Cli/</c>
-/// or the <c>Cli</c> namespace (comments aside).
+/// The command line's floors point one way: the commands (<c>Cli/</c>) sit on top and the folders
+/// below them in the same project never name a command's type (no error type, summary or option
+/// of the command line leaks down). Checked on the sources: no file of a lower folder names a type
+/// declared under <c>Cli/</c> or the <c>Cli</c> namespace (comments aside). The libraries under
+/// the command (hosting, viewer, tournament, engine) cannot name it at all: they do not reference it.
 /// </summary>
 public sealed partial class LayeringTests
 {
-    private static readonly string[] Lower = ["Json", "Rendering", "Batch", "Viewer", "Hosting", "Tournament"];
+    private static readonly string[] Lower = ["Json", "Rendering"];
 
     [Fact]
     public void NoLowerFolderReachesUpIntoCli()
