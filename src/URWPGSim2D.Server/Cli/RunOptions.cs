@@ -323,7 +323,7 @@ internal sealed class RunOptions
 
     // The options of --slurm itself, which the Slurm tasks do not pass on.
     private static bool IsSlurmOwn(string name) =>
-        name is "--slurm" or "--shards" or "--partition" or "--time" or "--results" or "--sbatch-arg" or "--slurm-setup" or "--submit";
+        name == "--results" || SlurmSyntax.Is(name);
 
     /// <summary>What <c>--strategy TEAM=</c> starts with for a remote team.</summary>
     public const string RemotePrefix = "remote:";

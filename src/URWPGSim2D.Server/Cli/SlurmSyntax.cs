@@ -1,3 +1,7 @@
+using System;
+using System.Collections.Frozen;
+using System.CommandLine;
+using System.Linq;
 using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Cli;
@@ -9,6 +13,14 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal static class SlurmSyntax
 {
+    // The options' names, from their declarations.
+    private static readonly FrozenSet<string> Names =
+        Declare("DIR", "a batch").Symbols.OfType<Option>().Select(o => o.Name).ToFrozenSet(StringComparer.Ordinal);
+
+    /// <summary>Whether <paramref name="name"/> is one of these options.</summary>
+    /// <param name="name">An option's name.</param>
+    public static bool Is(string name) => Names.Contains(name);
+
     /// <summary>The options' declarations in a usage line, new for each command that takes them: <c>[--slurm DIR [--shards K] …]</c>.</summary>
     /// <param name="folder">The name of <c>--slurm</c>'s folder in the command's usage, e.g. <c>DIR</c>.</param>
     /// <param name="what">What the jobs play, e.g. <c>the batch</c>.</param>

@@ -231,7 +231,7 @@ internal sealed class TournamentOptions
                 throw UsageError($"{name} given twice");
             }
 
-            if (name is not ("--slurm" or "--shards" or "--partition" or "--time" or "--sbatch-arg" or "--slurm-setup" or "--shard" or "--results"))
+            if (!SlurmSyntax.Is(name) && name is not ("--shard" or "--results"))
             {
                 passedOn.Add(name);
                 passedOn.Add(value);
