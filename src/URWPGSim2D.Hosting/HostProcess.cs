@@ -5,6 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using System.Threading;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
@@ -325,7 +326,7 @@ public sealed class HostProcess : IStrategyLink
     {
         try
         {
-            Console.Error.WriteLine(line.ToString());
+            Console.Error.WriteLine(MessageText.Escape(line.ToString())); // a strategy's escape sequences never reach the terminal as themselves
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException)
         {

@@ -47,6 +47,7 @@ public sealed class RunFolderTests : IDisposable
         return root;
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_folder_of_any_depth_names_and_permissions_is_deleted_without_a_warning()
     {
@@ -68,6 +69,7 @@ public sealed class RunFolderTests : IDisposable
         Assert.Equal("gone", Sh($"[ -e '{root}' ] || echo gone").Trim());
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_folder_that_cannot_be_deleted_is_one_warning_line_not_an_exception()
     {
@@ -104,6 +106,7 @@ public sealed class RunFolderTests : IDisposable
         }
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_strategy_that_buries_its_scratch_folder_does_not_fail_the_match_and_leaves_nothing()
     {

@@ -116,6 +116,7 @@ public sealed class SandboxLimitTests : IDisposable
         }
         """;
 
+    [Attack("sandbox", "processes")]
     [Fact]
     public void Daemons_a_strategy_starts_in_new_sessions_end_with_its_sandbox()
     {
@@ -154,6 +155,7 @@ public sealed class SandboxLimitTests : IDisposable
 
         """;
 
+    [Attack("sandbox", "processes")]
     [Theory]
     [InlineData(true)] // the first process ends by itself, as a host does at the end of its match: its bubblewrap ends the namespace
     [InlineData(false)] // the server ends the sandbox while its first process runs
@@ -209,6 +211,8 @@ public sealed class SandboxLimitTests : IDisposable
         }
     }
 
+    [Attack("faults", "it starts more processes or threads")]
+    [Attack("sandbox", "processes")]
     [Fact]
     public void A_fork_bomb_meets_the_process_limit_and_leaves_nothing_behind()
     {
@@ -235,6 +239,7 @@ public sealed class SandboxLimitTests : IDisposable
         Assert.Empty(InNamespace(Field(faults, "ns")));
     }
 
+    [Attack("platforms", "Linux without bubblewrap, with control groups")]
     [Fact]
     public void Without_bubblewrap_its_control_group_still_ends_every_daemon()
     {
@@ -266,6 +271,8 @@ public sealed class SandboxLimitTests : IDisposable
         }
     }
 
+    [Attack("sandbox", "memory")]
+    [Attack("faults", "its host ends")]
     [Fact]
     public void Native_memory_counts_against_the_sandbox_and_is_charged_as_out_of_memory()
     {
@@ -284,6 +291,8 @@ public sealed class SandboxLimitTests : IDisposable
         Assert.Contains("strategy host ended: out of memory: its sandbox reached its limit of 352 MiB, killed", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "disk")]
+    [Attack("faults", "it starts more processes or threads")]
     [Fact]
     public void Scratch_tmp_and_shared_memory_are_small_ram_file_systems_a_strategy_fills_alone()
     {
