@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
@@ -268,6 +269,39 @@ public sealed class SandboxLimitTests : IDisposable
         foreach (string mount in new[] { "/sys/fs/cgroup/pids", "/sys/fs/cgroup" })
         {
             Assert.False(Directory.Exists(mount + group) && mount + group != mount + "/", $"control group {mount + group} is left");
+        }
+    }
+
+    [Attack("sandbox", "processes")]
+    [Fact]
+    public void A_group_left_by_a_killed_server_is_ended_and_removed_by_the_next_one()
+    {
+        Assert.Null(SandboxCgroup.Unavailable);
+        var layout = SandboxCgroup.Machine!;
+
+        // A process that has ended stands for the killed server; its group still holds a daemon.
+        using var gone = Process.Start(new ProcessStartInfo("/bin/true") { UseShellExecute = false })!;
+        gone.WaitForExit();
+        string name = $"urwpgsim2d-{gone.Id}-1";
+        var group = SandboxCgroup.Create(layout, name, 64L << 20, 16, out string? problem);
+        Assert.True(group is not null, problem);
+        var start = new ProcessStartInfo("/bin/sh") { UseShellExecute = false, RedirectStandardOutput = true };
+        foreach (string argument in group.Wrapper().Skip(1).Concat(["/bin/sh", "-c", "echo $$; exec sleep 1000"]))
+        {
+            start.ArgumentList.Add(argument);
+        }
+
+        using var daemon = Process.Start(start)!;
+        int pid = int.Parse(daemon.StandardOutput.ReadLine()!, CultureInfo.InvariantCulture);
+        Assert.Equal([pid], group.Processes());
+
+        Assert.True(SandboxCgroup.SweepStale(layout, Running) >= 1);
+
+        daemon.WaitForExit();
+        Assert.False(Running(pid), $"the daemon {pid} of the stale group still runs");
+        foreach (string parent in layout.Parents)
+        {
+            Assert.False(Directory.Exists(Path.Combine(parent, name)), $"the stale group {Path.Combine(parent, name)} is left");
         }
     }
 
