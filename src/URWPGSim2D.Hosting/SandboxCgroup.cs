@@ -19,10 +19,9 @@ namespace URWPGSim2D.Hosting;
 /// </summary>
 internal sealed partial class SandboxCgroup : IDisposable
 {
-    private const string Prefix = "urwpgsim2d-";
     private static readonly Lazy<Layout?> Found = new(Find);
     private static readonly Lazy<string?> Problem = new(Probe);
-    private static readonly Lazy<int> Swept = new(() => Found.Value is { } layout ? SweepStale(layout, Running) : 0);
+    private static readonly Lazy<int> Swept = new(() => Found.Value is { } layout ? SweepStale(layout, LeftBehind.Running) : 0);
     private static int _next;
     private readonly string[] _folders;
     private readonly Layout _layout;
@@ -90,7 +89,7 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         _ = Swept.Value;
-        string name = Prefix + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-" + Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture);
+        string name = LeftBehind.Name(Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture));
         return Create(layout, name, memoryBytes, tasks, out problem);
     }
 
@@ -111,14 +110,10 @@ internal sealed partial class SandboxCgroup : IDisposable
         {
             try
             {
-                foreach (string folder in Directory.EnumerateDirectories(parent, Prefix + "*"))
+                foreach (string folder in Directory.EnumerateDirectories(parent, LeftBehind.Prefix + "*"))
                 {
                     string name = Path.GetFileName(folder);
-                    int dash = name.IndexOf('-', Prefix.Length);
-                    if (dash > Prefix.Length
-                        && int.TryParse(name.AsSpan(Prefix.Length, dash - Prefix.Length), NumberStyles.None, CultureInfo.InvariantCulture, out int pid)
-                        && pid != Environment.ProcessId
-                        && !running(pid))
+                    if (LeftBehind.ByEndedServer(name, running))
                     {
                         stale.Add(name);
                     }
@@ -144,8 +139,6 @@ internal sealed partial class SandboxCgroup : IDisposable
 
         return removed;
     }
-
-    private static bool Running(int pid) => Directory.Exists("/proc/" + pid.ToString(CultureInfo.InvariantCulture));
 
     /// <summary>
     /// A new group <paramref name="name"/> in each parent of <paramref name="layout"/> (a hierarchy
@@ -509,7 +502,7 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         // Make (and remove) one group: the permission to do so is the question.
-        string name = Prefix + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-probe";
+        string name = LeftBehind.Name("probe");
         foreach (string parent in Found.Value.Parents)
         {
             string folder = Path.Combine(parent, name);
