@@ -7,6 +7,11 @@ Gymnasium's vector contract: reset(seed=, options=) -> (obs, infos), step(action
 terminations, truncations, infos), with next-step autoreset; it subclasses gymnasium.vector.VectorEnv
 when gymnasium can be imported, and works without it.
 
+FishParallelEnv(item, opponent, team=0, cycles=600) is one match of the same engine in multi-agent
+form, after PettingZoo's ParallelEnv conventions: one agent per fish of the team ("fish_0", ...),
+dicts of observations, actions, rewards and flags keyed by agent; it subclasses
+pettingzoo.ParallelEnv when pettingzoo can be imported.
+
 Observation, action and reward of one match are FishEnv's (see urwpgsim2d.env.FishEnv): the same
 seed and actions give the same episode, except that a match's last observation is its true final
 state (FishEnv repeats the one before).
@@ -24,6 +29,11 @@ try:  # optional
     from gymnasium.vector.utils import batch_space as _batch_space
 except ImportError:  # pragma: no cover - depends on the machine
     _gym = None
+
+try:  # optional
+    from pettingzoo import ParallelEnv as _ParallelEnv
+except ImportError:  # pragma: no cover - depends on the machine
+    _ParallelEnv = object
 
 OPPONENTS = ("idle", "chase-ball", "demo")
 """What the other team can play: the built-in strategies and the item's demo strategy."""
@@ -244,6 +254,132 @@ class FishVecEnv(_Base):
     def _infos(self) -> Dict[str, Any]:
         _check(self._lib.urw_batch_info(self._handle, self._cycles.ctypes.data, self._goals.ctypes.data, self._seeds.ctypes.data, self.num_envs))
         return {"cycle": self._cycles.copy(), "goals": self._goals.copy(), "seed": self._seeds.copy()}
+
+
+class FishParallelEnv(_ParallelEnv):
+    """One match of `item` in multi-agent form: one agent per fish of team `team`, the other team playing `opponent`.
+
+    PettingZoo's ParallelEnv conventions: possible_agents "fish_0", "fish_1", ... (the team's fish
+    in the order of their indices); reset(seed=, options=) -> (observations, infos) and
+    step(actions) -> (observations, rewards, terminations, truncations, infos), each a dict keyed by
+    agent. Agent k's observation: its own fish's 5 values (x/1000, y/1000, cos and sin of its
+    heading, speed/1000) followed by the match's observation (FishVecEnv's row). Its action: 2
+    integers 0..15 (speed code, turn code). Every agent gets the team's reward (the change of own
+    score minus the other team's) and the same flags; when the episode ends `agents` becomes empty
+    and the next episode needs reset(). infos per agent: "cycle", "goals" (team 0's and team 1's
+    score), "seed". state(): the match's observation.
+    """
+
+    metadata = {"render_modes": [], "name": "urwpgsim2d_fish_parallel_v0", "is_parallelizable": True}
+
+    def __init__(self, item: str = "polo-3v3", opponent: str = "chase-ball", team: int = 0, cycles: int = 600):
+        self._vec = FishVecEnv(item, opponent, num_envs=1, team=team, cycles=cycles)
+        self.item, self.opponent, self.team, self.cycles = self._vec.item, opponent, self._vec.team, self._vec.cycles
+        count = self._vec.action_size // 2
+        self.possible_agents = ["fish_%d" % k for k in range(count)]
+        self.agents = []
+        first = _first_fish_of_team(item, team)
+        self._own = {agent: slice(5 * (first + k), 5 * (first + k) + 5) for k, agent in enumerate(self.possible_agents)}
+        size = 5 + self._vec.observation_size
+        if _gym is not None:
+            self.observation_spaces = {a: _gym.spaces.Box(-1e4, 1e4, shape=(size,), dtype=np.float32) for a in self.possible_agents}
+            self.action_spaces = {a: _gym.spaces.MultiDiscrete([16, 16]) for a in self.possible_agents}
+            self.state_space = _gym.spaces.Box(-1e4, 1e4, shape=(self._vec.observation_size,), dtype=np.float32)
+        else:
+            self.observation_spaces = {a: _Box(-1e4, 1e4, (size,)) for a in self.possible_agents}
+            self.action_spaces = {a: _MultiDiscrete([16, 16]) for a in self.possible_agents}
+            self.state_space = _Box(-1e4, 1e4, (self._vec.observation_size,))
+        self._state = np.zeros(self._vec.observation_size, dtype=np.float32)
+        self._actions = np.zeros((1, self._vec.action_size), dtype=np.int64)
+
+    def observation_space(self, agent: str):
+        return self.observation_spaces[self._known(agent, "agent")]
+
+    def action_space(self, agent: str):
+        return self.action_spaces[self._known(agent, "agent")]
+
+    def reset(self, seed: Optional[int] = None, options: Optional[Dict[str, Any]] = None):
+        """Starts the match: seed an int (or None: random); options {"max_steps": n} cuts the episode after n steps."""
+        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))):
+            raise ValueError("seed: %r, expected an integer 0 to 2**63-1 or None" % (seed,))
+        obs, infos = self._vec.reset(seed=None if seed is None else [int(seed)], options=options)
+        self.agents = list(self.possible_agents)
+        return self._observations(obs[0]), self._infos(infos)
+
+    def step(self, actions: Dict[str, Any]):
+        """Plays one cycle: actions {agent: (speed code, turn code)} for every agent of `agents`."""
+        if not self.agents:
+            raise RuntimeError("step() with no agents: call reset() first (the episode ended, or none started)")
+        if not isinstance(actions, dict):
+            raise ValueError("actions: %s, expected a dict {agent: (speed code, turn code)}" % type(actions).__name__)
+        for agent in actions:
+            self._known(agent, "actions")
+        for k, agent in enumerate(self.agents):
+            if agent not in actions:
+                raise ValueError("actions: no action for %r (agents: %s)" % (agent, ", ".join(self.agents)))
+            self._actions[0, 2 * k:2 * k + 2] = _codes(actions[agent], "actions[%r]" % agent)
+        obs, rewards, terminations, truncations, infos = self._vec.step(self._actions)
+        agents = self.agents
+        reward, terminated, truncated = float(rewards[0]), bool(terminations[0]), bool(truncations[0])
+        if terminated or truncated:
+            self.agents = []
+        return (self._observations(obs[0], agents), {a: reward for a in agents}, {a: terminated for a in agents},
+                {a: truncated for a in agents}, self._infos(infos, agents))
+
+    def state(self) -> np.ndarray:
+        """The match's observation (FishVecEnv's row): every fish, every ball, the time fraction."""
+        return self._state.copy()
+
+    def render(self):
+        return None
+
+    def close(self):
+        self._vec.close()
+
+    def _known(self, agent, name: str) -> str:
+        if agent not in self._own:
+            raise ValueError("%s: unknown agent %r (agents: %s)" % (name, agent, ", ".join(self.possible_agents)))
+        return agent
+
+    def _observations(self, row: np.ndarray, agents=None) -> Dict[str, np.ndarray]:
+        self._state[:] = row
+        return {a: np.concatenate((row[self._own[a]], row)) for a in (agents if agents is not None else self.agents)}
+
+    def _infos(self, infos, agents=None) -> Dict[str, Dict[str, Any]]:
+        one = {"cycle": int(infos["cycle"][0]), "goals": tuple(int(g) for g in infos["goals"][0]), "seed": int(infos["seed"][0])}
+        return {a: dict(one) for a in (agents if agents is not None else self.agents)}
+
+
+def _codes(action, name: str) -> np.ndarray:
+    """One fish's action as 2 integers 0..15, or a ValueError naming it."""
+    a = np.asarray(action)
+    if a.shape != (2,):
+        raise ValueError("%s: shape %s, expected (2,) (speed code, turn code)" % (name, a.shape))
+    if a.dtype.kind == "f":
+        bad = ~np.isfinite(a) | (a != np.floor(np.nan_to_num(a)))
+        if bad.any():
+            raise ValueError("%s: %s at [%d], expected integers 0..15" % (name, a[bad][0], int(np.flatnonzero(bad)[0])))
+    elif a.dtype.kind not in "iub":
+        raise ValueError("%s: dtype %s, expected integers 0..15" % (name, a.dtype))
+    bad = (a < 0) | (a > 15)
+    if bad.any():
+        raise ValueError("%s: %s at [%d], expected integers 0..15" % (name, a[bad][0], int(np.flatnonzero(bad)[0])))
+    return a.astype(np.int64)
+
+
+def _first_fish_of_team(item: str, team: int) -> int:
+    """The index of the team's first fish in the observation: every item lists its fish team by team (team 0 first)."""
+    first = 0
+    for other in range(int(team)):
+        handle = ctypes.c_void_p()
+        _check(_lib.urw_batch_create(item.encode("utf-8"), b"idle", 1, other, 1, ctypes.byref(handle)))
+        fish = ctypes.c_int32()
+        try:
+            _check(_lib.urw_batch_sizes(handle, None, None, None, ctypes.byref(fish)))
+        finally:
+            _lib.urw_batch_destroy(handle)
+        first += fish.value
+    return first
 
 
 def _where(bad, width: int) -> str:
