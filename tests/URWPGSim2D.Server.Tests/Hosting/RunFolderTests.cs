@@ -138,6 +138,7 @@ public sealed class RunFolderTests : IDisposable
         Assert.Equal("gone", Sh($"[ -e '{scratch}' ] || echo gone").Trim());
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void Folders_of_servers_that_no_longer_run_are_deleted_the_others_kept()
     {
