@@ -53,6 +53,10 @@ class TrainPoloTests(unittest.TestCase):
         self.assertGreater(width, 300)
         self.assertGreater(height, 200)
         self.assertIn(b"IEND", chunks)
+        with open(os.path.join(folder, "curve.svg"), encoding="utf-8") as f:
+            svg = f.read()
+        self.assertTrue(svg.startswith("<svg ") and svg.rstrip().endswith("</svg>"))
+        self.assertEqual(svg.count("<polyline"), 2)
         with open(os.path.join(folder, "replay.html"), encoding="utf-8") as f:
             page = f.read()
         self.assertIn("<html", page[:4096].lower())
@@ -144,7 +148,7 @@ class TrainPoloTests(unittest.TestCase):
         last = np.array([4])
         self.assertTrue(np.allclose(train_polo.features(row, last), train_polo.features(mirrored, last, side=-1.0)))
         f = train_polo.features(row, last)[0]
-        # The ball is 0.6 ahead and 0.1 to the left (+y is to the left of a fish facing +x).
+        # The ball is 0.6 ahead and 0.1 across, on the +y side (where turn codes above 7 turn a fish facing +x).
         self.assertAlmostEqual(f[0], 0.6, places=6)
         self.assertAlmostEqual(f[1], 0.1, places=6)
         self.assertEqual(f[-len(train_polo.ACTIONS) + 4], 1.0)

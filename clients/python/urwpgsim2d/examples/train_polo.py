@@ -13,9 +13,9 @@ GOAL_REWARD per goal (the environment's reward) plus shaping, the change of a po
 near a point behind the ball on the line to the goal, the ball near the goal.
 
 At the end it evaluates the trained policy and a random one (uniform over ACTIONS) on the same
-seeded episodes and prints the share of episodes with a goal, writes the learning curve
-(curve.png: matplotlib when it can be imported, else a small PNG writer of its own) and plays a
-match of the trained fish through the server (FishEnv) to the end, so the server writes its replay
+seeded episodes and prints the share of episodes with a goal, writes the learning curve (curve.png:
+matplotlib when it can be imported, else a small PNG writer of its own; and curve.svg) and plays a
+match of the trained fish through the server (FishEnv) to its end, so the server writes its replay
 page (replay.html).
 """
 
@@ -54,7 +54,7 @@ def features(obs: np.ndarray, last: np.ndarray, side: float = 1.0) -> np.ndarray
     g = np.maximum(np.hypot(gx, gy), 1e-6)
     ux, uy = gx / g, gy / g  # the push line: from the ball to the goal
 
-    def own(vx, vy):  # a vector in the fish's frame: ahead, to the left
+    def own(vx, vy):  # a vector in the fish's frame: ahead, and across (> 0 on the side turn codes above 7 turn to)
         return vx * c + vy * s, -vx * s + vy * c
 
     rx, ry = own(dx, dy)
@@ -241,9 +241,13 @@ def sample(p: np.ndarray, rng) -> np.ndarray:
     return (p.cumsum(axis=1) > rng.random((len(p), 1))).argmax(axis=1)
 
 
-def train(agent, minutes: float, envs: int = 64, seed: int = 1, iterations=None, episode: int = HALF, rollout: int = 64, epochs: int = 4, minibatch: int = 1024,
+def train(agent, minutes: float, envs: int = 64, seed: int = 1, iterations=None, episode: int = HALF,
+          rollout: int = 64, epochs: int = 4, minibatch: int = 1024,
           gamma: float = 0.99, lam: float = 0.95, clip: float = 0.2, entropy: float = 0.01, log=print):
-    """PPO for `minutes` (or `iterations`) on episodes of `episode` cycles; returns the curve: (iteration, seconds, mean return, share with a goal) per batch of episodes."""
+    """PPO for `minutes` (or `iterations`) on episodes of `episode` cycles.
+
+    Returns the learning curve: (iteration, seconds, mean return, share with a goal) per batch of episodes.
+    """
     rng = np.random.default_rng(seed)
     env = FishVecEnv(ITEM, OPPONENT, num_envs=envs, cycles=CYCLES)
     decisions = episode // REPEAT
@@ -282,7 +286,8 @@ def train(agent, minutes: float, envs: int = 64, seed: int = 1, iterations=None,
                 if decided == decisions:  # the half is over: the episode is cut, its value carried on
                     BOOTSTRAP[t], ENDS[t] = agent.value(features(obs, last)), True
                     curve.append((iteration, time.time() - start, float(returns.mean()), float((goals > 0).mean())))
-                    log("iteration %4d  %5.0f s  episode return %7.2f  episodes with a goal %3.0f%%" % (iteration, *curve[-1][1:3], 100 * curve[-1][3]))
+                    log("iteration %4d  %5.0f s  episode return %7.2f  episodes with a goal %3.0f%%"
+                        % (iteration, curve[-1][1], curve[-1][2], 100 * curve[-1][3]))
                     obs, last, decided, returns, goals = begin()
             V[rollout] = agent.value(features(obs, last))
             adv, running = np.zeros((rollout, envs)), np.zeros(envs)
@@ -304,7 +309,10 @@ def train(agent, minutes: float, envs: int = 64, seed: int = 1, iterations=None,
 
 
 def evaluate(agent, episodes: int, seed: int, policy: str = "greedy", episode: int = HALF) -> float:
-    """The share of `episodes` episodes (seeds seed, seed + 1, ...) with a goal; policy "greedy" (the trained policy's likeliest action), "sampled" (drawn from it) or "random" (uniform over ACTIONS)."""
+    """The share of `episodes` episodes (seeds seed, seed + 1, ...) with a goal.
+
+    policy: "greedy" (the trained policy's likeliest action), "sampled" (drawn from it) or "random" (uniform over ACTIONS).
+    """
     env = FishVecEnv(ITEM, OPPONENT, num_envs=episodes, cycles=CYCLES)
     rng = np.random.default_rng(seed)
     try:
@@ -388,8 +396,34 @@ def plot_curve(path: str, curve, use_matplotlib: bool = True) -> str:
     return "built-in PNG writer"
 
 
+def svg_curve(path: str, curve) -> None:
+    """The same curve as an SVG drawing (text: return in blue, goal share in orange, 0..100 % on the right)."""
+    width, height, left, right, top, bottom = 640, 360, 60, 60, 30, 40
+    seconds = [c[1] / 60 for c in curve] or [0.0]
+    returns = [c[2] for c in curve] or [0.0]
+    scored = [100 * c[3] for c in curve] or [0.0]
+    t0, t1 = min(seconds), max(max(seconds), min(seconds) + 1e-9)
+    r0, r1 = min(returns), max(max(returns), min(returns) + 1e-9)
+
+    def points(values, low, high):
+        return " ".join("%.1f,%.1f" % (left + (t - t0) / (t1 - t0) * (width - left - right),
+                                       height - bottom - (v - low) / (high - low) * (height - top - bottom)) for t, v in zip(seconds, values))
+
+    text = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="12">' % (width, height),
+            '<rect width="100%" height="100%" fill="white"/>',
+            '<path d="M%d %d V%d H%d V%d" fill="none" stroke="black"/>' % (left, top, height - bottom, width - right, top),
+            '<polyline points="%s" fill="none" stroke="#1f77b4" stroke-width="2"/>' % points(returns, r0, r1),
+            '<polyline points="%s" fill="none" stroke="#ff7f0e" stroke-width="2"/>' % points(scored, 0.0, 100.0),
+            '<text x="%d" y="%d" text-anchor="middle">training time: %.1f to %.1f min</text>' % (width / 2, height - 12, t0, t1),
+            '<text x="%d" y="%d" fill="#1f77b4">episode return (shaped): %.1f to %.1f</text>' % (left, top - 10, r0, r1),
+            '<text x="%d" y="%d" fill="#ff7f0e" text-anchor="end">episodes with a goal: 0 to 100 %%</text>' % (width - right, top - 10),
+            '</svg>']
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(text) + "\n")
+
+
 def replay(agent, path: str, seed: int, cycles: int = 2 * HALF // 3):
-    """Plays one match of `cycles` cycles (halves of cycles / 2) of the trained fish through the server to its end; the server writes the replay page."""
+    """Plays a match of `cycles` cycles (two halves) of the trained fish through the server to its end, when the server writes the page."""
     from urwpgsim2d.env import FishEnv
 
     env = FishEnv(item=ITEM, opponent=OPPONENT, cycles=cycles, run_args=["--html", path, "--force"])
@@ -428,12 +462,14 @@ def main(argv=None) -> int:
     agent = make_agent(args.backend, args.seed, lr=1e-3)
     print("PPO in %s: %s against %s, %d matches at once" % (agent.name, ITEM, OPPONENT, args.envs))
     curve = train(agent, args.minutes, envs=args.envs, seed=args.seed, iterations=args.iterations, episode=args.episode_cycles)
-    rates = {policy: evaluate(agent, args.episodes, seed=10 ** 6, policy=policy, episode=args.episode_cycles) for policy in ("greedy", "sampled", "random")}
+    rates = {policy: evaluate(agent, args.episodes, seed=10 ** 6, policy=policy, episode=args.episode_cycles)
+             for policy in ("greedy", "sampled", "random")}
     print("episodes with a goal (%d seeded episodes of %d cycles): trained %.0f%% (sampled actions %.0f%%), random %.0f%%"
           % (args.episodes, args.episode_cycles, 100 * rates["greedy"], 100 * rates["sampled"], 100 * rates["random"]))
     curve_path = os.path.join(args.out, "curve.png")
     how = plot_curve(curve_path, curve, use_matplotlib=args.plot == "auto")
-    print("wrote %s (%s)" % (curve_path, how))
+    svg_curve(os.path.join(args.out, "curve.svg"), curve)
+    print("wrote %s (%s) and curve.svg" % (curve_path, how))
     page = os.path.abspath(os.path.join(args.out, "replay.html"))
     end = replay(agent, page, seed=7, cycles=args.replay_cycles)
     print("wrote %s: a match of the trained fish against idle (seed 7), %d cycles, %d:%d" % (page, end["cycle"], end["goals"][0], end["goals"][1]))
