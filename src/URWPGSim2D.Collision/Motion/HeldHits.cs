@@ -14,7 +14,7 @@ internal sealed class HeldHits
     private int[] _slot = new int[64];
     private int[] _generation = new int[64];
     private Hit[] _hit = new Hit[64];
-    private int[] _perTick = new int[TickQueue.Ticks + 2];
+    private int[]? _perTick; // the counting sort's, made when first needed (a small world never sorts that many)
 
     /// <summary>Number of hits held.</summary>
     public int Count { get; private set; }
@@ -81,7 +81,15 @@ internal sealed class HeldHits
             return;
         }
 
-        Array.Clear(_perTick);
+        if (_perTick is null)
+        {
+            _perTick = new int[TickQueue.Ticks + 2];
+        }
+        else
+        {
+            Array.Clear(_perTick);
+        }
+
         for (int i = 0; i < from.Count; i++)
         {
             _perTick[from._tick[i] + 1]++;

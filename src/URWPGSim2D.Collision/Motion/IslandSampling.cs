@@ -12,8 +12,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// queue entries and that first sample's hits are then handed to the event loop, which carries on
 /// over the whole world (a response may send a body anywhere). Islands are merged in island order,
 /// so the contacts do not depend on the number of threads. On one thread every island is sampled
-/// at once in one queue, with the same result (see <c>SampleIslandsTogether</c>): nothing is
-/// grouped, copied back or, until a hit needs them, built. The stage owns the islands, the workers
+/// at once in the event loop's own queue (left empty by that pass), with the same result (see
+/// <c>SampleIslandsTogether</c>): nothing is grouped, copied back or, until a hit needs them, built,
+/// and no worker is made. The stage owns the islands, the workers
 /// and the hits held for the event loop.
 /// </summary>
 internal sealed class IslandSampling
@@ -91,14 +92,14 @@ internal sealed class IslandSampling
             wanted = Math.Min(Threads, Math.Max(1, _islands.Count));
         }
 
-        EnsureWorkers(wanted);
         if (wanted == 1)
         {
             Chunks = 1;
-            SampleIslandsTogether(_workers[0].Sampler);
+            SampleIslandsTogether();
             return;
         }
 
+        EnsureWorkers(wanted);
         _islands.Group(_table);
         if (_chunkStart.Length < wanted + 1)
         {
@@ -134,9 +135,11 @@ internal sealed class IslandSampling
     // (then its later entries are parked). The same samples in the same order within each island as
     // when each island runs alone (islands share no mover, and a pair's clock is its own); the held
     // hits (by tick, then island) and the parked entries (by island, then tick) are handed to the
-    // event loop in the order the islands one by one give.
-    private void SampleIslandsTogether(PairSampler sampler)
+    // event loop in the order the islands one by one give. The pass runs in the event loop's sampler:
+    // its queue is empty at the end, its sampled ticks and deepest end overlap are the pass's.
+    private void SampleIslandsTogether()
     {
+        PairSampler sampler = _sampler;
         sampler.BeginStep();
         float seconds = _schedule.Seconds;
         for (int slot = 0; slot < _table.Used; slot++)
@@ -170,7 +173,6 @@ internal sealed class IslandSampling
             }
         }
 
-        _sampler.TakeSampled(sampler);
         if (anyStopped)
         {
             HandParkedToQueue();

@@ -7,9 +7,10 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// Samples candidate pairs on their own clocks: the queue of sample times, the pairs due at a
 /// time, the hits a sample finds, the exact tests it remembers, and the ticks it sampled. The
-/// stepper has one for its event loop; each island worker has its own, so that islands sampled on
-/// several threads share nothing but the pair table's slots of their own pairs. Storage grows by
-/// doubling, never shrinks.
+/// stepper has one for its event loop, which also samples the islands on one thread; each island
+/// worker of a step on several threads has its own, so that islands sampled on several threads
+/// share nothing but the pair table's slots of their own pairs. Storage grows by doubling, never
+/// shrinks.
 /// </summary>
 internal sealed class PairSampler
 {
@@ -219,16 +220,6 @@ internal sealed class PairSampler
         }
 
         DeepestAtEnd = MathF.Max(DeepestAtEnd, other.DeepestAtEnd);
-    }
-
-    /// <summary>
-    /// Takes another sampler's sampled ticks and deepest end overlap in place of this one's (which
-    /// go to the other): the same as <see cref="Absorb"/> when this one has sampled nothing yet this step.
-    /// </summary>
-    public void TakeSampled(PairSampler other)
-    {
-        (_sampled, other._sampled) = (other._sampled, _sampled);
-        DeepestAtEnd = other.DeepestAtEnd;
     }
 
     /// <summary>Number of distinct ticks sampled this step.</summary>

@@ -189,20 +189,25 @@ public readonly struct KDop8
     /// </summary>
     internal static void Slabs(ReadOnlySpan<Vector2> points, out Vector4 min, out Vector4 max)
     {
-        min = max = default;
-        for (int i = 0; i < 4; i++)
+        // One pass over the points for the four axes (each axis's projections as KDop8Vertices.Project gives them).
+        double lo0 = double.PositiveInfinity, lo1 = double.PositiveInfinity, lo2 = double.PositiveInfinity, lo3 = double.PositiveInfinity;
+        double hi0 = double.NegativeInfinity, hi1 = double.NegativeInfinity, hi2 = double.NegativeInfinity, hi3 = double.NegativeInfinity;
+        foreach (Vector2 p in points)
         {
-            double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
-            foreach (Vector2 p in points)
-            {
-                double d = KDop8Vertices.Project(p.X, p.Y, i);
-                lo = Math.Min(lo, d);
-                hi = Math.Max(hi, d);
-            }
-
-            min[i] = KDop8Vertices.RoundDown(lo);
-            max[i] = KDop8Vertices.RoundUp(hi);
+            double x = p.X, y = p.Y;
+            double d2 = KDop8Vertices.Project(x, y, 2), d3 = KDop8Vertices.Project(x, y, 3);
+            lo0 = Math.Min(lo0, x);
+            hi0 = Math.Max(hi0, x);
+            lo1 = Math.Min(lo1, y);
+            hi1 = Math.Max(hi1, y);
+            lo2 = Math.Min(lo2, d2);
+            hi2 = Math.Max(hi2, d2);
+            lo3 = Math.Min(lo3, d3);
+            hi3 = Math.Max(hi3, d3);
         }
+
+        min = new Vector4(KDop8Vertices.RoundDown(lo0), KDop8Vertices.RoundDown(lo1), KDop8Vertices.RoundDown(lo2), KDop8Vertices.RoundDown(lo3));
+        max = new Vector4(KDop8Vertices.RoundUp(hi0), KDop8Vertices.RoundUp(hi1), KDop8Vertices.RoundUp(hi2), KDop8Vertices.RoundUp(hi3));
     }
 
     /// <summary>The four slabs of a box: x, z, and the diagonals through its corners (rounded outward).</summary>

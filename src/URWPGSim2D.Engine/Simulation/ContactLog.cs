@@ -4,18 +4,18 @@ namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
 /// The contacts resolved in the current cycle (cleared each cycle; the buffer is sized for the
-/// world up front and grows by doubling only when a cycle has more contacts than that) and the
-/// match's running counts by kind.
+/// world up front, four contacts per moving body and at least 128, and grows by doubling only
+/// when a cycle has more contacts than that) and the match's running counts by kind.
 /// </summary>
 public sealed class ContactLog
 {
     private ContactRecord[] _records;
     private readonly long[] _byKind = new long[7];
 
-    /// <summary>A log with room for a busy cycle of <paramref name="movers"/> moving bodies (four contacts each, at least 1,024).</summary>
+    /// <summary>A log with room for a busy cycle of <paramref name="movers"/> moving bodies (four contacts each, at least 128).</summary>
     public ContactLog(int movers = 0)
     {
-        _records = new ContactRecord[Math.Max(1024, 4 * movers)];
+        _records = new ContactRecord[Math.Max(128, 4 * movers)];
     }
 
     /// <summary>This cycle's contacts in resolution order.</summary>
