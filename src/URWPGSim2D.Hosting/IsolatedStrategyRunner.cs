@@ -18,7 +18,7 @@ internal sealed class IsolatedStrategyRunner
     private readonly Decision[] _work;
     private readonly SemaphoreSlim _start = new(0);
     private readonly SemaphoreSlim _done = new(0);
-    private MatchSnapshot? _snapshot;
+    private MatchSnapshotWriter? _snapshot;
     private int[] _fish = [];
     private Exception? _error;
     private TimeSpan _cpu;
@@ -81,7 +81,7 @@ internal sealed class IsolatedStrategyRunner
         decisions.CopyTo(_work);
         if (_snapshot is null)
         {
-            _snapshot = snapshot.CreateCopy();
+            _snapshot = MatchSnapshotWriter.CopyOf(snapshot);
         }
         else
         {
@@ -155,7 +155,7 @@ internal sealed class IsolatedStrategyRunner
             _clock.CallStarting();
             try
             {
-                _strategy.Decide(_snapshot!, _fish, _work);
+                _strategy.Decide(_snapshot!.Snapshot, _fish, _work);
             }
             catch (Exception e)
             {

@@ -264,7 +264,7 @@ public sealed class StrategyInspection
             string name = metadata.GetString(reference.Name);
             string target = OriginalReferences.IsOriginal(name) ? "the compatibility assembly (URWPGSim2D.Compat)"
                 : StrategyLoadContext.IsShared(name) ? "shared with the server"
-                : RuntimeAssemblyResolver.FileOf(name) is not null ? $"this runtime's {name}"
+                : RetargetedReferenceCheck.FileOf(name) is not null ? $"this runtime's {name}"
                 : System.IO.File.Exists(Path.Combine(folder, name + ".dll")) ? $"{name}.dll beside it"
                 : "not found";
             list.Add($"{name} {reference.Version}: {target}");

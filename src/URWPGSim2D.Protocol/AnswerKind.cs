@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Protocol;
 
 /// <summary>What a <c>decisions</c> message says about a cycle.</summary>
-internal enum AnswerKind
+public enum AnswerKind
 {
     /// <summary>One valid decision per fish.</summary>
     Decided,

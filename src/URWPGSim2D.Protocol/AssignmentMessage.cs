@@ -15,7 +15,7 @@ namespace URWPGSim2D.Protocol;
 /// <param name="FieldLength">Field length, mm.</param>
 /// <param name="FieldWidth">Field width, mm.</param>
 /// <param name="Obstacles">The obstacles (they do not move).</param>
-internal sealed record AssignmentMessage(
+public sealed record AssignmentMessage(
     int Version, int Team, string Item, string ItemName, int[] Fish, int FishCount, int BallCount, int TotalCycles,
     int DeadlineMs, float FieldLength, float FieldWidth, ObstacleView[] Obstacles)
 {
@@ -29,5 +29,8 @@ internal sealed record AssignmentMessage(
     public bool Packed { get; init; }
 
     /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
-    public MatchSnapshot CreateSnapshot() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
+    public MatchSnapshot CreateSnapshot() => CreateSnapshotWriter().Snapshot;
+
+    /// <summary>The writer of a new snapshot of the assigned match (<see cref="CreateSnapshot"/>), for the side that fills it.</summary>
+    public MatchSnapshotWriter CreateSnapshotWriter() => new(FishCount, BallCount, Obstacles, FieldLength, FieldWidth);
 }

@@ -12,12 +12,13 @@ namespace URWPGSim2D.Protocol;
 /// score, item variables (in the same order) and half-time swap. Variable strings are kept while
 /// they do not change, so a cycle allocates nothing in a steady state.
 /// </summary>
-internal sealed class CycleReader
+public sealed class CycleReader
 {
     private readonly AssignmentMessage _assignment;
     private readonly List<string> _keys = [];
     private readonly List<string> _values = [];
     private OrderedVariables _variables = new();
+    private readonly MatchSnapshotWriter _view;
     private byte[] _packed = [];
 
     /// <summary>Creates the reader and the snapshot it fills.</summary>
@@ -25,12 +26,12 @@ internal sealed class CycleReader
     {
         ArgumentNullException.ThrowIfNull(assignment);
         _assignment = assignment;
-        Snapshot = assignment.CreateSnapshot();
-        Snapshot.SetItem(assignment.ItemName, _variables, assignment.TotalCycles);
+        _view = assignment.CreateSnapshotWriter();
+        _view.SetItem(assignment.ItemName, _variables, assignment.TotalCycles);
     }
 
     /// <summary>The snapshot the strategy reads.</summary>
-    public MatchSnapshot Snapshot { get; }
+    public MatchSnapshot Snapshot => _view.Snapshot;
 
     /// <summary>Reads a <c>cycle</c> message into <see cref="Snapshot"/>; returns its cycle number.</summary>
     public int Read(ReadOnlySpan<byte> line)
@@ -92,8 +93,8 @@ internal sealed class CycleReader
             }
 
             int c = cycle ?? throw MessageReader.Missing("cycle");
-            Snapshot.SetHeader(c, goals[..teams]);
-            Snapshot.SetSidesSwapped(swapped);
+            _view.SetHeader(c, goals[..teams]);
+            _view.SetSidesSwapped(swapped);
             return c;
         }
         catch (JsonException e)
@@ -123,7 +124,7 @@ internal sealed class CycleReader
             throw new ProtocolException("packed: not base64");
         }
 
-        PackedCycle.Read(_packed.AsSpan(0, bytes), Snapshot.FishBuffer, Snapshot.BallBuffer);
+        PackedCycle.Read(_packed.AsSpan(0, bytes), _view.Fish, _view.Balls);
     }
 
     private void Variables(ref Utf8JsonReader r)
@@ -173,14 +174,14 @@ internal sealed class CycleReader
                 _variables.Set(_keys[k], _values[k]);
             }
 
-            Snapshot.SetItem(_assignment.ItemName, _variables, _assignment.TotalCycles);
+            _view.SetItem(_assignment.ItemName, _variables, _assignment.TotalCycles);
         }
     }
 
     private int Fish(ref Utf8JsonReader r)
     {
         JsonFields.StartArray(ref r, "fish");
-        var buffer = Snapshot.FishBuffer;
+        var buffer = _view.Fish;
         int n = 0;
         Span<float> three = stackalloc float[3];
         while (JsonFields.NextElement(ref r, "fish"))
@@ -293,7 +294,7 @@ internal sealed class CycleReader
     private int Balls(ref Utf8JsonReader r)
     {
         JsonFields.StartArray(ref r, "balls");
-        var buffer = Snapshot.BallBuffer;
+        var buffer = _view.Balls;
         int n = 0;
         while (JsonFields.NextElement(ref r, "balls"))
         {

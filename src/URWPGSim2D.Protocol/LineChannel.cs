@@ -8,7 +8,7 @@ namespace URWPGSim2D.Protocol;
 /// into a reused buffer and writes whole lines, each followed by <c>\n</c> and flushed. Nothing is
 /// allocated per line once the buffer has grown to the longest line.
 /// </summary>
-internal sealed class LineChannel
+public sealed class LineChannel
 {
     private readonly Stream _input;
     private readonly Stream _output;

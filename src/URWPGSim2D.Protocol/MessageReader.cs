@@ -10,7 +10,7 @@ namespace URWPGSim2D.Protocol;
 /// of the wrong type or a line that is not one JSON object throws <see cref="ProtocolException"/>
 /// with a one-line message naming the field. Cycle messages are read by <see cref="CycleReader"/>.
 /// </summary>
-internal static class MessageReader
+public static class MessageReader
 {
     /// <summary>The <c>type</c> of the message on <paramref name="line"/>.</summary>
     public static MessageType TypeOf(ReadOnlySpan<byte> line)

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Protocol;
 
 /// <summary>The <c>type</c> of a protocol message (docs/protocol.md).</summary>
-internal enum MessageType
+public enum MessageType
 {
     /// <summary>A <c>type</c> this version does not know (or none).</summary>
     Unknown,

@@ -13,7 +13,7 @@ namespace URWPGSim2D.Protocol;
 /// a number that is not finite is written as <c>null</c>. A cycle message allocates nothing once
 /// the buffer has grown.
 /// </summary>
-internal sealed class MessageWriter
+public sealed class MessageWriter
 {
     private readonly ArrayBufferWriter<byte> _buffer = new(4096);
     private readonly Utf8JsonWriter _json;

@@ -3,7 +3,7 @@ using System.Text;
 namespace URWPGSim2D.Protocol;
 
 /// <summary>What a client's strategy printed in one cycle as a <c>decisions</c> message carries it: the kept text (<c>log</c>) and the characters dropped past the client's bound (<c>logDropped</c>).</summary>
-internal sealed class PrintedOutput
+public sealed class PrintedOutput
 {
     /// <summary>The kept text.</summary>
     public StringBuilder Text { get; } = new();

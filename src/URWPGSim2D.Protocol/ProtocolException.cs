@@ -3,7 +3,7 @@ using System;
 namespace URWPGSim2D.Protocol;
 
 /// <summary>A message that breaks the protocol: not JSON, too long, a missing or mistyped field. The message is one line naming the field.</summary>
-internal sealed class ProtocolException : Exception
+public sealed class ProtocolException : Exception
 {
     /// <summary>Creates the exception.</summary>
     public ProtocolException(string message)

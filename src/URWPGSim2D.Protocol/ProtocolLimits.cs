@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Protocol;
 
 /// <summary>Sizes a side of the protocol accepts (docs/protocol.md, "Limits").</summary>
-internal static class ProtocolLimits
+public static class ProtocolLimits
 {
     /// <summary>Longest line the server reads from a client, bytes (without the newline).</summary>
     public const int ClientLineBytes = 64 * 1024;

@@ -10,7 +10,7 @@ namespace URWPGSim2D.Strategies;
 /// the current one on the thread that calls the strategy (<see cref="Enter"/>); without one, every
 /// drawing call returns at once and costs nothing.
 /// </summary>
-internal sealed class DebugRecorder
+public sealed class DebugRecorder
 {
     /// <summary>Shapes kept per team and cycle.</summary>
     public const int MaxShapes = 128;
@@ -50,6 +50,7 @@ internal sealed class DebugRecorder
     /// <param name="fish">Indices of the fish the strategy controls, in its decisions' order.</param>
     public void Enter(int[] fish)
     {
+        ArgumentNullException.ThrowIfNull(fish);
         _fish = fish;
         Clear();
         t_current = this;
@@ -59,9 +60,17 @@ internal sealed class DebugRecorder
     public static void Exit() => t_current = null;
 
     /// <summary>The fish index of the team's <paramref name="ordinal"/>-th fish (in decisions' order), or −1 (the team) when out of range.</summary>
+    /// <param name="ordinal">The fish's place among the team's decisions.</param>
     public int FishOfOrdinal(int ordinal) => (uint)ordinal < (uint)_fish.Length ? _fish[ordinal] : -1;
 
     /// <summary>Adds a shape; a <paramref name="fish"/> the strategy does not control makes it the team's; non-finite coordinates drop it.</summary>
+    /// <param name="kind">What the shape is.</param>
+    /// <param name="fish">The fish it belongs to, or −1 for the team.</param>
+    /// <param name="a">Its point, start or centre, mm.</param>
+    /// <param name="b">Its end (a line), mm.</param>
+    /// <param name="radius">Its radius (a circle), mm.</param>
+    /// <param name="rgb">Colour 0xRRGGBB, or −1 for the team's colour.</param>
+    /// <param name="text">Its text (a text), or null.</param>
     public void Add(DebugShapeKind kind, int fish, Vector2 a, Vector2 b, float radius, int rgb, string? text)
     {
         if (!float.IsFinite(a.X) || !float.IsFinite(a.Y) || !float.IsFinite(b.X) || !float.IsFinite(b.Y) || !float.IsFinite(radius))
@@ -102,8 +111,10 @@ internal sealed class DebugRecorder
     }
 
     /// <summary>Adds the shapes of <paramref name="other"/> (a call that ran on another thread) to this recorder, within the bounds.</summary>
+    /// <param name="other">The other call's recorder.</param>
     public void AddFrom(DebugRecorder other)
     {
+        ArgumentNullException.ThrowIfNull(other);
         Dropped += other.Dropped;
         foreach (ref readonly var s in other.Shapes)
         {
@@ -112,11 +123,14 @@ internal sealed class DebugRecorder
     }
 
     /// <summary>Adds one shape read back (from the protocol or another recorder), within the bounds.</summary>
+    /// <param name="s">The shape.</param>
     public void AddShape(in DebugShape s) => Add(s.Kind, s.Fish, s.A, s.B, s.Radius, s.Rgb, s.Text);
 
     /// <summary>Sets the fish the team controls (for a recorder filled from the protocol) and clears it.</summary>
+    /// <param name="fish">Indices of the fish the team controls, in its decisions' order.</param>
     public void Reset(int[] fish)
     {
+        ArgumentNullException.ThrowIfNull(fish);
         _fish = fish;
         Clear();
     }

@@ -13,11 +13,15 @@ namespace URWPGSim2D.Strategies;
 /// <c>at</c> (a text also <c>text</c>), a circle <c>center</c> and <c>radius</c>. <c>fish</c> and
 /// <c>color</c> are left out for the team's drawings in the team's colour.
 /// </summary>
-internal static class DebugShapeJson
+public static class DebugShapeJson
 {
     /// <summary>Writes <paramref name="s"/> as one object (with <c>team</c> first when given).</summary>
+    /// <param name="w">Where to write.</param>
+    /// <param name="s">The shape.</param>
+    /// <param name="team">The team that drew it, or −1 to leave <c>team</c> out.</param>
     public static void Write(Utf8JsonWriter w, in DebugShape s, int team = -1)
     {
+        ArgumentNullException.ThrowIfNull(w);
         w.WriteStartObject();
         if (team >= 0)
         {
@@ -64,8 +68,12 @@ internal static class DebugShapeJson
     }
 
     /// <summary>Writes every shape of <paramref name="drawings"/> as the array <c>draw</c>.</summary>
+    /// <param name="w">Where to write.</param>
+    /// <param name="drawings">The recorder whose shapes to write.</param>
     public static void WriteArray(Utf8JsonWriter w, DebugRecorder drawings)
     {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(drawings);
         w.WriteStartArray("draw");
         foreach (ref readonly var s in drawings.Shapes)
         {

@@ -17,7 +17,7 @@ namespace URWPGSim2D.Compat.Retargeting;
 /// A file is read once per process (again only when its size or time changes) and an image is
 /// retargeted once per content (keyed by its SHA-256), so the matches of a batch or tournament share it.
 /// </summary>
-internal static class OriginalAssemblyLoader
+public static class OriginalAssemblyLoader
 {
     private static readonly ConcurrentDictionary<(string Path, long Length, DateTime Written), Lazy<LoadableImage>> Files = new();
     private static readonly ConcurrentDictionary<string, Lazy<byte[]>> Retargeted = new(StringComparer.Ordinal);
@@ -125,4 +125,4 @@ internal static class OriginalAssemblyLoader
 /// <summary>A strategy assembly's image as this runtime loads it (<see cref="OriginalAssemblyLoader.Read"/>).</summary>
 /// <param name="Sha256">The SHA-256 of the file's bytes, in lower-case hex.</param>
 /// <param name="Retargeted">The retargeted image when the file was built for the original, else null (the file loads as it is).</param>
-internal sealed record LoadableImage(string Sha256, byte[]? Retargeted);
+public sealed record LoadableImage(string Sha256, byte[]? Retargeted);

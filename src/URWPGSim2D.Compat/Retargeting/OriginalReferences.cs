@@ -9,7 +9,7 @@ namespace URWPGSim2D.Compat.Retargeting;
 /// (the original's are 1.2.123.20110 and <c>04f000b8db128100</c>, XNA's 3.1.0.0 and
 /// <c>6d5c3888ef60e27d</c>), is retargeted to the compatibility assembly.
 /// </summary>
-internal static class OriginalReferences
+public static class OriginalReferences
 {
     private static readonly string[] Names =
         ["URWPGSim2D.Common", "URWPGSim2D.Core", "URWPGSim2D.StrategyLoader", "URWPGSim2D.StrategyHelper", "Microsoft.Xna.Framework"];

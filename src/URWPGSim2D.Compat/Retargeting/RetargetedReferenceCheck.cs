@@ -16,7 +16,7 @@ namespace URWPGSim2D.Compat.Retargeting;
 /// part of .NET Framework this runtime does not have (Windows Forms, remoting, …), is refused at load
 /// time naming what is missing, instead of faulting in the middle of a match.
 /// </summary>
-internal static class RetargetedReferenceCheck
+public static class RetargetedReferenceCheck
 {
     private const int Named = 3;
 
@@ -59,6 +59,18 @@ internal static class RetargetedReferenceCheck
         }
 
         throw new FileLoadException("it uses " + string.Join("; and ", parts));
+    }
+
+    /// <summary>
+    /// The file a reference of a retargeted image to the assembly <paramref name="name"/> resolves to
+    /// here (the compatibility assembly for the original's, a facade of the running runtime for the
+    /// framework's), or null when there is none.
+    /// </summary>
+    /// <param name="name">A simple assembly name.</param>
+    public static string? FileOf(string name)
+    {
+        ArgumentNullException.ThrowIfNull(name);
+        return RuntimeAssemblyResolver.FileOf(name);
     }
 
     /// <summary>Every reference of the loaded image <paramref name="image"/> that does not resolve, in metadata order, each named once.</summary>
@@ -207,4 +219,4 @@ internal static class RetargetedReferenceCheck
 /// <param name="Name">The type, or the type and member (<c>Namespace.Type.Member</c>).</param>
 /// <param name="InCompatibilityAssembly">Whether it is a part of the original's API (else of the framework).</param>
 /// <param name="Assembly">The simple name of the assembly the image expects it in (after retargeting).</param>
-internal sealed record MissingReference(string Name, bool InCompatibilityAssembly, string Assembly);
+public sealed record MissingReference(string Name, bool InCompatibilityAssembly, string Assembly);

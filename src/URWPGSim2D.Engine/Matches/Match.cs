@@ -20,6 +20,7 @@ public sealed class Match
 {
     private readonly SeededRandom? _motionNoise;
     private readonly SeededRandom? _viewNoise;
+    private readonly MatchSnapshotWriter _view;
     private int _observedCycle = -1;
 
     /// <summary>Creates a match.</summary>
@@ -36,7 +37,7 @@ public sealed class Match
         Seed = seed;
         Rules = referee ?? new PlainSceneReferee(0);
         Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
-        Snapshot = new MatchSnapshot(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
+        _view = new MatchSnapshotWriter(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
         Stepper = new CycleMotion(world, Contacts);
         Rules.Start(world);
         if (noise)
@@ -56,7 +57,7 @@ public sealed class Match
     public IMatchTeams Teams { get; }
 
     /// <summary>What strategies see.</summary>
-    public MatchSnapshot Snapshot { get; }
+    public MatchSnapshot Snapshot => _view.Snapshot;
 
     /// <summary>The contacts of the last cycle and the match's counts.</summary>
     public ContactLog Contacts { get; }
@@ -119,14 +120,14 @@ public sealed class Match
 
     private void FillSnapshot()
     {
-        Snapshot.SetHeader(World.Cycle, Rules.Scores);
+        _view.SetHeader(World.Cycle, Rules.Scores);
         if (Referee is { } item)
         {
-            Snapshot.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
-            Snapshot.SetSidesSwapped(item.SidesSwapped);
+            _view.SetItem(item.Item.ChineseName, item.Variables, item.Cycles);
+            _view.SetSidesSwapped(item.SidesSwapped);
         }
 
-        var fish = Snapshot.FishBuffer;
+        var fish = _view.Fish;
         for (int i = 0; i < fish.Length; i++)
         {
             var f = World.Fish[i];
@@ -145,7 +146,7 @@ public sealed class Match
             };
         }
 
-        var balls = Snapshot.BallBuffer;
+        var balls = _view.Balls;
         for (int i = 0; i < balls.Length; i++)
         {
             var b = World.Balls[i];
