@@ -159,7 +159,8 @@ public sealed class MatchBatch
     /// Plays one cycle of every match with <paramref name="actions"/>, and writes each one's
     /// observation, reward and episode end. A match that ended at the last step is started again
     /// instead (its action ignored): its observation is then the new episode's first, its reward 0,
-    /// and neither flag is set. Allocates nothing (apart from restarting a match that ended).
+    /// and neither flag is set. Allocates nothing (apart from restarting a match that ended): the
+    /// referees record their events without text (<see cref="ItemReferee.EventTexts"/>).
     /// </summary>
     /// <param name="actions"><see cref="Count"/> × <see cref="ActionSize"/> integers 0..15: per match, a speed code and a turn code per fish of the team.</param>
     /// <param name="observations"><see cref="Count"/> × <see cref="ObservationSize"/> floats, written.</param>
@@ -274,6 +275,7 @@ public sealed class MatchBatch
 
         // Every broad phase plays the same match; with three to a dozen bodies trying every pair is the fastest.
         var match = MatchSetup.Create(_item.CreateScenario(seed), teams, seed: seed, cycles: Cycles, broadPhase: BroadPhaseKind.BruteForce);
+        match.Rules.EventTexts = false; // the batch reads scores and ends, not the events' messages: a goal or half time allocates nothing
         _matches[i] = match;
         _teams[i] = pushed;
         _seeds[i] = seed;

@@ -1,3 +1,5 @@
+import os
+import tempfile
 import unittest
 
 from urwpgsim2d.env import FishEnv
@@ -59,6 +61,31 @@ class FishEnvTests(unittest.TestCase):
             self.assertTrue(all(0.0 <= f <= 1.0 for f in fractions))
         finally:
             env.close()
+
+    def test_to_end_plays_past_the_cycles_until_the_match_ends_and_the_server_writes_its_page(self):
+        # A 0:0 after 30 cycles goes to extra time, penalties and the clutch shot; with to_end the
+        # episode follows the match to its end, and run --html writes the replay page then.
+        with tempfile.TemporaryDirectory() as folder:
+            page = os.path.join(folder, "match.html")
+            env = FishEnv(item="polo-1v1", opponent="idle", cycles=30, run_args=["--html", page])
+            try:
+                env.reset(seed=2, options={"to_end": True})
+                steps = 0
+                while True:
+                    obs, _, terminated, truncated, info = env.step([0, 7])
+                    steps += 1
+                    self.assertFalse(truncated)
+                    if terminated:
+                        break
+                self.assertGreater(steps, 30 + 1800)
+                self.assertEqual(info["end"]["cycle"], steps)
+                self.assertAlmostEqual(float(obs[-1]), 1.0)
+                with open(page, encoding="utf-8") as f:
+                    self.assertIn("<html", f.read(4096).lower())
+                with self.assertRaisesRegex(ValueError, r"options\['to_end'\]: 1, expected True or False"):
+                    env.reset(seed=2, options={"to_end": 1})
+            finally:
+                env.close()
 
     def test_the_same_seed_and_actions_give_the_same_episode(self):
         def episode(seed):

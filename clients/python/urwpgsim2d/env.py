@@ -90,7 +90,9 @@ class FishEnv(_Base):
     (vcode, tcode), flat. Reward: (own score - other score) now minus the same one step before.
     terminated: the match ended within its cycles (they were played, or the item decided it);
     truncated: `cycles` steps were played and the item plays on (a tie that goes to extra time or
-    penalties), or options["max_steps"] was reached. An episode is never longer than `cycles` steps.
+    penalties), or options["max_steps"] was reached. An episode is never longer than `cycles` steps,
+    unless reset(options={"to_end": True}): then it plays on past `cycles` until the match ends
+    (extra time, penalties), so the server writes what run_args ask for (a replay page).
     """
 
     metadata = {"render_modes": []}
@@ -110,6 +112,7 @@ class FishEnv(_Base):
         self._assignment: Optional[Assignment] = None
         self._steps = 0
         self._max_steps: Optional[int] = None
+        self._to_end = False
         self._difference = 0
         self.summary: Optional[str] = None
         # The spaces need the match's sizes: a first episode tells them.
@@ -125,8 +128,11 @@ class FishEnv(_Base):
         self.close()
         options = dict(options or {})
         self._max_steps = options.pop("max_steps", None)
+        self._to_end = options.pop("to_end", False)
         if options:
             raise ValueError("unknown options: %s" % ", ".join(sorted(options)))
+        if not isinstance(self._to_end, bool):
+            raise ValueError("options['to_end']: %r, expected True or False" % (self._to_end,))
         self._start(seed=seed if seed is not None else random.randrange(2 ** 31))
         return self._observation(), self._info()
 
@@ -154,7 +160,7 @@ class FishEnv(_Base):
         reward = float(difference - self._difference)
         self._difference = difference
         # The match's own length is the episode's: an item that plays on past it (extra time) is cut there.
-        truncated = self._steps >= self.cycles or (self._max_steps is not None and self._steps >= self._max_steps)
+        truncated = (self._steps >= self.cycles and not self._to_end) or (self._max_steps is not None and self._steps >= self._max_steps)
         observation, info = self._observation(), self._info()
         if truncated:
             self.close()

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
@@ -72,6 +73,13 @@ public abstract class ItemReferee : ITraceItemInfo
 
     /// <summary>The item's state for strategies, with the original's <c>HtMissionVariables</c> keys.</summary>
     public MissionVariables Variables { get; } = new();
+
+    /// <summary>
+    /// Whether events carry their text (<see cref="ItemEvent.Text"/>), on by default. Off, every
+    /// event is still recorded, with an empty text that is never formatted: a cycle with a goal,
+    /// a foul or half time then allocates nothing (a learning environment reads scores, not messages).
+    /// </summary>
+    public bool EventTexts { get; set; } = true;
 
     /// <summary>Whether the match is over (time, or an ending condition of the item).</summary>
     public bool IsOver { get; private set; }
@@ -158,7 +166,7 @@ public abstract class ItemReferee : ITraceItemInfo
         {
             if (Half < Halves && !MatchDone)
             {
-                AddEvent(ItemEvent.Plain(world.Cycle, "half-time", string.Create(CultureInfo.InvariantCulture, $"half {Half} over: {HalfTimeChange}")));
+                AddEvent(world.Cycle, "half-time", -1, -1, -1, double.NaN, $"half {Half} over: {HalfTimeChange}");
                 Half++;
                 HalfStartCycle = world.Cycle;
                 moved |= OnHalfTime(world);
@@ -167,8 +175,14 @@ public abstract class ItemReferee : ITraceItemInfo
             {
                 IsOver = true;
                 _outcome = Decide();
-                string who = _outcome.Winner >= 0 ? string.Create(CultureInfo.InvariantCulture, $"team {_outcome.Winner} wins ({_outcome.Rule})") : _outcome.Rule;
-                AddEvent(new ItemEvent(world.Cycle, "end", _outcome.Winner, -1, -1, double.NaN, "match over: " + who));
+                if (_outcome.Winner >= 0)
+                {
+                    AddEvent(world.Cycle, "end", _outcome.Winner, -1, -1, double.NaN, $"match over: team {_outcome.Winner} wins ({_outcome.Rule})");
+                }
+                else
+                {
+                    AddEvent(world.Cycle, "end", -1, -1, -1, double.NaN, $"match over: {_outcome.Rule}");
+                }
             }
         }
 
@@ -178,6 +192,10 @@ public abstract class ItemReferee : ITraceItemInfo
 
     /// <summary>Records an event of the current cycle.</summary>
     protected void AddEvent(in ItemEvent e) => _events.Add(e);
+
+    /// <summary>Records an event of the current cycle whose text is formatted (invariant culture) only when <see cref="EventTexts"/> is on, and is empty otherwise.</summary>
+    private protected void AddEvent(int cycle, string kind, int team, int fish, int ball, double value, [InterpolatedStringHandlerArgument("")] ref EventText text) =>
+        _events.Add(new ItemEvent(cycle, kind, team, fish, ball, value, text.ToStringAndClear()));
 
     /// <summary>Prepares cycle 1 (default: nothing).</summary>
     protected virtual void OnStart(World world)

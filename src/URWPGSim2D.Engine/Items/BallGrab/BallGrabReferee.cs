@@ -73,7 +73,7 @@ internal sealed class BallGrabReferee : ItemReferee, IGoalBoxGame
                 }
 
                 Scores[team] += value;
-                AddEvent(new ItemEvent(world.Cycle, "goal", team, -1, i, value, string.Create(CultureInfo.InvariantCulture, $"team {team} scores ball {i} (+{value})")));
+                AddEvent(world.Cycle, "goal", team, -1, i, value, $"team {team} scores ball {i} (+{value})");
             }
         }
 

@@ -48,8 +48,8 @@ internal sealed class CrossCountryReferee : ItemReferee
             {
                 if (c.Pair.Kind == PairKind.FishBall && c.Pair.B == ball)
                 {
-                    Done(world.Cycle, new ItemEvent(world.Cycle, "touch", 0, c.Pair.A, ball, double.NaN,
-                        string.Create(CultureInfo.InvariantCulture, $"the fish touches ball {ball}")));
+                    Done(world.Cycle);
+                    AddEvent(world.Cycle, "touch", 0, c.Pair.A, ball, double.NaN, $"the fish touches ball {ball}");
                     break;
                 }
             }
@@ -57,8 +57,8 @@ internal sealed class CrossCountryReferee : ItemReferee
         else if (CrossCountryLayout.AtTarget(world.Balls[ball].Position, CrossCountryLayout.Targets[ball]))
         {
             Scores[0]++;
-            Done(world.Cycle, new ItemEvent(world.Cycle, "target", 0, -1, ball, 1,
-                string.Create(CultureInfo.InvariantCulture, $"ball {ball} reaches its target (+1)")));
+            Done(world.Cycle);
+            AddEvent(world.Cycle, "target", 0, -1, ball, 1, $"ball {ball} reaches its target (+1)");
             MatchDone = Step == 4;
         }
 
@@ -70,10 +70,9 @@ internal sealed class CrossCountryReferee : ItemReferee
         ? new MatchOutcome(0, string.Create(CultureInfo.InvariantCulture, $"course completed in {_stepCycle[3] / 10.0:0.0} s"))
         : new MatchOutcome(-1, string.Create(CultureInfo.InvariantCulture, $"course not completed ({Step} of 4 steps)"));
 
-    private void Done(int cycle, in ItemEvent e)
+    private void Done(int cycle)
     {
         _stepCycle[Step] = cycle;
         Step++;
-        AddEvent(e);
     }
 }

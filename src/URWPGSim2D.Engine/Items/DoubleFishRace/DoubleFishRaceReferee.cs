@@ -122,8 +122,7 @@ internal sealed class DoubleFishRaceReferee : ItemReferee
             {
                 var (at, heading) = Restart(_previousQuadrant[t]);
                 Placement.Place(fish, at, heading);
-                AddEvent(new ItemEvent(world.Cycle, "foul", t, t, -1, double.NaN, string.Create(CultureInfo.InvariantCulture,
-                    $"team {t}'s fish swims the wrong way or cuts across: put back in quadrant {_previousQuadrant[t]}")));
+                AddEvent(world.Cycle, "foul", t, t, -1, double.NaN, $"team {t}'s fish swims the wrong way or cuts across: put back in quadrant {_previousQuadrant[t]}");
                 moved = true;
             }
             else

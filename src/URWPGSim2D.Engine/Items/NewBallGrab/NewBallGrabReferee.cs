@@ -91,7 +91,7 @@ internal sealed class NewBallGrabReferee : ItemReferee, IGoalBoxGame
             _periodStart = world.Cycle;
             _periodLength = ClutchShotCycles;
             _halfTimeDone = false;
-            AddEvent(ItemEvent.Plain(world.Cycle, "period", string.Create(CultureInfo.InvariantCulture, $"{Scores[0]}:{Scores[1]}, clutch shot follows")));
+            AddEvent(world.Cycle, "period", -1, -1, -1, double.NaN, $"{Scores[0]}:{Scores[1]}, clutch shot follows");
             Restart(world);
             return true;
         }
@@ -142,13 +142,13 @@ internal sealed class NewBallGrabReferee : ItemReferee, IGoalBoxGame
                 if (_inBox[i] != 0)
                 {
                     int loser = _inBox[i] < 0 ? LeftTeam : 1 - LeftTeam;
-                    AddEvent(new ItemEvent(world.Cycle, "out", loser, -1, i, -value, string.Create(CultureInfo.InvariantCulture, $"ball {i} leaves team {loser}'s box (-{value})")));
+                    AddEvent(world.Cycle, "out", loser, -1, i, -value, $"ball {i} leaves team {loser}'s box (-{value})");
                 }
 
                 if (box != 0)
                 {
                     int scorer = box < 0 ? LeftTeam : 1 - LeftTeam;
-                    AddEvent(new ItemEvent(world.Cycle, "goal", scorer, -1, i, value, string.Create(CultureInfo.InvariantCulture, $"ball {i} in team {scorer}'s box (+{value})")));
+                    AddEvent(world.Cycle, "goal", scorer, -1, i, value, $"ball {i} in team {scorer}'s box (+{value})");
                 }
             }
 

@@ -42,26 +42,32 @@ internal static class PoloLayout
     /// </summary>
     public static (Vector2 Position, float Heading)[] KickOffPoses(int perTeam, bool leftSide, bool kicksOff, FishSize size)
     {
+        var poses = new (Vector2, float)[perTeam];
+        for (int j = 0; j < perTeam; j++)
+        {
+            poses[j] = KickOffPose(perTeam, leftSide, kicksOff, size, j);
+        }
+
+        return poses;
+    }
+
+    /// <summary>The start pose of fish <paramref name="j"/> (0 to n−1) of the team playing on <paramref name="leftSide"/>, as <see cref="KickOffPoses"/>.</summary>
+    public static (Vector2 Position, float Heading) KickOffPose(int perTeam, bool leftSide, bool kicksOff, FishSize size, int j)
+    {
         float end = FieldLength(perTeam) / 2f;
         float back = end - (3f * size.Length);
         float sign = leftSide ? -1f : 1f;
         float heading = leftSide ? 0f : MathF.PI;
-        var poses = new (Vector2, float)[perTeam];
-        poses[0] = (new Vector2(sign * back, 0f), heading);
-        if (perTeam >= 3)
+        float aside = (kicksOff ? 2f : 10f) * size.Width;
+        return j switch
         {
-            poses[1] = (new Vector2(sign * back, 3f * size.Width), heading);
-            poses[2] = (new Vector2(sign * back, -3f * size.Width), heading);
-        }
-
-        if (perTeam == 5)
-        {
-            float aside = (kicksOff ? 2f : 10f) * size.Width;
-            poses[3] = (new Vector2(sign * 2f * size.Length, aside), heading);
-            poses[4] = (new Vector2(sign * 2f * size.Length, -aside), heading);
-        }
-
-        return poses;
+            0 => (new Vector2(sign * back, 0f), heading),
+            1 when perTeam >= 3 => (new Vector2(sign * back, 3f * size.Width), heading),
+            2 when perTeam >= 3 => (new Vector2(sign * back, -3f * size.Width), heading),
+            3 when perTeam == 5 => (new Vector2(sign * 2f * size.Length, aside), heading),
+            4 when perTeam == 5 => (new Vector2(sign * 2f * size.Length, -aside), heading),
+            _ => (Vector2.Zero, 0f),
+        };
     }
 
     /// <summary>

@@ -176,8 +176,7 @@ internal sealed class PoloReferee : ItemReferee
             }
         }
 
-        AddEvent(new ItemEvent(world.Cycle, "dead-ball", -1, -1, 0, double.NaN,
-            string.Create(CultureInfo.InvariantCulture, $"dead ball: restart at ({spot.X:0}, {spot.Y:0})")));
+        AddEvent(world.Cycle, "dead-ball", -1, -1, 0, double.NaN, $"dead ball: restart at ({spot.X:0}, {spot.Y:0})");
         return true;
     }
 
@@ -334,10 +333,8 @@ internal sealed class PoloReferee : ItemReferee
         _inGoal[fish] = 0;
         _inZone[fish] = 0;
         _armed[fish] = false;
-        AddEvent(new ItemEvent(world.Cycle, "foul", team, fish, -1, double.NaN,
-            string.Create(CultureInfo.InvariantCulture, $"team {team} fish {fish} fouls: {why}")));
-        AddEvent(new ItemEvent(world.Cycle, "sent-off", team, fish, -1, double.NaN,
-            string.Create(CultureInfo.InvariantCulture, $"fish {fish} sent off for {_sendOffCycles / 10} s")));
+        AddEvent(world.Cycle, "foul", team, fish, -1, double.NaN, $"team {team} fish {fish} fouls: {why}");
+        AddEvent(world.Cycle, "sent-off", team, fish, -1, double.NaN, $"fish {fish} sent off for {_sendOffCycles / 10} s");
         return true;
     }
 
@@ -380,8 +377,7 @@ internal sealed class PoloReferee : ItemReferee
         }
 
         Scores[scorer]++;
-        AddEvent(new ItemEvent(world.Cycle, "goal", scorer, -1, 0, 1,
-            string.Create(CultureInfo.InvariantCulture, $"team {scorer} scores ({Scores[0]}:{Scores[1]})")));
+        AddEvent(world.Cycle, "goal", scorer, -1, 0, 1, $"team {scorer} scores ({Scores[0]}:{Scores[1]})");
         if (Period == PoloPeriod.ClutchShotTime)
         {
             _rule = "clutch shot (first goal)";
@@ -411,7 +407,7 @@ internal sealed class PoloReferee : ItemReferee
         {
             _halfTimeDone = true;
             LeftTeam = 1 - LeftTeam;
-            AddEvent(ItemEvent.Plain(world.Cycle, "half-time", string.Create(CultureInfo.InvariantCulture, $"half time of {PeriodName(Period)}: teams change ends")));
+            AddEvent(world.Cycle, "half-time", -1, -1, -1, double.NaN, $"half time of {PeriodName(Period)}: teams change ends");
             KickOff(world, kicker: LeftTeam);
             return true;
         }
@@ -446,7 +442,7 @@ internal sealed class PoloReferee : ItemReferee
         _periodStart = world.Cycle;
         _periodLength = length;
         _halfTimeDone = false;
-        AddEvent(ItemEvent.Plain(world.Cycle, "period", string.Create(CultureInfo.InvariantCulture, $"{Scores[0]}:{Scores[1]}, {PeriodName(period)} follows")));
+        AddEvent(world.Cycle, "period", -1, -1, -1, double.NaN, $"{Scores[0]}:{Scores[1]}, {PeriodName(period)} follows");
     }
 
     // Ends the current kick (if any) and sets up the next one, or decides after a full round.
@@ -506,8 +502,7 @@ internal sealed class PoloReferee : ItemReferee
             }
         }
 
-        AddEvent(new ItemEvent(world.Cycle, "penalty", kicker, -1, 0, double.NaN,
-            string.Create(CultureInfo.InvariantCulture, $"penalty {(_kick / 2) + 1} of team {kicker}")));
+        AddEvent(world.Cycle, "penalty", kicker, -1, 0, double.NaN, $"penalty {(_kick / 2) + 1} of team {kicker}");
         return true;
     }
 
@@ -518,11 +513,12 @@ internal sealed class PoloReferee : ItemReferee
         {
             bool left = team == LeftTeam;
             var members = _members[team];
-            var poses = PoloLayout.KickOffPoses(_perTeam, left, kicksOff: team == kicker, world.Fish[members[0]].Size);
-            for (int j = 0; j < members.Length && j < poses.Length; j++)
+            var size = world.Fish[members[0]].Size;
+            for (int j = 0; j < members.Length && j < _perTeam; j++)
             {
                 int i = members[j];
-                Placement.Place(world.Fish[i], poses[j].Position, poses[j].Heading);
+                var pose = PoloLayout.KickOffPose(_perTeam, left, kicksOff: team == kicker, size, j);
+                Placement.Place(world.Fish[i], pose.Position, pose.Heading);
                 _sentOff[i] = 0;
                 _inGoal[i] = 0;
                 _inZone[i] = 0;

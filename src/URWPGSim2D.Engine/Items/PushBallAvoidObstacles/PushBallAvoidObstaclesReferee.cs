@@ -128,7 +128,7 @@ internal sealed class PushBallAvoidObstaclesReferee : ItemReferee
             _legCycle[Legs] = cycle;
             Legs++;
             Scores[0]++;
-            AddEvent(new ItemEvent(cycle, "leg", 0, 0, -1, 1, string.Create(CultureInfo.InvariantCulture, $"leg {Legs} of 4 done (+1)")));
+            AddEvent(cycle, "leg", 0, 0, -1, 1, $"leg {Legs} of 4 done (+1)");
         }
     }
 

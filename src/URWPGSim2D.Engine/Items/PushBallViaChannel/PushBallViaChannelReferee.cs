@@ -82,9 +82,15 @@ internal sealed class PushBallViaChannelReferee : ItemReferee
             if (!_passed[i])
             {
                 _passed[i] = true;
-                string where = i < 3 ? string.Create(CultureInfo.InvariantCulture, $"past wall {i}") : "in the left goal";
-                AddEvent(new ItemEvent(world.Cycle, "stage", 0, -1, 0, scores ? 1 : 0, string.Create(CultureInfo.InvariantCulture,
-                    $"stage {i + 1}: the ball is {where}{(scores ? " after both fish touched it (+1)" : ", not touched by both fish in this stage (+0)")}")));
+                string touched = scores ? " after both fish touched it (+1)" : ", not touched by both fish in this stage (+0)";
+                if (i < 3)
+                {
+                    AddEvent(world.Cycle, "stage", 0, -1, 0, scores ? 1 : 0, $"stage {i + 1}: the ball is past wall {i}{touched}");
+                }
+                else
+                {
+                    AddEvent(world.Cycle, "stage", 0, -1, 0, scores ? 1 : 0, $"stage {i + 1}: the ball is in the left goal{touched}");
+                }
             }
 
             if (i == 3 && ThroughCycle == 0)

@@ -51,7 +51,7 @@ internal sealed class RelayWithBallReferee : ItemReferee
             _legCycle[Legs] = world.Cycle;
             Legs++;
             Scores[0] = Legs;
-            AddEvent(new ItemEvent(world.Cycle, "leg", 0, -1, 0, 1, string.Create(CultureInfo.InvariantCulture, $"leg {Legs} of 4 done: the ball is in the {(Legs % 2 == 1 ? "right" : "left")} pocket (+1)")));
+            AddEvent(world.Cycle, "leg", 0, -1, 0, 1, $"leg {Legs} of 4 done: the ball is in the {(Legs % 2 == 1 ? "right" : "left")} pocket (+1)");
         }
 
         bool moved = false;
@@ -62,8 +62,7 @@ internal sealed class RelayWithBallReferee : ItemReferee
             {
                 var (position, heading) = FishRestart(k);
                 Placement.Place(fish, position, heading);
-                AddEvent(new ItemEvent(world.Cycle, "foul", 0, k, -1, double.NaN, string.Create(CultureInfo.InvariantCulture,
-                    $"fish {k} enters the {(k == 1 ? "top" : "bottom")} channel, kept for fish {1 - k}: put back at its end")));
+                AddEvent(world.Cycle, "foul", 0, k, -1, double.NaN, $"fish {k} enters the {(k == 1 ? "top" : "bottom")} channel, kept for fish {1 - k}: put back at its end");
                 moved = true;
             }
         }
@@ -73,8 +72,7 @@ internal sealed class RelayWithBallReferee : ItemReferee
         if (wrongTop || wrongBottom)
         {
             Placement.Place(ball, new Vector2(wrongTop ? -BallStart.X : BallStart.X, BallStart.Y));
-            AddEvent(new ItemEvent(world.Cycle, "foul", 0, -1, 0, double.NaN, string.Create(CultureInfo.InvariantCulture,
-                $"the ball enters the {(wrongTop ? "top" : "bottom")} channel on leg {Legs + 1}: put back at the leg's start")));
+            AddEvent(world.Cycle, "foul", 0, -1, 0, double.NaN, $"the ball enters the {(wrongTop ? "top" : "bottom")} channel on leg {Legs + 1}: put back at the leg's start");
             moved = true;
         }
 

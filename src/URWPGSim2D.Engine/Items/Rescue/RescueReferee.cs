@@ -58,8 +58,7 @@ internal sealed class RescueReferee : ItemReferee
                 if (c.Pair.Kind == PairKind.FishBall && world.Fish[c.Pair.A].Team == team && !world.Fish[c.Pair.A].OutOfPlay)
                 {
                     _times[team][0] = elapsed;
-                    AddEvent(new ItemEvent(world.Cycle, "touch", team, c.Pair.A, c.Pair.B, double.NaN,
-                        string.Create(CultureInfo.InvariantCulture, $"team {team} first touches ball {c.Pair.B}")));
+                    AddEvent(world.Cycle, "touch", team, c.Pair.A, c.Pair.B, double.NaN, $"team {team} first touches ball {c.Pair.B}");
                     break;
                 }
             }
@@ -75,8 +74,7 @@ internal sealed class RescueReferee : ItemReferee
             _rescued[team, i] = true;
             Scores[team]++;
             _times[team][Math.Min(Scores[team], 2)] = elapsed;
-            AddEvent(new ItemEvent(world.Cycle, "rescue", team, -1, i, 1,
-                string.Create(CultureInfo.InvariantCulture, $"team {team} rescues ball {i} (+1)")));
+            AddEvent(world.Cycle, "rescue", team, -1, i, 1, $"team {team} rescues ball {i} (+1)");
         }
 
         return false;

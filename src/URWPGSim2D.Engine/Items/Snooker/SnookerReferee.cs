@@ -117,8 +117,7 @@ internal sealed class SnookerReferee : ItemReferee
         }
 
         string what = good ? string.Create(CultureInfo.InvariantCulture, $"+{points}") : "wrong ball, no score";
-        AddEvent(new ItemEvent(world.Cycle, "ball-in-hole", 0, -1, id, points,
-            string.Create(CultureInfo.InvariantCulture, $"{(red ? "red" : "colour")} ball {id} potted ({what})")));
+        AddEvent(world.Cycle, "ball-in-hole", 0, -1, id, points, $"{(red ? "red" : "colour")} ball {id} potted ({what})");
         MatchDone = BallsInField == 0;
     }
 

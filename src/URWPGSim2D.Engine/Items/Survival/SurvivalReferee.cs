@@ -118,8 +118,7 @@ internal sealed class SurvivalReferee : ItemReferee
             _lastCatch[hunter] = world.Cycle - HalfStartCycle;
             Placement.Park(f, SurvivalLayout.CaughtPlace(j), 0f);
             moved = true;
-            AddEvent(new ItemEvent(world.Cycle, "catch", hunter, caught, -1, 1,
-                string.Create(CultureInfo.InvariantCulture, $"team {hunter} catches team {prey}'s fish {j} (+1)")));
+            AddEvent(world.Cycle, "catch", hunter, caught, -1, 1, $"team {hunter} catches team {prey}'s fish {j} (+1)");
         }
 
         return moved;

@@ -43,8 +43,7 @@ internal sealed class TransportReferee : ItemReferee
             _inHole[i] = true;
             Scores[0]++;
             LastGoalCycle = world.Cycle;
-            AddEvent(new ItemEvent(world.Cycle, "ball-in-hole", 0, -1, i, 1,
-                string.Create(CultureInfo.InvariantCulture, $"ball {i} in hole {i} (+1)")));
+            AddEvent(world.Cycle, "ball-in-hole", 0, -1, i, 1, $"ball {i} in hole {i} (+1)");
         }
 
         MatchDone = Scores[0] == TransportLayout.Count;
