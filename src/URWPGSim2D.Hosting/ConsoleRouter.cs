@@ -17,9 +17,13 @@ namespace URWPGSim2D.Hosting;
 internal sealed class ConsoleRouter : TextWriter
 {
     private static int s_installed;
+    private static TextWriter? s_printed; // the server's standard error, where a strategy's unlogged output goes (as a host's does)
 
     [ThreadStatic]
     private static StrategyLog? t_current;
+
+    [ThreadStatic]
+    private static bool t_calling;
 
     private readonly TextWriter _fallback;
 
@@ -36,16 +40,44 @@ internal sealed class ConsoleRouter : TextWriter
             return;
         }
 
+        s_printed = TextWriter.Synchronized(Console.Error);
         Console.SetOut(TextWriter.Synchronized(new ConsoleRouter(Console.Out)));
         Console.SetError(TextWriter.Synchronized(new ConsoleRouter(Console.Error)));
         System.Diagnostics.Trace.Listeners.Add(new DebugRouter()); // Debug's and Trace's output reach Trace.Listeners
     }
 
-    /// <summary>Makes <paramref name="log"/> the log of the calling thread's strategy call.</summary>
-    public static void Enter(StrategyLog log) => t_current = log;
+    /// <summary>
+    /// Starts a strategy call on the calling thread: what it prints goes to <paramref name="log"/>,
+    /// or, with none, to the server's standard error (as a strategy host's output does) with its
+    /// control characters escaped (<c>\u001b</c>), so that no strategy's text reaches a terminal as
+    /// an escape sequence.
+    /// </summary>
+    public static void Enter(StrategyLog? log)
+    {
+        t_current = log;
+        t_calling = true;
+    }
 
     /// <summary>Ends the calling thread's strategy call.</summary>
-    public static void Exit() => t_current = null;
+    public static void Exit()
+    {
+        t_current = null;
+        t_calling = false;
+    }
+
+    // A strategy's text for the console: each line's control characters escaped, the line breaks kept.
+    private static string Safe(string text)
+    {
+        foreach (char c in text)
+        {
+            if (char.IsControl(c) && c != '\n')
+            {
+                return string.Join('\n', Array.ConvertAll(text.Split('\n'), Engine.Messages.MessageText.Escape));
+            }
+        }
+
+        return text;
+    }
 
     /// <inheritdoc/>
     public override void Write(char value)
@@ -53,6 +85,10 @@ internal sealed class ConsoleRouter : TextWriter
         if (t_current is { } log)
         {
             log.Append([value]);
+        }
+        else if (t_calling)
+        {
+            s_printed!.Write(Safe(value.ToString()));
         }
         else
         {
@@ -67,6 +103,10 @@ internal sealed class ConsoleRouter : TextWriter
         {
             log.Append(value);
         }
+        else if (t_calling)
+        {
+            s_printed!.Write(Safe(value ?? string.Empty));
+        }
         else
         {
             _fallback.Write(value);
@@ -79,6 +119,10 @@ internal sealed class ConsoleRouter : TextWriter
         if (t_current is { } log)
         {
             log.Append(buffer.AsSpan(index, count));
+        }
+        else if (t_calling)
+        {
+            s_printed!.Write(Safe(new string(buffer, index, count)));
         }
         else
         {
@@ -93,6 +137,10 @@ internal sealed class ConsoleRouter : TextWriter
         {
             log.Append(buffer);
         }
+        else if (t_calling)
+        {
+            s_printed!.Write(Safe(buffer.ToString()));
+        }
         else
         {
             _fallback.Write(buffer);
@@ -106,6 +154,10 @@ internal sealed class ConsoleRouter : TextWriter
         {
             log.Append(value);
             log.Append("\n");
+        }
+        else if (t_calling)
+        {
+            s_printed!.WriteLine(Safe(value ?? string.Empty));
         }
         else
         {

@@ -33,6 +33,7 @@ internal sealed class IsolatedStrategyRunner
         _strategy = strategy;
         _clock = clock;
         _work = new Decision[fishCount];
+        ConsoleRouter.Install(); // what the strategy prints passes the router: escaped, or into its log
         var thread = new Thread(Loop) { IsBackground = true, Name = $"strategy team {team}" };
         thread.Start();
     }
@@ -146,11 +147,8 @@ internal sealed class IsolatedStrategyRunner
             var drawings = _drawings;
             drawings?.Enter(_fish);
             var log = _log;
-            if (log is not null)
-            {
-                log.Clear();
-                ConsoleRouter.Enter(log);
-            }
+            log?.Clear();
+            ConsoleRouter.Enter(log); // without a log, what it prints still reaches the console escaped
 
             _clock.CallStarting();
             try
@@ -168,10 +166,7 @@ internal sealed class IsolatedStrategyRunner
                     DebugRecorder.Exit();
                 }
 
-                if (log is not null)
-                {
-                    ConsoleRouter.Exit();
-                }
+                ConsoleRouter.Exit();
             }
 
             (_cpu, _wall) = _clock.CallEnded();

@@ -38,15 +38,17 @@ public sealed class HostileTextTests : IDisposable
 
     [Attack("faults", "control or escape characters")]
     [Theory]
-    [InlineData("off", false)]
-    [InlineData("auto", false)]
-    [InlineData("auto", true)]
-    public void Escape_sequences_in_a_strategys_messages_and_printed_lines_never_reach_the_terminal(string sandbox, bool strategyLog)
+    [InlineData("process", "off", false)]
+    [InlineData("process", "auto", false)]
+    [InlineData("process", "auto", true)]
+    [InlineData("none", "off", false)]
+    [InlineData("none", "off", true)]
+    public void Escape_sequences_in_a_strategys_messages_and_printed_lines_never_reach_the_terminal(string isolation, string sandbox, bool strategyLog)
     {
         // Clears the screen, sets the window title, rings the bell, a C1 control sequence introducer:
         // printed to standard output and error (the server passes them on), then thrown.
-        var arguments = new System.Collections.Generic.List<string> { "run", "--cycles", "3", "--strategy-timeout", "1000", "--sandbox", sandbox, "--strategy",
-            "0=" + Sdk("Painter" + sandbox + strategyLog, """
+        var arguments = new System.Collections.Generic.List<string> { "run", "--cycles", "3", "--strategy-timeout", "1000", "--isolation", isolation, "--sandbox", sandbox, "--strategy",
+            "0=" + Sdk("Painter" + isolation + sandbox + strategyLog, """
                 Console.WriteLine("out \u001b[2J\u001b]0;owned\u0007 x");
                 Console.Error.Write("err \u009b31m red\n");
                 throw new Exception("\u001b[2J\u001b]0;owned\u0007 and \u009b31m red");
