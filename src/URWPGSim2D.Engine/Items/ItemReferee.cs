@@ -140,7 +140,7 @@ public abstract class ItemReferee : ITraceItemInfo
         UpdateVariables(world);
     }
 
-    /// <summary>Whether <see cref="Restart"/> can put this item's referee back to the state of a new one.</summary>
+    /// <summary>Whether <see cref="RestartInPlace"/> can put this item's referee back to the state of a new one.</summary>
     internal virtual bool CanRestart => false;
 
     /// <summary>
@@ -149,7 +149,7 @@ public abstract class ItemReferee : ITraceItemInfo
     /// their start poses): a match restarted in place.
     /// </summary>
     /// <exception cref="InvalidOperationException">The item's referee cannot restart (<see cref="CanRestart"/>).</exception>
-    internal void Restart(World world)
+    internal void RestartInPlace(World world)
     {
         if (!CanRestart)
         {
@@ -168,7 +168,7 @@ public abstract class ItemReferee : ITraceItemInfo
         Start(world);
     }
 
-    /// <summary>Back to the item's own state of a new referee (<see cref="Restart"/>).</summary>
+    /// <summary>Back to the item's own state of a new referee (<see cref="RestartInPlace"/>).</summary>
     private protected virtual void OnRestart()
     {
     }

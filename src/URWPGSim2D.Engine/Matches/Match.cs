@@ -116,7 +116,7 @@ public sealed class Match
     /// Whether <see cref="Restart"/> can put this match back to its start: an item whose referee
     /// restarts in place (polo), and built-in or pushed strategies on every seat.
     /// </summary>
-    internal bool CanRestart => Referee is { CanRestart: true } && Teams is StrategyTeams { CanRestart: true };
+    public bool CanRestart => Referee is { CanRestart: true } && Teams is StrategyTeams { CanRestart: true };
 
     /// <summary>
     /// Puts the match back to cycle 0 of a new match of the same scenario, teams and noise with
@@ -125,8 +125,8 @@ public sealed class Match
     /// built anew plays. Allocates nothing.
     /// </summary>
     /// <param name="seed">The seed of the noise (the item's layout must not depend on it: <see cref="CanRestart"/>).</param>
-    /// <exception cref="InvalidOperationException">The match cannot restart in place (<see cref="CanRestart"/>).</exception>
-    internal void Restart(ulong seed)
+    /// <exception cref="System.InvalidOperationException">The match cannot restart in place (<see cref="CanRestart"/>).</exception>
+    public void Restart(ulong seed)
     {
         if (!CanRestart)
         {
@@ -153,7 +153,7 @@ public sealed class Match
         Statistics.Restart();
         ((StrategyTeams)Teams).Restart();
         _observedCycle = -1;
-        Rules.Restart(World);
+        Rules.RestartInPlace(World);
     }
 
     /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>
