@@ -82,59 +82,24 @@ public static class CompilerProcess
 
     private static byte[] Run(string name, string path, IReadOnlyList<string> files, HostSettings settings, bool sandbox, SandboxCgroup? cgroup, string scratch, string image, Action<string>? note, int timeLimitSeconds, Action<int>? started)
     {
-        var command = new List<string>();
-        if (cgroup is not null)
-        {
-            command.AddRange(cgroup.Wrapper());
-        }
-
         string server = HostProcess.ServerAssembly;
+        List<string>? bubblewrap = null;
         if (sandbox)
         {
             var readOnly = new List<string> { HostProcess.DotnetRoot(), Path.GetDirectoryName(server)!, Path.GetFullPath(path) };
-            command.Add(Sandbox.Bwrap);
-            command.AddRange(Sandbox.Arguments(readOnly, scratch, HostProcess.ChildEnvironment(scratch, settings.MemoryMb), (long)settings.ScratchMb * 1024 * 1024, [Path.GetDirectoryName(image)!]));
+            bubblewrap = Sandbox.Arguments(readOnly, scratch, HostProcess.ChildEnvironment(scratch, settings.MemoryMb), (long)settings.ScratchMb * 1024 * 1024, [Path.GetDirectoryName(image)!]);
         }
 
-        if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
-        {
-            // Soft CPU limit at the time limit (SIGXCPU, read below as "took longer"), the hard one a
-            // second later as a backstop: with both equal the kernel sends SIGKILL at once, which reads as a crash.
-            command.AddRange(["/usr/bin/prlimit", string.Create(CultureInfo.InvariantCulture, $"--cpu={timeLimitSeconds}:{timeLimitSeconds + 1}"), "--core=0"]);
-            if (cgroup is null)
-            {
-                command.Add(string.Create(CultureInfo.InvariantCulture, $"--as={((long)settings.MemoryMb + AddressSpaceMb) * 1024 * 1024}"));
-            }
-
-            command.Add("--");
-        }
-
-        command.AddRange([HostProcess.DotnetProgram, server, Command, name, Path.GetFullPath(image)]);
+        var program = new List<string> { HostProcess.DotnetProgram, server, Command, name, Path.GetFullPath(image) };
         foreach (string file in files)
         {
-            command.Add(file);
-            command.Add(Path.GetFullPath(file));
+            program.Add(file);
+            program.Add(Path.GetFullPath(file));
         }
 
-        var start = new ProcessStartInfo(command[0])
-        {
-            UseShellExecute = false,
-            RedirectStandardInput = true,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            WorkingDirectory = scratch,
-        };
-        for (int i = 1; i < command.Count; i++)
-        {
-            start.ArgumentList.Add(command[i]);
-        }
-
-        start.Environment.Clear();
-        foreach (var pair in HostProcess.ChildEnvironment(scratch, settings.MemoryMb))
-        {
-            start.Environment[pair.Key] = pair.Value;
-        }
-
+        // Without a control group the address space bounds the compiler's memory instead.
+        long addressSpace = cgroup is null ? ((long)settings.MemoryMb + AddressSpaceMb) * 1024 * 1024 : 0;
+        var start = SandboxCommand.Create(cgroup, bubblewrap, timeLimitSeconds, addressSpace, program, scratch, HostProcess.ChildEnvironment(scratch, settings.MemoryMb));
         using var process = Process.Start(start) ?? throw new StrategyLoadException("the compiler did not start");
         started?.Invoke(process.Id);
         process.StandardInput.Close();

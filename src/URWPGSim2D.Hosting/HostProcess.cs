@@ -5,6 +5,7 @@ using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
 using System.Threading;
+using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
@@ -128,45 +129,15 @@ public sealed class HostProcess : IStrategyLink
         string dotnetRoot = DotnetRoot();
         var environment = ChildEnvironment(scratch, settings.MemoryMb);
 
-        var command = new List<string>();
         var cgroup = HostCgroup.Create(settings);
-        if (cgroup is not null)
-        {
-            command.AddRange(cgroup.Wrapper());
-        }
-
+        List<string>? bubblewrap = null;
         if (sandbox)
         {
             var paths = new List<string>(readOnly) { dotnetRoot, Path.GetDirectoryName(server)! };
-            command.Add(Sandbox.Bwrap);
-            command.AddRange(Sandbox.Arguments(paths, scratch, environment, (long)settings.ScratchMb * 1024 * 1024));
+            bubblewrap = Sandbox.Arguments(paths, scratch, environment, (long)settings.ScratchMb * 1024 * 1024);
         }
 
-        if (OperatingSystem.IsLinux() && File.Exists("/usr/bin/prlimit"))
-        {
-            command.AddRange(["/usr/bin/prlimit", $"--cpu={cpuSeconds}", "--core=0", "--"]);
-        }
-
-        command.AddRange([DotnetProgram, server, "host", loadSpec]);
-        var start = new ProcessStartInfo(command[0])
-        {
-            UseShellExecute = false,
-            RedirectStandardInput = true,
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            WorkingDirectory = scratch,
-        };
-        for (int i = 1; i < command.Count; i++)
-        {
-            start.ArgumentList.Add(command[i]);
-        }
-
-        start.Environment.Clear();
-        foreach (var pair in environment)
-        {
-            start.Environment[pair.Key] = pair.Value;
-        }
-
+        var start = SandboxCommand.Create(cgroup, bubblewrap, cpuSeconds, 0, [DotnetProgram, server, "host", loadSpec], scratch, environment);
         Process process;
         try
         {
@@ -355,7 +326,7 @@ public sealed class HostProcess : IStrategyLink
     {
         try
         {
-            Console.Error.WriteLine(line.ToString());
+            Console.Error.WriteLine(MessageText.Escape(line.ToString())); // a strategy's escape sequences never reach the terminal as themselves
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException)
         {

@@ -6,12 +6,15 @@ namespace URWPGSim2D.Hosting;
 
 /// <summary>
 /// This run's private temporary folder (<c>$TMPDIR/urwpgsim2d-PID-RANDOM</c>): strategies compiled
-/// once per run and each host's scratch folder. Deleted when the program exits.
+/// once per run and each host's scratch folder. Deleted when the program exits; the folders of
+/// servers killed before they could delete theirs are deleted by the next run that makes one.
 /// </summary>
 internal static class RunFolder
 {
+    private const string LockName = ".lock";
     private static readonly Lazy<string> Root = new(Create);
     private static int _next;
+    private static FileStream? _lock;
 
     /// <summary>The run's folder (made on first use).</summary>
     public static string Path => Root.Value;
@@ -29,15 +32,70 @@ internal static class RunFolder
     /// </summary>
     public static void Delete(string folder)
     {
+        if (TryDelete(folder) is { } problem)
+        {
+            HostSandbox.Warn?.Invoke($"warning: cannot delete the temporary folder {folder}: {Engine.Messages.MessageText.Escape(problem).ReplaceLineEndings(" ")}");
+        }
+    }
+
+    /// <summary>
+    /// Deletes the folders of this kind that servers which no longer run left in <paramref name="temp"/>
+    /// (killed before they could delete them), quietly: one that cannot be deleted (another user's,
+    /// say) stays.
+    /// </summary>
+    /// <returns>How many were deleted.</returns>
+    internal static int SweepStale(string temp, Func<int, bool> running)
+    {
+        int deleted = 0;
+        try
+        {
+            foreach (string folder in Directory.EnumerateDirectories(temp, LeftBehind.Prefix + "*"))
+            {
+                if (LeftBehind.ByEndedServer(System.IO.Path.GetFileName(folder), running) && !InUse(folder) && TryDelete(folder) is null)
+                {
+                    deleted++;
+                }
+            }
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // a temporary folder this process may not list: nothing to sweep
+        }
+
+        return deleted;
+    }
+
+    // Whether a server still holds the folder's lock: one in another PID namespace (a container
+    // sharing this temporary folder) whose process id means nothing here.
+    private static bool InUse(string folder)
+    {
+        try
+        {
+            using var held = new FileStream(System.IO.Path.Combine(folder, LockName), FileMode.Open, FileAccess.Read, FileShare.None);
+            return false;
+        }
+        catch (FileNotFoundException)
+        {
+            return false;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            return true;
+        }
+    }
+
+    // Deletes the folder; null, or why it is still there.
+    private static string? TryDelete(string folder)
+    {
         string? problem = null;
         try
         {
             Directory.Delete(folder, recursive: true);
-            return;
+            return null;
         }
         catch (DirectoryNotFoundException)
         {
-            return;
+            return null;
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
@@ -56,7 +114,7 @@ internal static class RunFolder
         {
             if (!Directory.Exists(folder))
             {
-                return;
+                return null;
             }
         }
         catch (Exception e) when (e is not OutOfMemoryException)
@@ -64,7 +122,7 @@ internal static class RunFolder
             problem = e.Message;
         }
 
-        HostSandbox.Warn?.Invoke($"warning: cannot delete the temporary folder {folder}: {Engine.Messages.MessageText.Escape(problem ?? "unknown reason").ReplaceLineEndings(" ")}");
+        return problem ?? "unknown reason";
     }
 
     // Runs a tool for up to a minute; its first line of complaint, or null.
@@ -109,7 +167,12 @@ internal static class RunFolder
 
     private static string Create()
     {
-        string root = System.IO.Path.Combine(System.IO.Path.GetTempPath(), $"urwpgsim2d-{Environment.ProcessId}-{Guid.NewGuid():N}"[..40]);
+        if (!OperatingSystem.IsWindows())
+        {
+            _ = SweepStale(System.IO.Path.GetTempPath(), LeftBehind.Running);
+        }
+
+        string root = System.IO.Path.Combine(System.IO.Path.GetTempPath(), LeftBehind.Name($"{Guid.NewGuid():N}")[..40]);
         var info = Directory.CreateDirectory(root);
         if (!OperatingSystem.IsWindows())
         {
@@ -118,7 +181,13 @@ internal static class RunFolder
             File.SetUnixFileMode(root, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
         }
 
-        AppDomain.CurrentDomain.ProcessExit += (_, _) => Delete(info.FullName);
+        // Held while this process runs: the folder is in use, whatever its name says.
+        _lock = new FileStream(System.IO.Path.Combine(info.FullName, LockName), FileMode.CreateNew, FileAccess.ReadWrite, FileShare.None);
+        AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+        {
+            _lock.Dispose();
+            Delete(info.FullName);
+        };
         return info.FullName;
     }
 }

@@ -21,6 +21,7 @@ internal sealed partial class SandboxCgroup : IDisposable
 {
     private static readonly Lazy<Layout?> Found = new(Find);
     private static readonly Lazy<string?> Problem = new(Probe);
+    private static readonly Lazy<int> Swept = new(() => Found.Value is { } layout ? SweepStale(layout, LeftBehind.Running) : 0);
     private static int _next;
     private readonly string[] _folders;
     private readonly Layout _layout;
@@ -65,6 +66,9 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
     }
 
+    /// <summary>This machine's hierarchy for the groups of this process's hosts, or null where there is none.</summary>
+    internal static Layout? Machine => Found.Value;
+
     /// <summary>Why no group can be made here, or null when it can.</summary>
     public static string? Unavailable => Problem.Value;
 
@@ -84,8 +88,56 @@ internal sealed partial class SandboxCgroup : IDisposable
             return null;
         }
 
-        string name = "urwpgsim2d-" + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-" + Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture);
+        _ = Swept.Value;
+        string name = LeftBehind.Name(Interlocked.Increment(ref _next).ToString(CultureInfo.InvariantCulture));
         return Create(layout, name, memoryBytes, tasks, out problem);
+    }
+
+    /// <summary>
+    /// Ends and removes the groups that servers which no longer run left behind (a server killed
+    /// before it could remove its hosts' groups): every group named <c>urwpgsim2d-PID-…</c> in the
+    /// parents of <paramref name="layout"/> whose PID is not a running process (and not this one).
+    /// Whatever still runs in such a group (a daemon a strategy started, without bubblewrap) is
+    /// killed first. Groups of running servers are left alone.
+    /// </summary>
+    /// <param name="layout">The hierarchy.</param>
+    /// <param name="running">Whether a process with this id runs now.</param>
+    /// <returns>How many groups were removed.</returns>
+    internal static int SweepStale(Layout layout, Func<int, bool> running)
+    {
+        var stale = new SortedSet<string>(StringComparer.Ordinal);
+        foreach (string parent in layout.Parents)
+        {
+            try
+            {
+                foreach (string folder in Directory.EnumerateDirectories(parent, LeftBehind.Prefix + "*"))
+                {
+                    string name = Path.GetFileName(folder);
+                    if (LeftBehind.ByEndedServer(name, running))
+                    {
+                        stale.Add(name);
+                    }
+                }
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                // a parent this process may not list: nothing to sweep there
+            }
+        }
+
+        int removed = 0;
+        foreach (string name in stale)
+        {
+            string[] folders = Array.ConvertAll(layout.Parents, parent => Path.Combine(parent, name));
+            using (var group = new SandboxCgroup(layout, folders, 0))
+            {
+                // Dispose ends every process of the group and removes its folders.
+            }
+
+            removed += Array.TrueForAll(folders, folder => !Directory.Exists(folder)) ? 1 : 0;
+        }
+
+        return removed;
     }
 
     /// <summary>
@@ -450,7 +502,7 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         // Make (and remove) one group: the permission to do so is the question.
-        string name = "urwpgsim2d-" + Environment.ProcessId.ToString(CultureInfo.InvariantCulture) + "-probe";
+        string name = LeftBehind.Name("probe");
         foreach (string parent in Found.Value.Parents)
         {
             string folder = Path.Combine(parent, name);

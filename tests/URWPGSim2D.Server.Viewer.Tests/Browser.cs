@@ -17,6 +17,13 @@ public sealed class Browser : IAsyncLifetime
     /// <summary>Where Debian puts Chromium.</summary>
     public const string ChromiumPath = "/usr/bin/chromium";
 
+    /// <summary>
+    /// How long any wait of these tests (for a page, a server, a frame, a cycle) may last, ms. No test
+    /// waits for a time to pass: each waits for something to happen, and this bound is reached only
+    /// when it never does (a hang), never by a slow or busy machine, so no outcome depends on speed.
+    /// </summary>
+    public const int HangMs = 300_000;
+
     private IPlaywright? _playwright;
     private IBrowser? _browser;
 
@@ -55,6 +62,7 @@ public sealed class Browser : IAsyncLifetime
     public async Task<(IPage Page, List<string> Errors)> NewPageAsync()
     {
         var context = await Instance.NewContextAsync(new BrowserNewContextOptions { ViewportSize = new ViewportSize { Width = 1280, Height = 800 }, DeviceScaleFactor = 1 });
+        context.SetDefaultTimeout(HangMs); // clicks and waits for elements, too, are bounded only by a hang
         var page = await context.NewPageAsync();
         var errors = new List<string>();
         page.Console += (_, m) =>

@@ -24,7 +24,7 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 [Collection(BrowserCollection.Name)]
 public sealed class ControlBoardPageTests(Browser browser) : IDisposable
 {
-    private const int Wait = 60_000;
+    private const int Wait = Browser.HangMs;
     private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-board-page-" + Guid.NewGuid().ToString("N"));
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);

@@ -22,7 +22,7 @@ namespace URWPGSim2D.Server.Viewer.Tests;
 [Collection(BrowserCollection.Name)]
 public sealed class LiveViewTests(Browser browser)
 {
-    private const int Wait = 20_000;
+    private const int Wait = Browser.HangMs;
 
     private sealed record Live(string Url, CancellationTokenSource Stop, Task<int> Served, StringWriter Out, StringWriter Error);
 

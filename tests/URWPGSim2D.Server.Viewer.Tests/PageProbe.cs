@@ -32,7 +32,7 @@ internal static class PageProbe
         };
         await page.Context.RouteAsync("**/*", route => route.Request.Url == url ? route.ContinueAsync() : route.AbortAsync());
         await page.GotoAsync(url + fragment);
-        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = 15_000 });
+        await page.WaitForFunctionAsync("() => window.urwpg && urwpg.firstFrameAt !== null", null, new() { Timeout = Browser.HangMs });
         return (page, errors, requests);
     }
 

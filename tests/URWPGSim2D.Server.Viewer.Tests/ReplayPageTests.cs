@@ -213,7 +213,7 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
         await Scrub(page, 100);
         await page.SelectOptionAsync("#speed", "16");
         await page.ClickAsync("#play");
-        await page.WaitForFunctionAsync("() => urwpg.cycle >= 130", null, new() { Timeout = 20_000 });
+        await page.WaitForFunctionAsync("() => urwpg.cycle >= 130", null, new() { Timeout = Browser.HangMs });
         await page.ClickAsync("#play");
         int held = await Cycle(page);
         Assert.False(await page.EvaluateAsync<bool>("() => urwpg.playing"));
@@ -225,7 +225,7 @@ public sealed class ReplayPageTests(Browser browser, RecordedMatch match)
         // Keyboard: space plays and pauses, + and − change the speed.
         await page.ClickAsync("#pool");
         await page.Keyboard.PressAsync("Space");
-        await page.WaitForFunctionAsync($"() => urwpg.cycle > {held}", null, new() { Timeout = 20_000 });
+        await page.WaitForFunctionAsync($"() => urwpg.cycle > {held}", null, new() { Timeout = Browser.HangMs });
         await page.Keyboard.PressAsync("Space");
         Assert.False(await page.EvaluateAsync<bool>("() => urwpg.playing"));
         await page.Keyboard.PressAsync("-");

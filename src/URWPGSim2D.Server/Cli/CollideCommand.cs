@@ -16,38 +16,20 @@ namespace URWPGSim2D.Server.Cli;
 /// <see cref="FishCollision"/> followed by <c>"partA"</c> and <c>"partB"</c>. Every pair is
 /// validated before anything is written: on bad input stdout stays empty.
 /// </summary>
-internal sealed class CollideCommand : ICliCommand
+internal sealed class CollideCommand : JsonFileCommand
 {
     /// <summary>The user-facing name of the input array, the root of every error path.</summary>
     public const string RootName = "pairs";
 
-    /// <inheritdoc />
-    public string Name => "collide";
-
-    /// <inheritdoc />
-    public string Synopsis => "collide FILE";
-
-    /// <inheritdoc />
-    public string Summary => "Test pairs of shapes from a JSON file for collision; results as JSON on stdout.";
-
-    private static readonly Option<bool> HelpOption = CliSyntax.Help();
-
-    /// <inheritdoc />
-    public Command Syntax { get; } = CliSyntax.Command("collide", "pairs of shapes (JSON), - for stdin", FileArgument.Declare("pairs of shapes (JSON), - for stdin"), HelpOption);
-
-    private string Usage => $"{CliApp.ProgramName} {Synopsis}";
-
-    /// <inheritdoc />
-    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    /// <summary>Declares the command.</summary>
+    public CollideCommand()
+        : base("collide", "Test pairs of shapes from a JSON file for collision; results as JSON on stdout.", "pairs of shapes (JSON), - for stdin")
     {
-        if (words.Count == 1 && words[0].Option == HelpOption)
-        {
-            console.Out.Write(HelpText());
-            return ExitCodes.Success;
-        }
+    }
 
-        string file = FileArgument.Parse(Name, words, Syntax, Usage);
-        string text = InputText.Read(file, console.In);
+    /// <inheritdoc />
+    protected override string Answer(string text)
+    {
         var pairs = ReadPairs(text);
         var contacts = new FishContact[pairs.Length];
         var withParts = new bool[pairs.Length];
@@ -57,8 +39,7 @@ internal sealed class CollideCommand : ICliCommand
             withParts[i] = InputCollision.HasParts(pairs[i].A, pairs[i].B);
         }
 
-        console.Out.Write(CollideOutput.Format(contacts, withParts) + "\n");
-        return ExitCodes.Success;
+        return CollideOutput.Format(contacts, withParts) + "\n";
     }
 
     /// <summary>Parses and validates the whole input; the first problem in document order is reported.</summary>
@@ -92,7 +73,8 @@ internal sealed class CollideCommand : ICliCommand
         _ => null,
     };
 
-    private string HelpText() =>
+    /// <inheritdoc />
+    protected override string HelpText() =>
         ($$"""
         Usage: {{Usage}}
 

@@ -22,17 +22,15 @@ internal sealed class CompletionCommand : ICliCommand
     public string Name => "completion";
 
     /// <inheritdoc/>
-    public string Synopsis => "completion bash|zsh|pwsh";
+    public string Synopsis => $"{Name} {Line.Text}";
 
     /// <inheritdoc/>
     public string Summary => "Print the shell script that completes commands, options, items and strategies on Tab.";
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command(
-        "completion",
-        "Print the shell's completion script.",
-        HelpOption,
-        CliSyntax.Positional("SHELL", "bash, zsh or pwsh", CliCompletions.Fixed([.. Shells])));
+    public Command Syntax { get; } = CliSyntax.Command("completion", "Print the shell's completion script.", Line, HelpOption);
+
+    private static readonly UsageLine Line = new(CliSyntax.Positional(string.Join('|', Shells), "bash, zsh or pwsh", CliCompletions.Fixed([.. Shells])));
 
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 

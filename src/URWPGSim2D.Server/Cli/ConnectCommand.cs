@@ -31,23 +31,22 @@ internal sealed class ConnectCommand : ICliCommand
     public string Name => "connect";
 
     /// <inheritdoc/>
-    public string Synopsis => "connect HOST:PORT SPEC [--token T] [--wait SECONDS]";
+    public string Synopsis => $"{Name} {Line.Text}";
 
     /// <inheritdoc/>
     public string Summary => "Play one team's strategy for a server that waits for it (run --strategy TEAM=remote:PORT; docs/protocol.md).";
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command(
-        "connect",
-        "Play one team's strategy for a server that waits for it.",
-        CliSyntax.Positional("HOST:PORT SPEC", "the server's address and the strategy", CliCompletions.Strategies),
-        TokenOption,
-        WaitOption,
-        HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("connect", "Play one team's strategy for a server that waits for it.", Line, HelpOption);
 
     private static readonly Option<bool> HelpOption = CliSyntax.Help();
     private static readonly Option<string> TokenOption = CliSyntax.Value("--token", "T", "the token the server was given (--remote-token)");
-    private static readonly Option<string> WaitOption = CliSyntax.Value("--wait", "SECONDS", "keep trying to reach the server this long");
+    private static readonly Option<string> WaitOption = CliSyntax.Value("--wait", "SECONDS", $"keep trying to reach the server this long (default {DefaultWaitSeconds})");
+
+    private static readonly UsageLine Line = new(
+        CliSyntax.Positional("HOST:PORT SPEC", "the server's address and the strategy", CliCompletions.Strategies),
+        UsageLine.Optional(TokenOption),
+        UsageLine.Optional(WaitOption));
 
     /// <inheritdoc/>
     public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
@@ -58,8 +57,7 @@ internal sealed class ConnectCommand : ICliCommand
                 $"Usage: {CliApp.ProgramName} {Synopsis}\n\n" +
                 "Connects to a server that waits for a remote team (run --strategy TEAM=remote:PORT) and plays the strategy\n" +
                 "SPEC for it (a built-in name, .dll, .cs file or folder, as --strategy TEAM=SPEC) until the match ends.\n" +
-                "  --token T         the token the server was given (--remote-token)\n" +
-                $"  --wait SECONDS    keep trying to reach the server this long (default {DefaultWaitSeconds})\n" +
+                Line.OptionTable(18) +
                 "Exit codes: 0 the match ended, 2 bad arguments, 3 the strategy cannot be loaded, 4 its constructor threw,\n" +
                 "5 the server cannot be reached, broke the protocol or closed the connection, 6 the server refused the client.\n");
             return ExitCodes.Success;

@@ -28,15 +28,17 @@ internal sealed class HostCommand : ICliCommand
     public string Name => "host";
 
     /// <inheritdoc/>
-    public string Synopsis => "host SPEC";
+    public string Synopsis => $"{Name} {Line.Text}";
 
     /// <inheritdoc/>
     public string Summary => "Play one team's strategy for 'run' over standard input/output (the strategy host; docs/protocol.md).";
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command("host", "Play one team's strategy over standard input/output.", CliSyntax.Positional("SPEC", "the strategy", CliCompletions.Strategies), HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("host", "Play one team's strategy over standard input/output.", Line, HelpOption);
 
     private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    private static readonly UsageLine Line = new(CliSyntax.Positional("SPEC", "the strategy", CliCompletions.Strategies));
 
     /// <inheritdoc/>
     public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)

@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Frozen;
+using System.Linq;
 using System.CommandLine;
 using System.Globalization;
 using URWPGSim2D.Engine.Messages;
@@ -15,21 +17,22 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal static class HostOptions
 {
-    /// <summary>The options in a usage line.</summary>
-    public const string Usage = "[--isolation process|none] [--sandbox auto|required|off] [--strategy-memory MB] [--strategy-scratch MB] [--strategy-processes N]";
+    // The options' names, from their declarations.
+    private static readonly FrozenSet<string> Names =
+        Declare().SelectMany(t => t.Symbols).OfType<Option>().Select(o => o.Name).ToFrozenSet(StringComparer.Ordinal);
 
-    /// <summary>The options' declarations, new for each command that takes them.</summary>
-    public static Option[] Declare() =>
+    /// <summary>The options' declarations in a usage line (each optional), new for each command that takes them.</summary>
+    public static UsageLine.Term[] Declare() =>
     [
-        CliSyntax.Value("--isolation", "process|none", "where user strategies run", CliCompletions.Fixed("process", "none")),
-        CliSyntax.Value("--sandbox", "auto|required|off", "whether strategy hosts run in the sandbox", CliCompletions.Fixed("auto", "required", "off")),
-        CliSyntax.Value("--strategy-memory", "MB", "a strategy host's heap limit"),
-        CliSyntax.Value("--strategy-scratch", "MB", "size of a sandboxed host's scratch folder and /tmp"),
-        CliSyntax.Value("--strategy-processes", "N", "most processes and threads of a host's sandbox"),
+        UsageLine.Optional(CliSyntax.Value("--isolation", "process|none", "where user strategies run", CliCompletions.Fixed("process", "none"))),
+        UsageLine.Optional(CliSyntax.Value("--sandbox", "auto|required|off", "whether strategy hosts run in the sandbox", CliCompletions.Fixed("auto", "required", "off"))),
+        UsageLine.Optional(CliSyntax.Value("--strategy-memory", "MB", "a strategy host's heap limit")),
+        UsageLine.Optional(CliSyntax.Value("--strategy-scratch", "MB", "size of a sandboxed host's scratch folder and /tmp")),
+        UsageLine.Optional(CliSyntax.Value("--strategy-processes", "N", "most processes and threads of a host's sandbox")),
     ];
 
     /// <summary>Whether <paramref name="name"/> is one of these options.</summary>
-    public static bool Is(string name) => name is "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes";
+    public static bool Is(string name) => Names.Contains(name);
 
     /// <summary><paramref name="settings"/> with the option <paramref name="name"/> set to <paramref name="value"/>.</summary>
     /// <param name="settings">The settings so far.</param>

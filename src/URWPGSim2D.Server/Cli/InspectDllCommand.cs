@@ -15,9 +15,11 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class InspectDllCommand : ICliCommand
 {
-    private const string Usage = "inspect-dll FILE";
-
     private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    private static readonly UsageLine Line = new(CliSyntax.Positional("FILE", "the strategy DLL", CliCompletions.Paths));
+
+    private static string Usage => "inspect-dll " + Line.Text;
 
     /// <inheritdoc/>
     public string Name => "inspect-dll";
@@ -29,7 +31,7 @@ internal sealed class InspectDllCommand : ICliCommand
     public string Summary => "Tell what a strategy DLL is (framework, architecture, API, team name, items, references) and whether it will load.";
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command("inspect-dll", "Tell what a strategy DLL is and whether it will load.", CliSyntax.Positional("FILE", "the strategy DLL", CliCompletions.Paths), HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("inspect-dll", "Tell what a strategy DLL is and whether it will load.", Line, HelpOption);
 
     /// <inheritdoc/>
     public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)

@@ -17,14 +17,16 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class MergeCommand : ICliCommand
 {
-    private const string Usage = "merge [--out FILE [--force]] FILE...";
-
     private static readonly Option<bool> HelpOption = CliSyntax.Help();
     private static readonly Option<string> OutOption = CliSyntax.Value("--out", "FILE", "the merged result file to write", CliCompletions.Paths);
     private static readonly Option<bool> ForceOption = CliSyntax.Flag("--force", "replace an existing --out file");
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command("merge", "Combine the result files of a sharded batch.", OutOption, ForceOption, FileArgument.Declare("a shard's result file"), HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("merge", "Combine the result files of a sharded batch.", Line, HelpOption);
+
+    private static readonly UsageLine Line = new(UsageLine.Optional(OutOption, UsageLine.Optional(ForceOption)), UsageLine.Repeated(FileArgument.Declare("a shard's result file")));
+
+    private static string Usage => "merge " + Line.Text;
 
     /// <inheritdoc/>
     public string Name => "merge";

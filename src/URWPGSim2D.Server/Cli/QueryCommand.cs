@@ -10,41 +10,23 @@ namespace URWPGSim2D.Server.Cli;
 /// line per query (<see cref="QueryAnswers"/>). The whole input is validated before anything is
 /// computed or written: on bad input stdout stays empty.
 /// </summary>
-internal sealed class QueryCommand : ICliCommand
+internal sealed class QueryCommand : JsonFileCommand
 {
-    /// <inheritdoc />
-    public string Name => "query";
-
-    /// <inheritdoc />
-    public string Synopsis => "query FILE";
-
-    /// <inheritdoc />
-    public string Summary => "Distances, ray casts, shape casts and box overlaps over shapes from a JSON file.";
-
-    private static readonly Option<bool> HelpOption = CliSyntax.Help();
-
-    /// <inheritdoc />
-    public Command Syntax { get; } = CliSyntax.Command("query", "shapes and queries (JSON), - for stdin", FileArgument.Declare("shapes and queries (JSON), - for stdin"), HelpOption);
-
-    private string Usage => $"{CliApp.ProgramName} {Synopsis}";
-
-    /// <inheritdoc />
-    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    /// <summary>Declares the command.</summary>
+    public QueryCommand()
+        : base("query", "Distances, ray casts, shape casts and box overlaps over shapes from a JSON file.", "shapes and queries (JSON), - for stdin")
     {
-        if (words.Count == 1 && words[0].Option == HelpOption)
-        {
-            console.Out.Write(HelpText());
-            return ExitCodes.Success;
-        }
-
-        string file = FileArgument.Parse(Name, words, Syntax, Usage);
-        string text = InputText.Read(file, console.In);
-        var (shapes, queries) = QueryInput.Read(text);
-        console.Out.Write(QueryAnswers.Answer(shapes, queries));
-        return ExitCodes.Success;
     }
 
-    private string HelpText() =>
+    /// <inheritdoc />
+    protected override string Answer(string text)
+    {
+        var (shapes, queries) = QueryInput.Read(text);
+        return QueryAnswers.Answer(shapes, queries);
+    }
+
+    /// <inheritdoc />
+    protected override string HelpText() =>
         ($$"""
         Usage: {{Usage}}
 

@@ -21,7 +21,7 @@ internal sealed class RenderCommand : ICliCommand
     public string Name => "render";
 
     /// <inheritdoc />
-    public string Synopsis => "render FILE --svg OUT";
+    public string Synopsis => $"{Name} {Line.Text}";
 
     /// <inheritdoc />
     public string Summary => "Draw shapes or pairs (fish trees, outer circles, MTV, normal, action point) as an SVG file.";
@@ -30,7 +30,9 @@ internal sealed class RenderCommand : ICliCommand
     private static readonly Option<string> SvgOption = CliSyntax.Value("--svg", "OUT", "the SVG file to write (- for stdout)", CliCompletions.Paths);
 
     /// <inheritdoc />
-    public Command Syntax { get; } = CliSyntax.Command("render", "Draw shapes or pairs as SVG.", FileArgument.Declare("shapes or pairs (JSON), - for stdin"), SvgOption, HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("render", "Draw shapes or pairs as SVG.", Line, HelpOption);
+
+    private static readonly UsageLine Line = new(FileArgument.Declare("shapes or pairs (JSON), - for stdin"), SvgOption);
 
     private string Usage => $"{CliApp.ProgramName} {Synopsis}";
 

@@ -223,7 +223,7 @@ internal sealed class RunCommand : ICliCommand
             string prefix = $"cycle {cycle}, team {slot.Team} ({slot.Label}): ";
             foreach (string line in text.EndsWith('\n') ? text[..^1].Split('\n') : text.Split('\n'))
             {
-                console.Error.Write(prefix + line + "\n");
+                console.ErrorLine(prefix + line); // escaped: what a strategy prints never reaches the terminal as control characters
             }
         }
     }

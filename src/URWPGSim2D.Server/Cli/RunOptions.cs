@@ -17,8 +17,8 @@ internal sealed class RunOptions
     /// <summary>The command's synopsis in the program's help.</summary>
     public const string Synopsis = "run [--item NAME | --scenario FILE] [options]";
 
-    /// <summary>The command's full usage.</summary>
-    public const string Usage = "run [--item NAME | --scenario FILE | --crowd N] [--minutes 10|5|3|1 | --cycles N] [--list-items] [--seed S] [--noise on|off] [--strategy TEAM=SPEC|TEAM=remote:PORT]... [--remote-wait SECONDS] [--remote-host ADDR] [--remote-token [TEAM=]TOKEN]... [--strategy-timeout MS] [--time-bank SECONDS] " + HostOptions.Usage + " [--trace FILE] [--svg FILE] [--html FILE] [--force] [--debug-draw] [--strategy-log] [--threads P] [--live [--port N] [--host H] [--speed X] [--paused] [--strategies DIR]] [--batch N [--shard I/K] [--results FILE]] [--slurm DIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]]";
+    /// <summary>The command's full usage (<see cref="RunSyntax.Usage"/>).</summary>
+    public static string Usage { get; } = "run " + RunSyntax.Usage.Text;
 
     /// <summary>Every long option of <c>run</c>, as declared (<see cref="RunSyntax"/>).</summary>
     public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(RunSyntax.Command);
@@ -288,7 +288,7 @@ internal sealed class RunOptions
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
                 case "--time-bank": o.TimeBank = System.TimeSpan.FromSeconds(Number(name, value, 0, 86_400)); break;
-                case "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
+                case var host when HostOptions.Is(host): o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--noise":
                     o.Noise = value switch { "on" => true, "off" => false, _ => throw UsageError($"--noise must be on or off, got {MessageText.Quote(value)}") };
                     break;
@@ -323,7 +323,7 @@ internal sealed class RunOptions
 
     // The options of --slurm itself, which the Slurm tasks do not pass on.
     private static bool IsSlurmOwn(string name) =>
-        name is "--slurm" or "--shards" or "--partition" or "--time" or "--results" or "--sbatch-arg" or "--slurm-setup" or "--submit";
+        name == "--results" || SlurmSyntax.Is(name);
 
     /// <summary>What <c>--strategy TEAM=</c> starts with for a remote team.</summary>
     public const string RemotePrefix = "remote:";

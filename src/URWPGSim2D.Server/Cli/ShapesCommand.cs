@@ -13,41 +13,23 @@ namespace URWPGSim2D.Server.Cli;
 /// a fish's eight leaf polygons and tree circles, another shape's polygon or circle and outer
 /// circle. Every SHAPE is validated before anything is written.
 /// </summary>
-internal sealed class ShapesCommand : ICliCommand
+internal sealed class ShapesCommand : JsonFileCommand
 {
-    /// <inheritdoc />
-    public string Name => "shapes";
-
-    /// <inheritdoc />
-    public string Synopsis => "shapes FILE";
-
-    /// <inheritdoc />
-    public string Summary => "Write the exact collision pieces (polygons, circles, fish leaves and tree) of shapes as JSON.";
-
-    private static readonly Option<bool> HelpOption = CliSyntax.Help();
-
-    /// <inheritdoc />
-    public Command Syntax { get; } = CliSyntax.Command("shapes", "shapes (JSON), - for stdin", FileArgument.Declare("shapes (JSON), - for stdin"), HelpOption);
-
-    private string Usage => $"{CliApp.ProgramName} {Synopsis}";
-
-    /// <inheritdoc />
-    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    /// <summary>Declares the command.</summary>
+    public ShapesCommand()
+        : base("shapes", "Write the exact collision pieces (polygons, circles, fish leaves and tree) of shapes as JSON.", "shapes (JSON), - for stdin")
     {
-        if (words.Count == 1 && words[0].Option == HelpOption)
-        {
-            console.Out.Write(HelpText());
-            return ExitCodes.Success;
-        }
-
-        string file = FileArgument.Parse(Name, words, Syntax, Usage);
-        var shapes = ShapesInput.Read(InputText.Read(file, console.In));
-        var pieces = Array.ConvertAll(shapes, ShapePiecesDto.From);
-        console.Out.Write(JsonSerializer.Serialize(pieces, OutputJsonContext.Default.ShapePiecesDtoArray) + "\n");
-        return ExitCodes.Success;
     }
 
-    private string HelpText() =>
+    /// <inheritdoc />
+    protected override string Answer(string text)
+    {
+        var pieces = Array.ConvertAll(ShapesInput.Read(text), ShapePiecesDto.From);
+        return JsonSerializer.Serialize(pieces, OutputJsonContext.Default.ShapePiecesDtoArray) + "\n";
+    }
+
+    /// <inheritdoc />
+    protected override string HelpText() =>
         ($$"""
         Usage: {{Usage}}
 

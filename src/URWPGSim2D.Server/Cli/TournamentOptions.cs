@@ -20,8 +20,8 @@ internal sealed class TournamentOptions
     /// <summary>The command's synopsis in the program's help.</summary>
     public const string Synopsis = "tournament --item ITEM --entrant NAME=SPEC... --out DIR [options]";
 
-    /// <summary>The command's full usage.</summary>
-    public const string Usage = "tournament --item ITEM (--entrant NAME=SPEC | --entrants-dir DIR)... [--seeds N] [--seed S] [--minutes 10|5|3|1 | --cycles N] [--strategy-timeout MS] " + HostOptions.Usage + " [--threads P] [--replays] [--format round-robin|groups-knockout [--groups G] [--advance K] [--final-seeds F] [--seeding NAME,...]] (--out DIR | --check) [--slurm SDIR [--shards K] [--partition P] [--time T] [--sbatch-arg ARG]... [--slurm-setup FILE] [--submit]] [--shard I/K --results FILE] [--merge FILE...]";
+    /// <summary>The command's full usage (<see cref="TournamentSyntax.Usage"/>).</summary>
+    public static string Usage { get; } = "tournament " + TournamentSyntax.Usage.Text;
 
     /// <summary>Most entrants.</summary>
     public const int MaximumEntrants = 1000;
@@ -231,7 +231,7 @@ internal sealed class TournamentOptions
                 throw UsageError($"{name} given twice");
             }
 
-            if (name is not ("--slurm" or "--shards" or "--partition" or "--time" or "--sbatch-arg" or "--slurm-setup" or "--shard" or "--results"))
+            if (!SlurmSyntax.Is(name) && name is not ("--shard" or "--results"))
             {
                 passedOn.Add(name);
                 passedOn.Add(value);
@@ -251,7 +251,7 @@ internal sealed class TournamentOptions
                     break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 1, 1_000_000); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;
-                case "--isolation" or "--sandbox" or "--strategy-memory" or "--strategy-scratch" or "--strategy-processes": o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
+                case var host when HostOptions.Is(host): o.HostSettings = HostOptions.Apply(o.HostSettings, name, value, UsageError); break;
                 case "--threads": o.Threads = (int)Number(name, value, 1, 1024); break;
                 case "--out": o.Out = value.Length > 0 ? value : throw UsageError("--out needs a folder, got \"\""); break;
                 case "--slurm": o.Slurm = value.Length > 0 ? value : throw UsageError("--slurm needs a folder, got \"\""); break;

@@ -20,14 +20,16 @@ namespace URWPGSim2D.Server.Cli;
 /// </summary>
 internal sealed class ViewCommand : ICliCommand
 {
-    private const string Usage = "view TRACE.jsonl --html FILE [--force]";
-
     private static readonly Option<bool> HelpOption = CliSyntax.Help();
     private static readonly Option<string> HtmlOption = CliSyntax.Value("--html", "FILE", "the replay page to write", CliCompletions.Paths);
     private static readonly Option<bool> ForceOption = CliSyntax.Flag("--force", "replace an existing --html file");
 
     /// <inheritdoc/>
-    public Command Syntax { get; } = CliSyntax.Command("view", "Build the replay page of a match from its trace.", CliSyntax.Positional("TRACE", "the match's trace (run --trace)", CliCompletions.Paths), HtmlOption, ForceOption, HelpOption);
+    public Command Syntax { get; } = CliSyntax.Command("view", "Build the replay page of a match from its trace.", Line, HelpOption);
+
+    private static readonly UsageLine Line = new(CliSyntax.Positional("TRACE.jsonl", "the match's trace (run --trace)", CliCompletions.Paths), HtmlOption, UsageLine.Optional(ForceOption));
+
+    private static string Usage => "view " + Line.Text;
 
     /// <inheritdoc/>
     public string Name => "view";

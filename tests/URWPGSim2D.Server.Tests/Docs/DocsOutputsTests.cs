@@ -139,6 +139,10 @@ public sealed class DocsOutputsTests
             "wall time: <T> s on <T> threads, <T> matches/s, <T>x real time",
             Transcript.Mask("wall time: 0.447 s on 2 threads, 8.94 matches/s, 2682x real time"));
         Assert.NotEqual(Transcript.Mask("match: 3000 cycles, 300.0 s simulated"), Transcript.Mask("match: 3001 cycles, 300.0 s simulated"));
+        const string Bank = "strategy time: 100 ms of CPU time a call, a time bank of 18.0 s a team for late calls:";
+        Assert.Equal(Transcript.Mask(Bank + " none drawn\nnext"), Transcript.Mask(Bank + "\n  team 0 (toward the ball [SdkStrategy.cs]): 2 late calls, 0.153 s drawn, slowest call 230 ms\nnext"));
+        Assert.Equal(Transcript.Mask(Bank + " none drawn"), Transcript.Mask(Bank + "\n  team 0 (a): 1 late call, 0.050 s drawn, slowest call 150 ms\n  team 1 (b): 3 late calls, 0.612 s drawn, slowest call 305 ms"));
+        Assert.NotEqual(Transcript.Mask(Bank + " none drawn\n"), Transcript.Mask(Bank + "\n  team 0 (a): 40 late calls, 18.000 s drawn, bank spent, slowest call 900 ms\n"));
         Assert.Equal("goals: team 0 (chase-ball) 1, team 1 (chase-ball) 0", Transcript.Mask("goals: team 0 (chase-ball) 1, team 1 (chase-ball) 0"));
         Assert.True(Transcript.Matches("[1, ... ,9]", "[1,2,3,4,5,6,7,8,9]"));
         Assert.False(Transcript.Matches("[1, ... ,9]", "[1,2,3,4,5,6,7,8,0]"));

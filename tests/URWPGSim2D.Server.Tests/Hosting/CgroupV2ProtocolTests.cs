@@ -61,4 +61,25 @@ public sealed class CgroupV2ProtocolTests : IDisposable
         Assert.Null(SandboxCgroup.Create(layout, "g", 64L << 20, 64, out string? problem));
         Assert.StartsWith("cannot make a cgroup: ", problem, StringComparison.Ordinal);
     }
+
+    [Fact]
+    public void Groups_left_by_servers_that_no_longer_run_are_removed_and_the_others_kept()
+    {
+        int own = Environment.ProcessId;
+        string[] stale = ["urwpgsim2d-400001-1", "urwpgsim2d-400001-2", "urwpgsim2d-400002-probe"];
+        string[] kept = [$"urwpgsim2d-{own}-7", "urwpgsim2d-400003-1", "urwpgsim2d-x-1", "urwpgsim2d-", "another-400001-1"];
+        foreach (string name in stale.Concat(kept))
+        {
+            Directory.CreateDirectory(Path.Combine(_root, name));
+        }
+
+        var layout = new SandboxCgroup.Layout(true, [_root]) { CpuFolder = 0, UnifiedFolder = 0 };
+        var asked = new System.Collections.Generic.List<int>();
+
+        int removed = SandboxCgroup.SweepStale(layout, pid => { asked.Add(pid); return pid == 400003; });
+
+        Assert.Equal(3, removed);
+        Assert.Equal(kept.Order(StringComparer.Ordinal), Directory.GetDirectories(_root).Select(Path.GetFileName).Order(StringComparer.Ordinal));
+        Assert.DoesNotContain(own, asked); // this server's own groups are never in question
+    }
 }

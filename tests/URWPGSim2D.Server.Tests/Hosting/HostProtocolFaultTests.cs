@@ -55,6 +55,7 @@ public sealed class HostProtocolFaultTests : IDisposable
     private CliRun Run(string spec) =>
         CliRun.Of(string.Empty, "run", "--cycles", "8", "--strategy", "0=" + spec, "--strategy-timeout", "1000", "--sandbox", "required");
 
+    [Attack("faults", "it answers something unusable")]
     [Theory]
     [InlineData("Garbage", "\"this is not JSON\\n\"", "first: cycle 3: ")]
     [InlineData("WrongCycle", "\"{\\\"type\\\":\\\"decisions\\\",\\\"cycle\\\":99,\\\"decisions\\\":[[1,7],[1,7]]}\\n\"", "first: cycle 3: cycle: answered cycle 99, expected 2")]
@@ -68,6 +69,7 @@ public sealed class HostProtocolFaultTests : IDisposable
         Assert.StartsWith("0 exceptions, 0 timeouts, 1 bad answers; its fish kept their last decisions; " + first, faults, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "it answers something unusable")]
     [Fact]
     public void An_answer_to_an_earlier_cycle_is_skipped_not_charged()
     {
@@ -77,6 +79,7 @@ public sealed class HostProtocolFaultTests : IDisposable
         Assert.Contains("strategy faults: none\n", run.Stdout, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "a line longer than 65,536 bytes")]
     [Fact]
     public void A_line_over_the_limit_is_a_bad_answer_and_closes_the_connection()
     {
@@ -84,6 +87,7 @@ public sealed class HostProtocolFaultTests : IDisposable
         Assert.Equal("0 exceptions, 0 timeouts, 1 bad answers, strategy host ended in cycle 3; its fish kept their last decisions until then and stopped after; first: cycle 3: a line is longer than 65536 bytes", faults);
     }
 
+    [Attack("faults", "its host ends")]
     [Fact]
     public void A_line_cut_short_by_the_hosts_end_ends_the_host()
     {

@@ -18,6 +18,7 @@ public sealed class HostTimeTests : IDisposable
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
+    [Attack("sandbox", "CPU")]
     [Theory]
     [InlineData("auto")]
     [InlineData("off")]
@@ -77,6 +78,7 @@ public sealed class HostTimeTests : IDisposable
         return file;
     }
 
+    [Attack("faults", "its time bank is spent")]
     [Fact]
     public void A_strategy_that_sleeps_through_every_call_spends_its_bank_and_plays_idle()
     {
@@ -89,6 +91,7 @@ public sealed class HostTimeTests : IDisposable
         Assert.Matches(@"\n  team 0 \(Sleeper \[Sleeper\.cs\]\): [123] late calls?, 2\.000 s drawn, bank spent, slowest call \d+ ms\n", run.Stdout);
     }
 
+    [Attack("sandbox", "CPU")]
     [Fact]
     public void Work_in_child_processes_counts_against_the_strategys_time()
     {
@@ -124,6 +127,7 @@ public sealed class HostTimeTests : IDisposable
         Assert.Contains("first: cycle 2: time bank spent: ", run.Stdout, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "a call uses more than its deadline")]
     [Fact]
     public void The_same_tournament_twice_with_a_strategy_slow_every_twentieth_call_gives_the_same_results()
     {

@@ -41,6 +41,7 @@ public sealed class HostileCompileTests : IDisposable
         return file;
     }
 
+    [Attack("faults", "make the compiler swell or spin")]
     [Theory]
     [InlineData("process")]
     [InlineData("none")]
@@ -57,6 +58,7 @@ public sealed class HostileCompileTests : IDisposable
         Assert.True(allocated < ServerAllocationLimit, $"the server's thread allocated {allocated / (1024 * 1024)} MiB while the strategy was compiled");
     }
 
+    [Attack("faults", "make the compiler swell or spin")]
     [Fact]
     public void A_tournament_entrant_whose_sources_swell_the_compiler_forfeits_with_the_limit_named()
     {

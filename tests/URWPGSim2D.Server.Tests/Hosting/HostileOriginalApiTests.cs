@@ -39,6 +39,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         return line[(line.IndexOf("): ", StringComparison.Ordinal) + 3)..];
     }
 
+    [Attack("faults", "its host ends")]
     [Theory]
     [InlineData("Overflow", "if (cycle == 2) Recurse(0);", "static int Recurse(int n) { return Recurse(n + 1) + 1; }", 3, "killed by signal 6")]
     [InlineData("Exiter", "if (cycle == 4) Environment.Exit(7);", "", 5, "exit code 7")]
@@ -60,6 +61,8 @@ public sealed class HostileOriginalApiTests : IDisposable
         }
     }
 
+    [Attack("faults", "its host ends")]
+    [Attack("faults", "with `--isolation none`: a constructor")]
     [Theory]
     [InlineData("BadCtor", "public Strategy() { throw new InvalidOperationException(\"no team today\"); }", "no team today")]
     [InlineData("BadStatic", "static readonly int Never = int.Parse(\"not a number\"); public Strategy() { cycle = Never; }", "(FormatException: ")]
@@ -93,6 +96,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         }
     }
 
+    [Attack("faults", "its host stops answering altogether")]
     [Fact]
     public void A_strategy_that_hangs_never_answers_spends_its_bank_and_plays_idle_after()
     {
@@ -103,6 +107,8 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.Equal("0 exceptions, 1 timeouts, 0 bad answers, out of time in cycle 3; its fish kept their last decisions until then and stopped after; first: cycle 3: time bank spent: no answer within 5.0 s; the team plays idle for the rest of the match", Faults(run));
     }
 
+    [Attack("faults", "the strategy throws")]
+    [Attack("sandbox", "memory")]
     [Fact]
     public void A_memory_hog_past_the_limit_is_charged_and_the_match_is_played()
     {
@@ -114,6 +120,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.DoesNotContain("first: cycle 1", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "files")]
     [Fact]
     public void A_strategy_cannot_write_outside_its_scratch_folder()
     {
@@ -143,6 +150,8 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.Contains("scratch \" + File.ReadAllText", File.ReadAllText(home), StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "files")]
+    [Attack("sandbox", "environment")]
     [Fact]
     public void A_strategy_cannot_read_a_secret_or_the_servers_environment()
     {
@@ -164,6 +173,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.Contains("no token;", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "network")]
     [Fact]
     public void A_strategy_cannot_open_a_connection()
     {
@@ -196,6 +206,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         }
     }
 
+    [Attack("sandbox", "processes")]
     [Fact]
     public void A_strategy_cannot_find_or_kill_the_server()
     {
@@ -216,6 +227,7 @@ public sealed class HostileOriginalApiTests : IDisposable
         Assert.Contains("no signal;", faults, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "its host ends")]
     [Fact]
     public void A_batch_with_a_crashing_original_strategy_keeps_every_result_line()
     {

@@ -57,6 +57,7 @@ public sealed class HostileStrategyTests : IDisposable
         return line[(line.IndexOf("): ", StringComparison.Ordinal) + 3)..];
     }
 
+    [Attack("faults", "the strategy throws")]
     [Fact]
     public void A_strategy_that_throws_every_cycle_is_charged_every_cycle()
     {
@@ -65,6 +66,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Equal("20 exceptions, 0 timeouts, 0 bad answers; its fish kept their last decisions; first: cycle 1: InvalidOperationException: boom", Faults(run));
     }
 
+    [Attack("faults", "its host ends")]
     [Theory]
     [InlineData("Overflow", "if (s.Cycle == 2) Recurse(0);", "static int Recurse(int n) => Recurse(n + 1) + 1;", 3, "")]
     [InlineData("Exiter", "if (s.Cycle == 4) Environment.Exit(7);", "", 5, "exit code 7")]
@@ -80,6 +82,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Contains(how, faults, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "its host stops answering altogether")]
     [Fact]
     public void A_host_that_stops_answering_is_killed_when_its_bank_is_spent()
     {
@@ -91,6 +94,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Contains("\n  team 0 (Freezer [Freezer.cs]): 1 late call, 1.000 s drawn, bank spent, slowest call ", run.Stdout, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "its time bank is spent")]
     [Fact]
     public void A_strategy_that_spins_forever_spends_its_bank_and_the_match_goes_on_without_it()
     {
@@ -99,6 +103,8 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Equal("0 exceptions, 1 timeouts, 0 bad answers, out of time in cycle 4; its fish kept their last decisions until then and stopped after; first: cycle 4: time bank spent: no answer within 5.0 s; the team plays idle for the rest of the match", Faults(run));
     }
 
+    [Attack("faults", "the strategy throws")]
+    [Attack("sandbox", "memory")]
     [Fact]
     public void A_memory_bomb_hits_the_heap_limit_and_is_charged()
     {
@@ -107,6 +113,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.True(faults.Contains("OutOfMemoryException", StringComparison.Ordinal) || faults.Contains("strategy host ended", StringComparison.Ordinal), faults);
     }
 
+    [Attack("faults", "its host ends")]
     [Theory]
     [InlineData("BadCtor", "public BadCtor() { throw new InvalidOperationException(\"no team today\"); }")]
     [InlineData("BadStatic", "static readonly int Never = int.Parse(\"not a number\"); public BadStatic() { _ = Never; }")]
@@ -119,6 +126,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Contains("exit code 4: cannot create strategy " + name, faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "files")]
     [Fact]
     public void A_strategy_cannot_write_outside_its_scratch_folder()
     {
@@ -145,6 +153,8 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.StartsWith(Header, File.ReadAllText(home), StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "files")]
+    [Attack("sandbox", "environment")]
     [Fact]
     public void A_strategy_cannot_read_a_secret_or_another_teams_files_or_the_environment()
     {
@@ -168,6 +178,7 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Contains("no token;", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "network")]
     [Fact]
     public void A_strategy_cannot_open_a_connection()
     {
@@ -196,6 +207,7 @@ public sealed class HostileStrategyTests : IDisposable
         }
     }
 
+    [Attack("sandbox", "processes")]
     [Fact]
     public void A_strategy_cannot_see_or_signal_the_server()
     {
@@ -215,6 +227,28 @@ public sealed class HostileStrategyTests : IDisposable
         Assert.Contains("no signal;", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "user")]
+    [Attack("sandbox", "core dumps")]
+    [Fact]
+    public void A_strategy_runs_as_nobody_without_capabilities_or_core_dumps()
+    {
+        // The strategy reads its own user, capabilities and core-file limit from /proc and says them.
+        var run = Run(Sdk("Whoami", """
+            if (s.Cycle != 0) return;
+            string said = "";
+            foreach (string line in File.ReadAllLines("/proc/self/status"))
+                if (line.StartsWith("Uid:") || line.StartsWith("CapEff:") || line.StartsWith("CapBnd:")) said += line.Replace('\t', ' ') + ";";
+            foreach (string line in File.ReadAllLines("/proc/self/limits"))
+                if (line.StartsWith("Max core file size")) said += string.Join(" ", line.Split(' ', StringSplitOptions.RemoveEmptyEntries)) + ";";
+            throw new Exception(said);
+            """));
+        string faults = Faults(run);
+        Assert.Contains("Uid: 65534 65534 65534 65534;", faults, StringComparison.Ordinal); // nobody, in its own user namespace
+        Assert.Contains("CapEff: 0000000000000000;", faults, StringComparison.Ordinal);
+        Assert.Contains("Max core file size 0 0 bytes;", faults, StringComparison.Ordinal);
+    }
+
+    [Attack("faults", "its host ends")]
     [Fact]
     public void A_batch_with_a_crashing_strategy_keeps_every_result_line()
     {

@@ -36,22 +36,39 @@ public sealed class HostileTextTests : IDisposable
         return file;
     }
 
+    [Attack("faults", "control or escape characters")]
     [Theory]
-    [InlineData("off")]
-    [InlineData("auto")]
-    public void Escape_sequences_in_a_strategys_messages_never_reach_the_terminal(string sandbox)
+    [InlineData("off", false)]
+    [InlineData("auto", false)]
+    [InlineData("auto", true)]
+    public void Escape_sequences_in_a_strategys_messages_and_printed_lines_never_reach_the_terminal(string sandbox, bool strategyLog)
     {
-        // Clears the screen, sets the window title, rings the bell, a C1 control sequence introducer.
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "3", "--strategy-timeout", "1000", "--sandbox", sandbox, "--strategy",
-            "0=" + Sdk("Painter", "throw new Exception(\"\\u001b[2J\\u001b]0;owned\\u0007 and \\u009b31m red\");"));
-        Assert.True(run.ExitCode == 0, run.Stderr);
-        Assert.Contains("first: cycle 1: Exception: \\u001b[2J\\u001b]0;owned\\u0007 and \\u009b31m red", run.Stdout, StringComparison.Ordinal);
-        foreach (char c in run.Stdout + run.Stderr)
+        // Clears the screen, sets the window title, rings the bell, a C1 control sequence introducer:
+        // printed to standard output and error (the server passes them on), then thrown.
+        var arguments = new System.Collections.Generic.List<string> { "run", "--cycles", "3", "--strategy-timeout", "1000", "--sandbox", sandbox, "--strategy",
+            "0=" + Sdk("Painter" + sandbox + strategyLog, """
+                Console.WriteLine("out \u001b[2J\u001b]0;owned\u0007 x");
+                Console.Error.Write("err \u009b31m red\n");
+                throw new Exception("\u001b[2J\u001b]0;owned\u0007 and \u009b31m red");
+                """) };
+        if (strategyLog)
+        {
+            arguments.Add("--strategy-log");
+        }
+
+        // The real program, with its own standard output and error: what reaches the terminal.
+        var (code, stdout, stderr) = Docs.DocsOutputsTests.RunServer(string.Empty, [.. arguments]);
+        Assert.True(code == 0, stderr);
+        Assert.Contains("first: cycle 1: Exception: \\u001b[2J\\u001b]0;owned\\u0007 and \\u009b31m red", stdout, StringComparison.Ordinal);
+        Assert.Contains("out \\u001b[2J\\u001b]0;owned\\u0007 x\n", stderr, StringComparison.Ordinal);
+        Assert.Contains("err \\u009b31m red\n", stderr, StringComparison.Ordinal);
+        foreach (char c in stdout + stderr)
         {
             Assert.False(char.IsControl(c) && c != '\n', $"control character U+{(int)c:X4} in the output");
         }
     }
 
+    [Attack("faults", "its folder holds a symbolic link")]
     [Fact]
     public void A_symbolic_link_in_a_strategy_folder_is_refused_with_one_line_and_never_read()
     {
@@ -75,6 +92,7 @@ public sealed class HostileTextTests : IDisposable
         Assert.Equal($"--strategy 0: {Path.Combine(team, "more")} is a symbolic link: only regular files inside the strategy's folder are read\n", run.Stderr);
     }
 
+    [Attack("faults", "it prints without end")]
     [Fact]
     public async System.Threading.Tasks.Task A_gigabyte_on_standard_error_without_a_line_break_leaves_the_server_small()
     {

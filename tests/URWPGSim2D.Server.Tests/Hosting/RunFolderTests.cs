@@ -47,6 +47,7 @@ public sealed class RunFolderTests : IDisposable
         return root;
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_folder_of_any_depth_names_and_permissions_is_deleted_without_a_warning()
     {
@@ -68,6 +69,7 @@ public sealed class RunFolderTests : IDisposable
         Assert.Equal("gone", Sh($"[ -e '{root}' ] || echo gone").Trim());
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_folder_that_cannot_be_deleted_is_one_warning_line_not_an_exception()
     {
@@ -104,6 +106,7 @@ public sealed class RunFolderTests : IDisposable
         }
     }
 
+    [Attack("faults", "it buries its scratch folder")]
     [Fact]
     public void A_strategy_that_buries_its_scratch_folder_does_not_fail_the_match_and_leaves_nothing()
     {
@@ -133,5 +136,39 @@ public sealed class RunFolderTests : IDisposable
         string scratch = run.Stdout[(at + 3)..run.Stdout.IndexOf(';', at)];
         Assert.Contains("scratch-", scratch, StringComparison.Ordinal);
         Assert.Equal("gone", Sh($"[ -e '{scratch}' ] || echo gone").Trim());
+    }
+
+    [Attack("faults", "it buries its scratch folder")]
+    [Fact]
+    public void Folders_of_servers_that_no_longer_run_are_deleted_the_others_kept()
+    {
+        // A dead server's folder (buried, as a strategy may leave it), a running one's, one whose lock
+        // a server in another PID namespace still holds, this process's own, and strangers.
+        string dead = Path.Combine(_folder, "urwpgsim2d-400001-0123456789abcdef0123456789");
+        Directory.CreateDirectory(dead);
+        Nasty(dead);
+        string running = Path.Combine(_folder, "urwpgsim2d-400002-0123456789abcdef0123456789");
+        string locked = Path.Combine(_folder, "urwpgsim2d-400003-0123456789abcdef0123456789");
+        string own = Path.Combine(_folder, $"urwpgsim2d-{Environment.ProcessId}-0123456789abcdef01234");
+        string[] kept = [running, locked, own, Path.Combine(_folder, "urwpgsim2d-notapid-1"), Path.Combine(_folder, "other-400001-1")];
+        foreach (string folder in kept)
+        {
+            Directory.CreateDirectory(folder);
+        }
+
+        using (var held = new FileStream(Path.Combine(locked, ".lock"), FileMode.CreateNew, FileAccess.ReadWrite, FileShare.None))
+        {
+            Assert.Equal(1, RunFolder.SweepStale(_folder, pid => pid == 400002));
+        }
+
+        Assert.Equal(string.Empty, Sh($"ls -d '{dead}' 2>/dev/null"));
+        foreach (string folder in kept)
+        {
+            Assert.True(Directory.Exists(folder), folder);
+        }
+
+        // Once its lock is let go, the folder of the other namespace's server is left behind too.
+        Assert.Equal(1, RunFolder.SweepStale(_folder, pid => pid == 400002));
+        Assert.False(Directory.Exists(locked));
     }
 }

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
@@ -116,6 +117,7 @@ public sealed class SandboxLimitTests : IDisposable
         }
         """;
 
+    [Attack("sandbox", "processes")]
     [Fact]
     public void Daemons_a_strategy_starts_in_new_sessions_end_with_its_sandbox()
     {
@@ -154,6 +156,7 @@ public sealed class SandboxLimitTests : IDisposable
 
         """;
 
+    [Attack("sandbox", "processes")]
     [Theory]
     [InlineData(true)] // the first process ends by itself, as a host does at the end of its match: its bubblewrap ends the namespace
     [InlineData(false)] // the server ends the sandbox while its first process runs
@@ -209,6 +212,8 @@ public sealed class SandboxLimitTests : IDisposable
         }
     }
 
+    [Attack("faults", "it starts more processes or threads")]
+    [Attack("sandbox", "processes")]
     [Fact]
     public void A_fork_bomb_meets_the_process_limit_and_leaves_nothing_behind()
     {
@@ -235,6 +240,7 @@ public sealed class SandboxLimitTests : IDisposable
         Assert.Empty(InNamespace(Field(faults, "ns")));
     }
 
+    [Attack("platforms", "Linux without bubblewrap, with control groups")]
     [Fact]
     public void Without_bubblewrap_its_control_group_still_ends_every_daemon()
     {
@@ -266,6 +272,41 @@ public sealed class SandboxLimitTests : IDisposable
         }
     }
 
+    [Attack("sandbox", "processes")]
+    [Fact]
+    public void A_group_left_by_a_killed_server_is_ended_and_removed_by_the_next_one()
+    {
+        Assert.Null(SandboxCgroup.Unavailable);
+        var layout = SandboxCgroup.Machine!;
+
+        // A process that has ended stands for the killed server; its group still holds a daemon.
+        using var gone = Process.Start(new ProcessStartInfo("/bin/true") { UseShellExecute = false })!;
+        gone.WaitForExit();
+        string name = $"urwpgsim2d-{gone.Id}-1";
+        var group = SandboxCgroup.Create(layout, name, 64L << 20, 16, out string? problem);
+        Assert.True(group is not null, problem);
+        var start = new ProcessStartInfo("/bin/sh") { UseShellExecute = false, RedirectStandardOutput = true };
+        foreach (string argument in group.Wrapper().Skip(1).Concat(["/bin/sh", "-c", "echo $$; exec sleep 1000"]))
+        {
+            start.ArgumentList.Add(argument);
+        }
+
+        using var daemon = Process.Start(start)!;
+        int pid = int.Parse(daemon.StandardOutput.ReadLine()!, CultureInfo.InvariantCulture);
+        Assert.Equal([pid], group.Processes());
+
+        Assert.True(SandboxCgroup.SweepStale(layout, Running) >= 1);
+
+        daemon.WaitForExit();
+        Assert.False(Running(pid), $"the daemon {pid} of the stale group still runs");
+        foreach (string parent in layout.Parents)
+        {
+            Assert.False(Directory.Exists(Path.Combine(parent, name)), $"the stale group {Path.Combine(parent, name)} is left");
+        }
+    }
+
+    [Attack("sandbox", "memory")]
+    [Attack("faults", "its host ends")]
     [Fact]
     public void Native_memory_counts_against_the_sandbox_and_is_charged_as_out_of_memory()
     {
@@ -284,6 +325,8 @@ public sealed class SandboxLimitTests : IDisposable
         Assert.Contains("strategy host ended: out of memory: its sandbox reached its limit of 352 MiB, killed", faults, StringComparison.Ordinal);
     }
 
+    [Attack("sandbox", "disk")]
+    [Attack("faults", "it starts more processes or threads")]
     [Fact]
     public void Scratch_tmp_and_shared_memory_are_small_ram_file_systems_a_strategy_fills_alone()
     {

@@ -37,6 +37,9 @@ public sealed class TournamentHostileTests : IDisposable
         return file;
     }
 
+    [Attack("faults", "it buries its scratch folder")]
+    [Attack("faults", "it prints without end")]
+    [Attack("sandbox", "processes")]
     [Fact]
     public void Entrants_that_fork_bury_flood_and_hoard_leave_every_result_written_and_a_clean_terminal()
     {
@@ -73,6 +76,7 @@ public sealed class TournamentHostileTests : IDisposable
         Assert.Contains("0 to play, 12 already there", again.Stdout, StringComparison.Ordinal);
     }
 
+    [Attack("faults", "a match fails inside the server itself")]
     [Fact]
     public void A_match_that_failed_inside_the_server_is_a_forfeit_of_the_team_at_fault_and_stands()
     {

@@ -101,6 +101,17 @@ internal static class CliSyntax
         return command;
     }
 
+    /// <summary>A command with the options and arguments of its usage line, and <c>--help</c>.</summary>
+    /// <param name="name">The command's name.</param>
+    /// <param name="description">Its summary.</param>
+    /// <param name="usage">Its usage line, which declares its options and arguments.</param>
+    /// <param name="help">Its <c>--help</c> option.</param>
+    public static Command Command(string name, string description, UsageLine usage, Option<bool> help)
+    {
+        ArgumentNullException.ThrowIfNull(usage);
+        return Command(name, description, [.. usage.Symbols, help]);
+    }
+
     /// <summary>Whether <paramref name="option"/> takes a value.</summary>
     public static bool TakesValue(Option option) => option.Arity.MaximumNumberOfValues > 0;
 
