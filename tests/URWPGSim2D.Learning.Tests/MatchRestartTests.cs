@@ -79,38 +79,19 @@ public sealed class MatchRestartTests
         // Episodes of 40 cycles (half time at 20): 130 steps after warm-up cross three episode ends in every match.
         foreach (string opponent in MatchBatch.Opponents)
         {
-            var batch = new MatchBatch("polo-1v1", opponent, 8, 0, 40);
-            var obs = new float[batch.Count * batch.ObservationSize];
-            var rewards = new float[batch.Count];
-            var terminated = new bool[batch.Count];
-            var truncated = new bool[batch.Count];
-            var actions = new int[batch.Count * batch.ActionSize];
-            var seeds = new ulong[batch.Count];
-            for (int i = 0; i < seeds.Length; i++)
-            {
-                seeds[i] = (ulong)i + 1;
-            }
-
-            batch.Reset(seeds, obs);
-            var ends = new int[batch.Count];
+            var run = new PatternRun(new MatchBatch("polo-1v1", opponent, 8, 0, 40));
+            var ends = new int[run.Batch.Count];
             long total = 0;
             for (int step = 0; step < 170; step++)
             {
-                for (int j = 0; j < actions.Length; j++)
-                {
-                    actions[j] = ((step * 7) + (j * 3)) % 16;
-                }
-
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                batch.Step(actions, obs, rewards, terminated, truncated);
-                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                long allocated = run.Step(step);
                 if (step >= 40)
                 {
                     // After the first episode (the code's first runs, the buffers' sizing).
                     total += allocated;
-                    for (int i = 0; i < batch.Count; i++)
+                    for (int i = 0; i < ends.Length; i++)
                     {
-                        ends[i] += terminated[i] || truncated[i] ? 1 : 0;
+                        ends[i] += run.Terminated[i] || run.Truncated[i] ? 1 : 0;
                     }
                 }
             }
