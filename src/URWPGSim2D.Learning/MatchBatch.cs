@@ -159,8 +159,9 @@ public sealed class MatchBatch
     /// Plays one cycle of every match with <paramref name="actions"/>, and writes each one's
     /// observation, reward and episode end. A match that ended at the last step is started again
     /// instead (its action ignored): its observation is then the new episode's first, its reward 0,
-    /// and neither flag is set. Allocates nothing (apart from restarting a match that ended): the
-    /// referees record their events without text (<see cref="ItemReferee.EventTexts"/>).
+    /// and neither flag is set. Allocates nothing (the referees record their events without text,
+    /// <see cref="ItemReferee.EventTexts"/>), restarting a polo match included (it is put back to its
+    /// start in place); a match of another item is built anew when it restarts.
     /// </summary>
     /// <param name="actions"><see cref="Count"/> × <see cref="ActionSize"/> integers 0..15: per match, a speed code and a turn code per fish of the team.</param>
     /// <param name="observations"><see cref="Count"/> × <see cref="ObservationSize"/> floats, written.</param>
@@ -260,6 +261,16 @@ public sealed class MatchBatch
 
     private void Start(int i, ulong seed)
     {
+        if (_matches[i] is { CanRestart: true } played)
+        {
+            // The same match back at its start with the new seed, every buffer kept: nothing allocated.
+            played.Restart(seed);
+            _seeds[i] = seed;
+            _difference[i] = Difference(played);
+            _ended[i] = false;
+            return;
+        }
+
         var pushed = new PushedDecisions(TeamFish);
         var teams = new IStrategy?[Math.Max(2, _item.TeamCount)];
         teams[Team] = pushed;

@@ -207,38 +207,20 @@ public sealed class MatchBatchTests
         // Half time falls at cycle 200 of 400: every match records an event (and goals, fouls, dead balls as they come).
         foreach (string opponent in MatchBatch.Opponents)
         {
-            var batch = new MatchBatch("polo-1v1", opponent, 16, 0, 400);
-            var obs = new float[batch.Count * batch.ObservationSize];
-            var rewards = new float[batch.Count];
-            var terminated = new bool[batch.Count];
-            var truncated = new bool[batch.Count];
-            var actions = new int[batch.Count * batch.ActionSize];
-            var seeds = new ulong[batch.Count];
-            for (int i = 0; i < seeds.Length; i++)
-            {
-                seeds[i] = (ulong)i + 1;
-            }
-
-            batch.Reset(seeds, obs);
+            var run = new PatternRun(new MatchBatch("polo-1v1", opponent, 16, 0, 400));
+            var batch = run.Batch;
             long total = 0;
             for (int step = 0; step < 390; step++)
             {
-                for (int j = 0; j < actions.Length; j++)
-                {
-                    actions[j] = ((step * 7) + (j * 3)) % 16;
-                }
-
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                batch.Step(actions, obs, rewards, terminated, truncated);
-                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                long allocated = run.Step(step);
                 if (step >= 20)
                 {
                     // After the first steps (the code's first runs, the strategies' own buffers, the motion world's sizing).
                     total += allocated;
                 }
 
-                Assert.DoesNotContain(true, terminated);
-                Assert.DoesNotContain(true, truncated);
+                Assert.DoesNotContain(true, run.Terminated);
+                Assert.DoesNotContain(true, run.Truncated);
             }
 
             int events = 0;

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.BuiltInStrategies;
 
@@ -14,7 +15,7 @@ namespace URWPGSim2D.Engine.BuiltInStrategies;
 /// plan (<see cref="DebugDraw"/>, shown with <c>run --debug-draw</c>): per fish the route head → aim →
 /// ball → goal, the target ball circled, the aim point and what it is doing (<c>line up</c>, <c>push</c>).
 /// </summary>
-public sealed class ChaseBallStrategy : IStrategy
+public sealed class ChaseBallStrategy : IStrategy, IRestartable
 {
     private const float LineUpAngle = 0.6f;
     private const int PlanColour = 0x2e8b57; // the planned route after the aim point
@@ -24,6 +25,12 @@ public sealed class ChaseBallStrategy : IStrategy
 
     /// <inheritdoc/>
     public string TeamName => "chase-ball";
+
+    /// <inheritdoc/>
+    void IRestartable.Restart()
+    {
+        Array.Clear(_stuck);
+    }
 
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)

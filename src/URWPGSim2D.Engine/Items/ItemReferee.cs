@@ -140,6 +140,39 @@ public abstract class ItemReferee : ITraceItemInfo
         UpdateVariables(world);
     }
 
+    /// <summary>Whether <see cref="RestartInPlace"/> can put this item's referee back to the state of a new one.</summary>
+    internal virtual bool CanRestart => false;
+
+    /// <summary>
+    /// Back to the state of a new referee of the same match, its lists and arrays kept (no event, no
+    /// score, first half), then <see cref="Start"/> on <paramref name="world"/> (whose bodies are back at
+    /// their start poses): a match restarted in place.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">The item's referee cannot restart (<see cref="CanRestart"/>).</exception>
+    internal void RestartInPlace(World world)
+    {
+        if (!CanRestart)
+        {
+            throw new InvalidOperationException($"the referee of {Item.Slug} cannot restart in place");
+        }
+
+        _events.Clear();
+        _traced = 0;
+        _outcome = default;
+        Half = 1;
+        HalfStartCycle = 0;
+        Array.Clear(Scores);
+        IsOver = false;
+        MatchDone = false;
+        OnRestart();
+        Start(world);
+    }
+
+    /// <summary>Back to the item's own state of a new referee (<see cref="RestartInPlace"/>).</summary>
+    private protected virtual void OnRestart()
+    {
+    }
+
     /// <summary>After the strategies decided: caps, frozen and server-driven fish.</summary>
     public virtual void AfterDecisions(World world)
     {

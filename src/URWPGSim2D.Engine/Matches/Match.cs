@@ -51,7 +51,7 @@ public sealed class Match
     public World World { get; }
 
     /// <summary>The match's seed (its noise and its item's random placements): the same seed plays the same match.</summary>
-    public ulong Seed { get; }
+    public ulong Seed { get; private set; }
 
     /// <summary>Who decides for the fish.</summary>
     public IMatchTeams Teams { get; }
@@ -110,6 +110,50 @@ public sealed class Match
         }
 
         return Snapshot;
+    }
+
+    /// <summary>
+    /// Whether <see cref="Restart"/> can put this match back to its start: an item whose referee
+    /// restarts in place (polo), and built-in or pushed strategies on every seat.
+    /// </summary>
+    public bool CanRestart => Referee is { CanRestart: true } && Teams is StrategyTeams { CanRestart: true };
+
+    /// <summary>
+    /// Puts the match back to cycle 0 of a new match of the same scenario, teams and noise with
+    /// <paramref name="seed"/>, every buffer kept: the bodies at their start poses and at rest, the
+    /// referee, strategies, counts and noise as new, so that it then plays exactly what a match
+    /// built anew plays. Allocates nothing.
+    /// </summary>
+    /// <param name="seed">The seed of the noise (the item's layout must not depend on it: <see cref="CanRestart"/>).</param>
+    /// <exception cref="System.InvalidOperationException">The match cannot restart in place (<see cref="CanRestart"/>).</exception>
+    public void Restart(ulong seed)
+    {
+        if (!CanRestart)
+        {
+            throw new System.InvalidOperationException("this match cannot restart in place (an item or a strategy without a restart)");
+        }
+
+        var scenario = Referee!.Scenario;
+        World.Cycle = 0;
+        for (int i = 0; i < World.Fish.Length; i++)
+        {
+            var d = scenario.Fish[i];
+            World.Fish[i].Restart(d.Position, d.Heading, d.TailPhase);
+        }
+
+        for (int i = 0; i < World.Balls.Length; i++)
+        {
+            World.Balls[i].Restart(scenario.Balls[i].Velocity);
+        }
+
+        Seed = seed;
+        _motionNoise?.Reseed(seed);
+        _viewNoise?.Reseed(seed ^ 0x5DEECE66DUL);
+        Contacts.Restart();
+        Statistics.Restart();
+        ((StrategyTeams)Teams).Restart();
+        _observedCycle = -1;
+        Rules.RestartInPlace(World);
     }
 
     /// <summary>The teams of the match: 2, or more when a fish plays for a team numbered 2 or higher (four-teams).</summary>

@@ -83,4 +83,13 @@ public sealed class BallState
 
     /// <summary>The ball as a circle at its current position.</summary>
     public Circle Shape => new(Position, Radius);
+
+    /// <summary>Back to the state the ball was made with: at its start position with <paramref name="velocity"/>, no drift, in play.</summary>
+    internal void Restart(Vector2 velocity)
+    {
+        _motion.SetPose(Handle, StartPosition, 0f);
+        _motion.SetVelocity(Handle, velocity);
+        _motion.SetDrift(Handle, Vector2.Zero);
+        OutOfPlay = false;
+    }
 }

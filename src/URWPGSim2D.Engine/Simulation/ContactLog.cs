@@ -30,6 +30,13 @@ public sealed class ContactLog
     /// <summary>Starts a new cycle.</summary>
     public void BeginCycle() => Count = 0;
 
+    /// <summary>Forgets every contact and count, as a new log (its buffer kept): a match restarted in place.</summary>
+    internal void Restart()
+    {
+        Count = 0;
+        System.Array.Clear(_byKind);
+    }
+
     /// <summary>Records one contact.</summary>
     public void Add(in ContactRecord record, ContactKind kind)
     {

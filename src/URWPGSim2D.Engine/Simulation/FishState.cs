@@ -179,4 +179,19 @@ public sealed class FishState
     {
         Corrections = 0;
     }
+
+    /// <summary>Back to the state a fish made at <paramref name="position"/> and <paramref name="heading"/> has: joints straight, at rest, in play, no decision yet.</summary>
+    internal void Restart(Vector2 position, float heading, float tailPhase)
+    {
+        _motion.SetPose(Handle, position, Angle.Wrap(heading));
+        _motion.SetJoints(Handle, 0f, 0f, 0f);
+        _motion.SetVelocity(Handle, Vector2.Zero, 0f);
+        _motion.SetDrift(Handle, Vector2.Zero, 0f);
+        OutOfPlay = false;
+        Decision = Decision.Stop;
+        Turn.Reset(0f, TurnTable.Rates);
+        Speed.Reset(0f, SpeedTable.Speeds);
+        TailPhase = tailPhase;
+        Corrections = 0;
+    }
 }

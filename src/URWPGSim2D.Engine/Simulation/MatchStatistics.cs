@@ -36,4 +36,15 @@ public sealed class MatchStatistics
             LargestLeftoverCycle = cycle;
         }
     }
+
+    /// <summary>Back to no cycle recorded, as new: a match restarted in place.</summary>
+    internal void Restart()
+    {
+        Cycles = 0;
+        SubSteps = 0;
+        MostSubSteps = 0;
+        Events = 0;
+        LargestLeftoverOverlap = 0f;
+        LargestLeftoverCycle = 0;
+    }
 }

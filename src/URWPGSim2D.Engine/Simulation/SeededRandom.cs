@@ -8,6 +8,9 @@ internal sealed class SeededRandom(ulong seed)
 {
     private ulong _state = seed;
 
+    /// <summary>Starts the sequence of <paramref name="seed"/> again, as a generator made with it.</summary>
+    public void Reseed(ulong seed) => _state = seed;
+
     /// <summary>The next 64 random bits.</summary>
     public ulong NextBits()
     {

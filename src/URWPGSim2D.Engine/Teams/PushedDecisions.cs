@@ -11,7 +11,7 @@ namespace URWPGSim2D.Engine.Teams;
 /// decisions. A cycle in which nothing was pushed repeats the decisions in force (every fish starts
 /// stopped). What a learning environment needs: the agent's actions are the team's decisions.
 /// </summary>
-public sealed class PushedDecisions : IStrategy
+public sealed class PushedDecisions : IStrategy, IRestartable
 {
     private readonly Decision[] _pending;
 
@@ -45,4 +45,7 @@ public sealed class PushedDecisions : IStrategy
 
         _pending.AsSpan().CopyTo(decisions);
     }
+
+    /// <inheritdoc/>
+    void IRestartable.Restart() => Array.Fill(_pending, Decision.Stop);
 }

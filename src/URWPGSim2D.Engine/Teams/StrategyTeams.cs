@@ -43,6 +43,33 @@ public sealed class StrategyTeams : IMatchTeams
         }
     }
 
+    /// <summary>Whether every seat's strategy can go back to its state at the match's start (built-in strategies).</summary>
+    internal bool CanRestart
+    {
+        get
+        {
+            foreach (var seat in _seats)
+            {
+                if (seat.Strategy is not IRestartable)
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+    }
+
+    /// <summary>Every seat and strategy back to its state at the match's start (<see cref="CanRestart"/>).</summary>
+    internal void Restart()
+    {
+        foreach (var seat in _seats)
+        {
+            seat.Restart();
+            ((IRestartable)seat.Strategy).Restart();
+        }
+    }
+
     /// <inheritdoc/>
     public void Stop(int cycles, IReadOnlyList<int> goals)
     {

@@ -174,4 +174,21 @@ public class TeamSeat
             fish[Fish[k]].Decision = new Decision(d.VCode, d.TCode);
         }
     }
+
+    /// <summary>Back to the state of a new seat: no decision yet, no fault (a match restarted in place).</summary>
+    internal void Restart()
+    {
+        Array.Fill(Decisions, Decision.Stop);
+        Array.Clear(Scratch);
+        EndedInCycle = 0;
+        IdleFromCycle = 0;
+        LastFaultCycle = 0;
+        LastFault = null;
+        LastFaultKind = default;
+        Exceptions = 0;
+        Timeouts = 0;
+        BadAnswers = 0;
+        Disconnects = 0;
+        FirstFault = null;
+    }
 }

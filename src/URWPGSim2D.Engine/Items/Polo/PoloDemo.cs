@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Items.Demo;
+using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Items.Polo;
 
@@ -12,13 +13,20 @@ namespace URWPGSim2D.Engine.Items.Polo;
 /// In 5v5 the attacker is the nearest of the fish allowed where the ball is (defenders 1, 2 in the
 /// own half, forwards 3, 4 in the other). During penalties only fish 0 plays.
 /// </summary>
-internal sealed class PoloDemo(int team, PoloReferee referee) : IStrategy
+internal sealed class PoloDemo(int team, PoloReferee referee) : IStrategy, IRestartable
 {
     private Stuck[] _stuck = [];
     private Dribble[] _dribble = [];
 
     /// <inheritdoc/>
     public string TeamName => "water-polo demo";
+
+    /// <inheritdoc/>
+    void IRestartable.Restart()
+    {
+        Array.Clear(_stuck);
+        Array.Clear(_dribble);
+    }
 
     /// <inheritdoc/>
     public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)

@@ -91,6 +91,9 @@ internal sealed class PoloReferee : ItemReferee
         _members = [lists[0].ToArray(), lists[1].ToArray()];
     }
 
+    /// <inheritdoc/>
+    internal override bool CanRestart => true;
+
     /// <summary>The current phase.</summary>
     public PoloPeriod Period { get; private set; }
 
@@ -138,6 +141,23 @@ internal sealed class PoloReferee : ItemReferee
 
     /// <inheritdoc/>
     protected override void UpdateVariables(World world) => Variables.Set("CompetitionPeriod", (int)Period);
+
+    /// <inheritdoc/>
+    private protected override void OnRestart()
+    {
+        Array.Clear(_inGoal);
+        Array.Clear(_inZone);
+        Array.Clear(_sentOff);
+        Array.Clear(_armed);
+        _periodStart = 0;
+        _periodLength = Cycles;
+        _halfTimeDone = false;
+        _deadBall = 0;
+        _kick = -1;
+        _rule = "higher score";
+        Period = PoloPeriod.NormalTime;
+        LeftTeam = 0;
+    }
 
     private bool DeadBall(World world, ReadOnlySpan<ContactRecord> contacts)
     {
