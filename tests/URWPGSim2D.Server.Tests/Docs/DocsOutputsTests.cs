@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using System.Linq;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 
