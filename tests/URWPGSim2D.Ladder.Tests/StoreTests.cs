@@ -20,6 +20,13 @@ public sealed class StoreTests : IDisposable
         return store;
     }
 
+    // A store with a ladder of seed base 7 and two house teams.
+    private (SqlLadderStore Store, LadderRow Ladder, TeamRow A, TeamRow B) Two()
+    {
+        var store = Store();
+        return (store, store.OpenLadder("polo-1v1", 600, 7), store.AddTeam("a", "ha", "demo")!, store.AddTeam("b", "hb", "idle")!);
+    }
+
     [Fact]
     public void MigrationsRunOnceAndKeepTheRows()
     {
@@ -43,10 +50,7 @@ public sealed class StoreTests : IDisposable
     [Fact]
     public void AMatchIsClaimedOnceAndItsRecordWrittenOnce()
     {
-        var store = Store();
-        var ladder = store.OpenLadder("polo-1v1", 600, 100);
-        var a = store.AddTeam("a", "ha", "demo")!;
-        var b = store.AddTeam("b", "hb", "idle")!;
+        var (store, ladder, a, b) = Two();
         var queued = store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], final: false, id => 100 + (ulong)id);
         Assert.Equal(100 + (ulong)queued.Id, queued.Seed);
 
@@ -61,10 +65,7 @@ public sealed class StoreTests : IDisposable
     [Fact]
     public void RunningMatchesGoBackToTheQueueWithTheirSeed()
     {
-        var store = Store();
-        var ladder = store.OpenLadder("polo-1v1", 600, 7);
-        var a = store.AddTeam("a", "ha", "demo")!;
-        var b = store.AddTeam("b", "hb", "idle")!;
+        var (store, ladder, a, b) = Two();
         var m = store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], final: false, id => 7 + (ulong)id);
         Assert.True(store.Claim(m.Id));
 
@@ -77,10 +78,7 @@ public sealed class StoreTests : IDisposable
     [Fact]
     public void ARequeuedMatchLosesItsRecordAndWaitsAgain()
     {
-        var store = Store();
-        var ladder = store.OpenLadder("polo-1v1", 600, 7);
-        var a = store.AddTeam("a", "ha", "demo")!;
-        var b = store.AddTeam("b", "hb", "idle")!;
+        var (store, ladder, a, b) = Two();
         var m = store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], final: false, id => 7 + (ulong)id);
         Assert.False(store.Requeue(m.Id)); // not finished yet
         store.Claim(m.Id);
@@ -93,10 +91,7 @@ public sealed class StoreTests : IDisposable
     [Fact]
     public void GamesCountEachSideOfEveryMatch()
     {
-        var store = Store();
-        var ladder = store.OpenLadder("polo-1v1", 600, 7);
-        var a = store.AddTeam("a", "ha", "demo")!;
-        var b = store.AddTeam("b", "hb", "idle")!;
+        var (store, ladder, a, b) = Two();
         var c = store.AddTeam("c", "hc", "idle")!;
         store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], false, id => (ulong)id);
         store.AddMatch(ladder.Id, [a.Id, c.Id], [0, 0], false, id => (ulong)id);
