@@ -43,12 +43,67 @@ public sealed class TournamentCheckTests : IDisposable
         Assert.True(run.ExitCode == 0, run.Stderr);
         string[] lines = run.Stdout.TrimEnd('\n').Split('\n');
         Assert.Equal("check: ball-grab, 4 entrants, each in one 600-cycle match against idle (seed 1)", lines[0]);
-        Assert.StartsWith("entrant  ready  exceptions  timeouts  bad answers  host ends  slowest call  score  first fault or why not loaded", lines[1], StringComparison.Ordinal);
-        Assert.Matches(@"^broken   no              0         0            0          0             -      0  not loaded: cannot compile ", lines[2]);
-        Assert.Matches(@"^good     yes             0         0            0          0  +\d+ ms  +\d+  -$", lines[3]);
-        Assert.Matches(@"^thrower  no             60         0            0          0  +\d+ ms  +\d+  cycle 6: InvalidOperationException: oops$", lines[4]);
-        Assert.Matches(@"^demo     yes             0         0            0          0  +-  +\d+  -$", lines[5]);
+        Assert.StartsWith("entrant  ready  exceptions  timeouts  bad answers  host ends  slowest call    memory  score  first fault or why not loaded", lines[1], StringComparison.Ordinal);
+        Assert.Matches(@"^broken   no              0         0            0          0             -         -      0  not loaded: cannot compile ", lines[2]);
+        Assert.Matches(@"^good     yes             0         0            0          0  +\d+ ms         -  +\d+  -$", lines[3]);
+        Assert.Matches(@"^thrower  no             60         0            0          0  +\d+ ms         -  +\d+  cycle 6: InvalidOperationException: oops$", lines[4]);
+        Assert.Matches(@"^demo     yes             0         0            0          0  +-         -  +\d+  -$", lines[5]);
         Assert.Equal("2 of 4 entrants ready", lines[6]);
         Assert.Empty(Directory.GetFileSystemEntries(_folder, "*", SearchOption.TopDirectoryOnly).AsSpan()[1..].ToArray()); // nothing written beside the class
+    }
+
+    /// <summary>
+    /// The memory column: the most memory each entrant's strategy host held at once, measured by the
+    /// kernel for its sandbox. An entrant that fills and holds 300 MiB shows at least that much more
+    /// than one that holds nothing; the built-ins, which run in the server's process, show <c>-</c>.
+    /// </summary>
+    [Fact]
+    public void The_memory_column_shows_the_most_memory_each_entrants_host_held()
+    {
+        string dir = Path.Combine(_folder, "class");
+        Directory.CreateDirectory(dir);
+        File.WriteAllText(Path.Combine(dir, "lean.cs"), """
+            using System;
+            using URWPGSim2D.Strategies;
+            public sealed class Lean : IStrategy
+            {
+                public string TeamName => "lean";
+                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { }
+            }
+            """);
+        File.WriteAllText(Path.Combine(dir, "hog.cs"), """
+            using System;
+            using System.Collections.Generic;
+            using URWPGSim2D.Strategies;
+            public sealed class Hog : IStrategy
+            {
+                private readonly List<byte[]> _held = new();
+                public string TeamName => "hog";
+                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
+                {
+                    if (_held.Count > 0) return;
+                    for (int k = 0; k < 300; k++)
+                    {
+                        var block = new byte[1 << 20];
+                        for (int i = 0; i < block.Length; i += 4096) block[i] = 1; // every page touched: resident
+                        _held.Add(block);
+                    }
+                }
+            }
+            """);
+        var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrants-dir", dir, "--entrant", "idle=idle", "--cycles", "20", "--strategy-timeout", "20000", "--check");
+        Assert.True(run.ExitCode == 0, run.Stderr);
+        var memory = new Dictionary<string, string>(StringComparer.Ordinal);
+        foreach (string line in run.Stdout.Split('\n').Skip(2).SkipLast(2))
+        {
+            var m = Regex.Match(line, @"^(\w+) .* (\d+ MiB|-)  +\d+  ");
+            Assert.True(m.Success, line);
+            memory[m.Groups[1].Value] = m.Groups[2].Value;
+        }
+
+        Assert.Equal("-", memory["idle"]);
+        long hog = long.Parse(memory["hog"].Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+        long lean = long.Parse(memory["lean"].Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+        Assert.True(lean > 0 && hog >= lean + 300, $"hog {hog} MiB, lean {lean} MiB:\n{run.Stdout}");
     }
 }
