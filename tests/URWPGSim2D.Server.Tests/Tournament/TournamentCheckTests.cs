@@ -20,24 +20,8 @@ public sealed class TournamentCheckTests : IDisposable
     {
         string dir = Path.Combine(_folder, "class");
         Directory.CreateDirectory(dir);
-        File.WriteAllText(Path.Combine(dir, "good.cs"), """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Good : IStrategy
-            {
-                public string TeamName => "good";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { for (int i = 0; i < d.Length; i++) d[i] = new Decision(6, 7); }
-            }
-            """);
-        File.WriteAllText(Path.Combine(dir, "thrower.cs"), """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Thrower : IStrategy
-            {
-                public string TeamName => "thrower";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { if (s.Cycle % 10 == 5) throw new InvalidOperationException("oops"); }
-            }
-            """);
+        WriteStrategy(dir, "good", "for (int i = 0; i < d.Length; i++) d[i] = new Decision(6, 7);");
+        WriteStrategy(dir, "thrower", "if (s.Cycle % 10 == 5) throw new InvalidOperationException(\"oops\");");
         File.WriteAllText(Path.Combine(dir, "broken.cs"), "public class Broken {");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrants-dir", dir, "--entrant", "demo=demo", "--cycles", "6000", "--isolation", "none", "--strategy-timeout", "5000", "--check");
         Assert.True(run.ExitCode == 0, run.Stderr);
@@ -62,33 +46,14 @@ public sealed class TournamentCheckTests : IDisposable
     {
         string dir = Path.Combine(_folder, "class");
         Directory.CreateDirectory(dir);
-        File.WriteAllText(Path.Combine(dir, "lean.cs"), """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Lean : IStrategy
+        WriteStrategy(dir, "lean", string.Empty);
+        WriteStrategy(dir, "hog", """
+            if (Held.Count > 0) return;
+            for (int k = 0; k < 300; k++)
             {
-                public string TeamName => "lean";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { }
-            }
-            """);
-        File.WriteAllText(Path.Combine(dir, "hog.cs"), """
-            using System;
-            using System.Collections.Generic;
-            using URWPGSim2D.Strategies;
-            public sealed class Hog : IStrategy
-            {
-                private readonly List<byte[]> _held = new();
-                public string TeamName => "hog";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    if (_held.Count > 0) return;
-                    for (int k = 0; k < 300; k++)
-                    {
-                        var block = new byte[1 << 20];
-                        for (int i = 0; i < block.Length; i += 4096) block[i] = 1; // every page touched: resident
-                        _held.Add(block);
-                    }
-                }
+                var block = new byte[1 << 20];
+                for (int i = 0; i < block.Length; i += 4096) block[i] = 1; // every page touched: resident
+                Held.Add(block);
             }
             """);
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrants-dir", dir, "--entrant", "idle=idle", "--cycles", "20", "--strategy-timeout", "20000", "--check");
@@ -106,4 +71,21 @@ public sealed class TournamentCheckTests : IDisposable
         long lean = long.Parse(memory["lean"].Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
         Assert.True(lean > 0 && hog >= lean + 300, $"hog {hog} MiB, lean {lean} MiB:\n{run.Stdout}");
     }
+
+    // DIR/NAME.cs: an SDK strategy named NAME whose Decide(s, fish, d) runs the body (Held: a list it may keep blocks in).
+    private static void WriteStrategy(string dir, string name, string body) =>
+        File.WriteAllText(Path.Combine(dir, name + ".cs"), $$"""
+            using System;
+            using System.Collections.Generic;
+            using URWPGSim2D.Strategies;
+            public sealed class Strategy_{{name}} : IStrategy
+            {
+                private static readonly List<byte[]> Held = new();
+                public string TeamName => "{{name}}";
+                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
+                {
+            {{body}}
+                }
+            }
+            """);
 }
