@@ -56,7 +56,7 @@ public sealed class TournamentWalkthroughTests : IDisposable
         Assert.True(problems.Count == 0, string.Join("\n\n", problems) + "\n(bash scripts/regenerate-docs-outputs.sh writes the real outputs into the page)");
     }
 
-    // "$ URWPGSim2D.Server tournament …" with the folder tour and the repository's relative paths made absolute.
+    // "$ urwpgsim2d tournament …" with the folder tour and the repository's relative paths made absolute.
     private static string Play(string command, string tour)
     {
         string[] words = command.Split(' ', StringSplitOptions.RemoveEmptyEntries);
