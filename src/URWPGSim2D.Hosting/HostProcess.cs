@@ -1,12 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.IO;
 using System.Runtime.InteropServices;
-using System.Text;
-using System.Threading;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 
@@ -64,6 +57,9 @@ public sealed class HostProcess : IStrategyLink
 
     /// <inheritdoc/>
     public TimeSpan? WaitingTime() => _cgroup?.WaitingTime();
+
+    /// <inheritdoc/>
+    public long? PeakMemoryBytes() => _cgroup?.PeakMemoryBytes();
 
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }

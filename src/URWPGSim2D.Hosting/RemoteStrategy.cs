@@ -1,7 +1,4 @@
-using System;
-using System.Diagnostics;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 
@@ -85,6 +82,9 @@ internal sealed class RemoteStrategy : IConnectedStrategy
 
     /// <inheritdoc/>
     public TimeSpan? WaitingTime() => null;
+
+    /// <inheritdoc/>
+    public long? PeakMemoryBytes() => null;
 
     /// <inheritdoc/>
     public DebugRecorder? Drawings => _current?.Drawings;

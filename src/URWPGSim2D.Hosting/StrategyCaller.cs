@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.Globalization;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 
@@ -286,6 +281,11 @@ public sealed class StrategyCaller : IMatchTeams
             {
                 cpu = slot.LastCpuTime is { } before ? now - before : null;
                 slot.LastCpuTime = now;
+            }
+
+            if (hosted.PeakMemoryBytes() is { } peak)
+            {
+                slot.PeakMemoryBytes = Math.Max(slot.PeakMemoryBytes ?? 0, peak);
             }
 
             if (hosted.WaitingTime() is { } stalled)

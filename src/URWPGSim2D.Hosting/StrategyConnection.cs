@@ -1,9 +1,5 @@
-using System;
-using System.IO;
 using System.Security.Cryptography;
-using System.Text;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 
@@ -190,6 +186,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
     /// <inheritdoc/>
     public TimeSpan? WaitingTime() => _link.WaitingTime();
+
+    /// <inheritdoc/>
+    public long? PeakMemoryBytes() => _link.PeakMemoryBytes();
 
     /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message)

@@ -1,6 +1,3 @@
-using System;
-using System.Diagnostics;
-using System.IO;
 using System.Net.Sockets;
 
 namespace URWPGSim2D.Hosting;
@@ -53,6 +50,9 @@ internal sealed class TcpLink : IStrategyLink
     /// <summary>Null: a remote client's waits are not measured.</summary>
     /// <returns>Null.</returns>
     public TimeSpan? WaitingTime() => null;
+
+    /// <inheritdoc/>
+    public long? PeakMemoryBytes() => null;
 
     /// <inheritdoc/>
     public void BeginWait(TimeSpan limit) => _stream.Deadline = Stopwatch.GetTimestamp() + (long)(limit.TotalSeconds * Stopwatch.Frequency);

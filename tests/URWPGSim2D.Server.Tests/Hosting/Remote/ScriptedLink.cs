@@ -1,5 +1,4 @@
 using System.Text;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 
@@ -34,6 +33,8 @@ internal sealed class ScriptedLink : IStrategyLink
     public TimeSpan? CpuTime() => null;
 
     public TimeSpan? WaitingTime() => null;
+
+    public long? PeakMemoryBytes() => null;
 
     public bool Waiting { get; private set; }
 
