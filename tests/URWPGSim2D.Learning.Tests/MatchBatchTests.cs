@@ -1,12 +1,8 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Learning.Tests;
 

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Learning.Tests;
 
 /// <summary>A batch reset from seeds 1, 2, … and stepped with actions of a fixed pattern, measuring what each step allocates.</summary>

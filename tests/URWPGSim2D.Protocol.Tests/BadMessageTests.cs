@@ -1,6 +1,4 @@
-using System;
 using System.Text;
-using Xunit;
 
 namespace URWPGSim2D.Protocol.Tests;
 

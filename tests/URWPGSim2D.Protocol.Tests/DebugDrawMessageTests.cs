@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using System.Text;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Protocol.Tests;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Testing;
-using Xunit;
 using Xunit.Sdk;
 
 namespace URWPGSim2D.Protocol.Tests;

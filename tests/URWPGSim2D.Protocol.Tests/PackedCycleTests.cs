@@ -1,7 +1,5 @@
-using System;
 using System.Text;
 using URWPGSim2D.Testing;
-using Xunit;
 using Xunit.Sdk;
 
 namespace URWPGSim2D.Protocol.Tests;

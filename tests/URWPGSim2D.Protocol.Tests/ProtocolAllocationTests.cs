@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Protocol.Tests;
 

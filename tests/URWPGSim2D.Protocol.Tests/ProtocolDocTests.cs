@@ -1,8 +1,5 @@
-using System;
-using System.IO;
 using System.Text;
 using System.Text.RegularExpressions;
-using Xunit;
 
 namespace URWPGSim2D.Protocol.Tests;
 

@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Text.RegularExpressions;
 using Mono.Cecil;
 using Mono.Cecil.Cil;
 using URWPGSim2D.Server.Tests.Docs;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests;
 

@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Threading.Tasks;
 using Microsoft.Playwright;
-using Xunit;
 
 namespace URWPGSim2D.Server.Viewer.Tests;
 

@@ -1,14 +1,8 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Threading;
-using System.Threading.Tasks;
 using Microsoft.Playwright;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

@@ -1,12 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
-using System.Threading.Tasks;
 using Microsoft.Playwright;
-using Xunit;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

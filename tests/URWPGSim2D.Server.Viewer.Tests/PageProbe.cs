@@ -1,11 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using System.Text.Json;
-using System.Threading.Tasks;
 using Microsoft.Playwright;
 using URWPGSim2D.Collision.Fish;
-using Xunit;
 
 namespace URWPGSim2D.Server.Viewer.Tests;
 

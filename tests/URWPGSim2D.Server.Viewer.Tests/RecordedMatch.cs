@@ -1,10 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Text.Json;
 using URWPGSim2D.Server.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Viewer.Tests;
 

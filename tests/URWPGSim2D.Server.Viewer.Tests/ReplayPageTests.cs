@@ -1,14 +1,8 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
-using System.Threading.Tasks;
 using Microsoft.Playwright;
 using URWPGSim2D.Collision.Fish;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;

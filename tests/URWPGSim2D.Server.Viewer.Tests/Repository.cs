@@ -1,6 +1,3 @@
-using System;
-using System.IO;
-
 namespace URWPGSim2D.Server.Viewer.Tests;
 
 /// <summary>The repository's root folder (the one with the solution file), found from the test binaries upward.</summary>

@@ -1,9 +1,4 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text.Json;
-using System.Threading.Tasks;
-using Xunit;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

@@ -15,7 +15,7 @@ internal sealed class CliUsageException : Exception
 {
     /// <summary>Creates the error.</summary>
     /// <param name="message">What is wrong with the arguments, one line.</param>
-    /// <param name="usage">The synopsis to show, e.g. <c>URWPGSim2D.Server collide FILE</c>; null for none.</param>
+    /// <param name="usage">The synopsis to show, e.g. <c>urwpgsim2d collide FILE</c>; null for none.</param>
     public CliUsageException(string message, string? usage)
         : base(message)
     {

@@ -380,7 +380,7 @@ internal sealed class TournamentOptions
 
         if (Slurm is not null || Results is not null || Merge.Count > 0)
         {
-            throw UsageError("--format groups-knockout is played on one machine: --slurm, --shard, --results and --merge go with --format round-robin");
+            throw UsageError("--format groups-knockout is played on one machine (each knockout round is paired from the results before it, so its matches cannot be laid out as Slurm tasks in advance): --slurm, --shard, --results and --merge go with --format round-robin");
         }
 
         var index = new Dictionary<string, int>(StringComparer.Ordinal);

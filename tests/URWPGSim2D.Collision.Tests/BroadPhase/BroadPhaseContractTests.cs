@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Support;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 

@@ -1,9 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 

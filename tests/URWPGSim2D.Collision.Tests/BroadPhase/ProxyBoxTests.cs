@@ -1,7 +1,5 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 

@@ -1,4 +1,3 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
 

@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 

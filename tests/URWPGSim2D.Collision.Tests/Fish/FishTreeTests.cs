@@ -1,11 +1,8 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 

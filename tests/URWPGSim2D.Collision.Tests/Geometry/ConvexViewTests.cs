@@ -1,6 +1,5 @@
 using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Collision.Geometry;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

@@ -1,8 +1,5 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

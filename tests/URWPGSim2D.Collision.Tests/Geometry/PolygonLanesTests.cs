@@ -1,9 +1,7 @@
-using System;
 using System.Numerics;
 using System.Runtime.InteropServices;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

@@ -1,11 +1,9 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 

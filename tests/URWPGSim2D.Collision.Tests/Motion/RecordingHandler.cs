@@ -1,4 +1,3 @@
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Motion;

@@ -1,7 +1,5 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Motion;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 

@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Collision.Motion;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 

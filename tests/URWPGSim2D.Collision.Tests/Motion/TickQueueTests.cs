@@ -1,7 +1,4 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Collision.Motion;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 

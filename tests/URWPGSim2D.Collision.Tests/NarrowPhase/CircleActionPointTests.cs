@@ -1,8 +1,5 @@
 extern alias baseline;
 
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
@@ -10,7 +7,6 @@ using URWPGSim2D.Collision.Shapes;
 using Frozen = baseline::URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Tests.Support;
 using URWPGSim2D.Testing;
-using Xunit;
 using Xunit.Abstractions;
 using Xunit.Sdk;
 

@@ -1,7 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

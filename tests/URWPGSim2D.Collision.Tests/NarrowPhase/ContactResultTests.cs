@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.NarrowPhase;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

@@ -1,7 +1,5 @@
-using System;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Support;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

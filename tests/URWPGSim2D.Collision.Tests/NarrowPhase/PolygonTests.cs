@@ -1,7 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Support;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

@@ -1,10 +1,8 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 

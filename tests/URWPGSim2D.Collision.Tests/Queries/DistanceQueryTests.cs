@@ -1,12 +1,9 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
 using URWPGSim2D.Collision.Tests.Support;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Queries;
 

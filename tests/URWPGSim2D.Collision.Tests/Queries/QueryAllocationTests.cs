@@ -1,11 +1,9 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Queries;
 

@@ -1,6 +1,3 @@
-using System;
-using Xunit;
-
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>Checks the library's rule for bad input: an <see cref="ArgumentException"/> naming the parameter and the value.</summary>

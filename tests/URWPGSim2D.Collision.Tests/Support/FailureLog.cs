@@ -1,6 +1,4 @@
-using System.Collections.Generic;
 using System.Text;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Support;
 

@@ -1,7 +1,4 @@
-using System;
-using System.Linq;
 using System.Numerics;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Support;
 

@@ -1,5 +1,3 @@
-using Xunit;
-
 namespace URWPGSim2D.Compat.Tests.Common;
 
 /// <summary>

@@ -1,6 +1,5 @@
 using System.Drawing;
 using URWPGSim2D.Common;
-using Xunit;
 using XnaFramework = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Compat.Tests.Common;

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Common;
-using Xunit;
 
 namespace URWPGSim2D.Compat.Tests.Common;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Common;
-using Xunit;
 using XnaFramework = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Compat.Tests.Common;

@@ -1,7 +1,4 @@
-using System;
 using System.Collections.Immutable;
-using System.IO;
-using System.Linq;
 using System.Reflection;
 using System.Reflection.Metadata;
 using System.Reflection.PortableExecutable;
@@ -11,7 +8,6 @@ using System.Security.Cryptography;
 using Microsoft.CodeAnalysis;
 using URWPGSim2D.Compat.Retargeting;
 using URWPGSim2D.Tests.OldStrategies;
-using Xunit;
 
 namespace URWPGSim2D.Compat.Tests.Retargeting;
 

@@ -1,11 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Runtime.CompilerServices;
 using System.Runtime.Loader;
 using URWPGSim2D.Compat.Retargeting;
 using URWPGSim2D.Tests.OldStrategies;
-using Xunit;
 
 namespace URWPGSim2D.Compat.Tests.Retargeting;
 

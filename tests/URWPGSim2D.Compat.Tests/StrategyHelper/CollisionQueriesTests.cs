@@ -1,11 +1,8 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Common;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Strategies;
 using URWPGSim2D.StrategyHelper;
-using Xunit;
 using XnaVector3 = Microsoft.Xna.Framework.Vector3;
 
 namespace URWPGSim2D.Compat.Tests.StrategyHelper;

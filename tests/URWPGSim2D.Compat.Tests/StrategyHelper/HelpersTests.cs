@@ -1,6 +1,5 @@
 using URWPGSim2D.Common;
 using URWPGSim2D.StrategyHelper;
-using Xunit;
 using XnaFramework = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Compat.Tests.StrategyHelper;

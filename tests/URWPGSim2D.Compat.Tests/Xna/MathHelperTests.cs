@@ -1,6 +1,4 @@
-using System;
 using Microsoft.Xna.Framework;
-using Xunit;
 
 namespace URWPGSim2D.Compat.Tests.Xna;
 

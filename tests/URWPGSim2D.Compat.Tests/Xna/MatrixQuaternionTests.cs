@@ -1,6 +1,4 @@
-using System;
 using Microsoft.Xna.Framework;
-using Xunit;
 using N = System.Numerics;
 
 namespace URWPGSim2D.Compat.Tests.Xna;

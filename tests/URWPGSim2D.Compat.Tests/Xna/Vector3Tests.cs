@@ -1,5 +1,4 @@
 using Microsoft.Xna.Framework;
-using Xunit;
 
 namespace URWPGSim2D.Compat.Tests.Xna;
 

@@ -1,7 +1,4 @@
-using System.Collections.Generic;
-using System.IO;
 using URWPGSim2D.Tournament.Batch;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch;
 

@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.CommandLine;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,4 +1,3 @@
-using System.IO;
 using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Tests.Cli;

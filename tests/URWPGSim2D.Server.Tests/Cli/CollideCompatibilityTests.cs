@@ -1,11 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,5 +1,3 @@
-using System.Linq;
-using Xunit;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

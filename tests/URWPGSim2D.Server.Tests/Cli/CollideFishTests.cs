@@ -1,12 +1,8 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

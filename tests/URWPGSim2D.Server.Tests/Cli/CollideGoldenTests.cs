@@ -1,7 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Text.Json;
-using Xunit;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

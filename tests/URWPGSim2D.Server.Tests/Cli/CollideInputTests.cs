@@ -1,12 +1,9 @@
-using System;
 using System.Globalization;
-using System.IO;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

@@ -1,9 +1,6 @@
-using System;
-using System.IO;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,10 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Text;
 using URWPGSim2D.Server.Tests.Docs;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,10 +1,6 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,17 +1,12 @@
-using System;
 using System.Globalization;
-using System.IO;
-using System.Linq;
 using System.Net;
 using System.Net.Http;
 using System.Text.Json;
 using System.Threading;
-using System.Threading.Tasks;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,8 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Collections.Specialized;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
@@ -10,7 +6,6 @@ using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Viewer;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,18 +1,14 @@
-using System;
 using System.Globalization;
-using System.IO;
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using System.Text.RegularExpressions;
 using System.Threading;
-using System.Threading.Tasks;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,7 +1,3 @@
-using System;
-using System.IO;
-using Xunit;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>An existing results, trace or page file is never replaced unless --force: exit 2, one line, the file untouched.</summary>

@@ -1,9 +1,7 @@
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,7 +1,3 @@
-using System;
-using System.Collections.Generic;
-using Xunit;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>

@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Xml.Linq;
 using URWPGSim2D.Collision.Fish;
-using Xunit;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,7 +1,4 @@
-using System;
-using System.IO;
 using System.Text.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

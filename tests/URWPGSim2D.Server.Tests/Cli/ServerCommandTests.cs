@@ -1,9 +1,6 @@
-using System;
-using System.IO;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Tests.Batch.Slurm;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,11 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Fish;
-using Xunit;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

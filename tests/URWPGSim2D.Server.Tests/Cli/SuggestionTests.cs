@@ -1,9 +1,6 @@
-using System;
-using System.Linq;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,8 +1,3 @@
-using System;
-using System.IO;
-using System.Linq;
-using Xunit;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary><c>view TRACE --html FILE</c> and the viewer options of <c>run</c>: bad input is one line, exit code 2, nothing written.</summary>

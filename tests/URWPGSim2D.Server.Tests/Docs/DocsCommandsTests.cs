@@ -1,9 +1,5 @@
-using System;
 using System.Collections.Concurrent;
-using System.Collections.Generic;
-using System.Linq;
 using System.Text.RegularExpressions;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 

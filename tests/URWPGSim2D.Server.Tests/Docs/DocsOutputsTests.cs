@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using System.Linq;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 
@@ -152,7 +147,7 @@ public sealed class DocsOutputsTests
     [Fact]
     public void TheTranscriptReaderUnderstandsTheDocsCommands()
     {
-        var t = Transcript.Parse("$ echo '[1,\n  2]' | URWPGSim2D.Server collide -\nout\n$ echo $?\n0\n$ dotnet run -c Release --project src/URWPGSim2D.Server -- run --batch 4\na\nb");
+        var t = Transcript.Parse("$ echo '[1,\n  2]' | urwpgsim2d collide -\nout\n$ echo $?\n0\n$ dotnet run -c Release --project src/URWPGSim2D.Server -- run --batch 4\na\nb");
 
         Assert.Equal(3, t.Steps.Count);
         Assert.Equal(["collide", "-"], t.Steps[0].Arguments!);
@@ -162,7 +157,8 @@ public sealed class DocsOutputsTests
         Assert.Equal(["run", "--batch", "4"], t.Steps[2].Arguments!);
         Assert.Equal(["a", "b"], t.Steps[2].Expected);
         Assert.Throws<FormatException>(() => Transcript.Parse("$ cat x.json"));
-        Assert.Throws<FormatException>(() => Transcript.Parse("$ URWPGSim2D.Server collide x.json > y"));
+        Assert.Throws<FormatException>(() => Transcript.Parse("$ urwpgsim2d collide x.json > y"));
+        Assert.Throws<FormatException>(() => Transcript.Parse("$ URWPGSim2D.Server run --cycles 1")); // the program is urwpgsim2d
     }
 
     private static void Rewrite(string file, List<(MarkdownBlock Block, string Text)> replacements)

@@ -1,7 +1,4 @@
-using System.Collections.Generic;
-using System.IO;
 using System.Text.RegularExpressions;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 

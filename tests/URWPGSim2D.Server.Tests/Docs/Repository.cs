@@ -1,8 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-
 namespace URWPGSim2D.Server.Tests.Docs;
 
 /// <summary>The clone the tests run in: its root (the folder of the .sln) and its Markdown files.</summary>

@@ -1,10 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Reflection;
 using URWPGSim2D.Server.Tests.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 

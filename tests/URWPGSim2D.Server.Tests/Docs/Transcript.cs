@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Text;
 using System.Text.RegularExpressions;
 
@@ -10,14 +7,14 @@ namespace URWPGSim2D.Server.Tests.Docs;
 /// A command transcript of the docs: a code block whose first line starts with <c>$ </c>. Each
 /// <c>$</c> line is a command (continued on the next lines while a quote is open), the lines up to
 /// the next <c>$</c> line are what it prints (stdout, then stderr); <c>$ echo $?</c> prints the
-/// previous command's exit code. The commands understood: <c>URWPGSim2D.Server ARGS</c>,
-/// <c>urwpgsim2d ARGS</c> (the tool's command),
+/// previous command's exit code. The commands understood:
+/// <c>urwpgsim2d ARGS</c> (the tool's command; the docs call the program by no other name),
 /// <c>dotnet run -c Release --project src/URWPGSim2D.Server -- ARGS</c>, each optionally after
 /// <c>echo 'TEXT' |</c> (TEXT on standard input). Run from the repository root.
 /// </summary>
 internal sealed partial record Transcript(IReadOnlyList<Transcript.Step> Steps)
 {
-    private static readonly string[] ServerPrefixes = ["URWPGSim2D.Server", "urwpgsim2d", "dotnet run -c Release --project src/URWPGSim2D.Server --"];
+    private static readonly string[] ServerPrefixes = ["urwpgsim2d", "dotnet run -c Release --project src/URWPGSim2D.Server --"];
 
     /// <summary>One command and what the docs say it prints.</summary>
     /// <param name="Command">The command text as shown (without <c>$ </c>; may span lines).</param>

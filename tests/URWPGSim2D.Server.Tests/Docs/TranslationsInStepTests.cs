@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Text.RegularExpressions;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 
@@ -80,6 +75,37 @@ public sealed partial class TranslationsInStepTests
         Assert.True(problems.Count == 0, string.Join('\n', problems));
     }
 
+    /// <summary>
+    /// Every page README.md lists for strategy writers has a Chinese page, and README.zh-CN.md links
+    /// every Chinese page.
+    /// </summary>
+    [Fact]
+    public void EveryPageForStrategyWritersIsInChineseAndTheChineseReadmeLinksEveryChinesePage()
+    {
+        string[] readme = File.ReadAllLines(Repository.PathOf("README.md"));
+        int from = Array.IndexOf(readme, "For strategy writers:");
+        int to = Array.IndexOf(readme, "For users of the server:");
+        Assert.True(from >= 0 && to > from, "README.md lists the pages for strategy writers");
+        var pages = readme[from..to]
+            .Select(l => ListedPage().Match(l))
+            .Where(m => m.Success)
+            .Select(m => m.Groups[1].Value)
+            .ToList();
+        Assert.Contains("docs/learning.md", pages);
+
+        var missing = pages
+            .Select(p => p.StartsWith("docs/", StringComparison.Ordinal) ? "docs/zh-CN/" + p["docs/".Length..] : p.Replace(".md", ".zh-CN.md", StringComparison.Ordinal))
+            .Where(p => !File.Exists(Repository.PathOf(p)))
+            .ToList();
+        Assert.True(missing.Count == 0, "no Chinese page: " + string.Join(", ", missing));
+
+        string chineseReadme = File.ReadAllText(Repository.PathOf("README.zh-CN.md"));
+        var unlinked = Repository.TranslatedPages()
+            .Where(p => p != "README.zh-CN.md" && !chineseReadme.Contains("](" + p + ")", StringComparison.Ordinal))
+            .ToList();
+        Assert.True(unlinked.Count == 0, "README.zh-CN.md does not link: " + string.Join(", ", unlinked));
+    }
+
     [Fact]
     public void TheRowReaderKeysARowByItsCodesOrItsMessage()
     {
@@ -122,6 +148,10 @@ public sealed partial class TranslationsInStepTests
     // A compiler code as a word of its own, also between Chinese characters (which \b treats as letters).
     [GeneratedRegex(@"(?<![A-Za-z0-9])(CS|SYSLIB)[0-9]{4}(?![0-9])", RegexOptions.CultureInvariant)]
     private static partial Regex CodeWord();
+
+    // A list item of README.md's documentation section: "- [docs/x.md](docs/x.md): …".
+    [GeneratedRegex(@"^- \[[^\]]+\]\(([^)#]+)\)", RegexOptions.CultureInvariant)]
+    private static partial Regex ListedPage();
 
     [GeneratedRegex("`([^`]+)`", RegexOptions.CultureInvariant)]
     private static partial Regex CodeSpan();

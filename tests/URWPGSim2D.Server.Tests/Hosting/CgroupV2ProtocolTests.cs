@@ -1,8 +1,4 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

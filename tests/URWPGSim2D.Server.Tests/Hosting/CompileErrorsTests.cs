@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
-using System.IO;
-using System.Linq;
 using System.Text;
 using System.Text.RegularExpressions;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

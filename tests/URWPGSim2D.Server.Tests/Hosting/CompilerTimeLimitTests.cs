@@ -1,9 +1,5 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

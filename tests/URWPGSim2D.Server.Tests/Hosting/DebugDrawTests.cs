@@ -1,7 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
@@ -10,7 +6,6 @@ using URWPGSim2D.Engine.Items.BallGrab;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 using OriginalDraw = URWPGSim2D.StrategyHelper.DebugDraw;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,8 +1,5 @@
-using System;
-using System.IO;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,9 +1,6 @@
-using System;
-using System.IO;
 using System.Net;
 using System.Net.Sockets;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,5 +1,3 @@
-using Xunit;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

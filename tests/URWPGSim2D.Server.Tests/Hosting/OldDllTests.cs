@@ -1,6 +1,3 @@
-using System;
-using System.IO;
-using System.Linq;
 using Microsoft.CodeAnalysis;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
@@ -12,7 +9,6 @@ using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Tests.OldStrategies;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
 using System.Reflection;
 using System.Runtime.Loader;
 using URWPGSim2D.Compat.Hosting;
@@ -10,7 +7,6 @@ using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,9 +1,5 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Tests.OldStrategies;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

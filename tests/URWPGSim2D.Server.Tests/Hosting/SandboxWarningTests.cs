@@ -1,9 +1,5 @@
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using System.Threading.Tasks;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,8 +1,4 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

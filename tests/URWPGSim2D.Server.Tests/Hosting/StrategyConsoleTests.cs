@@ -1,8 +1,5 @@
-using System;
-using System.IO;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Docs;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -2,7 +2,6 @@ using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,9 +1,7 @@
-using System.IO;
 using System.Runtime.Loader;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,9 +1,5 @@
 #define DEBUG // Debug.WriteLine is this test's subject: compiled in Release builds of the tests too
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using System.Linq;
 using System.Text.Json;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
@@ -12,7 +8,6 @@ using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

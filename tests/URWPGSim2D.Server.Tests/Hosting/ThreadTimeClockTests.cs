@@ -1,7 +1,5 @@
-using System;
 using System.Threading;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Items;

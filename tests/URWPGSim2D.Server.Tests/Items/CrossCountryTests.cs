@@ -1,7 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.CrossCountry;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,11 +1,7 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Engine.Items.FourTeams;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,6 +1,3 @@
-using System;
-using Xunit;
-
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>

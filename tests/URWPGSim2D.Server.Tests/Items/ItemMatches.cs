@@ -4,7 +4,6 @@ using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,6 +1,5 @@
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

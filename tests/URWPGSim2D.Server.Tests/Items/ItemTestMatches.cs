@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;

@@ -1,5 +1,3 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Engine.Items.CrossCountry;
@@ -7,7 +5,6 @@ using URWPGSim2D.Engine.Items.Polo;
 using URWPGSim2D.Engine.Items.Rescue;
 using URWPGSim2D.Engine.Items.Snooker;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,6 +1,5 @@
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,10 +1,8 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PlainScene;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Polo;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,11 +1,8 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PushBallAvoidObstacles;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

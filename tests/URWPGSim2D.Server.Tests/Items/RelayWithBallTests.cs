@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.RelayWithBall;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

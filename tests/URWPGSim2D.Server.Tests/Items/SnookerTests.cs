@@ -1,11 +1,9 @@
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Snooker;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

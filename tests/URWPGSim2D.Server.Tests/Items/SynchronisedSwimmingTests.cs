@@ -1,12 +1,8 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Numerics;
 using System.Text;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.SynchronisedSwimming;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

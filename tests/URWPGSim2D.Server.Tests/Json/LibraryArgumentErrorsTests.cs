@@ -1,9 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Server.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Json;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Server.Json;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Json;
 

@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
@@ -11,7 +8,6 @@ using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Matches;
 

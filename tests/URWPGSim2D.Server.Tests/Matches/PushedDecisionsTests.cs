@@ -1,11 +1,9 @@
-using System;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Matches;
 

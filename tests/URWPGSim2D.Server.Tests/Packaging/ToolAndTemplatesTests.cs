@@ -1,9 +1,6 @@
-using System.IO;
-using System.Linq;
 using System.Text.Json;
 using System.Xml.Linq;
 using URWPGSim2D.Server.Tests.Docs;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Packaging;
 

@@ -1,11 +1,9 @@
-using System;
 using System.Collections;
 using System.Numerics;
 using System.Reflection;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Scenario;
 

@@ -1,10 +1,8 @@
-using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Scenario;
 

@@ -1,7 +1,5 @@
-using System;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

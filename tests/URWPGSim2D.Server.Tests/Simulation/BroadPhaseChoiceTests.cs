@@ -1,12 +1,9 @@
-using System;
-using System.IO;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

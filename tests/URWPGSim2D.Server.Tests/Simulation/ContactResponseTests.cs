@@ -1,8 +1,6 @@
 using URWPGSim2D.Collision.Fish;
-using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using URWPGSim2D.Collision.Motion;

@@ -1,9 +1,7 @@
-using System;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Linq;
 using System.Text;
 using System.Threading;
 using URWPGSim2D.Hosting;
@@ -9,7 +7,6 @@ using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

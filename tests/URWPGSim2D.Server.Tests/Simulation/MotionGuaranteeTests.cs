@@ -1,7 +1,5 @@
-using System;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 using Xunit.Abstractions;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,8 +1,6 @@
-using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,11 +1,8 @@
-using System;
-using System.IO;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

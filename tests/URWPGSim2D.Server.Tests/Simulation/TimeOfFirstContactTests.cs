@@ -1,6 +1,4 @@
-using System.Linq;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

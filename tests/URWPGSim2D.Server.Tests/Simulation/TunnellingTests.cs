@@ -1,7 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Engine.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

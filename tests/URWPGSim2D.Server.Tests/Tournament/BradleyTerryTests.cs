@@ -1,7 +1,4 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,8 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Tournament;
-using Xunit;
 using Xunit.Abstractions;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

@@ -1,10 +1,6 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text.Json;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,12 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,7 +1,4 @@
-using System;
-using System.IO;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 
@@ -30,7 +27,7 @@ public sealed class TournamentGroupsKnockoutCommandTests : IDisposable
     [InlineData("ball-grab", "--format groups-knockout --seeding c,c", "--seeding: \"c\" is named twice")]
     [InlineData("four-teams", "--format groups-knockout", "--format groups-knockout: four-teams is a 4-team item; a group stage and knockout needs a two-team item")]
     [InlineData("transport", "--format groups-knockout", "--format groups-knockout: transport is a 1-team item; a group stage and knockout needs a two-team item")]
-    [InlineData("ball-grab", "--format groups-knockout --slurm jobs", "--format groups-knockout is played on one machine: --slurm, --shard, --results and --merge go with --format round-robin")]
+    [InlineData("ball-grab", "--format groups-knockout --slurm jobs", "--format groups-knockout is played on one machine (each knockout round is paired from the results before it, so its matches cannot be laid out as Slurm tasks in advance): --slurm, --shard, --results and --merge go with --format round-robin")]
     public void Bad_input_is_one_line_naming_the_option_and_exit_2_with_nothing_written(string item, string options, string message)
     {
         var run = Run(item, options.Split(' '));

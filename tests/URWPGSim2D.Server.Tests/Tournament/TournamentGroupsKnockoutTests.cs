@@ -1,9 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,11 +1,7 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Hosting;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,10 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Docs;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 
@@ -62,7 +57,7 @@ public sealed class TournamentWalkthroughTests : IDisposable
         Assert.True(problems.Count == 0, string.Join("\n\n", problems) + "\n(bash scripts/regenerate-docs-outputs.sh writes the real outputs into the page)");
     }
 
-    // "$ URWPGSim2D.Server tournament …" with the folder tour and the repository's relative paths made absolute.
+    // "$ urwpgsim2d tournament …" with the folder tour and the repository's relative paths made absolute.
     private static string Play(string command, string tour)
     {
         string[] words = command.Split(' ', StringSplitOptions.RemoveEmptyEntries);

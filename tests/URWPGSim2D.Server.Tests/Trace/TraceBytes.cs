@@ -1,5 +1,3 @@
-using System;
-using System.IO;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;

@@ -1,7 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Globalization;
-using System.Linq;
 using System.Security.Cryptography;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
@@ -10,7 +7,6 @@ using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Trace;
 

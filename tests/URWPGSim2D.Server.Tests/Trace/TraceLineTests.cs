@@ -1,12 +1,9 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Engine.Trace;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Trace;
 

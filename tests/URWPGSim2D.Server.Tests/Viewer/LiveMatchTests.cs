@@ -1,16 +1,11 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Text;
 using System.Text.Json;
 using System.Threading;
-using System.Threading.Tasks;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Viewer;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Viewer;
 

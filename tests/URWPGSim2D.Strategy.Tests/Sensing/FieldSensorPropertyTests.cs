@@ -1,8 +1,5 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Strategy.Tests.Sensing;
 

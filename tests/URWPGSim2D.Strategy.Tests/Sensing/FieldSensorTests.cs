@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Strategies;
-using Xunit;
 
 namespace URWPGSim2D.Strategy.Tests.Sensing;
 

@@ -189,7 +189,7 @@ public sealed partial record SlurmJob(
     {
         var s = new StringBuilder("#!/bin/bash\n");
         s.Append("# ").Append(what).Append('\n');
-        s.Append("# Written by URWPGSim2D.Server run --slurm (docs/batch.md). ").Append(how).Append('\n');
+        s.Append("# Written by urwpgsim2d run --slurm (docs/batch.md). ").Append(how).Append('\n');
         s.Append("# The batch: run").Append(Comment(string.Join(' ', RunArguments.Select(ShellWord.Quote)))).Append('\n');
         s.Append("set -euo pipefail\n");
         return s;

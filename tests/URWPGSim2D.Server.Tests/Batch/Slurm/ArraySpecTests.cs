@@ -1,5 +1,4 @@
 using URWPGSim2D.Tournament.Batch.Slurm;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

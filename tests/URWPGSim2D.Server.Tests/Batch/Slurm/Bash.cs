@@ -1,8 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

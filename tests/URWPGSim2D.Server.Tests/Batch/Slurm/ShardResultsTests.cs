@@ -1,10 +1,6 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Tournament.Batch.Slurm;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

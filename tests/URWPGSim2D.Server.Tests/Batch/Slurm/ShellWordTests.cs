@@ -1,9 +1,5 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

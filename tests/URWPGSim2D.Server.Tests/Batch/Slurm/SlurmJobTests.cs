@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

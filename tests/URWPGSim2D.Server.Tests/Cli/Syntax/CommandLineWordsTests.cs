@@ -1,10 +1,7 @@
-using System;
-using System.Linq;
 using System.Text.RegularExpressions;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

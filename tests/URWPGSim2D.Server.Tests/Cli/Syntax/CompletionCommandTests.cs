@@ -1,9 +1,6 @@
-using System;
 using System.Diagnostics;
-using System.IO;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

@@ -1,12 +1,8 @@
-using System;
-using System.Collections.Generic;
 using System.CommandLine;
 using System.CommandLine.Completions;
-using System.Linq;
 using System.Text.RegularExpressions;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

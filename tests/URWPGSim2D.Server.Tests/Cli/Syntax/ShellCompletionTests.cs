@@ -1,13 +1,9 @@
-using System;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Server.Tests.Cli;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

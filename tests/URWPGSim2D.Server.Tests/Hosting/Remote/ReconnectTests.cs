@@ -1,13 +1,9 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using System.Threading;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Engine.Items.Demo;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;
 

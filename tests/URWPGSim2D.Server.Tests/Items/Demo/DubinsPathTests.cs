@@ -1,9 +1,7 @@
 using URWPGSim2D.Collision.Motion;
-using System;
 using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Testing;
-using Xunit;
 using Xunit.Sdk;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

@@ -1,8 +1,5 @@
-using System;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;
 

@@ -1,7 +1,4 @@
 using URWPGSim2D.Collision.Motion;
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Demo;
@@ -9,7 +6,6 @@ using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;
 

@@ -1,11 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Engine.Items.Rescue;
 using URWPGSim2D.Testing;
-using Xunit;
 using Xunit.Sdk;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

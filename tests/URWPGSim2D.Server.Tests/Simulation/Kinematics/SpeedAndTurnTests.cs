@@ -1,6 +1,5 @@
 using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation.Kinematics;
 

@@ -1,7 +1,6 @@
 using System.Numerics;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
-using Xunit;
 
 namespace URWPGSim2D.Server.Tests.Simulation.Kinematics;
 
