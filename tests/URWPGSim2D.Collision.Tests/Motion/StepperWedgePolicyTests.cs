@@ -1,10 +1,7 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Shapes;
-using Xunit;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 
