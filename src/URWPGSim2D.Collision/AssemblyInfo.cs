@@ -1,4 +1,2 @@
-using System.Runtime.CompilerServices;
-
 // Stack buffers in the narrow phase are always written before they are read: skip zeroing them.
 [module: SkipLocalsInit]

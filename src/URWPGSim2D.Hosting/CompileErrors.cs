@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Globalization;
 using Microsoft.CodeAnalysis;
 
 namespace URWPGSim2D.Hosting;

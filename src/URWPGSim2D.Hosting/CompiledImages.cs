@@ -1,11 +1,5 @@
-using System;
 using System.Collections.Concurrent;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.Globalization;
-using System.IO;
 using System.Security.Cryptography;
-using System.Text;
 
 namespace URWPGSim2D.Hosting;
 

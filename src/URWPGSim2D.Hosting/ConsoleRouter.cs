@@ -1,10 +1,3 @@
-using System;
-using System.Diagnostics;
-using System.IO;
-using System.Text;
-using System.Threading;
-using URWPGSim2D.Engine.Teams;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>

@@ -1,12 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.IO;
 using System.Runtime.InteropServices;
-using System.Text;
-using System.Threading;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 

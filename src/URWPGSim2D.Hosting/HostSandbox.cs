@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>Decides, once per run, whether hosts run in the sandbox, and says so once where it cannot be set up.</summary>

@@ -1,9 +1,5 @@
-using System;
 using System.Diagnostics.CodeAnalysis;
-using System.Globalization;
-using System.IO;
 using System.Runtime.InteropServices;
-using System.Text;
 using URWPGSim2D.Protocol;
 using URWPGSim2D.Engine.BuiltInStrategies;
 

@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Protocol;
 
 namespace URWPGSim2D.Hosting;

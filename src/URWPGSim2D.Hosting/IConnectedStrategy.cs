@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 

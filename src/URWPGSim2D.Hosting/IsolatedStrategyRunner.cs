@@ -1,7 +1,3 @@
-using System;
-using System.Threading;
-using URWPGSim2D.Engine.Teams;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>

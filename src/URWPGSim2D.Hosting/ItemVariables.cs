@@ -1,5 +1,4 @@
 using System.Collections.Concurrent;
-using System.Collections.Generic;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Scenario;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Matches;

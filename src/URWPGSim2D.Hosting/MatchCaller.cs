@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Hosting;

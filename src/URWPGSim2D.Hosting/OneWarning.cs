@@ -1,6 +1,3 @@
-using System;
-using System.Threading;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>A warning said at most once, however many matches, hosts or threads run into its cause.</summary>

@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>A user strategy ready for strategy hosts (<see cref="StrategyResolver.Prepare"/>).</summary>

@@ -1,8 +1,5 @@
-using System;
-using System.Globalization;
 using System.Net;
 using System.Net.Sockets;
-using System.Threading;
 using URWPGSim2D.Protocol;
 
 namespace URWPGSim2D.Hosting;

@@ -1,7 +1,3 @@
-using System;
-using System.IO;
-using System.Threading;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>

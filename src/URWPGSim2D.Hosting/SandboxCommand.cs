@@ -1,9 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.Globalization;
-using System.IO;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>

@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.Diagnostics;
-using System.Globalization;
 using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 

@@ -1,7 +1,4 @@
-using System;
-using System.IO;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 

@@ -1,6 +1,3 @@
-using System;
-using System.Threading;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>

@@ -1,9 +1,5 @@
-using System;
-using System.IO;
 using System.Security.Cryptography;
-using System.Text;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Hosting;
 

@@ -1,8 +1,5 @@
-using System;
 using System.Collections.Concurrent;
-using System.Collections.Generic;
 using System.Diagnostics.CodeAnalysis;
-using System.IO;
 using System.Reflection;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
 using URWPGSim2D.Compat.Hosting;

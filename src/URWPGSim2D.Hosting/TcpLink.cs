@@ -1,6 +1,3 @@
-using System;
-using System.Diagnostics;
-using System.IO;
 using System.Net.Sockets;
 
 namespace URWPGSim2D.Hosting;

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Hosting;
 
 /// <summary>The server failed while it dealt with one team's strategy (its host, its connection): the failure is put on that team.</summary>

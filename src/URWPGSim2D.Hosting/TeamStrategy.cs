@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Hosting;

@@ -1,5 +1,3 @@
-using URWPGSim2D.Strategies;
-
 namespace URWPGSim2D.Protocol;
 
 /// <summary>The server's answer to a hello: what the client plays. Everything in it holds for the whole match.</summary>

@@ -1,8 +1,4 @@
-using System;
 using System.Collections.Generic;
-using System.Numerics;
-using System.Text.Json;
-using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Protocol;
 

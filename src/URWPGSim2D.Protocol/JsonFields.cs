@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using System.Text.Json;
-
 namespace URWPGSim2D.Protocol;
 
 /// <summary>Reads typed values from a <see cref="Utf8JsonReader"/> positioned on a property name, with one-line errors naming the field.</summary>

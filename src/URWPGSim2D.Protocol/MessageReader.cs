@@ -1,7 +1,4 @@
-using System;
 using System.Collections.Generic;
-using System.Text.Json;
-using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Protocol;
 

@@ -1,7 +1,4 @@
-using System;
 using System.Buffers.Binary;
-using System.Numerics;
-using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Protocol;
 

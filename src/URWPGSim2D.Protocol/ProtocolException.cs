@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Protocol;
 
 /// <summary>A message that breaks the protocol: not JSON, too long, a missing or mistyped field. The message is one line naming the field.</summary>

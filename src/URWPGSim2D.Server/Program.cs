@@ -1,6 +1,3 @@
-using System;
-using System.IO;
-using System.Text;
 using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server;

@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>One debug drawing of a strategy in one cycle (mm, X = world X, Y = world Z).</summary>

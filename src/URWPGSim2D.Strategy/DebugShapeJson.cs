@@ -1,6 +1,4 @@
-using System;
 using System.Globalization;
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Strategies;
 

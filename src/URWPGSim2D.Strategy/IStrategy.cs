@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>

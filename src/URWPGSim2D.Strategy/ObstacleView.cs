@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>What a strategy sees of one obstacle (mm, rad; X = world X, Y = world Z).</summary>

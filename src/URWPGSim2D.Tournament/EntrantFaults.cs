@@ -1,6 +1,4 @@
-using System.Globalization;
 using System.Text.RegularExpressions;
-using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Tournament;
 

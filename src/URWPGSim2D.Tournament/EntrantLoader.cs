@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 

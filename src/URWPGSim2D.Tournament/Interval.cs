@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>A 95 % interval from bootstrap replicates: their 2.5 % and 97.5 % quantiles.</summary>

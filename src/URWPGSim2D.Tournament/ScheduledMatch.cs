@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>One match of a tournament's schedule.</summary>

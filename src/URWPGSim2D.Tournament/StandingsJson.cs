@@ -1,7 +1,3 @@
-using System;
-using System.Linq;
-using System.Globalization;
-using System.Text;
 using System.Text.Encodings.Web;
 using System.Text.Json;
 

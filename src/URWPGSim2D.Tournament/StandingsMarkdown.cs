@@ -1,6 +1,3 @@
-using System.Globalization;
-using System.Text;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>DIR/standings.md: the standings as a Markdown table, the method, and which ranks the results do not separate.</summary>

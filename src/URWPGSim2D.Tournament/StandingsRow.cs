@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>One entrant's line of the standings.</summary>

@@ -1,8 +1,3 @@
-using System;
-using System.Globalization;
-using System.Linq;
-using System.Text;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>How the standings' numbers and notes are written in DIR/standings.md and the report.</summary>

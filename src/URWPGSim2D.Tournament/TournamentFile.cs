@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Tournament;
 

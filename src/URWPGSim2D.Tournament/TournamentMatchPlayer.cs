@@ -1,4 +1,3 @@
-using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;

@@ -1,7 +1,3 @@
-using System.Collections.Generic;
-using System.IO;
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>The files of a finished tournament in its folder: results.jsonl, standings.json, standings.md, standings.csv, matches.csv and report.html, each written whole and renamed.</summary>

@@ -1,6 +1,3 @@
-using System.Collections.Generic;
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>

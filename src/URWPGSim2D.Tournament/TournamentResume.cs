@@ -1,8 +1,3 @@
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Linq;
 using System.Threading;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Scenario;

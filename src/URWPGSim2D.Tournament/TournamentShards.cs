@@ -1,6 +1,3 @@
-using System.IO;
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Tournament;
 
 /// <summary>Whether a Slurm task's shard file of a tournament is done: there, of this tournament and shard, and holding a record of every match of the shard.</summary>

@@ -1,7 +1,4 @@
-using System;
 using System.Diagnostics;
-using System.Globalization;
-using System.Text;
 using System.Threading;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Viewer;
 
 /// <summary>A trace line the viewer cannot use; the message names the line's field and what is wrong.</summary>

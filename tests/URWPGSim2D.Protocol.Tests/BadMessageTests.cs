@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace URWPGSim2D.Protocol.Tests;
 
 /// <summary>What a reader does with broken or hostile lines: one-line errors naming the field, bad answers with the reason, unknown fields skipped.</summary>

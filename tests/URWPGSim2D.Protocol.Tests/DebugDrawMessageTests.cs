@@ -1,5 +1,4 @@
 using System.Numerics;
-using System.Text;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Protocol.Tests;

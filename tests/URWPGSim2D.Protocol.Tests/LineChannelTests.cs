@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace URWPGSim2D.Protocol.Tests;
 
 /// <summary>Framing: lines split across reads, CRLF, a partial last line, the length limit.</summary>

@@ -1,4 +1,3 @@
-using System.Text;
 using URWPGSim2D.Testing;
 using Xunit.Sdk;
 

@@ -1,5 +1,4 @@
 using System.Threading;
-using Microsoft.Playwright;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;

@@ -1,6 +1,3 @@
-using System.Numerics;
-using System.Text.Json;
-using Microsoft.Playwright;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

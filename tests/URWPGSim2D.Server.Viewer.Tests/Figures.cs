@@ -1,5 +1,3 @@
-using Microsoft.Playwright;
-
 namespace URWPGSim2D.Server.Viewer.Tests;
 
 /// <summary>

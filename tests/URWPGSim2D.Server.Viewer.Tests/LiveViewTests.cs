@@ -2,7 +2,6 @@ using System.Diagnostics;
 using System.Net;
 using System.Net.Sockets;
 using System.Threading;
-using Microsoft.Playwright;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;

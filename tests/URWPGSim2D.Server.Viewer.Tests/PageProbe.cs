@@ -1,6 +1,3 @@
-using System.Numerics;
-using System.Text.Json;
-using Microsoft.Playwright;
 using URWPGSim2D.Collision.Fish;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

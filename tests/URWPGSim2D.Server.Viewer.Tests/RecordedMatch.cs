@@ -1,4 +1,3 @@
-using System.Text.Json;
 using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

@@ -1,7 +1,4 @@
 using System.Globalization;
-using System.Numerics;
-using System.Text.Json;
-using Microsoft.Playwright;
 using URWPGSim2D.Collision.Fish;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;

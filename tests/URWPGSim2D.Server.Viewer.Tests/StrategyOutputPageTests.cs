@@ -1,4 +1,3 @@
-using System.Text.Json;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

@@ -1,7 +1,4 @@
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Tournament.Batch;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Collision.Benchmarks.Batch;
 

@@ -1,4 +1,3 @@
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.BroadPhase;
 
 namespace URWPGSim2D.Collision.Benchmarks.BroadPhase;

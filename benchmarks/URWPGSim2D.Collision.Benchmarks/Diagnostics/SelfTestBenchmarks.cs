@@ -1,6 +1,3 @@
-using System;
-using BenchmarkDotNet.Attributes;
-
 namespace URWPGSim2D.Collision.Benchmarks.Diagnostics;
 
 /// <summary>

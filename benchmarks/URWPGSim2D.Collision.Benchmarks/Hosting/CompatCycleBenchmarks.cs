@@ -1,10 +1,5 @@
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Engine.BuiltInStrategies;
-using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 

@@ -1,10 +1,4 @@
-using System;
 using System.IO;
-using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 

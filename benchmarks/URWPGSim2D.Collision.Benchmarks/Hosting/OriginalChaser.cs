@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Common;
 using Decision = URWPGSim2D.Common.Decision;
 

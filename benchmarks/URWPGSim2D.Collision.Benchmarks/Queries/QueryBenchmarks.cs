@@ -1,10 +1,6 @@
-using System;
-using System.Numerics;
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Benchmarks.Queries;
 

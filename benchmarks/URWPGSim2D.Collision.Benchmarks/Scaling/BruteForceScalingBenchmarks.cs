@@ -1,9 +1,4 @@
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 

@@ -1,11 +1,6 @@
-using System;
-using System.Numerics;
-using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Demo;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Collision.Benchmarks.Server;

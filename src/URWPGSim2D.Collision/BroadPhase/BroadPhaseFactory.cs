@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>Creates the broad phase a <see cref="BroadPhaseKind"/> names.</summary>

@@ -1,6 +1,3 @@
-using System;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using System;
-using System.Numerics;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <content>Inserting and removing leaves, refitting and rebalancing the path to the root.</content>

@@ -1,7 +1,3 @@
-using System.Numerics;
-using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>The overlap rule shared by every broad phase: closed boxes, so touching boxes overlap.</summary>

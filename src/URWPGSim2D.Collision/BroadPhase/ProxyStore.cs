@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>The proxies' boxes (as min and max corner arrays) and the argument checks every broad phase shares.</summary>

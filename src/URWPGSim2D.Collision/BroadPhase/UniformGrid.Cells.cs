@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <content>Choosing the cell size, laying out the grid, sorting proxies into cells, moved and oversize proxies.</content>

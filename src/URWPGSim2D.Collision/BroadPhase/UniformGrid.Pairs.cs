@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.Intrinsics;
-
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <content>

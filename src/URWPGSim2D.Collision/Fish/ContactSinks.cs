@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Collision.NarrowPhase;
 
 namespace URWPGSim2D.Collision.Fish;

@@ -1,10 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Fish;
 
 /// <content>Rebuilding the leaves and the bounding volumes for a new pose, in place.</content>

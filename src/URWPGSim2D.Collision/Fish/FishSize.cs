@@ -1,6 +1,3 @@
-using System;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Fish;
 
 /// <summary>

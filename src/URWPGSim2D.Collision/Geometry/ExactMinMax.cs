@@ -1,7 +1,3 @@
-using System;
-using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
-
 namespace URWPGSim2D.Collision.Geometry;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using System;
-using System.Numerics;
-
 namespace URWPGSim2D.Collision.Geometry;
 
 /// <summary>Argument checks shared by every shape constructor: the message names the value.</summary>

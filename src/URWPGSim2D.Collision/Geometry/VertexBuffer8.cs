@@ -1,6 +1,3 @@
-using System.Numerics;
-using System.Runtime.CompilerServices;
-
 namespace URWPGSim2D.Collision.Geometry;
 
 /// <summary>Eight plane vectors stored inline (no heap): the vertices or edge normals of an 8-DOP or a small polygon.</summary>

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>Angle wrapping for headings (radians): the one wrap the library, the server and the built-in strategies use.</summary>

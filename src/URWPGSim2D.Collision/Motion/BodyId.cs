@@ -1,4 +1,3 @@
-using System;
 using System.Threading;
 
 namespace URWPGSim2D.Collision.Motion;

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>A set of mover slots in insertion order, with O(1) membership and clearing in O(size).</summary>

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>One contact the <see cref="Stepper"/> reports: two bodies overlapping at a time of the step.</summary>

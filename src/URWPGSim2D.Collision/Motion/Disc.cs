@@ -1,8 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
-using System.Runtime.Intrinsics;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>A circle as plain numbers (no validation), for cheap distance bounds, mm.</summary>

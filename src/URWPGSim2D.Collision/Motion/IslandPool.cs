@@ -1,4 +1,3 @@
-using System;
 using System.Collections.Generic;
 using System.Runtime.ExceptionServices;
 using System.Threading;

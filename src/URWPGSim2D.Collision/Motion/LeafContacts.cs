@@ -1,7 +1,4 @@
-using System;
 using System.Collections.Generic;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Motion;
 

@@ -1,8 +1,4 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Motion;
 

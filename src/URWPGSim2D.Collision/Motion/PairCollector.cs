@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>Collects candidate pairs into a reusable list (for the passes without motion: settling and measuring).</summary>

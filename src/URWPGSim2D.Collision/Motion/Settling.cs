@@ -1,6 +1,4 @@
-using System;
 using System.Collections.Generic;
-using System.Numerics;
 
 namespace URWPGSim2D.Collision.Motion;
 

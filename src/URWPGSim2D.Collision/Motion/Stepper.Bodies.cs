@@ -1,10 +1,5 @@
-using System;
 using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Motion;
 

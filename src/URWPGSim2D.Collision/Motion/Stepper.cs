@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Collision.BroadPhase;
 
 namespace URWPGSim2D.Collision.Motion;

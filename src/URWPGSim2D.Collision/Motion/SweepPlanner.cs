@@ -1,7 +1,4 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Motion;
 

@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>

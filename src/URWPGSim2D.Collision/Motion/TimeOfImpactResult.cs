@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Fish;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>The answer of <see cref="TimeOfImpact.Find"/>: when two moving bodies first touch, and how.</summary>

@@ -1,9 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>

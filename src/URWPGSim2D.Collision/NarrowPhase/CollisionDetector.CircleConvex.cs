@@ -1,8 +1,4 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision;
 

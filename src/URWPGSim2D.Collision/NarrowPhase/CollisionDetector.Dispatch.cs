@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision;
 
 /// <summary>

@@ -1,8 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.Intrinsics;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.NarrowPhase;
 
 /// <summary>

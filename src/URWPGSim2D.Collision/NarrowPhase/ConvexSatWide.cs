@@ -1,11 +1,5 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using System.Runtime.Intrinsics;
 using System.Runtime.Intrinsics.X86;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 

@@ -1,9 +1,4 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using System.Runtime.Intrinsics;
-using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.NarrowPhase;
 

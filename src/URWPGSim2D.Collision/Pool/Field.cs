@@ -1,8 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Pool;
 
 /// <summary>

@@ -1,8 +1,3 @@
-using System;
-using System.Numerics;
-using System.Runtime.CompilerServices;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Queries;
 
 /// <summary>

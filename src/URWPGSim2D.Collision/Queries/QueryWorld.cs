@@ -1,9 +1,4 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Queries;
 

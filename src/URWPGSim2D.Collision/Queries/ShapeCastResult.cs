@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-
 namespace URWPGSim2D.Collision.Queries;
 
 /// <summary>

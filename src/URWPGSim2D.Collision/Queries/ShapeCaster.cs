@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Queries;
 
 /// <summary>

@@ -1,7 +1,4 @@
-using System.Numerics;
-using System.Runtime.CompilerServices;
 using System.Runtime.InteropServices;
-using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.Shapes;
 

@@ -1,7 +1,4 @@
-using System;
 using System.Diagnostics.CodeAnalysis;
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
 
 namespace URWPGSim2D.Collision.Shapes;
 

@@ -1,7 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Shapes;
 
 /// <summary>A line segment between two distinct points of the X–Z plane, mm (a wall, a thin edge, a ray of motion).</summary>

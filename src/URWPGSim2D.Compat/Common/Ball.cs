@@ -1,7 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Drawing;
-
 namespace URWPGSim2D.Common;
 
 /// <summary>A ball.</summary>

@@ -1,5 +1,3 @@
-using System;
-using System.Drawing;
 using Xna = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Common;

@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Drawing;
 using Xna = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Common;

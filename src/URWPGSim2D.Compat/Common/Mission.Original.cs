@@ -1,4 +1,3 @@
-using System.Drawing;
 using Xna = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Common;

@@ -1,7 +1,4 @@
-using System;
 using System.Collections;
-using System.Collections.Generic;
-using System.Drawing;
 using Xna = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Common;

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Common;
 
 /// <summary>What the original tells a strategy about a team.</summary>

@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Common;

@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Compat.Hosting;

@@ -1,4 +1,3 @@
-using System;
 using System.Reflection;
 
 namespace URWPGSim2D.Compat.Retargeting;

@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Common;

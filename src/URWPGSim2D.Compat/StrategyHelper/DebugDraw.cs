@@ -1,4 +1,3 @@
-using System.Drawing;
 using URWPGSim2D.Strategies;
 using Xna = Microsoft.Xna.Framework;
 

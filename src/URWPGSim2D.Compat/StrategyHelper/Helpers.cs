@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Common;
 using URWPGSim2D.Core;
 using Xna = Microsoft.Xna.Framework;

@@ -1,5 +1,3 @@
-using System;
-
 namespace Microsoft.Xna.Framework;
 
 /// <summary>The XNA single-precision math helpers strategies use (angles in radians).</summary>

@@ -1,5 +1,3 @@
-using System;
-
 namespace Microsoft.Xna.Framework;
 
 /// <summary>XNA 3.1's transforms of <see cref="Vector3"/> by a <see cref="Matrix"/> (row vector times matrix) or a <see cref="Quaternion"/>.</summary>

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Engine.BuiltInStrategies;
 
 /// <summary>Built-in <c>fixed</c>: every fish repeats one decision forever.</summary>

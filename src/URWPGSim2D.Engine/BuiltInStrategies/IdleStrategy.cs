@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.BuiltInStrategies;

@@ -1,8 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-
 namespace URWPGSim2D.Engine.Items;
 
 /// <summary>The obstacles of a layout given as rectangles at heading 0 (centre, length along x, width along z), in order.</summary>

@@ -1,5 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Collision.Motion;
 

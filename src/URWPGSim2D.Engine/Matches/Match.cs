@@ -1,9 +1,6 @@
-using System.Collections.Generic;
-using System.Numerics;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PlainScene;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Matches;

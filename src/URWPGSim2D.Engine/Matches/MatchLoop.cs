@@ -1,7 +1,5 @@
-using System;
 using System.Linq;
 using System.Threading;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Engine.Matches;

@@ -1,12 +1,8 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Matches;

@@ -1,8 +1,5 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Engine.Matches;
 

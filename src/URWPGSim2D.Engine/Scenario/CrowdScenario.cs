@@ -1,8 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Scenario;
 
 /// <summary>

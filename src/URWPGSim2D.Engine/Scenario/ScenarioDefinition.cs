@@ -1,7 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Scenario;
 
 /// <summary>A validated scenario file (mm, rad, mm/s; vectors are [x, z]).</summary>

@@ -1,9 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Engine.Simulation;
 using static URWPGSim2D.Engine.Scenario.JsonReader;
 
 namespace URWPGSim2D.Engine.Scenario;

@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Shapes;
 

@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>One resolved contact of a cycle, as the trace reports it.</summary>

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Engine.Simulation.Kinematics;

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 
 namespace URWPGSim2D.Engine.Simulation;

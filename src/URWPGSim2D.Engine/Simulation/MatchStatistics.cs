@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>Running totals of a match for the summary.</summary>

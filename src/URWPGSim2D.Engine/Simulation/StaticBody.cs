@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Engine.Simulation;

@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Collision.Pool;

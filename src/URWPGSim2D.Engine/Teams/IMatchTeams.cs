@@ -1,6 +1,3 @@
-using System.Collections.Generic;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Teams;
 
 /// <summary>

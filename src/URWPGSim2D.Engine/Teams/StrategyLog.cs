@@ -1,4 +1,3 @@
-using System;
 using System.Text;
 
 namespace URWPGSim2D.Engine.Teams;

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Engine.Teams;
 
 /// <summary>The seat of a strategy that runs in the calling program (<see cref="StrategyTeams"/>).</summary>

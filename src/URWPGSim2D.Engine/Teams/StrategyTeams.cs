@@ -1,7 +1,3 @@
-using System;
-using System.Collections.Generic;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Teams;
 
 /// <summary>

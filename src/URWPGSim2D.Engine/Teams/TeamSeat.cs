@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Teams;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Trace;
 

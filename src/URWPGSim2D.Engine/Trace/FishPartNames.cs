@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Collision.Fish;
 
 namespace URWPGSim2D.Engine.Trace;

@@ -1,8 +1,5 @@
-using System;
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Trace;

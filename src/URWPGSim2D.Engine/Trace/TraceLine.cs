@@ -1,9 +1,5 @@
-using System;
 using System.Buffers;
-using System.Collections.Generic;
-using System.Numerics;
 using System.Text.Json;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 
 namespace URWPGSim2D.Engine.Trace;

@@ -1,6 +1,4 @@
-using System;
 using System.IO;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Trace;
 

@@ -1,11 +1,5 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.Globalization;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Cli;

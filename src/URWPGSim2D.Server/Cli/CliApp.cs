@@ -1,13 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.IO;
-using System.Linq;
-using System.Text;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

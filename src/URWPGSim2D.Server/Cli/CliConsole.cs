@@ -1,7 +1,3 @@
-using System.IO;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

@@ -1,11 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using URWPGSim2D.Server.Cli.Syntax;
 using System.Text.Json;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

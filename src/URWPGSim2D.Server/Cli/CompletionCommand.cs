@@ -1,9 +1,3 @@
-using System.Collections.Generic;
-using System.CommandLine;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

@@ -1,15 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
 using System.Diagnostics;
-using System.Globalization;
 using System.Net.Sockets;
 using System.Threading;
-using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

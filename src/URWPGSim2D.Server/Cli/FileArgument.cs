@@ -1,8 +1,3 @@
-using System.Collections.Generic;
-using System.CommandLine;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>The single FILE argument of <c>collide</c> and <c>shapes</c> (and the FILE of <c>render</c>): a path, or <c>-</c> for stdin.</summary>

@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
 using URWPGSim2D.Protocol;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,12 +1,4 @@
-using System;
 using System.Collections.Frozen;
-using System.Linq;
-using System.CommandLine;
-using System.Globalization;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,6 +1,5 @@
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,8 +1,3 @@
-using System;
-using System.IO;
-using System.Text;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>Reads a command's whole input: a file, or standard input when the argument is <c>-</c>.</summary>

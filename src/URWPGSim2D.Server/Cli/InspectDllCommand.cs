@@ -1,10 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.Text;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

@@ -1,11 +1,5 @@
-using System.Collections.Generic;
-using System.Globalization;
-using System.Linq;
-using System.Text;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,5 +1,3 @@
-using System.Globalization;
-using System.Text;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;

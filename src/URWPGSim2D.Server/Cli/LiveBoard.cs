@@ -1,15 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Collections.Specialized;
-using System.Globalization;
-using System.IO;
-using System.Linq;
-using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Json;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Viewer;

@@ -1,7 +1,5 @@
-using System;
 using System.Runtime.InteropServices;
 using System.Threading;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Simulation;

@@ -1,8 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Globalization;
-using System.Text;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Simulation;
 

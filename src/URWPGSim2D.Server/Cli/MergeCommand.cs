@@ -1,11 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

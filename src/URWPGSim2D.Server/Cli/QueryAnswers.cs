@@ -1,12 +1,8 @@
-using System;
 using System.Buffers;
-using System.Numerics;
-using System.Text;
 using System.Text.Json;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

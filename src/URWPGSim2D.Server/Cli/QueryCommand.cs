@@ -1,8 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using URWPGSim2D.Server.Cli.Syntax;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

@@ -1,8 +1,4 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,9 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.IO;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Tournament.Batch;
 

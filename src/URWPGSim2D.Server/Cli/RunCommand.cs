@@ -1,17 +1,7 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
 using System.Diagnostics;
-using System.Globalization;
-using System.IO;
 using System.Security.Cryptography;
-using System.Text;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Json;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Engine.Scenario;

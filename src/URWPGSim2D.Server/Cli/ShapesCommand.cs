@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using URWPGSim2D.Server.Cli.Syntax;
 using System.Text.Json;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,6 +1,3 @@
-using System;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>The input of <c>shapes</c> (and the shapes form of <c>render</c>): a JSON array of SHAPE objects, named <c>shapes</c> in error paths.</summary>

@@ -1,9 +1,4 @@
-using System;
-using System.CommandLine;
 using System.CommandLine.Completions;
-using System.Globalization;
-using System.Linq;
-using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,8 +1,4 @@
-using System;
 using System.Collections.Frozen;
-using System.CommandLine;
-using System.Linq;
-using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Cli;
 

@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

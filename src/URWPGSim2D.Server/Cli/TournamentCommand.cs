@@ -1,14 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
 using System.Diagnostics;
-using System.Globalization;
-using System.IO;
-using System.Linq;
 using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli;

@@ -1,15 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.Globalization;
-using System.IO;
-using System.Linq;
-using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using URWPGSim2D.Server.Cli.Syntax;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Json;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Cli;

@@ -1,6 +1,3 @@
-using System.CommandLine;
-using URWPGSim2D.Server.Cli.Syntax;
-
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>

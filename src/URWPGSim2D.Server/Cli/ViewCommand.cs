@@ -1,11 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.IO;
-using System.Text;
-using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
 using URWPGSim2D.Server.Rendering;
 using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Viewer;

@@ -1,5 +1,3 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Collision.Fish;
 
 namespace URWPGSim2D.Server.Json;

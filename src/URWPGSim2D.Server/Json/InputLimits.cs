@@ -1,6 +1,3 @@
-using System;
-using System.Globalization;
-using System.Text;
 using System.Text.Json;
 
 namespace URWPGSim2D.Server.Json;

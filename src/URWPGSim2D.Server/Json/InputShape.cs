@@ -1,4 +1,3 @@
-using System;
 using System.Diagnostics.CodeAnalysis;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;

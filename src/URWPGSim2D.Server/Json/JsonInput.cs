@@ -1,8 +1,5 @@
-using System;
-using System.Globalization;
 using System.Text.Json;
 using System.Text.Json.Serialization.Metadata;
-using URWPGSim2D.Engine.Messages;
 
 namespace URWPGSim2D.Server.Json;
 

@@ -1,6 +1,3 @@
-using System;
-using System.Numerics;
-
 namespace URWPGSim2D.Server.Json;
 
 /// <summary>Numbers and points as the output writes them: single precision, negative zero written as 0.</summary>

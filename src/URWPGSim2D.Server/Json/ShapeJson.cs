@@ -1,7 +1,4 @@
-using System;
-using System.Collections.Generic;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Engine.Messages;
 
 namespace URWPGSim2D.Server.Json;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using System.Text.Json.Serialization;
 using URWPGSim2D.Collision.Shapes;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Server.Rendering;

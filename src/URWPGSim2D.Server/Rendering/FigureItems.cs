@@ -1,5 +1,4 @@
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Rendering;
 

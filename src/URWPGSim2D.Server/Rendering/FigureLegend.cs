@@ -1,6 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
-
 namespace URWPGSim2D.Server.Rendering;
 
 /// <summary>

@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Server.Rendering;
 
 /// <summary>

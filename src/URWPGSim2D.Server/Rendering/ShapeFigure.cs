@@ -1,13 +1,8 @@
-using System;
-using System.Collections.Generic;
-using System.Globalization;
-using System.Numerics;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Rendering;
 

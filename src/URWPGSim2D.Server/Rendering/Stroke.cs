@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Server.Rendering;
 
 /// <summary>How an outline is drawn: colour, width in pixels, and an optional dash (dash, gap) in pixels.</summary>

@@ -1,6 +1,3 @@
-using System;
-using System.Globalization;
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Simulation;

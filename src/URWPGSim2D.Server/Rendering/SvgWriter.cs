@@ -1,8 +1,3 @@
-using System;
-using System.Globalization;
-using System.Numerics;
-using System.Text;
-
 namespace URWPGSim2D.Server.Rendering;
 
 /// <summary>

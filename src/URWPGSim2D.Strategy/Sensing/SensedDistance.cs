@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Queries;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>The body of the match nearest a point, and how near (the answer of <see cref="FieldSensor.Nearest"/>).</summary>

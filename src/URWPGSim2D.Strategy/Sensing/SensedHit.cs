@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Queries;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>Where a ray first enters a body of the match (the answer of <see cref="FieldSensor.RayCast"/>).</summary>

@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Strategies;
 
 /// <summary>Which kinds of bodies a <see cref="FieldSensor"/> query looks at (combine with <c>|</c>).</summary>

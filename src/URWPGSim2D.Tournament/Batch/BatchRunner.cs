@@ -1,4 +1,3 @@
-using System;
 using System.Threading;
 using System.Runtime.ExceptionServices;
 using URWPGSim2D.Engine.Matches;

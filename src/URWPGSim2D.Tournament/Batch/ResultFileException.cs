@@ -1,5 +1,3 @@
-using System;
-
 namespace URWPGSim2D.Tournament.Batch;
 
 /// <summary>A result file that cannot be used; the message names the file and line.</summary>

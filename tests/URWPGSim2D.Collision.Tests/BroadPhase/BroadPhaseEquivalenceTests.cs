@@ -1,5 +1,4 @@
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 

@@ -1,7 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.Fish;
 
 /// <summary>Random poses and partner shapes for the fish property tests (fixed seeds, reproducible).</summary>

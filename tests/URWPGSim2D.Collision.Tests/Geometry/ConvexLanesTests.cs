@@ -1,7 +1,4 @@
-using System.Numerics;
 using System.Runtime.Intrinsics;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.Geometry;
 

@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Tests.Geometry;
 
 public sealed class ExactMinMaxTests

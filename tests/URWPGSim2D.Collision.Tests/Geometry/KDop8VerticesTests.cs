@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
-
 namespace URWPGSim2D.Collision.Tests.Geometry;
 
 public sealed class KDop8VerticesTests

@@ -1,9 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Geometry;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
-
 namespace URWPGSim2D.Collision.Tests.Geometry;
 
 public sealed class OctagonCentreTests

@@ -1,9 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>

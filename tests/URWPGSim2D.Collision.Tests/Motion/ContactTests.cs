@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>A contact's plane view (translation, normal, point, depth) against the analytic overlap and its own result.</summary>

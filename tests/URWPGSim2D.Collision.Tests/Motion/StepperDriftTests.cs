@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>A body's drift: it moves the body with its velocity, it is not its velocity, and a rejected move clears it.</summary>

@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Motion;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary><see cref="Stepper.Involve"/>: a body counts as changed by a response, and nothing of it changes.</summary>

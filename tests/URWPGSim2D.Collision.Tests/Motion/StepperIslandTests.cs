@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Motion;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>

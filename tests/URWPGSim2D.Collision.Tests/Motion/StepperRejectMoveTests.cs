@@ -1,8 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>A response's verdict that a body is wedged (<see cref="Stepper.RejectMove"/>): the same rejected move as the stepper's own.</summary>

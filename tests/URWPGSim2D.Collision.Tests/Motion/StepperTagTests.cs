@@ -1,8 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary><see cref="Stepper.SetTag"/> and <see cref="Stepper.TagOf"/>: the caller's number for each body, kept and never read.</summary>

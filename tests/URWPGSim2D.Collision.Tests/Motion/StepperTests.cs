@@ -1,11 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>The world stepper: contacts at their analytic times, in time order, no tunnelling, its API's checks.</summary>

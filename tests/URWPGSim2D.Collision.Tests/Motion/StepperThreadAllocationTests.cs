@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Motion;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>

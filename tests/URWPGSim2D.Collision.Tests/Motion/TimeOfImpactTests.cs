@@ -1,9 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>The pair-level time of impact (the stepper's detection on two bodies) against analytic times of first contact.</summary>

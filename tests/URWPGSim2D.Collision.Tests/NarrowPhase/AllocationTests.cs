@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>The narrow phase is a hot path: after warm-up, <c>Detect</c> allocates nothing, whatever the pair or outcome.</summary>

@@ -1,10 +1,4 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
 using URWPGSim2D.Collision.NarrowPhase;
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-using URWPGSim2D.Testing;
-using Xunit.Sdk;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

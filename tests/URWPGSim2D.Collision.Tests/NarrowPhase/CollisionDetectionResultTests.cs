@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 public sealed class CollisionDetectionResultTests

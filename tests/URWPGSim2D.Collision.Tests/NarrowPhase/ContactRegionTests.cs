@@ -1,6 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Collision.NarrowPhase;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

@@ -1,4 +1,3 @@
-using System.Numerics;
 using System.Runtime.Intrinsics;
 using URWPGSim2D.Collision.NarrowPhase;
 

@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>

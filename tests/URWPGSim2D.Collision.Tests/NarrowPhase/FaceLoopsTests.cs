@@ -1,10 +1,5 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.NarrowPhase;
-using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>

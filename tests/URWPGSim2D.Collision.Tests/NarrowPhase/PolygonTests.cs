@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>Convex polygons against polygons, boxes and 8-DOPs (SAT over edge normals), by hand.</summary>

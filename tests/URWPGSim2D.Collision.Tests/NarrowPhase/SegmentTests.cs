@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 /// <summary>Segments against segments and polygon-like shapes, by hand. A segment has no area: only crossing counts.</summary>

@@ -1,10 +1,4 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
-using Xunit.Sdk;
-using URWPGSim2D.Testing;
 
 namespace URWPGSim2D.Collision.Tests.Pool;
 

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.Pool;
 
 public class FieldGeometryTests

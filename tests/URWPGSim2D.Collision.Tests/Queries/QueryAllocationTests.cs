@@ -1,8 +1,5 @@
-using System.Numerics;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
 
 namespace URWPGSim2D.Collision.Tests.Queries;

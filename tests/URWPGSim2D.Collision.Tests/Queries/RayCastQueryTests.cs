@@ -1,9 +1,5 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Shapes;
 using URWPGSim2D.Collision.Tests.Fish;
-using URWPGSim2D.Collision.Tests.Support;
 
 namespace URWPGSim2D.Collision.Tests.Queries;
 

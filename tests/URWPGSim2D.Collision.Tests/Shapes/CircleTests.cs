@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.Shapes;
 
 public sealed class CircleTests

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Collision.Tests.Support;
-
 namespace URWPGSim2D.Collision.Tests.Shapes;
 
 /// <summary>The <see cref="Shape"/> union: kind, access, and a bounding circle that holds the shape.</summary>

@@ -1,6 +1,3 @@
-using System.Numerics;
-using Xunit.Sdk;
-
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>

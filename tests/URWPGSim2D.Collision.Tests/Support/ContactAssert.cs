@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>Assertions for hand-computed contacts; each checks both argument orders.</summary>

@@ -1,5 +1,4 @@
 using System.Collections.Concurrent;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.Support;
 

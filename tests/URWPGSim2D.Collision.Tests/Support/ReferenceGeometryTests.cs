@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>The test reference against answers known by hand (a wrong reference would make every property test meaningless).</summary>

@@ -1,6 +1,4 @@
 using System.Globalization;
-using System.Numerics;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.Support;
 

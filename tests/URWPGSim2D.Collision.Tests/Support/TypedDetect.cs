@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-
 namespace URWPGSim2D.Collision.Tests.Support;
 
 /// <summary>Calls the statically typed <c>CollisionDetector.Detect</c> overload for the kinds held (not the library's own dispatch).</summary>

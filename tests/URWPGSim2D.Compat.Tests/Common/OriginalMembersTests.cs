@@ -1,5 +1,4 @@
 using System.Drawing;
-using URWPGSim2D.Common;
 using XnaFramework = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Compat.Tests.Common;

@@ -1,5 +1,3 @@
-using URWPGSim2D.Common;
-
 namespace URWPGSim2D.Compat.Tests.Common;
 
 /// <summary>The original's configuration reader serves the deployed configuration.</summary>

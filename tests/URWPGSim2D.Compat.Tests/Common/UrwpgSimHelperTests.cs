@@ -1,4 +1,3 @@
-using URWPGSim2D.Common;
 using XnaFramework = Microsoft.Xna.Framework;
 
 namespace URWPGSim2D.Compat.Tests.Common;

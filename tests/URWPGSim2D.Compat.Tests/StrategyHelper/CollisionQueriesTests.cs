@@ -1,5 +1,4 @@
 using System.Numerics;
-using URWPGSim2D.Common;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Strategies;
 using URWPGSim2D.StrategyHelper;

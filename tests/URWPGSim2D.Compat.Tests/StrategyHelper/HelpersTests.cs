@@ -1,4 +1,3 @@
-using URWPGSim2D.Common;
 using URWPGSim2D.StrategyHelper;
 using XnaFramework = Microsoft.Xna.Framework;
 

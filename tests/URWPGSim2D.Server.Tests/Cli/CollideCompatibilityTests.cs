@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Numerics;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Shapes;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

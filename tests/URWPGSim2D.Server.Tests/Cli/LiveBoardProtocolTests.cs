@@ -5,8 +5,6 @@ using System.Text.Json;
 using System.Threading;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

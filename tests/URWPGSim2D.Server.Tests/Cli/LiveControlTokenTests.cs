@@ -4,9 +4,6 @@ using System.Net.Http;
 using System.Text.RegularExpressions;
 using System.Threading;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

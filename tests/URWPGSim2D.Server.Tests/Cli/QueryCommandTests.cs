@@ -1,4 +1,3 @@
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Queries;
 using URWPGSim2D.Collision.Shapes;

@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Numerics;
 using System.Xml.Linq;
 using URWPGSim2D.Collision.Fish;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

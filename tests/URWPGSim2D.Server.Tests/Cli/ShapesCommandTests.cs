@@ -1,4 +1,3 @@
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Collision.Fish;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

@@ -1,6 +1,5 @@
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

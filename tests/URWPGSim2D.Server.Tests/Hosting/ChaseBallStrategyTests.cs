@@ -1,7 +1,5 @@
 using System.Globalization;
-using System.Numerics;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,7 +1,6 @@
 using System.Globalization;
 using System.Text;
 using System.Text.RegularExpressions;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

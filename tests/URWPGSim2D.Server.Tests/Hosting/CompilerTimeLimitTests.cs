@@ -1,5 +1,4 @@
 using System.Text;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,10 +1,6 @@
-using System.Numerics;
 using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.BallGrab;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Simulation;
 using OriginalDraw = URWPGSim2D.StrategyHelper.DebugDraw;
 

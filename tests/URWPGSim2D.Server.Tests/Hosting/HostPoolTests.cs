@@ -1,7 +1,5 @@
 using System.Diagnostics;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Tests.Cli;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

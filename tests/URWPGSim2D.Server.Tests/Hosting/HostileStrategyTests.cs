@@ -1,6 +1,5 @@
 using System.Net;
 using System.Net.Sockets;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Hosting;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

@@ -1,6 +1,4 @@
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

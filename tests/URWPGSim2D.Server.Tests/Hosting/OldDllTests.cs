@@ -1,11 +1,6 @@
 using Microsoft.CodeAnalysis;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Tests.OldStrategies;

@@ -3,9 +3,6 @@ using System.Runtime.Loader;
 using URWPGSim2D.Compat.Hosting;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,6 +1,4 @@
 using System.Diagnostics;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

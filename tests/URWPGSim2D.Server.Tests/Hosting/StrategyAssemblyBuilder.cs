@@ -1,6 +1,5 @@
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
-using URWPGSim2D.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Tests.Cli;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary><c>run --strategy TEAM=SPEC</c> end to end: compile errors before the match, faults in the summary, built-in names.</summary>

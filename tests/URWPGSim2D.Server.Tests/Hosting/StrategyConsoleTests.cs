@@ -1,4 +1,3 @@
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Docs;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,6 +1,4 @@
 using System.Runtime.Loader;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

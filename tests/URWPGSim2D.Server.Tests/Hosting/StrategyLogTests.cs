@@ -1,12 +1,8 @@
 #define DEBUG // Debug.WriteLine is this test's subject: compiled in Release builds of the tests too
 using System.Diagnostics;
 using System.Text.Json;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Trace;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,6 +1,4 @@
 using System.Text.Json;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

@@ -1,5 +1,3 @@
-using URWPGSim2D.Hosting;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>Swims straight at full speed until cycle <see cref="FailFrom"/>, then throws every cycle.</summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Hosting;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>The time bank's arithmetic, case by case and against a plain re-count of random calls.</summary>

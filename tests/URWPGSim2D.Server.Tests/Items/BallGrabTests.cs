@@ -1,7 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Items;

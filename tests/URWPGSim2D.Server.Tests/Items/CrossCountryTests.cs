@@ -1,5 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.CrossCountry;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -1,7 +1,5 @@
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Engine.Items.FourTeams;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,8 +1,4 @@
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

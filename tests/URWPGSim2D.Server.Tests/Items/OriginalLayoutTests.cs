@@ -1,10 +1,8 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Engine.Items.CrossCountry;
 using URWPGSim2D.Engine.Items.Polo;
 using URWPGSim2D.Engine.Items.Rescue;
 using URWPGSim2D.Engine.Items.Snooker;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

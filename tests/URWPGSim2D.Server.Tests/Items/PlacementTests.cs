@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
-
 namespace URWPGSim2D.Server.Tests.Items;
 
 public sealed class PlacementTests

@@ -1,7 +1,4 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PlainScene;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -1,8 +1,4 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PushBallAvoidObstacles;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,7 +1,4 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.RelayWithBall;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

@@ -1,8 +1,5 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Snooker;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;

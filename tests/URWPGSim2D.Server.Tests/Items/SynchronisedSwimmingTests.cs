@@ -1,7 +1,5 @@
-using System.Numerics;
 using System.Text;
 using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.SynchronisedSwimming;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -1,5 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.Transport;
 using URWPGSim2D.Server.Tests.Simulation;
 

@@ -1,11 +1,8 @@
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Engine.Trace;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Server.Tests.Items;
 using URWPGSim2D.Strategies;
 

@@ -1,9 +1,6 @@
 using System.Collections;
-using System.Numerics;
 using System.Reflection;
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tests.Scenario;
 

@@ -1,6 +1,3 @@
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
-
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>The hot cycle allocates nothing once warmed up (default match, built-in strategies).</summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>The match's body tags: what a body is and its index come back from its tag, and no two bodies share one.</summary>

@@ -1,6 +1,4 @@
 using URWPGSim2D.Collision.Fish;
-using System.Numerics;
-using URWPGSim2D.Engine.Simulation;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using URWPGSim2D.Collision.Motion;

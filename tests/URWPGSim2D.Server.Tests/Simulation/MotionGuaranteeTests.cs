@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Simulation;
 using Xunit.Abstractions;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,8 +1,6 @@
-using System.Numerics;
 using URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

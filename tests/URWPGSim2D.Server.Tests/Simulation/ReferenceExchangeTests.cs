@@ -1,6 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

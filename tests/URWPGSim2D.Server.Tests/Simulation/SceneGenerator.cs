@@ -1,10 +1,7 @@
 using System.Globalization;
 using System.Text;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

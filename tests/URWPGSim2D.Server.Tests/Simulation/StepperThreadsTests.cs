@@ -1,7 +1,3 @@
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Trace;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

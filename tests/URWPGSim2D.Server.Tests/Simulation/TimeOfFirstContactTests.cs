@@ -1,5 +1,3 @@
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>The stepper finds the analytic time of first contact and resolves the contact there.</summary>

@@ -1,6 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

@@ -1,6 +1,5 @@
 using System.Text.Json;
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

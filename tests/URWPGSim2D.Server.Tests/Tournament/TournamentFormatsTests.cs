@@ -1,6 +1,5 @@
 using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

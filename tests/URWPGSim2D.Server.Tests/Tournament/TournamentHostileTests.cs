@@ -1,5 +1,3 @@
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Hosting;
 using URWPGSim2D.Tournament;
 

@@ -1,4 +1,3 @@
-using URWPGSim2D.Server.Tests.Cli;
 using URWPGSim2D.Server.Tests.Docs;
 using URWPGSim2D.Server.Tests.Hosting;
 

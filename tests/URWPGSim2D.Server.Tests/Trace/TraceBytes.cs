@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Server.Tests.Trace;

@@ -1,5 +1,4 @@
 using System.Text.Json;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Trace;
 

@@ -1,11 +1,7 @@
 using System.Globalization;
 using System.Security.Cryptography;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Server.Tests.Trace;

@@ -1,7 +1,5 @@
-using System.Numerics;
 using System.Text;
 using System.Text.Json;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Engine.Trace;
 

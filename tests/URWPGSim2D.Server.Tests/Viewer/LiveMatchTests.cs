@@ -1,10 +1,7 @@
 using System.Text;
 using System.Text.Json;
 using System.Threading;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Tests.Viewer;

@@ -1,7 +1,5 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Strategy.Tests.Sensing;
 

@@ -1,6 +1,4 @@
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Strategy.Tests.Sensing;
 

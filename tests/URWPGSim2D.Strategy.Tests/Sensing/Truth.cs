@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Strategies;
-
 namespace URWPGSim2D.Strategy.Tests.Sensing;
 
 /// <summary>

@@ -1,7 +1,5 @@
-using System;
 using System.Globalization;
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 using static URWPGSim2D.Engine.Items.BallGrab.BallGrabLayout;
 

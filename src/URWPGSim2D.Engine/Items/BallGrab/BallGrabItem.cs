@@ -1,6 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
 using static URWPGSim2D.Engine.Items.BallGrab.BallGrabLayout;
 
 namespace URWPGSim2D.Engine.Items.BallGrab;

@@ -1,7 +1,4 @@
-using System.Collections.Generic;
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Engine.Items.BallGrab;

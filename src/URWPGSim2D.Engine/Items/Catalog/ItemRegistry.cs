@@ -1,6 +1,3 @@
-using System;
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Engine.Items.Catalog;
 
 /// <summary>

@@ -1,10 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
 using System.Text.Json;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Strategies;
 using static URWPGSim2D.Engine.Scenario.JsonReader;
 

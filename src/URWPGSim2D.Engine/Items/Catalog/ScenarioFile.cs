@@ -1,5 +1,4 @@
 using System.Text.Json;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Engine.Items.Catalog;
 

@@ -1,4 +1,3 @@
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Engine.Items.CrossCountry;

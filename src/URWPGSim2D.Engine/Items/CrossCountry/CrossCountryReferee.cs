@@ -1,7 +1,4 @@
-using System;
 using System.Globalization;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Items.CrossCountry;
 

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
 using System.Runtime.InteropServices;
 using System.Runtime.Intrinsics;
 using System.Runtime.CompilerServices;

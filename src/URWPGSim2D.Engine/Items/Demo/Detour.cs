@@ -1,5 +1,3 @@
-using System.Numerics;
-
 namespace URWPGSim2D.Engine.Items.Demo;
 
 /// <summary>

@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
 
 namespace URWPGSim2D.Engine.Items.Demo;
 

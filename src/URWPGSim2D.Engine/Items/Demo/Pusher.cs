@@ -1,6 +1,4 @@
-using System;
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 
 namespace URWPGSim2D.Engine.Items.Demo;

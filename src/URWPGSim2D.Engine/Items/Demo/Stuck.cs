@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Engine.Items.Demo;

@@ -1,4 +1,3 @@
-using System;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 
 namespace URWPGSim2D.Engine.Items.Demo;

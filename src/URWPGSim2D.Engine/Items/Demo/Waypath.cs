@@ -1,6 +1,3 @@
-using System;
-using System.Numerics;
-
 namespace URWPGSim2D.Engine.Items.Demo;
 
 /// <summary>

@@ -1,7 +1,3 @@
-using System;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Items.FourTeams;
 
 /// <summary>

@@ -1,7 +1,4 @@
-using System.Collections.Generic;
-using System.Numerics;
 using URWPGSim2D.Engine.Items.BallGrab;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Engine.Items.NewBallGrab;
 

@@ -1,8 +1,5 @@
-using System;
 using System.Globalization;
 using URWPGSim2D.Engine.Items.BallGrab;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Items.NewBallGrab;
 

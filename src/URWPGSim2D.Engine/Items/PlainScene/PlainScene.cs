@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.BuiltInStrategies;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Engine.Items.PlainScene;

@@ -1,8 +1,4 @@
-using System;
 using System.Globalization;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Items.PlainScene;
 

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Collision.Pool;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Engine.Teams;

@@ -1,8 +1,5 @@
-using System.Collections.Generic;
 using System.Globalization;
-using System.Numerics;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Engine.Items.Polo;

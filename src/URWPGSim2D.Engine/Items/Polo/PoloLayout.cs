@@ -1,9 +1,5 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Engine.Items.Polo;
 

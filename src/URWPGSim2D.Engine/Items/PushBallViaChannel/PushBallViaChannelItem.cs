@@ -1,5 +1,3 @@
-using URWPGSim2D.Engine.Scenario;
-
 namespace URWPGSim2D.Engine.Items.PushBallViaChannel;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-
 namespace URWPGSim2D.Engine.Items.RelayWithBall;
 
 /// <summary>

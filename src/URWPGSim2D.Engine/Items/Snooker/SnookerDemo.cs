@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 
 namespace URWPGSim2D.Engine.Items.Snooker;

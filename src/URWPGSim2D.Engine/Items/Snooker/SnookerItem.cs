@@ -1,6 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Engine.Items.Snooker;

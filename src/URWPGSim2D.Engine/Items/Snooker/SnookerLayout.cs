@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
 using URWPGSim2D.Collision.Pool;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 
 namespace URWPGSim2D.Engine.Items.Snooker;
 

@@ -1,9 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Items.SynchronisedSwimming;
 
 /// <summary>

@@ -1,8 +1,3 @@
-using System;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
-
 namespace URWPGSim2D.Engine.Items.SynchronisedSwimming;
 
 /// <summary>

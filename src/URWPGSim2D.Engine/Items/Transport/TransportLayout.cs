@@ -1,7 +1,3 @@
-using System.Collections.Generic;
-using System.Numerics;
-using URWPGSim2D.Engine.Scenario;
-
 namespace URWPGSim2D.Engine.Items.Transport;
 
 /// <summary>

@@ -1,9 +1,4 @@
-using System;
-using System.Collections.Generic;
 using System.CommandLine.Completions;
-using System.IO;
-using System.Linq;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Tournament;

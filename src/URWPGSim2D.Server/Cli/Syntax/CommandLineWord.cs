@@ -1,5 +1,3 @@
-using System.CommandLine;
-
 namespace URWPGSim2D.Server.Cli.Syntax;
 
 /// <summary>

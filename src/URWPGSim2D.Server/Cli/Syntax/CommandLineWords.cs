@@ -1,8 +1,4 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
 using System.CommandLine.Parsing;
-using System.Linq;
 
 namespace URWPGSim2D.Server.Cli.Syntax;
 

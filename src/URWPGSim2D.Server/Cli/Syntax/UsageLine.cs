@@ -1,9 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.CommandLine;
-using System.Linq;
-using System.Text;
-
 namespace URWPGSim2D.Server.Cli.Syntax;
 
 /// <summary>

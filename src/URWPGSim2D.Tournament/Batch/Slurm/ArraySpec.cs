@@ -1,7 +1,3 @@
-using System.Collections.Generic;
-using System.Globalization;
-using System.Text;
-
 namespace URWPGSim2D.Tournament.Batch.Slurm;
 
 /// <summary>The task indices of a Slurm job array as sbatch's <c>--array</c> takes them: <c>0-3</c>, <c>1,3</c>, <c>0-2,5,7-9</c>.</summary>

@@ -1,7 +1,3 @@
-using System.Collections.Generic;
-using System.Globalization;
-using System.IO;
-
 namespace URWPGSim2D.Tournament.Batch.Slurm;
 
 /// <summary>

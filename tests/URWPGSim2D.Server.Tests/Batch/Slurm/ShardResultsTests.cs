@@ -1,6 +1,5 @@
 using URWPGSim2D.Tournament.Batch;
 using URWPGSim2D.Tournament.Batch.Slurm;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 

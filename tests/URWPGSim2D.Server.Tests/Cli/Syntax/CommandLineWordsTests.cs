@@ -1,7 +1,6 @@
 using System.Text.RegularExpressions;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

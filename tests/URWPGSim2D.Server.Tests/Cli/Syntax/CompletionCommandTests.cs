@@ -1,6 +1,5 @@
 using System.Diagnostics;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

@@ -1,9 +1,6 @@
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

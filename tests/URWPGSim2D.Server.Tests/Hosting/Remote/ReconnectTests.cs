@@ -2,8 +2,6 @@ using System.Net;
 using System.Net.Sockets;
 using System.Text;
 using System.Threading;
-using URWPGSim2D.Hosting;
-using URWPGSim2D.Engine.Scenario;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

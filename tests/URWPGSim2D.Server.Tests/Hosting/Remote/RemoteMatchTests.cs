@@ -2,8 +2,6 @@ using System.Text.RegularExpressions;
 using System.Threading;
 using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.Catalog;
-using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Server.Tests.Cli;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Testing;
 using Xunit.Sdk;

@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

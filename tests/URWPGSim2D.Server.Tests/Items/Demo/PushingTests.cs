@@ -1,10 +1,6 @@
 using URWPGSim2D.Collision.Motion;
-using System.Numerics;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;

@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Engine.Items.Rescue;
 using URWPGSim2D.Testing;

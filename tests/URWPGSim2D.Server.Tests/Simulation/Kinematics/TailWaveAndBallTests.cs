@@ -1,4 +1,3 @@
-using System.Numerics;
 using URWPGSim2D.Engine.Simulation.Kinematics;
 using URWPGSim2D.Server.Tests.Simulation;
 
