@@ -1,4 +1,3 @@
-using System;
 
 namespace URWPGSim2D.Collision.Motion;
 

@@ -1,7 +1,3 @@
-using System.Numerics;
-using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.Motion;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Collision.Tests.Motion;
 
