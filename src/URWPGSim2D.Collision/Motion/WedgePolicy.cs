@@ -1,4 +1,3 @@
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
