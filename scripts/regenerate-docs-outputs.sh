@@ -3,8 +3,8 @@
 # build, and redraws the committed figures from their inputs. Run it after changing what a command
 # prints, then review `git diff` (timing figures change on every run; the tests ignore them).
 #   bash scripts/regenerate-docs-outputs.sh               # transcripts and render figures
-#   bash scripts/regenerate-docs-outputs.sh --screenshot  # also docs/figures/match.png (Chromium:
-#                                                         # the browser test ScreenshotForTheReadme)
+#   bash scripts/regenerate-docs-outputs.sh --screenshot  # also docs/figures/match.png and ladder-standings.png
+#                                                         # (Chromium: ScreenshotForTheReadme, the ladder's PageTests)
 # The same test (DocsOutputsTests) fails in CI when a shown output is stale.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +22,9 @@ done
 if [ "${1:-}" = "--screenshot" ]; then
   bash .ci/install-chromium
   URWPGSIM2D_REGENERATE_DOCS=1 dotnet test tests/URWPGSim2D.Server.Viewer.Tests --filter 'FullyQualifiedName~Screenshot' \
+    --logger 'console;verbosity=minimal'
+  # and the README's picture of the ladder's standings (docs/figures/ladder-standings.png)
+  URWPGSIM2D_REGENERATE_DOCS=1 dotnet test tests/URWPGSim2D.Ladder.Tests --filter 'FullyQualifiedName~PageTests' \
     --logger 'console;verbosity=minimal'
 fi
 git --no-pager diff --stat -- README.md docs

@@ -20,6 +20,7 @@ internal static class LadderPages
         app.MapGet("/queue", () => Page("queue.html"));
         app.MapGet("/organiser", () => Page("organiser.html"));
         app.MapGet("/ladder.js", () => Results.Text(Asset("ladder.js"), "text/javascript; charset=utf-8", null, 200));
+        app.MapGet("/favicon.ico", () => Results.NoContent()); // no icon: asked by every browser, answered without an error
         app.MapGet("/ladder.css", () => Results.Text(Asset("ladder.css"), "text/css; charset=utf-8", null, 200));
     }
 

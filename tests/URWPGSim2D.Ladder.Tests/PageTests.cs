@@ -1,0 +1,128 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using System.Threading.Tasks;
+using URWPGSim2D.Server.Viewer.Tests;
+using Xunit;
+
+namespace URWPGSim2D.Ladder.Tests;
+
+/// <summary>
+/// The pages in Chromium, as people use them: the organiser signs in and adds a house entrant and
+/// three teams; two teams sign in and submit through their page, the third with the command line;
+/// ranked matches play; the standings page, never reloaded, fills in and puts the known strongest
+/// (the item's demo, which scores in water polo 1v1 where a fish that does not move cannot) first.
+/// Then a match's page shows the replay, and the queue names the submissions.
+/// </summary>
+public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
+{
+    private readonly Browser _browser;
+    private readonly string _sources = Directory.CreateTempSubdirectory("urwpg-ladder-pages-").FullName;
+    private LadderHost _host = null!;
+
+    public PageTests(Browser browser) => _browser = browser;
+
+    public async Task InitializeAsync() => _host = await LadderHost.StartAsync(workers: 1);
+
+    public async Task DisposeAsync()
+    {
+        await _host.DisposeAsync();
+        Directory.Delete(_sources, recursive: true);
+    }
+
+    private const string Still = """
+        using System;
+        using URWPGSim2D.Strategies;
+
+        public sealed class Still : IStrategy
+        {
+            public string TeamName => "still";
+
+            public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) => d.Fill(Decision.Stop);
+        }
+        """;
+
+    private string Url(string path) => _host.Server.Url.TrimEnd('/') + path;
+
+    private async Task<string> AddTeam(IPage page, string name, string? house)
+    {
+        await page.FillAsync("#add-team input[name=name]", name);
+        await page.SelectOptionAsync("#add-team select[name=strategy]", house ?? string.Empty);
+        await page.ClickAsync("#add-team button");
+        var shown = page.Locator("#team-token");
+        await Assertions.Expect(shown).ToContainTextAsync($"team {name} added", new() { Timeout = Browser.HangMs });
+        return Regex.Match(await shown.InnerTextAsync(), "([A-Za-z0-9_-]{43})$").Groups[1].Value;
+    }
+
+    private async Task SubmitThroughThePage(string token, string expectedName, string file)
+    {
+        var (page, errors) = await _browser.NewPageAsync();
+        await page.GotoAsync(Url("/"));
+        await page.FillAsync("#signin input[name=token]", token);
+        await page.ClickAsync("#signin button");
+        await page.WaitForURLAsync(Url("/teams/" + expectedName));
+        await Assertions.Expect(page.Locator("#upload")).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
+        await page.SetInputFilesAsync("#submit input[type=file]", file);
+        await page.ClickAsync("#submit button");
+        await Assertions.Expect(page.Locator("#submit-log")).ToContainTextAsync("submission ", new() { Timeout = Browser.HangMs });
+        string log = await page.InnerTextAsync("#submit-log");
+        Assert.True(log.Contains(": ok", StringComparison.Ordinal), log);
+        Assert.Empty(errors);
+        await page.Context.CloseAsync();
+    }
+
+    [Fact]
+    public async Task AnOrganiserAndThreeTeamsRunALadderInTheBrowser()
+    {
+        var (organiser, errors) = await _browser.NewPageAsync();
+        await organiser.GotoAsync(Url("/organiser"));
+        await organiser.FillAsync("#admin-signin input[name=token]", LadderHost.AdminToken);
+        await organiser.ClickAsync("#admin-signin button");
+        await Assertions.Expect(organiser.Locator("#admin")).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
+        await Assertions.Expect(organiser.Locator("#ladder")).ToContainTextAsync("polo-1v1, 600 cycles a match, playing", new() { Timeout = Browser.HangMs });
+
+        await AddTeam(organiser, "champion", "demo");
+        string alpha = await AddTeam(organiser, "alpha", null);
+        string beta = await AddTeam(organiser, "beta", null);
+        string gamma = await AddTeam(organiser, "gamma", null);
+
+        // The standings page is opened once and never reloaded from here on.
+        var (standings, standingsErrors) = await _browser.NewPageAsync();
+        await standings.GotoAsync(Url("/"));
+
+        string file = Path.Combine(_sources, "Still.cs");
+        File.WriteAllText(file, Still);
+        await SubmitThroughThePage(alpha, "alpha", file);
+        await SubmitThroughThePage(gamma, "gamma", file);
+        Directory.CreateDirectory(Path.Combine(_sources, "beta"));
+        File.WriteAllText(Path.Combine(_sources, "beta", "Still.cs"), Still);
+        var cli = await ServeProcess.RunAsync("ladder", "submit", "--server", _host.Server.Url, "--token", beta, Path.Combine(_sources, "beta"));
+        Assert.True(cli.Code == 0, cli.Error);
+
+        // Every team has played: four rows, each with at least three games.
+        await standings.WaitForFunctionAsync(
+            "() => { const rows = [...document.querySelectorAll('#standings tbody tr')]; return rows.length === 4 && rows.every(r => Number(r.children[4].textContent) >= 3); }",
+            null, new() { Timeout = Browser.HangMs, PollingInterval = 200 });
+        Assert.Equal("champion", await standings.InnerTextAsync("#standings tbody tr:first-child td:nth-child(2)"));
+        Assert.Equal("0", await standings.InnerTextAsync("#standings tbody tr:first-child td:nth-child(8)")); // the champion lost none
+        await Figures.Shoot(standings, "ladder-standings.png", _sources);
+
+        // A match of a team: its page shows the replay viewer.
+        var (match, matchErrors) = await _browser.NewPageAsync();
+        await match.GotoAsync(Url("/teams/alpha"));
+        var link = match.Locator("#matches tbody tr td a").First;
+        await Assertions.Expect(link).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
+        await link.ClickAsync();
+        await Assertions.Expect(match.Locator("#replay")).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
+        await Assertions.Expect(match.Locator("#title")).ToContainTextAsync("alpha", new() { Timeout = Browser.HangMs });
+
+        // The queue names the submission each match plays with.
+        await match.GotoAsync(Url("/queue"));
+        await Assertions.Expect(match.Locator("#done tbody tr").First).ToContainTextAsync("#", new() { Timeout = Browser.HangMs });
+
+        Assert.Empty(errors);
+        Assert.Empty(standingsErrors);
+        Assert.Empty(matchErrors);
+    }
+}
