@@ -13,7 +13,7 @@ namespace URWPGSim2D.Tournament;
 /// strategy), the seed, the length and the strategies' time limit; optionally recorded into a
 /// replay page (the viewer's page writer).
 /// </summary>
-internal static class TournamentMatchPlayer
+public static class TournamentMatchPlayer
 {
     /// <summary>The settings of the match: the item's layout of its seed, the teams, the seed, the length and the time limit.</summary>
     /// <param name="item">The item.</param>
