@@ -5,7 +5,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// Samples candidate pairs on their own clocks: the queue of sample times, the pairs due at a
 /// time, the hits a sample finds, the exact tests it remembers, and the ticks it sampled. The
-/// stepper has one for its event loop, which also samples the islands on one thread; each island
+/// motion world has one for its event loop, which also samples the islands on one thread; each island
 /// worker of a step on several threads has its own, so that islands sampled on several threads
 /// share nothing but the pair table's slots of their own pairs. Storage grows by doubling, never
 /// shrinks.

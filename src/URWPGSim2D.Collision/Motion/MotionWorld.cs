@@ -15,7 +15,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// give the same contacts, bit for bit. After warm-up a step allocates nothing.
 /// </summary>
 /// <remarks>See docs/motion.md for the algorithm and a worked example.</remarks>
-public sealed partial class Stepper
+public sealed partial class MotionWorld
 {
     // The stages of a step, each owning its data: the candidate pairs and when each is sampled,
     // the first samples island by island, contact events (time of first contact, response,
@@ -27,17 +27,17 @@ public sealed partial class Stepper
     private readonly Settling _settling;
     private IContactHandler? _handler;
 
-    /// <summary>Creates an empty stepper.</summary>
+    /// <summary>Creates an empty motion world.</summary>
     /// <param name="broadPhase">The broad phase over the bodies' swept boxes; every kind gives the same contacts.</param>
     /// <exception cref="ArgumentException"><paramref name="broadPhase"/> is not a defined kind.</exception>
-    public Stepper(BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
+    public MotionWorld(BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
         : this(BroadPhaseFactory.Create(broadPhase, nameof(broadPhase)))
     {
     }
 
-    /// <summary>Creates an empty stepper over a given broad phase instance (tests: a grid of a chosen cell size).</summary>
+    /// <summary>Creates an empty motion world over a given broad phase instance (tests: a grid of a chosen cell size).</summary>
     /// <param name="broadPhase">The broad phase over the bodies' swept boxes.</param>
-    internal Stepper(IBroadPhase broadPhase)
+    internal MotionWorld(IBroadPhase broadPhase)
     {
         ArgumentNullException.ThrowIfNull(broadPhase);
         _schedule = new PairSchedule(broadPhase, _bodies);
@@ -135,7 +135,7 @@ public sealed partial class Stepper
     /// Rejects a moving body's move in the current step, from a handler (a response that finds the
     /// body wedged): it goes back to where it began the step (its pose and joints at the end of the
     /// previous step, or where it was last placed between steps), at rest (own velocity and drift
-    /// zero), and <see cref="IContactHandler.OnMoveRejected"/> is called, as for a move the stepper
+    /// zero), and <see cref="IContactHandler.OnMoveRejected"/> is called, as for a move the motion world
     /// rejects itself. While <see cref="Settle"/> runs after a step, the move rejected is that
     /// step's. The body stays there for the rest of the step unless moved again.
     /// </summary>
@@ -221,7 +221,7 @@ public sealed partial class Stepper
     /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
     /// are sampled on up to this many threads up to their first contact. The contacts, poses and
     /// counts are the same whatever the number; a world of fewer than 2,048 moving bodies uses the
-    /// calling thread alone. Threads are created once, on first need, and shared by all steppers.
+    /// calling thread alone. Threads are created once, on first need, and shared by all motion worlds.
     /// </summary>
     /// <exception cref="ArgumentException">The value is below 1 or above 1024, or a step is running.</exception>
     public int Threads
@@ -246,7 +246,7 @@ public sealed partial class Stepper
     /// <summary>Chunks of islands the last step ran at once (1: the calling thread alone).</summary>
     public int Chunks => _islands.Chunks;
 
-    /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
+    /// <summary>Bytes the island workers' threads allocated while they ran this motion world's chunks (tests).</summary>
     internal long WorkerAllocatedBytes => _islands.WorkerAllocatedBytes;
 
     /// <summary>Number of islands of the last step, or −1 when it did not need them (one thread and no hit before the event loop; tests).</summary>
