@@ -50,7 +50,7 @@ public sealed partial class MotionWorld
     public double Time { get; internal set; }
 
     /// <summary>Distinct sample times of the last step.</summary>
-    public int SubSteps { get; private set; }
+    public int SubSteps => _schedule.Sampler.SubSteps;
 
     /// <summary>Contact events (times of first contact) of the last step.</summary>
     public int Events => _events.Count;
@@ -59,7 +59,7 @@ public sealed partial class MotionWorld
     public int RejectedMoves => _settling.RejectedMoves;
 
     /// <summary>Deepest overlap of any pair (walls included) at the end of the last step, mm.</summary>
-    public float LeftoverOverlap { get; private set; }
+    public float LeftoverOverlap => _settling.LeftoverOverlap;
 
     /// <summary>
     /// Moves every body through one step of <paramref name="seconds"/>, reporting each contact to
@@ -86,10 +86,9 @@ public sealed partial class MotionWorld
             }
         }
 
-        SubSteps = sampler.SampledTicks();
+        sampler.EndStep();
         MoveAllTo(1.0);
-        float deepest = MathF.Max(sampler.DeepestAtEnd, _settling.SettleTouched());
-        LeftoverOverlap = _settling.RejectOverlapping(deepest);
+        _settling.EndStep(sampler.DeepestAtEnd);
         End();
     }
 
@@ -113,7 +112,7 @@ public sealed partial class MotionWorld
         _handler = handler;
         _stepping = true;
         Time = 0.0;
-        LeftoverOverlap = _settling.SettleAll();
+        _settling.SettleAll();
         _stepping = false;
         foreach (Body body in _schedule.Planner.MoverBodies)
         {
@@ -275,7 +274,6 @@ public sealed partial class MotionWorld
         ArgumentNullException.ThrowIfNull(handler);
         EnsureLoaded();
         _handler = handler;
-        SubSteps = 0;
         _events.BeginStep();
         _settling.BeginStep();
         Time = 0.0;
