@@ -13,7 +13,7 @@ namespace URWPGSim2D.Tournament;
 /// strategy), the seed, the length and the strategies' time limit; optionally recorded into a
 /// replay page (the viewer's page writer).
 /// </summary>
-internal static class TournamentMatchPlayer
+public static class TournamentMatchPlayer
 {
     /// <summary>Plays the match and returns its result (index and seed as scheduled).</summary>
     /// <param name="item">The item.</param>
