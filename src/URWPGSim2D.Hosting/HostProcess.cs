@@ -58,6 +58,9 @@ public sealed class HostProcess : IStrategyLink
     /// <inheritdoc/>
     public TimeSpan? WaitingTime() => _cgroup?.WaitingTime();
 
+    /// <inheritdoc/>
+    public long? PeakMemoryBytes() => _cgroup?.PeakMemoryBytes();
+
     /// <summary>The host's private scratch folder (its working directory).</summary>
     public string Scratch { get; }
 

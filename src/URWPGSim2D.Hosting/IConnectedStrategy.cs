@@ -36,6 +36,9 @@ internal interface IConnectedStrategy : IDisposable
     /// <summary>How long so far the client's processes waited for a CPU, or null where it is not measured (<see cref="IStrategyLink.WaitingTime"/>).</summary>
     TimeSpan? WaitingTime();
 
+    /// <summary>The most memory the client's sandbox has held at once so far, bytes, or null where it is not measured (<see cref="IStrategyLink.PeakMemoryBytes"/>).</summary>
+    long? PeakMemoryBytes();
+
     /// <summary>Sends the end of the match to a client still there, lets it go, and disposes the connection.</summary>
     void Stop(EndMessage end);
 }

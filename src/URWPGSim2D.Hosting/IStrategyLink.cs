@@ -39,6 +39,9 @@ internal interface IStrategyLink : IDisposable
     /// <summary>How long so far some process of the client's sandbox was ready to run but waited for a CPU (a busy machine), or null where it is not measured.</summary>
     TimeSpan? WaitingTime();
 
+    /// <summary>The most memory the client's sandbox has held at once so far, bytes (a host in a control group), or null where it is not measured.</summary>
+    long? PeakMemoryBytes();
+
     /// <summary>Cuts the link at once (kills the host, closes the socket).</summary>
     void Abort();
 

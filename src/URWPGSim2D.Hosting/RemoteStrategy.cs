@@ -84,6 +84,9 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     public TimeSpan? WaitingTime() => null;
 
     /// <inheritdoc/>
+    public long? PeakMemoryBytes() => null;
+
+    /// <inheritdoc/>
     public DebugRecorder? Drawings => _current?.Drawings;
 
     /// <inheritdoc/>

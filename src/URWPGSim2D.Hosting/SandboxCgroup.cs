@@ -22,6 +22,7 @@ internal sealed partial class SandboxCgroup : IDisposable
     private readonly Layout _layout;
     private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuUsage;
     private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _cpuPressure;
+    private readonly Microsoft.Win32.SafeHandles.SafeFileHandle? _memoryPeak;
     private readonly string? _killFile;
     private readonly HashSet<int> _seen = [];
     private int _disposed;
@@ -41,6 +42,16 @@ internal sealed partial class SandboxCgroup : IDisposable
             {
                 _cpuUsage = null; // no CPU time of the whole sandbox: the wall time still counts
             }
+        }
+
+        try
+        {
+            // v1: the group's high-water mark; v2: memory.peak (Linux 5.19 and later).
+            _memoryPeak = File.OpenHandle(Path.Combine(folders[0], layout.V2 ? "memory.peak" : "memory.max_usage_in_bytes"));
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            _memoryPeak = null; // no high-water mark: the memory is not measured
         }
 
         if (layout.UnifiedFolder is { } unified && File.Exists(Path.Combine(folders[unified], "cgroup.kill")))
@@ -217,6 +228,17 @@ internal sealed partial class SandboxCgroup : IDisposable
         }
 
         return Number(line, out long value) ? TimeSpan.FromTicks(_layout.V2 ? value * 10 : value / 100) : null;
+    }
+
+    /// <summary>
+    /// The most memory the group's processes have held at once so far (heap, runtime and mapped files,
+    /// RAM-backed files too: what its memory limit counts), bytes, or null where the kernel does not
+    /// give it. One read of an open file; no allocation.
+    /// </summary>
+    public long? PeakMemoryBytes()
+    {
+        Span<byte> text = stackalloc byte[32];
+        return Number(FirstLine(_memoryPeak, text), out long value) ? value : null;
     }
 
     /// <summary>
@@ -444,6 +466,7 @@ internal sealed partial class SandboxCgroup : IDisposable
         _ = KillAll();
         _cpuUsage?.Dispose();
         _cpuPressure?.Dispose();
+        _memoryPeak?.Dispose();
         foreach (string folder in _folders)
         {
             // A killed process leaves the group when the kernel has finished with it: a few tries.

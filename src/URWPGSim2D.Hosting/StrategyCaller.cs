@@ -283,6 +283,11 @@ public sealed class StrategyCaller : IMatchTeams
                 slot.LastCpuTime = now;
             }
 
+            if (hosted.PeakMemoryBytes() is { } peak)
+            {
+                slot.PeakMemoryBytes = Math.Max(slot.PeakMemoryBytes ?? 0, peak);
+            }
+
             if (hosted.WaitingTime() is { } stalled)
             {
                 waiting = slot.LastWaitingTime is { } before ? stalled - before : null;

@@ -188,6 +188,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
     public TimeSpan? WaitingTime() => _link.WaitingTime();
 
     /// <inheritdoc/>
+    public long? PeakMemoryBytes() => _link.PeakMemoryBytes();
+
+    /// <inheritdoc/>
     public ConnectionOutcome Decide(MatchSnapshot snapshot, Span<Decision> decisions, TimeSpan waitLimit, out string? message)
     {
         message = null;

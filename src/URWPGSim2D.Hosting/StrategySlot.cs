@@ -81,4 +81,7 @@ public sealed class StrategySlot : TeamSeat
 
     /// <summary>How long the strategy's host had waited for a CPU at its last answer (where it is measured), or null.</summary>
     public TimeSpan? LastWaitingTime { get; set; }
+
+    /// <summary>The most memory its host's sandbox held at once, bytes, as of its last answer; null where it is not measured (in the server's process, a remote client, no control group).</summary>
+    public long? PeakMemoryBytes { get; set; }
 }

@@ -52,6 +52,9 @@ internal sealed class TcpLink : IStrategyLink
     public TimeSpan? WaitingTime() => null;
 
     /// <inheritdoc/>
+    public long? PeakMemoryBytes() => null;
+
+    /// <inheritdoc/>
     public void BeginWait(TimeSpan limit) => _stream.Deadline = Stopwatch.GetTimestamp() + (long)(limit.TotalSeconds * Stopwatch.Frequency);
 
     /// <inheritdoc/>

@@ -180,18 +180,8 @@ public sealed class CycleReader
         var buffer = _view.Fish;
         int n = 0;
         Span<float> three = stackalloc float[3];
-        while (JsonFields.NextElement(ref r, "fish"))
+        while (JsonFields.NextObject(ref r, "fish", n, buffer.Length))
         {
-            if (n >= buffer.Length)
-            {
-                throw new ProtocolException($"fish: more than the assignment's {buffer.Length}");
-            }
-
-            if (r.TokenType != JsonTokenType.StartObject)
-            {
-                throw new ProtocolException($"fish[{n}]: expected an object, got {JsonFields.Describe(ref r)}");
-            }
-
             int index = -1, team = -1, seen = 0, v = 0, t = 7;
             Vector2 position = default;
             float heading = 0, speed = 0, angular = 0, body = 0, head = 0, width = 0, j1 = 0, j2 = 0, j3 = 0, t1 = 0, t2 = 0, t3 = 0;
@@ -292,18 +282,8 @@ public sealed class CycleReader
         JsonFields.StartArray(ref r, "balls");
         var buffer = _view.Balls;
         int n = 0;
-        while (JsonFields.NextElement(ref r, "balls"))
+        while (JsonFields.NextObject(ref r, "balls", n, buffer.Length))
         {
-            if (n >= buffer.Length)
-            {
-                throw new ProtocolException($"balls: more than the assignment's {buffer.Length}");
-            }
-
-            if (r.TokenType != JsonTokenType.StartObject)
-            {
-                throw new ProtocolException($"balls[{n}]: expected an object, got {JsonFields.Describe(ref r)}");
-            }
-
             int index = -1, seen = 0;
             Vector2 position = default, velocity = default;
             float radius = 0;

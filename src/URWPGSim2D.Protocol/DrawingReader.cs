@@ -16,13 +16,8 @@ internal static class DrawingReader
     {
         JsonFields.StartArray(ref r, "draw");
         int n = 0;
-        while (JsonFields.NextElement(ref r, "draw"))
+        while (JsonFields.NextObject(ref r, "draw", n))
         {
-            if (r.TokenType != JsonTokenType.StartObject)
-            {
-                throw new ProtocolException($"draw[{n}]: expected an object, got {JsonFields.Describe(ref r)}");
-            }
-
             into.AddShape(ReadShape(ref r, n));
             n++;
         }

@@ -135,6 +135,30 @@ internal static class JsonFields
         return r.TokenType != JsonTokenType.EndArray;
     }
 
+    /// <summary>
+    /// Moves to the next element of the current array, element <paramref name="n"/>, which must be an object; false at
+    /// the array's end. An element beyond <paramref name="capacity"/> (the assignment's count) throws.
+    /// </summary>
+    public static bool NextObject(ref Utf8JsonReader r, string field, int n, int capacity = int.MaxValue)
+    {
+        if (!NextElement(ref r, field))
+        {
+            return false;
+        }
+
+        if (n >= capacity)
+        {
+            throw new ProtocolException($"{field}: more than the assignment's {capacity}");
+        }
+
+        if (r.TokenType != JsonTokenType.StartObject)
+        {
+            throw new ProtocolException($"{field}[{n}]: expected an object, got {Describe(ref r)}");
+        }
+
+        return true;
+    }
+
     /// <summary>An array of exactly <paramref name="values"/>.Length numbers.</summary>
     public static void Floats(ref Utf8JsonReader r, string field, scoped Span<float> values)
     {

@@ -462,13 +462,8 @@ public static class MessageReader
     {
         JsonFields.StartArray(ref r, "obstacles");
         var list = new List<ObstacleView>();
-        while (JsonFields.NextElement(ref r, "obstacles"))
+        while (JsonFields.NextObject(ref r, "obstacles", list.Count))
         {
-            if (r.TokenType != JsonTokenType.StartObject)
-            {
-                throw new ProtocolException($"obstacles[{list.Count}]: expected an object, got {JsonFields.Describe(ref r)}");
-            }
-
             int? index = null;
             ObstacleKind? kind = null;
             System.Numerics.Vector2? center = null;

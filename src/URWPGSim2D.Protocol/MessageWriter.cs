@@ -45,13 +45,7 @@ public sealed class MessageWriter
         _json.WriteNumber("team", a.Team);
         _json.WriteString("item", a.Item);
         _json.WriteString("itemName", a.ItemName);
-        _json.WriteStartArray("fish");
-        foreach (int f in a.Fish)
-        {
-            _json.WriteNumberValue(f);
-        }
-
-        _json.WriteEndArray();
+        Ints("fish", a.Fish);
         _json.WriteNumber("fishCount", a.FishCount);
         _json.WriteNumber("ballCount", a.BallCount);
         _json.WriteNumber("totalCycles", a.TotalCycles);
@@ -249,13 +243,7 @@ public sealed class MessageWriter
         ArgumentNullException.ThrowIfNull(end);
         Begin("end");
         _json.WriteNumber("cycle", end.Cycle);
-        _json.WriteStartArray("goals");
-        foreach (int goals in end.Goals)
-        {
-            _json.WriteNumberValue(goals);
-        }
-
-        _json.WriteEndArray();
+        Ints("goals", end.Goals);
         _json.WriteNumber("faults", end.Faults);
         return End();
     }
@@ -285,6 +273,17 @@ public sealed class MessageWriter
         _buffer.GetSpan(1)[0] = (byte)'\n';
         _buffer.Advance(1);
         return _buffer.WrittenSpan;
+    }
+
+    private void Ints(string name, ReadOnlySpan<int> values)
+    {
+        _json.WriteStartArray(name);
+        foreach (int v in values)
+        {
+            _json.WriteNumberValue(v);
+        }
+
+        _json.WriteEndArray();
     }
 
     private void WriteOptional(string name, string? value)

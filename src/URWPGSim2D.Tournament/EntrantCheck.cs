@@ -9,7 +9,8 @@ namespace URWPGSim2D.Tournament;
 /// <summary>
 /// <c>tournament --check</c>: a pre-flight of each entrant before the real run, which a teacher can
 /// send back to the class: whether it compiles and loads, and one match of at most a minute against
-/// <c>idle</c> (the entrant on team 0, <c>idle</c> on every other team) with its faults and its slowest call.
+/// <c>idle</c> (the entrant on team 0, <c>idle</c> on every other team) with its faults, its slowest call
+/// and the most memory its strategy host held.
 /// </summary>
 public static class EntrantCheck
 {
@@ -26,7 +27,8 @@ public static class EntrantCheck
     /// <param name="SlowestMs">Its slowest call, ms, when measured (loaded strategies), else null.</param>
     /// <param name="Score">Its score in the check match.</param>
     /// <param name="FirstFault">Its first fault (<c>cycle N: message</c>), or null.</param>
-    public sealed record Line(string Name, string? Error, int Exceptions, int Timeouts, int BadAnswers, int HostEnds, double? SlowestMs, int Score, string? FirstFault)
+    /// <param name="PeakMemoryBytes">The most memory its strategy host's sandbox held at once, bytes (runtime included), when measured (a host in a control group), else null.</param>
+    public sealed record Line(string Name, string? Error, int Exceptions, int Timeouts, int BadAnswers, int HostEnds, double? SlowestMs, int Score, string? FirstFault, long? PeakMemoryBytes = null)
     {
         /// <summary>Whether the entrant is ready: it loads and played without a fault.</summary>
         public bool Ready => Error is null && Exceptions + Timeouts + BadAnswers + HostEnds == 0;
@@ -63,9 +65,10 @@ public static class EntrantCheck
             loop.Play();
             var mine = loop.Match.Caller().Slots.Where(s => s.Team == 0).ToList();
             double? slowest = mine.Select(s => s.Bank?.Slowest.TotalMilliseconds).Where(x => x is not null).DefaultIfEmpty(null).Max();
+            long? memory = mine.Select(s => s.PeakMemoryBytes).Where(x => x is not null).DefaultIfEmpty(null).Max();
             lines.Add(new Line(
                 entrants[e].Name, null, mine.Sum(s => s.Exceptions), mine.Sum(s => s.Timeouts), mine.Sum(s => s.BadAnswers), mine.Sum(s => s.Crashes),
-                slowest, loop.Match.Rules.Scores[0], mine.Select(s => s.FirstFault).FirstOrDefault(f => f is not null)));
+                slowest, loop.Match.Rules.Scores[0], mine.Select(s => s.FirstFault).FirstOrDefault(f => f is not null), memory));
         }
 
         return lines;
@@ -77,13 +80,14 @@ public static class EntrantCheck
         int width = Math.Max(7, lines.Max(l => l.Name.Length));
         var t = new StringBuilder();
         t.Append(string.Create(CultureInfo.InvariantCulture, $"check: {item.Slug}, {lines.Count} entrants, each in one {Math.Min(cycles, MostCycles)}-cycle match against idle (seed {seed})\n"));
-        t.Append(string.Create(CultureInfo.InvariantCulture, $"{"entrant".PadRight(width)}  {"ready",-5}  {"exceptions",10}  {"timeouts",8}  {"bad answers",11}  {"host ends",9}  {"slowest call",12}  {"score",5}  first fault or why not loaded\n"));
+        t.Append(string.Create(CultureInfo.InvariantCulture, $"{"entrant".PadRight(width)}  {"ready",-5}  {"exceptions",10}  {"timeouts",8}  {"bad answers",11}  {"host ends",9}  {"slowest call",12}  {"memory",8}  {"score",5}  first fault or why not loaded\n"));
         foreach (var l in lines)
         {
             string slowest = l.SlowestMs is { } ms ? string.Create(CultureInfo.InvariantCulture, $"{ms:0} ms") : "-";
+            string memory = l.PeakMemoryBytes is { } bytes ? string.Create(CultureInfo.InvariantCulture, $"{bytes / (1024 * 1024)} MiB") : "-";
             string note = l.Error is { } error ? "not loaded: " + error : l.FirstFault ?? "-";
             t.Append(string.Create(CultureInfo.InvariantCulture,
-                $"{l.Name.PadRight(width)}  {(l.Ready ? "yes" : "no"),-5}  {l.Exceptions,10}  {l.Timeouts,8}  {l.BadAnswers,11}  {l.HostEnds,9}  {slowest,12}  {l.Score,5}  {Engine.Messages.MessageText.Escape(StandingsText.Line(note))}\n"));
+                $"{l.Name.PadRight(width)}  {(l.Ready ? "yes" : "no"),-5}  {l.Exceptions,10}  {l.Timeouts,8}  {l.BadAnswers,11}  {l.HostEnds,9}  {slowest,12}  {memory,8}  {l.Score,5}  {Engine.Messages.MessageText.Escape(StandingsText.Line(note))}\n"));
         }
 
         int ready = lines.Count(l => l.Ready);

@@ -19,7 +19,7 @@ namespace URWPGSim2D.Tournament;
 /// and <c>"knockout"</c> (<c>{"rounds": [{"name", "pairs": [{"entrants", "from", "seeded", "matches": [{"match", "seed",
 /// "teams", "score", "winner"}], "wins", "goals", "winner", "decidedBy"}]}], "champion"}</c>).
 /// </summary>
-internal static class StandingsJson
+public static class StandingsJson
 {
     /// <summary>The file's text.</summary>
     /// <param name="standings">The standings.</param>

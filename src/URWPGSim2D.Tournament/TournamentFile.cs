@@ -77,6 +77,11 @@ public static class TournamentFile
         });
     }
 
+    /// <summary>Reads one record's line, as <see cref="WriteRecord"/> writes it (without its line feed).</summary>
+    /// <param name="line">The line.</param>
+    /// <exception cref="ResultFileException">The line is not a record.</exception>
+    public static TournamentRecord ParseRecord(string line) => ResultFile.Parse("record", 1, line, ReadRecord);
+
     /// <summary>Reads a file: its header, its valid records (in file order) and how many lines were not valid.</summary>
     /// <exception cref="ResultFileException">The file cannot be read or its first line is not a tournament header.</exception>
     public static (TournamentHeader Header, List<TournamentRecord> Records, int Broken) Read(string path)

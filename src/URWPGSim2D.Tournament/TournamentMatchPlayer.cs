@@ -13,8 +13,17 @@ namespace URWPGSim2D.Tournament;
 /// strategy), the seed, the length and the strategies' time limit; optionally recorded into a
 /// replay page (the viewer's page writer).
 /// </summary>
-internal static class TournamentMatchPlayer
+public static class TournamentMatchPlayer
 {
+    /// <summary>The settings of the match: the item's layout of its seed, the teams, the seed, the length and the time limit.</summary>
+    /// <param name="item">The item.</param>
+    /// <param name="match">The scheduled match.</param>
+    /// <param name="teams">Per team, the entrant's strategy, or null for the item's demo strategy.</param>
+    /// <param name="cycles">Cycles of the match.</param>
+    /// <param name="strategyTimeoutMs">Time limit of loaded strategies per call, ms.</param>
+    public static MatchSettings Settings(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs) =>
+        new(item.CreateScenario(match.Seed), cycles, match.Seed, Noise: null, teams, strategyTimeoutMs);
+
     /// <summary>Plays the match and returns its result (index and seed as scheduled).</summary>
     /// <param name="item">The item.</param>
     /// <param name="match">The scheduled match.</param>
@@ -24,7 +33,7 @@ internal static class TournamentMatchPlayer
     /// <param name="replayPage">Where to write the replay page, or null for none.</param>
     public static MatchResult Play(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs, string? replayPage)
     {
-        var settings = new MatchSettings(item.CreateScenario(match.Seed), cycles, match.Seed, Noise: null, teams, strategyTimeoutMs);
+        var settings = Settings(item, match, teams, cycles, strategyTimeoutMs);
         var replay = replayPage is null ? null : new ReplayRecorder();
         using var loop = new MatchLoop(settings.Build(), settings.Cycles, replay);
         loop.Play();

@@ -20,6 +20,13 @@ namespace URWPGSim2D.Tournament;
 /// <param name="ReplayPage">Where match J's replay page goes, or null for no replays.</param>
 public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Header, EntrantLoader Entrants, Func<int, string>? ReplayPage)
 {
+    /// <summary>
+    /// Plays a match somewhere else and gives its result when it is over (the live page of
+    /// <c>tournament --live</c>: one match after another, in real time); null to play each match here
+    /// as fast as it goes. With one, the matches are played one at a time.
+    /// </summary>
+    public Func<ScheduledMatch, MatchSettings, MatchResult>? Player { get; init; }
+
     /// <summary>Plays the matches; <paramref name="finished"/> is called (under a lock) as each ends, with its record and, when it failed inside the server, the failure.</summary>
     /// <param name="matches">The matches to play.</param>
     /// <param name="threads">Matches at once, ≥ 1.</param>
@@ -54,7 +61,7 @@ public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Hea
             }
         }
 
-        var pool = new Thread[Math.Clamp(threads, 1, Math.Max(1, matches.Count)) - 1];
+        var pool = new Thread[Player is null ? Math.Clamp(threads, 1, Math.Max(1, matches.Count)) - 1 : 0];
         for (int w = 0; w < pool.Length; w++)
         {
             pool[w] = new Thread(Work) { IsBackground = true, Name = $"tournament worker {w + 1}" };
@@ -134,7 +141,9 @@ public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Hea
             return new TournamentRecord(match.Index, match.Seed, names, null, forfeits, reasons);
         }
 
-        var result = TournamentMatchPlayer.Play(Item, match, teams, Header.Cycles, Header.StrategyTimeoutMs, ReplayPage?.Invoke(match.Index));
+        var result = Player is { } player
+            ? player(match, TournamentMatchPlayer.Settings(Item, match, teams, Header.Cycles, Header.StrategyTimeoutMs))
+            : TournamentMatchPlayer.Play(Item, match, teams, Header.Cycles, Header.StrategyTimeoutMs, ReplayPage?.Invoke(match.Index));
         return new TournamentRecord(match.Index, match.Seed, names, result, [], []);
     }
 }

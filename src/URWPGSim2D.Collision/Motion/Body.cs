@@ -190,6 +190,9 @@ internal sealed class Body
     /// <summary>Whether the body's move was rejected since the current or last step began.</summary>
     public bool Rejected;
 
+    /// <summary>Deep position corrections a response reported this step (<see cref="Stepper.CountCorrection"/>).</summary>
+    public int Corrections;
+
     /// <summary>A moving circle.</summary>
     public static Body Circle(int id, float radius, Vector2 position) =>
         new(BodyKind.Circle, id) { Radius = radius, Position = position, Thickness = 2f * radius };

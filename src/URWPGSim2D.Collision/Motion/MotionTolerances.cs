@@ -19,17 +19,6 @@ public static class MotionTolerances
     /// <summary>Contact events a body may take part in per step with a refined time of first contact; later ones are resolved where found.</summary>
     internal const int MaximumEventsPerBody = 64;
 
-    /// <summary>
-    /// Contact events a body may take part in per step before its further contacts that cannot
-    /// tunnel before the step ends (the pair's travel left is within its limit) are left to the
-    /// end of the step (a body wedged between two obstacles is pushed from one into the other at
-    /// every sample); if settling there does not free it, its move is rejected.
-    /// </summary>
-    internal const int EventsBeforeDeferring = 16;
-
-    /// <summary>Contact events in a row at one time after which a body counts as wedged too (see <see cref="EventsBeforeDeferring"/>).</summary>
-    internal const int EventsInPlaceBeforeDeferring = 2;
-
     /// <summary>Passes of immediate re-resolution after a contact when a response pushes a body into a third one.</summary>
     internal const int RelaxationPasses = 8;
 

@@ -35,6 +35,9 @@ internal sealed class Settling
         _bodies = bodies;
     }
 
+    /// <summary>When a body counts as wedged and its move is rejected (<see cref="Stepper.Wedging"/>).</summary>
+    public WedgePolicy Policy { get; set; } = new();
+
     /// <summary>Bodies whose move was rejected in the current or last step (or <see cref="SettleAll"/>).</summary>
     public int RejectedMoves { get; private set; }
 
@@ -232,9 +235,16 @@ internal sealed class Settling
     public void RejectToStepStart(Body b) =>
         MoveBack(b, b.StepStartPosition, b.StepStartHeading, b.StepStartJoint1, b.StepStartJoint2, b.StepStartJoint3, stamp: false);
 
+    /// <summary>
+    /// Counts a response's correction of a body (<see cref="Stepper.CountCorrection"/>) at a
+    /// contact's depth: true when it is a deep one past the policy's allowance for the step and
+    /// the body's move is not rejected yet (the caller rejects it).
+    /// </summary>
+    public bool Wedges(Body b, float depth) =>
+        depth > MotionTolerances.TimeOfImpactTolerance && ++b.Corrections > Policy.CorrectionsBeforeRejecting && !b.Rejected;
+
     // Many events this step, or several in a row at one time (pushed back and forth in place).
-    private static bool Wedged(Body body) =>
-        body.Events >= MotionTolerances.EventsBeforeDeferring || body.EventsInPlace >= MotionTolerances.EventsInPlaceBeforeDeferring;
+    private bool Wedged(Body body) => Policy.Wedged(body.Events, body.EventsInPlace);
 
     // The end of the step rejects a body once.
     private void Reject(Body body, BodySet rejected)

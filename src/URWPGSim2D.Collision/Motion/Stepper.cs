@@ -154,6 +154,50 @@ public sealed partial class Stepper
     }
 
     /// <summary>
+    /// Counts a response's correction of a moving body's position for a contact, from a handler
+    /// (call it after moving the body out of <paramref name="contact"/>). A correction for a contact
+    /// deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/> counts toward the wedge
+    /// policy (<see cref="Wedging"/>): the first one past <see cref="WedgePolicy.CorrectionsBeforeRejecting"/>
+    /// in a step (a <see cref="Settle"/> after it included) finds the body wedged, and its move is
+    /// rejected as by <see cref="RejectMove"/>. The count starts again when a step begins; between
+    /// steps nothing is counted.
+    /// </summary>
+    /// <param name="body">The body the response corrected.</param>
+    /// <param name="contact">The contact it was corrected for.</param>
+    /// <returns>True when this correction rejected the body's move.</returns>
+    /// <exception cref="ArgumentException">The body does not move.</exception>
+    public bool CountCorrection(BodyId body, in Contact contact)
+    {
+        Body b = Moving(body, null, nameof(body));
+        if (!_stepping || !_settling.Wedges(b, contact.Depth))
+        {
+            return false;
+        }
+
+        Touch(b);
+        _settling.RejectToStepStart(b);
+        return true;
+    }
+
+    /// <summary>When a body counts as wedged (its contacts left to the end of the step, its move rejected if still overlapping there, or rejected at once after too many deep corrections); the defaults of <see cref="WedgePolicy"/> until set.</summary>
+    /// <exception cref="ArgumentNullException">The value is null.</exception>
+    /// <exception cref="ArgumentException">A step is running.</exception>
+    public WedgePolicy Wedging
+    {
+        get => _settling.Policy;
+        set
+        {
+            ArgumentNullException.ThrowIfNull(value);
+            if (_stepping)
+            {
+                throw new ArgumentException("the wedge policy cannot change while a step runs", nameof(value));
+            }
+
+            _settling.Policy = value;
+        }
+    }
+
+    /// <summary>
     /// Fewest moving bodies for which the islands are spread over <see cref="Threads"/> (2,048 by
     /// default): smaller worlds use the calling thread alone, with the same result (at 1,000 bodies
     /// two threads measured no faster). Lower it to spread small worlds too.
@@ -244,6 +288,7 @@ public sealed partial class Stepper
             body.EventsInPlace = 0;
             body.LastEventTime = -1.0;
             body.Rejected = false;
+            body.Corrections = 0;
         }
 
         _schedule.Begin(seconds);

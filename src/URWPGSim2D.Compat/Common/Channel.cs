@@ -19,14 +19,8 @@ public class Channel : RectangularStatic
     /// <param name="widthMm">Width, mm.</param>
     /// <param name="directionDeg">Direction, degrees.</param>
     public Channel(string strName, Xna.Vector3 positionMm, Color color, int lengthMm, int widthMm, float directionDeg)
+        : this(strName, positionMm, color, color, 0, lengthMm, widthMm, directionDeg)
     {
-        Name = strName;
-        PositionMm = positionMm;
-        ColorBorder = color;
-        ColorFilled = color;
-        LengthMm = lengthMm;
-        WidthMm = widthMm;
-        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
     }
 
     /// <summary>Creates a named channel with separate border and fill colours.</summary>
@@ -52,15 +46,9 @@ public class Channel : RectangularStatic
     /// <param name="widthMm">Width, mm.</param>
     /// <param name="directionDeg">Direction, degrees.</param>
     public Channel(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWithPix, int lengthMm, int widthMm, float directionDeg)
+        : base(positionMm, colorBorder, colorFilled, borderWithPix, lengthMm, widthMm, directionDeg)
     {
         Name = strName;
-        PositionMm = positionMm;
-        ColorBorder = colorBorder;
-        ColorFilled = colorFilled;
-        BorderWidthPix = borderWithPix;
-        LengthMm = lengthMm;
-        WidthMm = widthMm;
-        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
     }
 
     /// <summary>Name.</summary>

@@ -139,14 +139,7 @@ public class RectangularDynamic : ICloneable
     /// </summary>
     public void CalculateCollisionDetectionParas()
     {
-        CircumcircleRadiusMm = (int)Math.Sqrt((LengthMm * LengthMm) + (WidthMm * WidthMm)) / 2;
-        float sin = MathF.Sin(DirectionRad), cos = MathF.Cos(DirectionRad);
-        float hl = LengthMm / 2f, hw = WidthMm / 2f;
-        float x = PositionMm.X, z = PositionMm.Z;
-        PolygonVertices[0] = new(x - (hl * cos) + (hw * sin), 0f, z - (hl * sin) - (hw * cos));
-        PolygonVertices[1] = new(x + (hl * cos) + (hw * sin), 0f, z + (hl * sin) - (hw * cos));
-        PolygonVertices[2] = new(x + (hl * cos) - (hw * sin), 0f, z + (hl * sin) + (hw * cos));
-        PolygonVertices[3] = new(x - (hl * cos) - (hw * sin), 0f, z - (hl * sin) + (hw * cos));
+        CircumcircleRadiusMm = RectangularStatic.Corners(PolygonVertices, PositionMm, LengthMm, WidthMm, DirectionRad);
     }
 
     /// <summary>A copy of size, direction, border and centre.</summary>

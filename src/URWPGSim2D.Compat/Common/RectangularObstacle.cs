@@ -46,15 +46,9 @@ public class RectangularObstacle : RectangularStatic
     /// <param name="widthMm">Width, mm.</param>
     /// <param name="directionDeg">Direction, degrees.</param>
     public RectangularObstacle(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWithPix, int lengthMm, int widthMm, float directionDeg)
+        : base(positionMm, colorBorder, colorFilled, borderWithPix, lengthMm, widthMm, directionDeg)
     {
         Name = strName;
-        PositionMm = positionMm;
-        ColorBorder = colorBorder;
-        ColorFilled = colorFilled;
-        BorderWidthPix = borderWithPix;
-        LengthMm = lengthMm;
-        WidthMm = widthMm;
-        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
         IsDeletionAllowed = true;
         CalculateCollisionDetectionParas();
     }

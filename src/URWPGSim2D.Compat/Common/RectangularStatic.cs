@@ -12,6 +12,19 @@ public class RectangularStatic : ICloneable
         SetRectangularStatic();
     }
 
+    /// <summary>The constructors of the named kinds: a rectangle of the given centre, colours, border, size and direction.</summary>
+    private protected RectangularStatic(Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWidthPix, int lengthMm, int widthMm, float directionDeg)
+        : this()
+    {
+        PositionMm = positionMm;
+        ColorBorder = colorBorder;
+        ColorFilled = colorFilled;
+        BorderWidthPix = borderWidthPix;
+        LengthMm = lengthMm;
+        WidthMm = widthMm;
+        DirectionRad = Xna.MathHelper.ToRadians(directionDeg);
+    }
+
     /// <summary>Length along <see cref="DirectionRad"/>, mm.</summary>
     public int LengthMm;
 
@@ -59,14 +72,7 @@ public class RectangularStatic : ICloneable
     /// <summary>Computes <see cref="CircumcircleRadiusMm"/> and the corners from centre, size and direction.</summary>
     public void CalculateCollisionDetectionParas()
     {
-        CircumcircleRadiusMm = (int)Math.Sqrt((LengthMm * LengthMm) + (WidthMm * WidthMm)) / 2;
-        float sin = MathF.Sin(DirectionRad), cos = MathF.Cos(DirectionRad);
-        float hl = LengthMm / 2f, hw = WidthMm / 2f;
-        float x = PositionMm.X, z = PositionMm.Z;
-        PolygonVertices[0] = new(x - (hl * cos) + (hw * sin), 0f, z - (hl * sin) - (hw * cos));
-        PolygonVertices[1] = new(x + (hl * cos) + (hw * sin), 0f, z + (hl * sin) - (hw * cos));
-        PolygonVertices[2] = new(x + (hl * cos) - (hw * sin), 0f, z + (hl * sin) + (hw * cos));
-        PolygonVertices[3] = new(x - (hl * cos) - (hw * sin), 0f, z - (hl * sin) + (hw * cos));
+        CircumcircleRadiusMm = Corners(PolygonVertices, PositionMm, LengthMm, WidthMm, DirectionRad);
     }
 
     /// <summary>A copy of size, direction, border and centre (not the corners).</summary>
@@ -89,5 +95,22 @@ public class RectangularStatic : ICloneable
         target.LengthDirectionRad = LengthDirectionRad;
         target.DirectionRad = DirectionRad;
         target.PositionMm = PositionMm;
+    }
+
+    /// <summary>
+    /// Writes the four corners of a rectangle (top-left, top-right, bottom-right, bottom-left at direction 0) into
+    /// <paramref name="corners"/> and returns its circumcircle radius in whole mm: what
+    /// <see cref="CalculateCollisionDetectionParas"/> and <see cref="RectangularDynamic.CalculateCollisionDetectionParas"/> compute.
+    /// </summary>
+    internal static int Corners(List<Xna.Vector3> corners, Xna.Vector3 centre, int lengthMm, int widthMm, float directionRad)
+    {
+        float sin = MathF.Sin(directionRad), cos = MathF.Cos(directionRad);
+        float hl = lengthMm / 2f, hw = widthMm / 2f;
+        float x = centre.X, z = centre.Z;
+        corners[0] = new(x - (hl * cos) + (hw * sin), 0f, z - (hl * sin) - (hw * cos));
+        corners[1] = new(x + (hl * cos) + (hw * sin), 0f, z + (hl * sin) - (hw * cos));
+        corners[2] = new(x + (hl * cos) - (hw * sin), 0f, z + (hl * sin) + (hw * cos));
+        corners[3] = new(x - (hl * cos) - (hw * sin), 0f, z - (hl * sin) + (hw * cos));
+        return (int)Math.Sqrt((lengthMm * lengthMm) + (widthMm * widthMm)) / 2;
     }
 }

@@ -40,13 +40,9 @@ public class RoundedObstacle : RoundedStatic
     /// <param name="borderWithPix">Border width, px.</param>
     /// <param name="radiusMm">Radius, mm.</param>
     public RoundedObstacle(string strName, Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWithPix, int radiusMm)
+        : base(positionMm, colorBorder, colorFilled, borderWithPix, radiusMm)
     {
         Name = strName;
-        PositionMm = positionMm;
-        ColorBorder = colorBorder;
-        ColorFilled = colorFilled;
-        BorderWidthPix = borderWithPix;
-        RadiusMm = radiusMm;
         IsDeletionAllowed = true;
     }
 

@@ -12,6 +12,16 @@ public class RoundedStatic : ICloneable
         SetRoundedStatic();
     }
 
+    /// <summary>The constructors of the named kinds: a round object of the given centre, colours, border and radius.</summary>
+    private protected RoundedStatic(Xna.Vector3 positionMm, Color colorBorder, Color colorFilled, int borderWidthPix, int radiusMm)
+    {
+        PositionMm = positionMm;
+        ColorBorder = colorBorder;
+        ColorFilled = colorFilled;
+        BorderWidthPix = borderWidthPix;
+        RadiusMm = radiusMm;
+    }
+
     /// <summary>Radius, mm.</summary>
     public int RadiusMm;
 

@@ -14,36 +14,7 @@ public static partial class UrwpgSimHelper
     public static void ParametersCheckingRoboFish(ref RoboFish obj)
     {
         System.ArgumentNullException.ThrowIfNull(obj);
-        var f = Field.Instance();
-        var v = obj.PolygonVertices;
-        int seq = 0;
-        int minX = (int)Min(v[0].X, v[1].X, v[2].X, v[3].X, ref seq);
-        if (minX < f.LeftMm)
-        {
-            obj.PositionMm.X += f.LeftMm - minX;
-        }
-        else
-        {
-            int maxX = (int)Max(v[0].X, v[1].X, v[2].X, v[3].X, ref seq);
-            if (maxX > f.RightMm)
-            {
-                obj.PositionMm.X -= maxX - f.RightMm;
-            }
-        }
-
-        int minZ = (int)Min(v[0].Z, v[1].Z, v[2].Z, v[3].Z, ref seq);
-        if (minZ < f.TopMm)
-        {
-            obj.PositionMm.Z += f.TopMm - minZ;
-        }
-        else
-        {
-            int maxZ = (int)Max(v[0].Z, v[1].Z, v[2].Z, v[3].Z, ref seq);
-            if (maxZ > f.BottomMm)
-            {
-                obj.PositionMm.Z -= maxZ - f.BottomMm;
-            }
-        }
+        KeepCornersInside(obj.PolygonVertices, ref obj.PositionMm);
     }
 
     /// <summary>
@@ -76,35 +47,7 @@ public static partial class UrwpgSimHelper
         obj.LengthMm = obj.LengthMm > f.FieldLengthXMm ? f.FieldLengthXMm : obj.LengthMm;
         obj.WidthMm = obj.WidthMm > f.FieldLengthZMm ? f.FieldLengthZMm : obj.WidthMm;
         obj.CalculateCollisionDetectionParas();
-        var v = obj.PolygonVertices;
-        int seq = 0;
-        int minX = (int)Min(v[0].X, v[1].X, v[2].X, v[3].X, ref seq);
-        if (minX < f.LeftMm)
-        {
-            obj.PositionMm.X += f.LeftMm - minX;
-        }
-        else
-        {
-            int maxX = (int)Max(v[0].X, v[1].X, v[2].X, v[3].X, ref seq);
-            if (maxX > f.RightMm)
-            {
-                obj.PositionMm.X -= maxX - f.RightMm;
-            }
-        }
-
-        int minZ = (int)Min(v[0].Z, v[1].Z, v[2].Z, v[3].Z, ref seq);
-        if (minZ < f.TopMm)
-        {
-            obj.PositionMm.Z += f.TopMm - minZ;
-        }
-        else
-        {
-            int maxZ = (int)Max(v[0].Z, v[1].Z, v[2].Z, v[3].Z, ref seq);
-            if (maxZ > f.BottomMm)
-            {
-                obj.PositionMm.Z -= maxZ - f.BottomMm;
-            }
-        }
+        KeepCornersInside(obj.PolygonVertices, ref obj.PositionMm);
     }
 
     /// <summary>
@@ -119,6 +62,38 @@ public static partial class UrwpgSimHelper
         int radius = obj.RadiusMm;
         KeepRoundInside(ref obj.PositionMm, ref radius, goalBlocks: true);
         obj.RadiusMm = radius;
+    }
+
+    // Moves position so that the outline points 0..3 (truncated to whole mm) lie inside the field, along X and along Z.
+    private static void KeepCornersInside(List<Microsoft.Xna.Framework.Vector3> v, ref Microsoft.Xna.Framework.Vector3 position)
+    {
+        var f = Field.Instance();
+        int dx = Inward(v[0].X, v[1].X, v[2].X, v[3].X, f.LeftMm, f.RightMm);
+        int dz = Inward(v[0].Z, v[1].Z, v[2].Z, v[3].Z, f.TopMm, f.BottomMm);
+        if (dx != 0)
+        {
+            position.X += dx;
+        }
+
+        if (dz != 0)
+        {
+            position.Z += dz;
+        }
+    }
+
+    // How far the four values (truncated) move to lie within low..high: up by what the least lies below low, else
+    // down by what the greatest lies above high, else 0.
+    private static int Inward(float a, float b, float c, float d, int low, int high)
+    {
+        int seq = 0;
+        int min = (int)Min(a, b, c, d, ref seq);
+        if (min < low)
+        {
+            return low - min;
+        }
+
+        int max = (int)Max(a, b, c, d, ref seq);
+        return max > high ? high - max : 0;
     }
 
     private static void KeepRoundInside(ref Microsoft.Xna.Framework.Vector3 position, ref int radius, bool goalBlocks)

@@ -6,24 +6,11 @@ namespace URWPGSim2D.Compat.Retargeting;
 
 /// <summary>What the loader needs to know of a PE image: whether it is IL only, and whether it must be
 /// retargeted (it demands a 32-bit process or references one of the original's assemblies).</summary>
-internal sealed class ImageShape
+/// <param name="ILOnly">The CLR header's ILONLY flag: the image holds no native code.</param>
+/// <param name="Requires32Bit">The CLR header's 32BITREQUIRED flag (an x86 build).</param>
+/// <param name="ReferencesOriginal">Whether an assembly reference names one of the original's assemblies.</param>
+internal sealed record ImageShape(bool ILOnly, bool Requires32Bit, bool ReferencesOriginal)
 {
-    private ImageShape(bool ilOnly, bool requires32Bit, bool referencesOriginal)
-    {
-        ILOnly = ilOnly;
-        Requires32Bit = requires32Bit;
-        ReferencesOriginal = referencesOriginal;
-    }
-
-    /// <summary>The CLR header's ILONLY flag: the image holds no native code.</summary>
-    public bool ILOnly { get; }
-
-    /// <summary>The CLR header's 32BITREQUIRED flag (an x86 build).</summary>
-    public bool Requires32Bit { get; }
-
-    /// <summary>Whether an assembly reference names one of the original's assemblies.</summary>
-    public bool ReferencesOriginal { get; }
-
     /// <summary>Whether the image must be rewritten before it can load in this process.</summary>
     public bool NeedsRetargeting => Requires32Bit || ReferencesOriginal;
 

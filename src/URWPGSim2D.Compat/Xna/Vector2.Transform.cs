@@ -35,7 +35,7 @@ public partial struct Vector2
     /// <returns>The rotated vector.</returns>
     public static Vector2 Transform(Vector2 value, Quaternion rotation)
     {
-        var r = Rotated(new Vector3(value.X, value.Y, 0f), rotation);
+        var r = Vector3.Transform(new Vector3(value.X, value.Y, 0f), rotation);
         return new(r.X, r.Y);
     }
 
@@ -52,7 +52,7 @@ public partial struct Vector2
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void Transform(Vector2[] sourceArray, ref Matrix matrix, Vector2[] destinationArray) =>
-        Transform(sourceArray, 0, ref matrix, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, matrix, destinationArray, Transform);
 
     /// <summary>Transforms a range of points (<see cref="Transform(Vector2, Matrix)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The points.</param>
@@ -63,15 +63,8 @@ public partial struct Vector2
     /// <param name="length">Number of points.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void Transform(Vector2[] sourceArray, int sourceIndex, ref Matrix matrix, Vector2[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var m = matrix;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = Transform(sourceArray[sourceIndex + i], m);
-        }
-    }
+    public static void Transform(Vector2[] sourceArray, int sourceIndex, ref Matrix matrix, Vector2[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, matrix, destinationArray, destinationIndex, length, Transform);
 
     /// <summary>Rotates every vector of an array (<see cref="Transform(Vector2, Quaternion)"/>) into another (or the same) array.</summary>
     /// <param name="sourceArray">The vectors.</param>
@@ -80,7 +73,7 @@ public partial struct Vector2
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void Transform(Vector2[] sourceArray, ref Quaternion rotation, Vector2[] destinationArray) =>
-        Transform(sourceArray, 0, ref rotation, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, rotation, destinationArray, Transform);
 
     /// <summary>Rotates a range of vectors (<see cref="Transform(Vector2, Quaternion)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The vectors.</param>
@@ -91,15 +84,8 @@ public partial struct Vector2
     /// <param name="length">Number of vectors.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void Transform(Vector2[] sourceArray, int sourceIndex, ref Quaternion rotation, Vector2[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var q = rotation;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = Transform(sourceArray[sourceIndex + i], q);
-        }
-    }
+    public static void Transform(Vector2[] sourceArray, int sourceIndex, ref Quaternion rotation, Vector2[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, rotation, destinationArray, destinationIndex, length, Transform);
 
     /// <summary>Transforms every direction of an array (<see cref="TransformNormal(Vector2, Matrix)"/>) into another (or the same) array.</summary>
     /// <param name="sourceArray">The directions.</param>
@@ -108,7 +94,7 @@ public partial struct Vector2
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void TransformNormal(Vector2[] sourceArray, ref Matrix matrix, Vector2[] destinationArray) =>
-        TransformNormal(sourceArray, 0, ref matrix, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, matrix, destinationArray, TransformNormal);
 
     /// <summary>Transforms a range of directions (<see cref="TransformNormal(Vector2, Matrix)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The directions.</param>
@@ -119,43 +105,6 @@ public partial struct Vector2
     /// <param name="length">Number of directions.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void TransformNormal(Vector2[] sourceArray, int sourceIndex, ref Matrix matrix, Vector2[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var m = matrix;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = TransformNormal(sourceArray[sourceIndex + i], m);
-        }
-    }
-
-    // v' = v + w·t + u × t with u the vector part and t = 2·(u × v): the rotation q·v·q* of a unit quaternion.
-    private static Vector3 Rotated(Vector3 v, Quaternion q)
-    {
-        var u = new Vector3(q.X, q.Y, q.Z);
-        var t = Vector3.Cross(u, v) * 2f;
-        return v + (t * q.W) + Vector3.Cross(u, t);
-    }
-
-    private static int Whole(Vector2[] sourceArray, Vector2[] destinationArray)
-    {
-        ArgumentNullException.ThrowIfNull(sourceArray);
-        ArgumentNullException.ThrowIfNull(destinationArray);
-        if (destinationArray.Length < sourceArray.Length)
-        {
-            throw new ArgumentException("The destination array is shorter than the source array.", nameof(destinationArray));
-        }
-
-        return sourceArray.Length;
-    }
-
-    private static void Check(Vector2[] sourceArray, int sourceIndex, Vector2[] destinationArray, int destinationIndex, int length)
-    {
-        ArgumentNullException.ThrowIfNull(sourceArray);
-        ArgumentNullException.ThrowIfNull(destinationArray);
-        if (sourceIndex < 0 || destinationIndex < 0 || length < 0 || sourceArray.Length - sourceIndex < length || destinationArray.Length - destinationIndex < length)
-        {
-            throw new ArgumentException("The range does not fit the arrays.", nameof(length));
-        }
-    }
+    public static void TransformNormal(Vector2[] sourceArray, int sourceIndex, ref Matrix matrix, Vector2[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, matrix, destinationArray, destinationIndex, length, TransformNormal);
 }

@@ -32,10 +32,8 @@ public partial struct Vector3
     /// <param name="value4">The point after the segment.</param>
     /// <param name="amount">Position on the segment.</param>
     /// <returns>The point on the curve.</returns>
-    public static Vector3 CatmullRom(Vector3 value1, Vector3 value2, Vector3 value3, Vector3 value4, float amount) => new(
-        MathHelper.CatmullRom(value1.X, value2.X, value3.X, value4.X, amount),
-        MathHelper.CatmullRom(value1.Y, value2.Y, value3.Y, value4.Y, amount),
-        MathHelper.CatmullRom(value1.Z, value2.Z, value3.Z, value4.Z, amount));
+    public static Vector3 CatmullRom(Vector3 value1, Vector3 value2, Vector3 value3, Vector3 value4, float amount) =>
+        Spline(value1, value2, value3, value4, amount, MathHelper.CatmullRom);
 
     /// <summary>The <c>ref</c> form of <see cref="CatmullRom(Vector3, Vector3, Vector3, Vector3, float)"/>.</summary>
     /// <param name="value1">The point before the segment.</param>
@@ -54,10 +52,8 @@ public partial struct Vector3
     /// <param name="tangent2">The tangent at 1.</param>
     /// <param name="amount">Position.</param>
     /// <returns>The point on the curve.</returns>
-    public static Vector3 Hermite(Vector3 value1, Vector3 tangent1, Vector3 value2, Vector3 tangent2, float amount) => new(
-        MathHelper.Hermite(value1.X, tangent1.X, value2.X, tangent2.X, amount),
-        MathHelper.Hermite(value1.Y, tangent1.Y, value2.Y, tangent2.Y, amount),
-        MathHelper.Hermite(value1.Z, tangent1.Z, value2.Z, tangent2.Z, amount));
+    public static Vector3 Hermite(Vector3 value1, Vector3 tangent1, Vector3 value2, Vector3 tangent2, float amount) =>
+        Spline(value1, tangent1, value2, tangent2, amount, MathHelper.Hermite);
 
     /// <summary>The <c>ref</c> form of <see cref="Hermite(Vector3, Vector3, Vector3, Vector3, float)"/>.</summary>
     /// <param name="value1">The point at 0.</param>
@@ -159,4 +155,8 @@ public partial struct Vector3
     /// <param name="value">The vector.</param>
     /// <param name="result">−value.</param>
     public static void Negate(ref Vector3 value, out Vector3 result) => result = -value;
+
+    // A cubic spline of four control values and a position (MathHelper.CatmullRom or MathHelper.Hermite), component by component.
+    private static Vector3 Spline(Vector3 a, Vector3 b, Vector3 c, Vector3 d, float amount, Func<float, float, float, float, float, float> spline) =>
+        new(spline(a.X, b.X, c.X, d.X, amount), spline(a.Y, b.Y, c.Y, d.Y, amount), spline(a.Z, b.Z, c.Z, d.Z, amount));
 }

@@ -35,8 +35,10 @@ public partial struct Vector3
     /// <returns>The rotated vector.</returns>
     public static Vector3 Transform(Vector3 value, Quaternion rotation)
     {
-        var r = Rotated(new Vector3(value.X, value.Y, value.Z), rotation);
-        return r;
+        // v' = v + w·t + u × t with u the vector part and t = 2·(u × v): the rotation q·v·q* of a unit quaternion.
+        var u = new Vector3(rotation.X, rotation.Y, rotation.Z);
+        var t = Cross(u, value) * 2f;
+        return value + (t * rotation.W) + Cross(u, t);
     }
 
     /// <summary>The <c>ref</c> form of <see cref="Transform(Vector3, Quaternion)"/>.</summary>
@@ -52,7 +54,7 @@ public partial struct Vector3
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void Transform(Vector3[] sourceArray, ref Matrix matrix, Vector3[] destinationArray) =>
-        Transform(sourceArray, 0, ref matrix, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, matrix, destinationArray, Transform);
 
     /// <summary>Transforms a range of points (<see cref="Transform(Vector3, Matrix)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The points.</param>
@@ -63,15 +65,8 @@ public partial struct Vector3
     /// <param name="length">Number of points.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void Transform(Vector3[] sourceArray, int sourceIndex, ref Matrix matrix, Vector3[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var m = matrix;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = Transform(sourceArray[sourceIndex + i], m);
-        }
-    }
+    public static void Transform(Vector3[] sourceArray, int sourceIndex, ref Matrix matrix, Vector3[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, matrix, destinationArray, destinationIndex, length, Transform);
 
     /// <summary>Rotates every vector of an array (<see cref="Transform(Vector3, Quaternion)"/>) into another (or the same) array.</summary>
     /// <param name="sourceArray">The vectors.</param>
@@ -80,7 +75,7 @@ public partial struct Vector3
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void Transform(Vector3[] sourceArray, ref Quaternion rotation, Vector3[] destinationArray) =>
-        Transform(sourceArray, 0, ref rotation, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, rotation, destinationArray, Transform);
 
     /// <summary>Rotates a range of vectors (<see cref="Transform(Vector3, Quaternion)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The vectors.</param>
@@ -91,15 +86,8 @@ public partial struct Vector3
     /// <param name="length">Number of vectors.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void Transform(Vector3[] sourceArray, int sourceIndex, ref Quaternion rotation, Vector3[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var q = rotation;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = Transform(sourceArray[sourceIndex + i], q);
-        }
-    }
+    public static void Transform(Vector3[] sourceArray, int sourceIndex, ref Quaternion rotation, Vector3[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, rotation, destinationArray, destinationIndex, length, Transform);
 
     /// <summary>Transforms every direction of an array (<see cref="TransformNormal(Vector3, Matrix)"/>) into another (or the same) array.</summary>
     /// <param name="sourceArray">The directions.</param>
@@ -108,7 +96,7 @@ public partial struct Vector3
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">The destination is shorter than the source.</exception>
     public static void TransformNormal(Vector3[] sourceArray, ref Matrix matrix, Vector3[] destinationArray) =>
-        TransformNormal(sourceArray, 0, ref matrix, destinationArray, 0, Whole(sourceArray, destinationArray));
+        VectorArrays.Map(sourceArray, matrix, destinationArray, TransformNormal);
 
     /// <summary>Transforms a range of directions (<see cref="TransformNormal(Vector3, Matrix)"/>) into a range of another (or the same) array.</summary>
     /// <param name="sourceArray">The directions.</param>
@@ -119,43 +107,6 @@ public partial struct Vector3
     /// <param name="length">Number of directions.</param>
     /// <exception cref="ArgumentNullException">An array is null.</exception>
     /// <exception cref="ArgumentException">A range does not fit its array.</exception>
-    public static void TransformNormal(Vector3[] sourceArray, int sourceIndex, ref Matrix matrix, Vector3[] destinationArray, int destinationIndex, int length)
-    {
-        Check(sourceArray, sourceIndex, destinationArray, destinationIndex, length);
-        var m = matrix;
-        for (int i = 0; i < length; i++)
-        {
-            destinationArray[destinationIndex + i] = TransformNormal(sourceArray[sourceIndex + i], m);
-        }
-    }
-
-    // v' = v + w·t + u × t with u the vector part and t = 2·(u × v): the rotation q·v·q* of a unit quaternion.
-    private static Vector3 Rotated(Vector3 v, Quaternion q)
-    {
-        var u = new Vector3(q.X, q.Y, q.Z);
-        var t = Vector3.Cross(u, v) * 2f;
-        return v + (t * q.W) + Vector3.Cross(u, t);
-    }
-
-    private static int Whole(Vector3[] sourceArray, Vector3[] destinationArray)
-    {
-        ArgumentNullException.ThrowIfNull(sourceArray);
-        ArgumentNullException.ThrowIfNull(destinationArray);
-        if (destinationArray.Length < sourceArray.Length)
-        {
-            throw new ArgumentException("The destination array is shorter than the source array.", nameof(destinationArray));
-        }
-
-        return sourceArray.Length;
-    }
-
-    private static void Check(Vector3[] sourceArray, int sourceIndex, Vector3[] destinationArray, int destinationIndex, int length)
-    {
-        ArgumentNullException.ThrowIfNull(sourceArray);
-        ArgumentNullException.ThrowIfNull(destinationArray);
-        if (sourceIndex < 0 || destinationIndex < 0 || length < 0 || sourceArray.Length - sourceIndex < length || destinationArray.Length - destinationIndex < length)
-        {
-            throw new ArgumentException("The range does not fit the arrays.", nameof(length));
-        }
-    }
+    public static void TransformNormal(Vector3[] sourceArray, int sourceIndex, ref Matrix matrix, Vector3[] destinationArray, int destinationIndex, int length) =>
+        VectorArrays.Map(sourceArray, sourceIndex, matrix, destinationArray, destinationIndex, length, TransformNormal);
 }

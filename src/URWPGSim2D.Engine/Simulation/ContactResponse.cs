@@ -26,11 +26,12 @@ namespace URWPGSim2D.Engine.Simulation;
 /// speed × −0.001; ball–obstacle: × −0.1.</item>
 /// </list>
 /// A fish's speed and angular speed (its gear approach) are never changed by a contact: each cycle
-/// it swims with its own motion again. A fish corrected deeper than the time-of-impact tolerance
-/// more than <see cref="PhysicsConstants.MaximumCorrectionsPerFish"/> times in one cycle is wedged:
-/// the motion world rejects its move (<see cref="Stepper.RejectMove"/>: back where it started the
-/// cycle, at rest), and for the rest of that cycle it counts as
-/// immovable (its partners take the whole correction, it neither moves nor turns).
+/// it swims with its own motion again. Every position correction of a fish is counted by the motion
+/// world's wedge policy (<see cref="Stepper.CountCorrection"/>): a fish corrected deeper than the
+/// time-of-impact tolerance more than <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> times in
+/// one cycle is wedged and the motion world rejects its move (back where it started the cycle, at
+/// rest); for the rest of that cycle it counts as immovable (its partners take the whole
+/// correction, it neither moves nor turns).
 /// </summary>
 internal sealed class ContactResponse
 {
@@ -272,14 +273,7 @@ internal sealed class ContactResponse
         return true;
     }
 
-    // A fish that keeps needing deep corrections in one cycle is wedged: the motion world rejects its
-    // move for this cycle (and remembers it: FishState.MoveRejected). Corrections at a refined time
-    // of first contact are no deeper than the tolerance and not counted.
-    private void Count(FishState fish, in Contact hit)
-    {
-        if (hit.Depth > MotionTolerances.TimeOfImpactTolerance && ++fish.Corrections > PhysicsConstants.MaximumCorrectionsPerFish && !fish.MoveRejected)
-        {
-            _world.Motion.RejectMove(fish.Handle);
-        }
-    }
+    // The motion world's wedge policy counts the fish's correction (a deep one past the allowance
+    // rejects its move for this cycle: FishState.MoveRejected from then on).
+    private void Count(FishState fish, in Contact hit) => _world.Motion.CountCorrection(fish.Handle, hit);
 }

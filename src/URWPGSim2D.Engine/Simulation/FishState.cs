@@ -121,9 +121,6 @@ public sealed class FishState
         set => _motion.SetDrift(Handle, _motion.DriftOf(Handle), value);
     }
 
-    /// <summary>Position corrections this fish has had in the current cycle.</summary>
-    public int Corrections;
-
     /// <summary>
     /// True when this cycle's move was rejected (by the motion world, or by the response through
     /// <see cref="Stepper.RejectMove"/>): the fish is back where it started the cycle and holds still
@@ -172,12 +169,6 @@ public sealed class FishState
         }
     }
 
-    /// <summary>Clears the per-cycle counts and flags (where the cycle started is the motion world's).</summary>
-    public void BeginCycle()
-    {
-        Corrections = 0;
-    }
-
     /// <summary>Back to the state a fish made at <paramref name="position"/> and <paramref name="heading"/> has: joints straight, at rest, in play, no decision yet.</summary>
     internal void Restart(Vector2 position, float heading, float tailPhase)
     {
@@ -190,6 +181,5 @@ public sealed class FishState
         Turn.Reset(0f, TurnTable.Rates);
         Speed.Reset(0f, SpeedTable.Speeds);
         TailPhase = tailPhase;
-        Corrections = 0;
     }
 }

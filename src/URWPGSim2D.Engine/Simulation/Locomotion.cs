@@ -20,7 +20,6 @@ internal static class Locomotion
         const float dt = PhysicsConstants.CycleSeconds;
         foreach (var f in world.Fish)
         {
-            f.BeginCycle();
             if (f.OutOfPlay)
             {
                 Still(f);

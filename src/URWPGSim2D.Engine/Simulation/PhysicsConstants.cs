@@ -54,7 +54,4 @@ internal static class PhysicsConstants
 
     /// <summary>Extra gap (mm) left by a position correction so a resolved pair is not found again.</summary>
     public const float SeparationMargin = 0.01f;
-
-    /// <summary>Position corrections a fish may take in one cycle before its move is rejected.</summary>
-    public const int MaximumCorrectionsPerFish = 8;
 }

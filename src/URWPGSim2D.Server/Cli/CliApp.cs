@@ -49,6 +49,7 @@ internal sealed class CliApp
         new HostCommand(),
         new ConnectCommand(),
         new InspectDllCommand(),
+        new LadderCommand(),
         new CompletionCommand(),
     ];
 
@@ -107,7 +108,7 @@ internal sealed class CliApp
             }
 
             ParseResult parse = Root.Parse(args, CliSyntax.Parser);
-            ICliCommand command = Array.Find(_commands, c => c.Syntax == parse.CommandResult.Command) ?? throw UnknownCommand(args[0]);
+            ICliCommand command = Array.Find(_commands, c => Chose(parse.CommandResult, c.Syntax)) ?? throw UnknownCommand(args[0]);
             return command.Run(CommandLineWords.Of(parse), console);
         }
         catch (CliUsageException ex)
@@ -126,6 +127,20 @@ internal sealed class CliApp
             console.ErrorLine($"internal error: {ex.GetType().Name}: {ex.Message.ReplaceLineEndings(" ")}");
             return ExitCodes.InternalError;
         }
+    }
+
+    // Whether the parse chose the command or one of its sub-commands (ladder serve).
+    private static bool Chose(System.CommandLine.Parsing.CommandResult result, Command command)
+    {
+        for (System.CommandLine.Parsing.SymbolResult? r = result; r is not null; r = r.Parent)
+        {
+            if (r is System.CommandLine.Parsing.CommandResult c && c.Command == command)
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     /// <summary>The program's help: every command's synopsis and summary, and the exit codes.</summary>

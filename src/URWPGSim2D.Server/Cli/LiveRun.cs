@@ -87,37 +87,13 @@ internal static class LiveRun
             console.Out.Flush();
             summarised = ended;
         };
-        string? token = IsLoopback(options.Host) ? null : Convert.ToHexStringLower(System.Security.Cryptography.RandomNumberGenerator.GetBytes(16));
-        using var server = new LiveServer(options.Host, options.Port, feed, Control, board is null ? null : board.Json, token);
-        try
+        using var server = Open(options.Host, options.Port, feed, Control, board is null ? null : board.Json, console, listening);
+        if (server is null)
         {
-            server.Start();
-        }
-        catch (LiveServerException e)
-        {
-            console.ErrorLine($"--port {options.Port}: {e.Message}");
             MatchLoop.StopStrategies(player.Match);
             return ExitCodes.BadInput;
         }
 
-        if (token is null)
-        {
-            listening(server.Url);
-        }
-        else
-        {
-            var addresses = ViewerAddresses(options.Host, options.Port, server.Url);
-            listening(addresses[0]);
-            for (int i = 1; i < addresses.Count; i++)
-            {
-                console.Out.WriteLine($"live view also: {addresses[i]}");
-            }
-
-            string home = options.Host is "*" or "+" or "0.0.0.0" ? $"http://127.0.0.1:{options.Port}/" : server.Url;
-            console.Out.WriteLine($"control: {home}?token={token} (this link alone can pause, restart and start matches: keep it to yourself; the addresses above only watch)");
-        }
-
-        console.Out.Flush();
         player.Run(stop);
         server.Stop();
         var match = player.Match;
@@ -128,6 +104,56 @@ internal static class LiveRun
         }
 
         return ExitCodes.Success;
+    }
+
+    /// <summary>
+    /// Starts the live page's server on <paramref name="host"/>:<paramref name="port"/> and prints its
+    /// banner: on loopback the address (<paramref name="listening"/>); on an address other machines can
+    /// reach, the addresses viewers open and the <c>control:</c> link with the control token made now
+    /// (the other viewers only watch). Null, with one line on stderr, when the port cannot be used.
+    /// </summary>
+    /// <param name="host">The address to listen on (<c>--host</c>).</param>
+    /// <param name="port">The port (<c>--port</c>).</param>
+    /// <param name="feed">What the page shows.</param>
+    /// <param name="control">The control actions.</param>
+    /// <param name="board">The control board's state, or null.</param>
+    /// <param name="console">Where the banner goes.</param>
+    /// <param name="listening">Told the first address.</param>
+    /// <param name="controls">What the control link can do, for the banner.</param>
+    public static LiveServer? Open(string host, int port, LiveFeed feed, Func<string, System.Collections.Specialized.NameValueCollection, LiveReply> control, Func<string>? board, CliConsole console, Action<string> listening, string controls = "pause, restart and start matches")
+    {
+        string? token = IsLoopback(host) ? null : Convert.ToHexStringLower(System.Security.Cryptography.RandomNumberGenerator.GetBytes(16));
+        var server = new LiveServer(host, port, feed, control, board, token);
+        try
+        {
+            server.Start();
+        }
+        catch (LiveServerException e)
+        {
+            server.Dispose();
+            console.ErrorLine($"--port {port}: {e.Message}");
+            return null;
+        }
+
+        if (token is null)
+        {
+            listening(server.Url);
+        }
+        else
+        {
+            var addresses = ViewerAddresses(host, port, server.Url);
+            listening(addresses[0]);
+            for (int i = 1; i < addresses.Count; i++)
+            {
+                console.Out.WriteLine($"live view also: {addresses[i]}");
+            }
+
+            string home = host is "*" or "+" or "0.0.0.0" ? $"http://127.0.0.1:{port}/" : server.Url;
+            console.Out.WriteLine($"control: {home}?token={token} (this link alone can {controls}: keep it to yourself; the addresses above only watch)");
+        }
+
+        console.Out.Flush();
+        return server;
     }
 
     /// <summary>Whether a <c>--host</c> value is this machine alone (no other machine can reach it).</summary>

@@ -271,11 +271,8 @@ internal sealed class RunOptions
                 case "--html": o.Html = value; break;
                 case "--strategies": o.StrategiesFolder = value; break;
                 case "--port": o.Port = (int)Number(name, value, 1, 65535); break;
-                case "--host": o.Host = value.Length > 0 && !value.Contains('/', StringComparison.Ordinal) ? value : throw UsageError($"--host must be an address or host name, got {MessageText.Quote(value)}"); break;
-                case "--speed":
-                    o.Speed = double.TryParse(value, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out double x) && x >= 0.01 && x <= 1000
-                        ? x : throw UsageError($"--speed must be a number 0.01..1000 (times real time), got {MessageText.Quote(value)}");
-                    break;
+                case "--host": o.Host = LiveOptions.Host(value, UsageError); break;
+                case "--speed": o.Speed = LiveOptions.Speed(value, UsageError); break;
                 case "--cycles": o.Cycles = (int)Number(name, value, 0, int.MaxValue); break;
                 case "--seed": o.Seed = (ulong)Number(name, value, 0, long.MaxValue); break;
                 case "--strategy-timeout": o.StrategyTimeoutMs = (int)Number(name, value, 1, 600_000); break;

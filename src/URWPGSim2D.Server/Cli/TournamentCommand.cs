@@ -163,10 +163,12 @@ internal sealed class TournamentCommand : ICliCommand
 
         // What is already there is rewritten whole (dropping broken lines), then each finished match is appended.
         TournamentFile.Write(results, header, kept.Values.Where(r => r.Index % header.ShardCount == header.ShardIndex));
-        var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
-        int threads = o.Threads ?? Environment.ProcessorCount;
-        bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
-        var clock = Stopwatch.StartNew();
+        if (Playing.Of(o, header, entrants, replays, console) is not (var runner, var threads, var interactive, var clock, var live))
+        {
+            return ExitCodes.BadInput;
+        }
+
+        using var page = live;
         var progress = interactive ? new ProgressBar(console.Out, toPlay.Count, "match", clock) : null;
         var failures = new List<string>();
         int done = 0, quarter = 0;
@@ -258,10 +260,12 @@ internal sealed class TournamentCommand : ICliCommand
             $"tournament: {header.Item}, {header.Entrants.Count} entrants, {Plural(header.Seeds, "seed")}, groups-knockout: {Plural(cup.Groups.Count, "group")}, the top {cup.Advance} of each into the knockout, the final on {Plural(cup.FinalSeeds, "seed")}{(pool.Broken > 0 ? $"; {pool.Broken} broken lines dropped" : string.Empty)}{(pool.Changed > 0 ? $"; {Plural(pool.Changed, "match")} of changed or removed entrants dropped" : string.Empty)}\n"));
         TournamentFile.Write(results, header, pool.Records);
         string? replays = o.Replays ? folder : null;
-        var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j));
-        int threads = o.Threads ?? Environment.ProcessorCount;
-        bool interactive = ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
-        var clock = Stopwatch.StartNew();
+        if (Playing.Of(o, header, entrants, replays, console) is not (var runner, var threads, var interactive, var clock, var live))
+        {
+            return ExitCodes.BadInput;
+        }
+
+        using var page = live;
         var failures = new List<string>();
         int shown = 0, playedAll = 0;
         Bracket bracket;
@@ -331,6 +335,24 @@ internal sealed class TournamentCommand : ICliCommand
         $"wrote {TournamentOutputs.Results}, {TournamentOutputs.StandingsJsonName}, {TournamentOutputs.StandingsMarkdownName}, {TournamentOutputs.StandingsCsvName}, {TournamentOutputs.MatchesCsvName} and {TournamentOutputs.Report}{(o.Replays ? " and replays/" : string.Empty)} in {o.Out}\n";
 
     // The wall-time line of the PLAYED matches of CYCLES each, then the first failures inside the server; the exit code.
+    // How the matches are played: the runner, matches at once, whether the terminal shows a progress
+    // bar, the clock, and with --live the page they play in one at a time; null when the page's port cannot be used.
+    private sealed record Playing(TournamentRunner Runner, int Threads, bool Interactive, Stopwatch Clock, LiveTournament? Live)
+    {
+        public static Playing? Of(TournamentOptions o, TournamentHeader header, EntrantLoader entrants, string? replays, CliConsole console)
+        {
+            var live = o.Live ? LiveTournament.Open(o.Host, o.Port, o.Speed, console) : null;
+            if (o.Live && live is null)
+            {
+                return null;
+            }
+
+            var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j)) { Player = live is null ? null : live.Play };
+            bool interactive = live is null && ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
+            return new Playing(runner, live is null ? o.Threads ?? Environment.ProcessorCount : 1, interactive, Stopwatch.StartNew(), live);
+        }
+    }
+
     private static int Finish(CliConsole console, TimeSpan elapsed, int threads, int played, int cycles, List<string> failures)
     {
         double seconds = Math.Max(elapsed.TotalSeconds, 1e-9);
@@ -579,6 +601,9 @@ internal sealed class TournamentCommand : ICliCommand
         "version, a hash of its files) or that were added. --entrants-dir DIR: every sub-folder, .cs file and .dll\n" +
         "in DIR is an entrant named after it.\n" +
         "--check: each entrant only loads and plays one match of at most a minute against idle; a table, nothing written.\n" +
+        "--live: a projector view: the matches play one after another in the live page (--port N, default 8080; --host H;\n" +
+        "--speed X times real time) and are recorded as they end; on an address other machines reach, viewers only\n" +
+        "watch unless they hold the control link printed at start.\n" +
         "--format groups-knockout: snake-seeded groups (--groups G, default 2; --seeding NAME,... to seed by another\n" +
         "order) play round robins ranked by the points table; the top --advance K (default 2) of each go into a\n" +
         "single-elimination bracket (cross-over pairing, byes for the best seeds), each pairing both sides on --seeds\n" +

@@ -56,6 +56,18 @@ internal sealed class TournamentOptions
     /// <summary>Every option of <c>tournament</c>: those <see cref="Usage"/> names.</summary>
     public static IReadOnlyList<string> KnownOptions { get; } = CliSyntax.LongNames(TournamentSyntax.Command);
 
+    /// <summary>Whether the matches are played one after another in the live page (<c>--live</c>).</summary>
+    public bool Live { get; private set; }
+
+    /// <summary>Port of the live page (<c>--port N</c>).</summary>
+    public int Port { get; private set; } = RunOptions.DefaultPort;
+
+    /// <summary>Address the live page listens on (<c>--host H</c>).</summary>
+    public string Host { get; private set; } = "127.0.0.1";
+
+    /// <summary>Live speed, times real time (<c>--speed X</c>).</summary>
+    public double Speed { get; private set; } = 1;
+
     /// <summary>The Slurm jobs' folder, or null.</summary>
     public string? Slurm { get; private set; }
 
@@ -189,7 +201,7 @@ internal sealed class TournamentOptions
                 continue;
             }
 
-            if (name is "--replays" or "--submit")
+            if (name is "--replays" or "--submit" or "--live")
             {
                 if (!seen.Add(name))
                 {
@@ -198,6 +210,7 @@ internal sealed class TournamentOptions
 
                 o.Replays |= name == "--replays";
                 o.Submit |= name == "--submit";
+                o.Live |= name == "--live";
                 if (name == "--replays")
                 {
                     passedOn.Add(name);
@@ -263,6 +276,9 @@ internal sealed class TournamentOptions
                     }
 
                     break;
+                case "--port": o.Port = (int)Number(name, value, 1, 65535); break;
+                case "--host": o.Host = LiveOptions.Host(value, UsageError); break;
+                case "--speed": o.Speed = LiveOptions.Speed(value, UsageError); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
                 default: throw CliUsageException.UnknownOption("tournament", name, TournamentSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
@@ -348,6 +364,16 @@ internal sealed class TournamentOptions
         if (Results is not null && Merge.Count > 0)
         {
             throw UsageError("--merge gathers shards into --out DIR; it does not go with --shard");
+        }
+
+        if (!Live && (seen.Contains("--port") || seen.Contains("--host") || seen.Contains("--speed")))
+        {
+            throw UsageError("--port, --host and --speed belong to --live");
+        }
+
+        if (Live && (Check || Slurm is not null || Results is not null || Merge.Count > 0 || Replays))
+        {
+            throw UsageError("--live plays the matches on this machine, one after another, in the page: it does not go with --check, --slurm, --shard, --merge or --replays");
         }
     }
 

@@ -30,6 +30,11 @@ internal static class TournamentSyntax
         UsageLine.Optional(CliSyntax.Value("--threads", "P", "matches at once")),
         UsageLine.Optional(CliSyntax.Flag("--replays", "write a replay page of every match")),
         UsageLine.Optional(
+            CliSyntax.Flag("--live", "play the matches one after another in the live page (a projector view)"),
+            UsageLine.Optional(CliSyntax.Value("--port", "N", "the live page's port")),
+            UsageLine.Optional(CliSyntax.Value("--host", "H", "the live page's address")),
+            UsageLine.Optional(CliSyntax.Value("--speed", "X", "live speed, times real time"))),
+        UsageLine.Optional(
             CliSyntax.Value("--format", "round-robin|groups-knockout", "every pair (the default), or groups then a knockout", CliCompletions.Fixed("round-robin", "groups-knockout")),
             UsageLine.Optional(CliSyntax.Value("--groups", "G", "groups of the group stage")),
             UsageLine.Optional(CliSyntax.Value("--advance", "K", "entrants of each group into the knockout")),

@@ -3,7 +3,7 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// <summary>
 /// A body that cannot be separated (a wedge: every response pushes it into the other obstacle)
 /// costs a bounded number of events per step and still ends every step within the guarantee: once
-/// it has had <see cref="MotionTolerances.EventsBeforeDeferring"/> events in a step, its further
+/// it has had <see cref="WedgePolicy.EventsBeforeDeferring"/> events in a step, its further
 /// contacts that cannot tunnel before the step ends are left to the end of the step, and if settling
 /// there does not free it, its move is rejected (it stays where the last step ended, which was
 /// free). (Without that the bar below takes 65 events a step.)
@@ -31,7 +31,7 @@ public sealed class StepperWedgeTests
         // Jammed (it turned from π/2 until both ends met the boxes, about 0.6 rad), and without the
         // deferral it would take the 64 events a body may have before contacts are handled where found.
         Assert.InRange(stepper.HeadingOf(body), 2.0f, 2.3f);
-        Assert.True(most <= MotionTolerances.EventsBeforeDeferring + 2, $"{most} events in one step");
+        Assert.True(most <= new WedgePolicy().EventsBeforeDeferring + 2, $"{most} events in one step");
 
         // A jammed step whose overlap settling cannot remove goes back to where the last one ended.
         Assert.True(rejected > 0, "no move was rejected");

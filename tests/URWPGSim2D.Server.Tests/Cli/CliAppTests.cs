@@ -6,7 +6,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <summary>Routing, help and argument errors of the command line.</summary>
 public sealed class CliAppTests
 {
-    private const string TopUsage = "Usage: urwpgsim2d <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, inspect-dll, completion; --help for details)";
+    private const string TopUsage = "Usage: urwpgsim2d <command> [arguments] (commands: run, collide, query, shapes, render, merge, view, tournament, host, connect, inspect-dll, ladder, completion; --help for details)";
     private const string CollideUsage = "Usage: urwpgsim2d collide FILE";
 
     [Theory]

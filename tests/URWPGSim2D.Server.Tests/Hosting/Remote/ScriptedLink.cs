@@ -32,6 +32,8 @@ internal sealed class ScriptedLink : IStrategyLink
 
     public TimeSpan? WaitingTime() => null;
 
+    public long? PeakMemoryBytes() => null;
+
     public bool Waiting { get; private set; }
 
     public bool Aborted { get; private set; }

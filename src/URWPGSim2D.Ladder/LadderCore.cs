@@ -1,0 +1,433 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Threading;
+using URWPGSim2D.Engine.Items;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Hosting;
+using URWPGSim2D.Ladder.Play;
+using URWPGSim2D.Ladder.Storage;
+using URWPGSim2D.Ladder.Web;
+using URWPGSim2D.Tournament;
+
+namespace URWPGSim2D.Ladder;
+
+/// <summary>
+/// The ladder without its web front: the organiser's and teams' actions, matchmaking, playing one
+/// match and the standings. Every change goes through the store in one transaction; a match's record
+/// is written once, keyed by its id, so a service stopped at any moment and started again plays what
+/// it was playing again from the same seed and loses or doubles nothing.
+/// </summary>
+internal sealed class LadderCore : IDisposable
+{
+    /// <summary>The built-in strategies a house entrant may play.</summary>
+    public static IReadOnlyList<string> HouseStrategies => LadderSettings.HouseStrategies;
+
+    private readonly LadderSettings _settings;
+    private readonly LadderMatchPlayer _player;
+    private readonly object _matchmaking = new();
+    private readonly object _standingsGate = new();
+    private string? _standingsKey;
+    private (Standings Standings, string Json)? _standings;
+    private long _changes;
+
+    public LadderCore(ILadderStore store, LadderSettings settings)
+    {
+        Store = store;
+        _settings = settings;
+        Store.Migrate();
+        var existing = settings.Item is null ? Store.NewestLadder() : null;
+        string slug = settings.Item ?? existing?.Item ?? "ball-grab";
+        Item = ItemRegistry.Find(slug) ?? throw new LadderInputException($"--item: unknown item {Engine.Messages.MessageText.Quote(slug)}");
+        if (Item.TeamCount != 2)
+        {
+            throw new LadderInputException($"--item: {Item.Slug} is an item of {Item.TeamCount} team(s); a ladder plays items of two teams");
+        }
+
+        var ladder = Store.OpenLadder(Item.Slug, settings.Cycles ?? 6000, 1);
+        if (settings.Cycles is { } cycles && cycles != ladder.Cycles)
+        {
+            Store.SetCycles(ladder.Id, cycles);
+        }
+
+        LadderId = ladder.Id;
+        Directory.CreateDirectory(SubmissionsFolder);
+        Directory.CreateDirectory(ReplaysFolder);
+        if (settings.AdminToken is { } given)
+        {
+            Store.SetSetting("admin_token_hash", Secrets.HashToken(given));
+        }
+        else if (Store.Setting("admin_token_hash") is null)
+        {
+            NewAdminToken = Secrets.NewToken();
+            Store.SetSetting("admin_token_hash", Secrets.HashToken(NewAdminToken));
+        }
+
+        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
+    }
+
+    /// <summary>Where rows are kept.</summary>
+    public ILadderStore Store { get; }
+
+    /// <summary>The ladder's item.</summary>
+    public CompetitionItem Item { get; }
+
+    /// <summary>The ladder's id.</summary>
+    public long LadderId { get; }
+
+    /// <summary>The organiser's token made on this first start (print it once), or null.</summary>
+    public string? NewAdminToken { get; }
+
+    /// <summary>Upload limits.</summary>
+    public LadderLimits Limits => _settings.Limits;
+
+    /// <summary>Matches this process plays at once.</summary>
+    public int Workers => _settings.Workers;
+
+    /// <summary>Told whenever something may give a worker a match to play (a team, a submission, a resume, a requeue).</summary>
+    public event Action? Changed;
+
+    /// <summary>The ladder's row now.</summary>
+    public LadderRow Ladder => Store.Ladder(LadderId)!;
+
+    /// <summary>Submissions' files: one folder per submission id.</summary>
+    public string SubmissionsFolder => Path.Combine(_settings.DataDir, "submissions");
+
+    /// <summary>Replay pages: match-ID.html.</summary>
+    public string ReplaysFolder => Path.Combine(_settings.DataDir, "replays");
+
+    /// <summary>Match <paramref name="id"/>'s replay page.</summary>
+    public string ReplayPage(long id) => Path.Combine(ReplaysFolder, string.Create(CultureInfo.InvariantCulture, $"match-{id}.html"));
+
+    /// <summary>Whether <paramref name="token"/> is the organiser's.</summary>
+    public bool IsAdmin(string? token) =>
+        token is { Length: > 0 } && Store.Setting("admin_token_hash") is { } stored && Secrets.SameHash(Secrets.HashToken(token), stored);
+
+    /// <summary>The team whose token is <paramref name="token"/>, or null.</summary>
+    public TeamRow? TeamOf(string? token) =>
+        token is { Length: > 0 } ? Store.TeamByToken(Secrets.HashToken(token)) ?? Store.TeamBySession(Secrets.HashToken(token)) : null;
+
+    /// <summary>A new sign-in token of <paramref name="team"/> (after its password was checked), kept hashed.</summary>
+    public string NewSession(TeamRow team)
+    {
+        string token = Secrets.NewToken();
+        Store.AddSession(team.Id, Secrets.HashToken(token));
+        return token;
+    }
+
+    /// <summary>The most submissions of one team per UTC day.</summary>
+    public int SubmissionsPerDay =>
+        Store.Setting("submissions_per_day") is { } text && int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int n) ? n : _settings.Limits.SubmissionsPerDay;
+
+    /// <summary>Sets the per-day submission limit.</summary>
+    public void SetSubmissionsPerDay(int limit)
+    {
+        if (limit < 1 || limit > 10_000)
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"submissionsPerDay must be 1 to 10000, got {limit}"));
+        }
+
+        Store.SetSetting("submissions_per_day", limit.ToString(CultureInfo.InvariantCulture));
+    }
+
+    /// <summary>Adds a team (a house entrant when <paramref name="house"/> names a built-in strategy) and returns it with its token, shown once.</summary>
+    public (TeamRow Team, string Token) AddTeam(string name, string? house)
+    {
+        CheckName(name);
+        if (house is not null && !HouseStrategies.Contains(house))
+        {
+            throw new LadderInputException($"strategy must be {string.Join(", ", HouseStrategies)}, got {Engine.Messages.MessageText.Quote(house)}");
+        }
+
+        string token = Secrets.NewToken();
+        var team = Store.AddTeam(name, Secrets.HashToken(token), house) ?? throw new LadderInputException($"name: a team named {Engine.Messages.MessageText.Quote(name)} exists already");
+        Touch();
+        return (team, token);
+    }
+
+    /// <summary>Sets a team's password (for signing in on the page).</summary>
+    public void SetPassword(TeamRow team, string password)
+    {
+        if (password.Length < 8 || password.Length > 200)
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"password must be 8 to 200 characters, got {password.Length}"));
+        }
+
+        Store.SetPassword(team.Id, Secrets.HashPassword(password));
+    }
+
+    /// <summary>The team named <paramref name="name"/> when <paramref name="password"/> is its password, else null.</summary>
+    public TeamRow? SignIn(string name, string password) =>
+        Store.TeamByName(name) is { PasswordHash: { } hash } team && Secrets.CheckPassword(password, hash) ? team : null;
+
+    /// <summary>
+    /// Takes a team's upload: checks the limits and the names, writes its files, compiles and checks
+    /// it once (sources in the compiler's limited child process; none of its code runs) and returns
+    /// the submission with its log (the compile errors as the command line prints them).
+    /// </summary>
+    public SubmissionRow Submit(TeamRow team, IReadOnlyList<UploadedFile> files)
+    {
+        if (team.House is not null)
+        {
+            throw new LadderInputException($"team {Engine.Messages.MessageText.Quote(team.Name)} is a house entrant ({team.House}); it takes no submissions");
+        }
+
+        try
+        {
+            Uploads.CheckLimits(files, Limits);
+        }
+        catch (UploadException e)
+        {
+            throw new LadderInputException(e.Message);
+        }
+
+        var today = DateTime.UtcNow.Date;
+        int limit = SubmissionsPerDay;
+        if (Store.SubmissionsSince(team.Id, today) >= limit)
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"submission: the limit of {limit} submissions a day is reached; try again after 00:00 UTC"));
+        }
+
+        var row = Store.AddSubmission(team.Id, "upload", DateTime.UtcNow);
+        string folder = Path.GetFullPath(Path.Combine(SubmissionsFolder, row.Id.ToString(CultureInfo.InvariantCulture)));
+        string kind, spec;
+        try
+        {
+            (kind, spec) = Uploads.Write(files, folder, Limits);
+        }
+        catch (UploadException e)
+        {
+            Store.FinishSubmission(row.Id, ok: false, e.Message);
+            throw new LadderInputException(e.Message);
+        }
+
+        Store.SetSubmissionPath(row.Id, spec);
+        var (ok, log) = Check(team, row.Id, spec, folder);
+        Store.FinishSubmission(row.Id, ok, log);
+        Touch();
+        return Store.Submission(row.Id)! with { Kind = kind };
+    }
+
+    /// <summary>On start: the submissions a stopped service was checking are checked again (or refused when their files were never whole).</summary>
+    public void RecheckInterrupted()
+    {
+        foreach (var s in Store.Submissions(null).Where(s => s.State == SubmissionRow.Checking))
+        {
+            var team = Store.Teams().First(t => t.Id == s.TeamId);
+            string folder = Path.GetFullPath(Path.Combine(SubmissionsFolder, s.Id.ToString(CultureInfo.InvariantCulture)));
+            if (s.Path.Length == 0 || !Directory.Exists(folder))
+            {
+                Store.FinishSubmission(s.Id, ok: false, "the upload was interrupted; submit again");
+                continue;
+            }
+
+            var (ok, log) = Check(team, s.Id, s.Path, folder);
+            Store.FinishSubmission(s.Id, ok, log);
+        }
+    }
+
+    // Compiles and checks, once: the loader stays readied for the submission's matches.
+    private (bool Ok, string Log) Check(TeamRow team, long id, string spec, string folder)
+    {
+        var log = new List<string>();
+        try
+        {
+            StrategyResolver.Prepare(spec, line => log.Add(line), _settings.HostSettings);
+        }
+        catch (StrategyLoadException e)
+        {
+            log.AddRange(e.Lines);
+            return (false, Relative(log, folder));
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            log.Add($"{e.GetType().Name}: {e.Message.ReplaceLineEndings(" ")}");
+            return (false, Relative(log, folder));
+        }
+
+        var loader = _player.Loader(team.Id, id, new Entrant(team.Name, spec));
+        if (loader.Errors[0] is { } error)
+        {
+            log.Add(error);
+            return (false, Relative(log, folder));
+        }
+
+        log.Add("ok: compiled and checked; it plays from its next match");
+        return (true, Relative(log, folder));
+    }
+
+    // The log without the server's folders: paths as the team's upload names them.
+    private static string Relative(List<string> lines, string folder) =>
+        string.Join('\n', lines.Select(l => l.Replace(folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal).Replace(folder, ".", StringComparison.Ordinal)));
+
+    /// <summary>Pauses or resumes ranked play (matches already running finish).</summary>
+    public void SetPaused(bool paused)
+    {
+        Store.SetPaused(LadderId, paused);
+        Touch();
+    }
+
+    /// <summary>Puts a finished match back in the queue: it is played again from its seed, its old record removed.</summary>
+    public void Requeue(long match)
+    {
+        if (!Store.Requeue(match))
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"match: {match} is not a finished match"));
+        }
+
+        Touch();
+    }
+
+    /// <summary>Per team, what plays for it now: its house strategy or its newest working submission (absent: nothing yet).</summary>
+    public Dictionary<long, (long Submission, string Spec)> Playing()
+    {
+        var playing = new Dictionary<long, (long, string)>();
+        foreach (var team in Store.Teams())
+        {
+            if (team.House is { } house)
+            {
+                playing[team.Id] = (0, house);
+            }
+            else if (Store.NewestWorking(team.Id) is { } s)
+            {
+                playing[team.Id] = (s.Id, s.Path);
+            }
+        }
+
+        return playing;
+    }
+
+    /// <summary>
+    /// Queues the next ranked match when fewer than <paramref name="waiting"/> wait: the team with the
+    /// fewest games (then the lowest id) against the team nearest in rating (then fewest games, lowest
+    /// id); sides alternate with the match id. Null when paused, when fewer than two teams can play, or
+    /// when enough wait.
+    /// </summary>
+    public MatchRow? MakeMatch(int waiting)
+    {
+        lock (_matchmaking)
+        {
+            var ladder = Ladder;
+            if (ladder.Paused || Store.Matches(LadderId, [MatchRow.Queued], waiting).Count >= waiting)
+            {
+                return null;
+            }
+
+            var playing = Playing();
+            if (playing.Count < 2)
+            {
+                return null;
+            }
+
+            var games = Store.Games(LadderId);
+            var ratings = Ratings();
+            var teams = Store.Teams().Where(t => playing.ContainsKey(t.Id)).ToList();
+            int Games(TeamRow t) => games.TryGetValue(t.Id, out int g) ? g : 0;
+            double Rating(TeamRow t) => ratings.TryGetValue(t.Name, out double r) ? r : 0;
+            var first = teams.OrderBy(Games).ThenBy(t => t.Id).First();
+            var second = teams.Where(t => t.Id != first.Id)
+                .OrderBy(t => Math.Abs(Rating(t) - Rating(first)) + (25.0 * Games(t) / Math.Max(1, Games(first) + 1)))
+                .ThenBy(Games).ThenBy(t => t.Id).First();
+            return Store.AddMatch(LadderId, [first.Id, second.Id], [playing[first.Id].Submission, playing[second.Id].Submission], final: false, id => ladder.FirstSeed + (ulong)id);
+        }
+    }
+
+    /// <summary>Claims the next queued match (making one when none waits) and plays it; false when there was none to play.</summary>
+    public bool PlayNext()
+    {
+        var match = Store.ClaimNext(LadderId);
+        if (match is null)
+        {
+            MakeMatch(Math.Max(1, Workers));
+            match = Store.ClaimNext(LadderId);
+            if (match is null)
+            {
+                return false;
+            }
+        }
+
+        Play(match);
+        MakeMatch(Math.Max(1, Workers));
+        return true;
+    }
+
+    /// <summary>Plays a claimed (running) match and writes its record once.</summary>
+    public void Play(MatchRow match)
+    {
+        var teams = Store.Teams().ToDictionary(t => t.Id);
+        var sides = new List<(long, long, Entrant)>();
+        int[] order = match.Id % 2 == 0 ? [0, 1] : [1, 0]; // sides alternate with the id
+        foreach (int k in order)
+        {
+            var team = teams[match.Teams[k]];
+            long sub = match.Submissions[k];
+            string spec = sub == 0 ? team.House ?? Entrant.Demo : Store.Submission(sub)!.Path;
+            sides.Add((team.Id, sub, new Entrant(team.Name, spec)));
+        }
+
+        var ladder = Ladder;
+        var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, ReplayPage(match.Id));
+        Store.FinishMatch(match.Id, LadderMatchPlayer.Line(record));
+        Interlocked.Increment(ref _changes);
+    }
+
+    /// <summary>The standings now (computed again only when a record or a team changed).</summary>
+    public (Standings Standings, string Json) Standings()
+    {
+        var records = Store.Records(LadderId);
+        var playing = Playing();
+        var teams = Store.Teams();
+        string key = string.Join(',', records.Select(r => r.Id.ToString(CultureInfo.InvariantCulture))) + "|" + string.Join(',', playing.Keys.Order().Select(k => k.ToString(CultureInfo.InvariantCulture)));
+        lock (_standingsGate)
+        {
+            if (_standings is { } cached && _standingsKey == key)
+            {
+                return cached;
+            }
+
+            var parsed = records.Select(r => TournamentFile.ParseRecord(r.Record)).ToList();
+            var names = new HashSet<string>(parsed.SelectMany(r => r.Entrants), StringComparer.Ordinal);
+            var entrants = teams.Where(t => playing.ContainsKey(t.Id) || names.Contains(t.Name))
+                .Select(t => new Entrant(t.Name, playing.TryGetValue(t.Id, out var p) ? p.Submission == 0 ? p.Spec : "submission " + p.Submission.ToString(CultureInfo.InvariantCulture) : "none"))
+                .ToList();
+            var ladder = Ladder;
+            var header = new TournamentHeader(Item.Slug, entrants, 1, ladder.FirstSeed, ladder.Cycles, _settings.StrategyTimeoutMs, parsed.Count);
+            var standings = Tournament.Standings.Compute(header, Item.TeamCount, parsed);
+            string json = StandingsJson.Format(standings, id => File.Exists(ReplayPage(id)));
+            _standings = (standings, json);
+            _standingsKey = key;
+            return (standings, json);
+        }
+    }
+
+    /// <summary>Per team name, its rating in the last standings computed (none before the first).</summary>
+    private Dictionary<string, double> Ratings()
+    {
+        (Standings Standings, string Json)? s;
+        lock (_standingsGate)
+        {
+            s = _standings;
+        }
+
+        return s is null ? [] : s.Value.Standings.Rows.ToDictionary(r => r.Name, r => r.Rating, StringComparer.Ordinal);
+    }
+
+    private void Touch()
+    {
+        Interlocked.Increment(ref _changes);
+        Changed?.Invoke();
+    }
+
+    /// <summary>A team name: 1 to 40 letters, digits, spaces, '-', '_' or '.', not starting or ending with a space.</summary>
+    public static void CheckName(string name)
+    {
+        if (name.Length is 0 or > 40 || name.Trim() != name || !name.All(c => char.IsLetterOrDigit(c) || c is ' ' or '-' or '_' or '.'))
+        {
+            throw new LadderInputException($"name must be 1 to 40 letters, digits, spaces, '-', '_' or '.', got {Engine.Messages.MessageText.Quote(name)}");
+        }
+    }
+
+    public void Dispose() => Store.Dispose();
+}

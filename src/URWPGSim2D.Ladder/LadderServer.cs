@@ -1,0 +1,172 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Net;
+using System.Reflection;
+using System.Threading.Tasks;
+using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Hosting;
+using Microsoft.AspNetCore.Hosting.Server;
+using Microsoft.AspNetCore.Hosting.Server.Features;
+using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Http.Features;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using URWPGSim2D.Ladder.Storage;
+using URWPGSim2D.Ladder.Web;
+
+namespace URWPGSim2D.Ladder;
+
+/// <summary>
+/// The ladder service: the pages and JSON API (ASP.NET Core, Kestrel) over the ladder's database,
+/// and the workers that play ranked matches without end. Listens on loopback unless a host is
+/// given. <see cref="StartAsync"/> migrates the database, checks again what a stopped service was
+/// checking, puts what it was playing back in the queue and starts the workers.
+/// </summary>
+public sealed class LadderServer : IAsyncDisposable
+{
+    private readonly WebApplication _app;
+    private readonly LadderCore _core;
+    private readonly LadderWorkers? _workers;
+
+    private LadderServer(WebApplication app, LadderCore core, LadderWorkers? workers, string url)
+    {
+        _app = app;
+        _core = core;
+        _workers = workers;
+        Url = url;
+    }
+
+    /// <summary>The address the service answers at, e.g. <c>http://127.0.0.1:5080/</c>.</summary>
+    public string Url { get; }
+
+    /// <summary>The organiser's token made on this first start (to print once), or null.</summary>
+    public string? NewAdminToken => _core.NewAdminToken;
+
+    /// <summary>The ladder's item (its slug).</summary>
+    public string Item => _core.Item.Slug;
+
+    /// <summary>Starts the service.</summary>
+    /// <param name="settings">Its settings.</param>
+    /// <param name="report">Told a line for each problem a worker meets.</param>
+    /// <exception cref="LadderInputException">A setting is wrong (the message names it).</exception>
+    public static async Task<LadderServer> StartAsync(LadderSettings settings, Action<string> report)
+    {
+        ArgumentNullException.ThrowIfNull(settings);
+        ArgumentNullException.ThrowIfNull(report);
+        if (!IPAddress.TryParse(settings.Host, out var address) && settings.Host != "localhost")
+        {
+            throw new LadderInputException($"--host must be an IP address or localhost, got {Engine.Messages.MessageText.Quote(settings.Host)}");
+        }
+
+        Directory.CreateDirectory(settings.DataDir);
+        var store = LadderDatabase.Open(settings);
+        var core = new LadderCore(store, settings);
+        core.RecheckInterrupted();
+        store.RequeueRunning();
+
+        var builder = WebApplication.CreateSlimBuilder();
+        builder.Logging.ClearProviders();
+        builder.WebHost.ConfigureKestrel(k =>
+        {
+            k.Limits.MaxRequestBodySize = settings.Limits.MaxUploadBytes + (256 * 1024);
+            if (address is null)
+            {
+                k.ListenLocalhost(settings.Port);
+            }
+            else
+            {
+                k.Listen(address, settings.Port);
+            }
+        });
+        builder.Services.Configure<FormOptions>(o =>
+        {
+            o.MultipartBodyLengthLimit = settings.Limits.MaxUploadBytes + (64 * 1024);
+            o.ValueCountLimit = settings.Limits.MaxFiles + 16;
+        });
+        builder.Services.AddRoutingCore();
+        var app = builder.Build();
+        app.Use(Guard);
+        app.UseRouting();
+        LadderApi.Map(app, core);
+        LadderPages.Map(app);
+        await app.StartAsync();
+        string url = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First();
+        var workers = settings.Workers > 0 ? new LadderWorkers(core, settings.Workers, report) : null;
+        workers?.Start();
+        return new LadderServer(app, core, workers, url.TrimEnd('/') + "/");
+    }
+
+    /// <summary>Waits until the service is stopped (Ctrl+C, SIGTERM).</summary>
+    public Task WaitForShutdownAsync() => _app.WaitForShutdownAsync();
+
+    /// <summary>Stops the workers (the matches they play finish) and the web server.</summary>
+    public async ValueTask DisposeAsync()
+    {
+        _workers?.Dispose();
+        await _app.StopAsync();
+        await _app.DisposeAsync();
+        _core.Dispose();
+    }
+
+    // Every request: a cross-site request that would change something is refused (its Origin is not this
+    // service), and every failure answers one JSON line: 400 bad input, 401 no token, 404 not found, 413 too large.
+    private static async Task Guard(HttpContext context, RequestDelegate next)
+    {
+        var request = context.Request;
+        if (!HttpMethods.IsGet(request.Method) && !HttpMethods.IsHead(request.Method)
+            && request.Headers.Origin.ToString() is { Length: > 0 } origin
+            && !(Uri.TryCreate(origin, UriKind.Absolute, out var o) && string.Equals(o.Authority, request.Host.Value, StringComparison.OrdinalIgnoreCase)))
+        {
+            await Answer(context, 403, $"origin: a request from {origin} may not change this ladder");
+            return;
+        }
+
+        try
+        {
+            await next(context);
+        }
+        catch (LadderInputException e)
+        {
+            await Answer(context, 400, e.Message);
+        }
+        catch (LadderApi.Unauthorised e)
+        {
+            await Answer(context, 401, e.Message);
+        }
+        catch (LadderApi.NotFound e)
+        {
+            await Answer(context, 404, e.Message);
+        }
+        catch (BadHttpRequestException e) when (e.StatusCode == StatusCodes.Status413PayloadTooLarge)
+        {
+            await Answer(context, 413, "upload: larger than the limit of the upload size");
+        }
+        catch (InvalidDataException e)
+        {
+            await Answer(context, 413, "upload: " + e.Message.ReplaceLineEndings(" "));
+        }
+        catch (BadHttpRequestException e)
+        {
+            await Answer(context, 400, "request: " + e.Message.ReplaceLineEndings(" "));
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            await Answer(context, 500, $"internal error: {e.GetType().Name}: {e.Message.ReplaceLineEndings(" ")}");
+        }
+    }
+
+    private static async Task Answer(HttpContext context, int status, string message)
+    {
+        if (context.Response.HasStarted)
+        {
+            return;
+        }
+
+        context.Response.Clear();
+        context.Response.StatusCode = status;
+        context.Response.ContentType = "application/json; charset=utf-8";
+        await context.Response.WriteAsync(JsonText.Error(message));
+    }
+}

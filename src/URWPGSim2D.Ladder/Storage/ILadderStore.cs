@@ -1,0 +1,114 @@
+using System;
+using System.Collections.Generic;
+
+namespace URWPGSim2D.Ladder.Storage;
+
+/// <summary>
+/// Everything the ladder keeps: settings, ladders, teams, submissions and matches. One
+/// implementation per database (<see cref="SqlLadderStore"/> over SQLite or PostgreSQL); every change
+/// is one transaction, so a service killed at any moment leaves each row whole.
+/// </summary>
+internal interface ILadderStore : IDisposable
+{
+    /// <summary>Brings the schema up to date (run once on start).</summary>
+    void Migrate();
+
+    /// <summary>The schema version after <see cref="Migrate"/>.</summary>
+    int SchemaVersion();
+
+    /// <summary>A setting's value, or null.</summary>
+    string? Setting(string key);
+
+    /// <summary>Sets a setting.</summary>
+    void SetSetting(string key, string value);
+
+    /// <summary>The ladder of <paramref name="item"/>, created with the given length and first seed when there is none.</summary>
+    LadderRow OpenLadder(string item, int cycles, ulong firstSeed);
+
+    /// <summary>The ladder with the highest id, or null when there is none.</summary>
+    LadderRow? NewestLadder();
+
+    /// <summary>A ladder by id.</summary>
+    LadderRow? Ladder(long id);
+
+    /// <summary>Pauses or resumes ranked play of a ladder.</summary>
+    void SetPaused(long ladder, bool paused);
+
+    /// <summary>Sets a ladder's match length for the matches made from now on.</summary>
+    void SetCycles(long ladder, int cycles);
+
+    /// <summary>Adds a team; null when the name is taken.</summary>
+    TeamRow? AddTeam(string name, string tokenHash, string? house);
+
+    /// <summary>Sets a team's password hash.</summary>
+    void SetPassword(long team, string passwordHash);
+
+    /// <summary>Every team, by id.</summary>
+    IReadOnlyList<TeamRow> Teams();
+
+    /// <summary>A team by its token's hash, or null.</summary>
+    TeamRow? TeamByToken(string tokenHash);
+
+    /// <summary>A team by name, or null.</summary>
+    TeamRow? TeamByName(string name);
+
+    /// <summary>Adds a sign-in session of a team (by its token's hash).</summary>
+    void AddSession(long team, string tokenHash);
+
+    /// <summary>The team of a session token's hash, or null.</summary>
+    TeamRow? TeamBySession(string tokenHash);
+
+    /// <summary>Adds a submission in state <see cref="SubmissionRow.Checking"/>; its path is filled in by <see cref="SetSubmissionPath"/>.</summary>
+    SubmissionRow AddSubmission(long team, string kind, DateTime created);
+
+    /// <summary>Sets where a submission's files are.</summary>
+    void SetSubmissionPath(long submission, string path);
+
+    /// <summary>Ends a submission's check: <see cref="SubmissionRow.Ok"/> or <see cref="SubmissionRow.Error"/>, with its log.</summary>
+    void FinishSubmission(long submission, bool ok, string log);
+
+    /// <summary>A submission by id, or null.</summary>
+    SubmissionRow? Submission(long id);
+
+    /// <summary>A team's submissions, newest first (every team's with <paramref name="team"/> null).</summary>
+    IReadOnlyList<SubmissionRow> Submissions(long? team);
+
+    /// <summary>How many submissions a team made since <paramref name="since"/>.</summary>
+    int SubmissionsSince(long team, DateTime since);
+
+    /// <summary>A team's newest submission that checked, or null.</summary>
+    SubmissionRow? NewestWorking(long team);
+
+    /// <summary>Queues a match.</summary>
+    MatchRow AddMatch(long ladder, IReadOnlyList<long> teams, IReadOnlyList<long> submissions, bool final, Func<long, ulong> seedOf);
+
+    /// <summary>Takes the oldest queued match of the ladder (final matches first) and marks it running; null when none waits.</summary>
+    MatchRow? ClaimNext(long ladder);
+
+    /// <summary>Claims one given match (queued → running); false when it is not queued.</summary>
+    bool Claim(long match);
+
+    /// <summary>
+    /// Writes a running match's record, once: in one transaction, and only while it is still
+    /// running (a match re-played after a restart cannot be written twice). True when written.
+    /// </summary>
+    bool FinishMatch(long match, string record);
+
+    /// <summary>Puts every running match back in the queue (on start: what a stopped service was playing is played again from its seed).</summary>
+    int RequeueRunning();
+
+    /// <summary>Puts a finished match back in the queue, its record removed (the organiser's requeue); false when it is not done.</summary>
+    bool Requeue(long match);
+
+    /// <summary>A match by id, or null.</summary>
+    MatchRow? Match(long id);
+
+    /// <summary>A ladder's matches in the given states, newest first, at most <paramref name="limit"/>.</summary>
+    IReadOnlyList<MatchRow> Matches(long ladder, IReadOnlyCollection<string> states, int limit);
+
+    /// <summary>Every finished match's record of a ladder, by id.</summary>
+    IReadOnlyList<(long Id, string Record, bool Final)> Records(long ladder);
+
+    /// <summary>Per team, matches of the ladder played, running or queued (teams without any are absent).</summary>
+    IReadOnlyDictionary<long, int> Games(long ladder);
+}

@@ -1,0 +1,466 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using System.Threading.Tasks;
+using Microsoft.AspNetCore.Builder;
+using Microsoft.AspNetCore.Http;
+using Microsoft.AspNetCore.Routing;
+using URWPGSim2D.Ladder.Play;
+using URWPGSim2D.Ladder.Storage;
+using URWPGSim2D.Tournament;
+
+namespace URWPGSim2D.Ladder.Web;
+
+/// <summary>
+/// The JSON API beside every page. Reads are public but for a team's sources and logs (its own
+/// token only); the organiser's actions need the organiser's token and a team's its own, each sent
+/// as <c>Authorization: Bearer TOKEN</c> (never a cookie, so a page of another site cannot act for a
+/// signed-in user). Bad input answers HTTP 400 with <c>{"error": "…"}</c>, one line naming the field.
+/// </summary>
+internal static class LadderApi
+{
+    public static void Map(IEndpointRouteBuilder app, LadderCore core)
+    {
+        app.MapGet("/api/ladder", () => Json(JsonText.Of(w =>
+        {
+            var l = core.Ladder;
+            w.WriteStartObject();
+            w.WriteString("item", l.Item);
+            w.WriteNumber("cycles", l.Cycles);
+            w.WriteBoolean("paused", l.Paused);
+            w.WriteNumber("workers", core.Workers);
+            w.WriteNumber("submissionsPerDay", core.SubmissionsPerDay);
+            w.WriteNumber("maxUploadBytes", core.Limits.MaxUploadBytes);
+            w.WriteNumber("maxFiles", core.Limits.MaxFiles);
+            w.WriteEndObject();
+        })));
+
+        app.MapGet("/api/standings", () => Json(core.Standings().Json));
+
+        app.MapGet("/api/export/standings.json", () => Results.Text(core.Standings().Json, "application/json", null, 200));
+
+        app.MapGet("/api/export/results.jsonl", () => Results.Text(Export(core), "application/jsonl", null, 200));
+
+        app.MapGet("/api/matches", (HttpRequest request) =>
+        {
+            string[] states = request.Query["state"].ToString() is { Length: > 0 } s ? s.Split(',') : [];
+            foreach (string state in states)
+            {
+                if (state is not (MatchRow.Queued or MatchRow.Running or MatchRow.Done))
+                {
+                    throw new LadderInputException($"state must be queued, running or done (comma-separated), got {Engine.Messages.MessageText.Quote(state)}");
+                }
+            }
+
+            int limit = request.Query["limit"].ToString() is { Length: > 0 } l ? Number("limit", l, 1, 10_000) : 200;
+            string? team = request.Query["team"].ToString() is { Length: > 0 } t ? t : null;
+            var teams = core.Store.Teams().ToDictionary(x => x.Id);
+            var rows = core.Store.Matches(core.LadderId, states, team is null ? limit : 100_000);
+            if (team is not null)
+            {
+                rows = [.. rows.Where(m => m.Teams.Any(id => teams[id].Name == team)).Take(limit)];
+            }
+
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteStartArray("matches");
+                foreach (var m in rows)
+                {
+                    WriteMatch(w, m, teams, core);
+                }
+
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapGet("/api/matches/{id}", (string id) =>
+        {
+            var m = core.Store.Match(Id("match", id)) ?? throw new NotFound("match");
+            var teams = core.Store.Teams().ToDictionary(x => x.Id);
+            return Json(JsonText.Of(w => WriteMatch(w, m, teams, core)));
+        });
+
+        app.MapGet("/api/matches/{id}/replay", (string id) => Replay(core, id));
+        app.MapGet("/matches/{id}/replay", (string id) => Replay(core, id));
+
+        app.MapGet("/api/teams", () =>
+        {
+            var games = core.Store.Games(core.LadderId);
+            var playing = core.Playing();
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteStartArray("teams");
+                foreach (var t in core.Store.Teams())
+                {
+                    w.WriteStartObject();
+                    w.WriteString("name", t.Name);
+                    if (t.House is { } house)
+                    {
+                        w.WriteString("house", house);
+                    }
+
+                    if (playing.TryGetValue(t.Id, out var p) && p.Submission != 0)
+                    {
+                        w.WriteNumber("submission", p.Submission);
+                    }
+
+                    w.WriteNumber("games", games.TryGetValue(t.Id, out int g) ? g : 0);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapGet("/api/teams/{name}", (string name, HttpRequest request) =>
+        {
+            var team = core.Store.TeamByName(name) ?? throw new NotFound("team");
+            var me = core.TeamOf(Bearer(request));
+            bool own = me is not null && me.Id == team.Id;
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteString("name", team.Name);
+                if (team.House is { } house)
+                {
+                    w.WriteString("house", house);
+                }
+
+                w.WriteBoolean("signedIn", own);
+                w.WriteStartArray("submissions");
+                foreach (var s in core.Store.Submissions(team.Id))
+                {
+                    w.WriteStartObject();
+                    w.WriteNumber("id", s.Id);
+                    w.WriteString("created", s.Created);
+                    w.WriteString("state", s.State);
+                    if (own)
+                    {
+                        w.WriteString("log", s.Log); // a team's compile log is its own
+                    }
+
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapGet("/api/me", (HttpRequest request) =>
+        {
+            string? token = Bearer(request);
+            bool admin = core.IsAdmin(token);
+            var team = admin ? null : core.TeamOf(token);
+            if (!admin && team is null)
+            {
+                return Problem(401, "authorization: no valid token (send Authorization: Bearer TOKEN)");
+            }
+
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteString("role", admin ? "organiser" : "team");
+                if (team is not null)
+                {
+                    w.WriteString("name", team.Name);
+                }
+
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapPost("/api/teams", async (HttpRequest request) =>
+        {
+            Admin(core, request);
+            using var body = await Body(request);
+            string name = Text(body.RootElement, "name", required: true)!;
+            string? strategy = Text(body.RootElement, "strategy", required: false);
+            var (team, token) = core.AddTeam(name, strategy);
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteString("name", team.Name);
+                if (team.House is { } house)
+                {
+                    w.WriteString("house", house);
+                }
+
+                w.WriteString("token", token);
+                w.WriteEndObject();
+            }), 201);
+        });
+
+        app.MapPost("/api/signin", async (HttpRequest request) =>
+        {
+            using var body = await Body(request);
+            string name = Text(body.RootElement, "name", required: true)!;
+            string password = Text(body.RootElement, "password", required: true)!;
+            var team = core.SignIn(name, password);
+            if (team is null)
+            {
+                return Problem(401, "signin: wrong team name or password");
+            }
+
+            string token = core.NewSession(team);
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteString("name", team.Name);
+                w.WriteString("token", token);
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapPost("/api/password", async (HttpRequest request) =>
+        {
+            var team = Team(core, request);
+            using var body = await Body(request);
+            core.SetPassword(team, Text(body.RootElement, "password", required: true)!);
+            return Json("{\"ok\": true}");
+        });
+
+        app.MapPost("/api/submissions", async (HttpRequest request) =>
+        {
+            var team = Team(core, request);
+            if (!request.HasFormContentType)
+            {
+                throw new LadderInputException("upload: send the files as multipart/form-data (field \"file\")");
+            }
+
+            var form = await request.ReadFormAsync();
+            var files = new List<UploadedFile>();
+            foreach (var f in form.Files)
+            {
+                if (files.Count >= core.Limits.MaxFiles)
+                {
+                    throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"upload: more than the limit of {core.Limits.MaxFiles} files"));
+                }
+
+                using var stream = new MemoryStream();
+                await f.CopyToAsync(stream);
+                files.Add(new UploadedFile(f.FileName, stream.ToArray()));
+            }
+
+            var s = await Task.Run(() => core.Submit(team, files));
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteNumber("id", s.Id);
+                w.WriteString("kind", s.Kind);
+                w.WriteString("state", s.State);
+                w.WriteString("log", s.Log);
+                w.WriteEndObject();
+            }), s.State == SubmissionRow.Ok ? 201 : 422);
+        });
+
+        app.MapPost("/api/ladder/pause", (HttpRequest request) =>
+        {
+            Admin(core, request);
+            core.SetPaused(true);
+            return Json("{\"paused\": true}");
+        });
+
+        app.MapPost("/api/ladder/resume", (HttpRequest request) =>
+        {
+            Admin(core, request);
+            core.SetPaused(false);
+            return Json("{\"paused\": false}");
+        });
+
+        app.MapPost("/api/settings", async (HttpRequest request) =>
+        {
+            Admin(core, request);
+            using var body = await Body(request);
+            if (body.RootElement.TryGetProperty("submissionsPerDay", out var limit))
+            {
+                core.SetSubmissionsPerDay(limit.ValueKind == JsonValueKind.Number && limit.TryGetInt32(out int n) ? n : throw new LadderInputException($"submissionsPerDay must be a whole number, got {limit.GetRawText()}"));
+            }
+
+            return Json("{\"ok\": true}");
+        });
+
+        app.MapPost("/api/matches/{id}/requeue", (string id, HttpRequest request) =>
+        {
+            Admin(core, request);
+            core.Requeue(Id("match", id));
+            return Json("{\"requeued\": true}");
+        });
+    }
+
+    // results.jsonl: a tournament result file (its header, then one record per finished match), which `tournament` and `merge` read.
+    private static string Export(LadderCore core)
+    {
+        var (standings, _) = core.Standings();
+        string path = Path.Combine(Path.GetTempPath(), "urwpgsim2d-ladder-" + Guid.NewGuid().ToString("N") + ".jsonl");
+        try
+        {
+            TournamentFile.Write(path, standings.Header, standings.Records);
+            return File.ReadAllText(path);
+        }
+        finally
+        {
+            File.Delete(path);
+        }
+    }
+
+    private static IResult Replay(LadderCore core, string id)
+    {
+        long match = Id("match", id);
+        string page = core.ReplayPage(match);
+        return File.Exists(page) ? Results.Text(File.ReadAllText(page), "text/html; charset=utf-8", null, 200) : throw new NotFound("replay");
+    }
+
+    private static void WriteMatch(System.Text.Json.Utf8JsonWriter w, MatchRow m, Dictionary<long, TeamRow> teams, LadderCore core)
+    {
+        w.WriteStartObject();
+        w.WriteNumber("id", m.Id);
+        w.WriteString("seed", m.Seed.ToString(CultureInfo.InvariantCulture));
+        w.WriteString("state", m.State);
+        if (m.Final)
+        {
+            w.WriteBoolean("final", true);
+        }
+
+        // Sides as played: even ids keep the queued order, odd ids swap it.
+        int[] order = m.Id % 2 == 0 ? [0, 1] : [1, 0];
+        w.WriteStartArray("teams");
+        foreach (int k in order)
+        {
+            w.WriteStringValue(teams[m.Teams[k]].Name);
+        }
+
+        w.WriteEndArray();
+        w.WriteStartArray("submissions");
+        foreach (int k in order)
+        {
+            if (m.Submissions[k] == 0)
+            {
+                w.WriteNullValue();
+            }
+            else
+            {
+                w.WriteNumberValue(m.Submissions[k]);
+            }
+        }
+
+        w.WriteEndArray();
+        w.WriteString("created", m.Created);
+        if (m.Started is { } started)
+        {
+            w.WriteString("started", started);
+        }
+
+        if (m.Finished is { } finished)
+        {
+            w.WriteString("finished", finished);
+        }
+
+        if (m.Record is { } line)
+        {
+            var r = TournamentFile.ParseRecord(line);
+            if (r.Result is { } result)
+            {
+                w.WriteStartArray("score");
+                foreach (int s in result.Scores ?? [result.Goals0, result.Goals1])
+                {
+                    w.WriteNumberValue(s);
+                }
+
+                w.WriteEndArray();
+                w.WriteNumber("winner", result.Winner);
+                w.WriteNumber("faults", result.StrategyFaults);
+            }
+            else
+            {
+                w.WriteStartArray("forfeits");
+                foreach (int f in r.Forfeits)
+                {
+                    w.WriteNumberValue(f);
+                }
+
+                w.WriteEndArray();
+                w.WriteStartArray("reasons");
+                foreach (string reason in r.Reasons)
+                {
+                    w.WriteStringValue(reason);
+                }
+
+                w.WriteEndArray();
+            }
+
+            if (File.Exists(core.ReplayPage(m.Id)))
+            {
+                w.WriteString("replay", string.Create(CultureInfo.InvariantCulture, $"/matches/{m.Id}/replay"));
+            }
+        }
+
+        w.WriteEndObject();
+    }
+
+    /// <summary>The bearer token of a request, or null.</summary>
+    public static string? Bearer(HttpRequest request)
+    {
+        string header = request.Headers.Authorization.ToString();
+        return header.StartsWith("Bearer ", StringComparison.Ordinal) ? header["Bearer ".Length..].Trim() : null;
+    }
+
+    private static void Admin(LadderCore core, HttpRequest request)
+    {
+        if (!core.IsAdmin(Bearer(request)))
+        {
+            throw new Unauthorised("authorization: this needs the organiser's token (Authorization: Bearer TOKEN)");
+        }
+    }
+
+    private static TeamRow Team(LadderCore core, HttpRequest request) =>
+        core.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: this needs a team's token (Authorization: Bearer TOKEN)");
+
+    private static async Task<JsonDocument> Body(HttpRequest request)
+    {
+        try
+        {
+            var document = await JsonDocument.ParseAsync(request.Body);
+            return document.RootElement.ValueKind == JsonValueKind.Object ? document : throw new LadderInputException("body must be a JSON object");
+        }
+        catch (JsonException e)
+        {
+            throw new LadderInputException($"body is not JSON: {e.Message.ReplaceLineEndings(" ")}");
+        }
+    }
+
+    private static string? Text(JsonElement body, string name, bool required)
+    {
+        if (!body.TryGetProperty(name, out var value) || value.ValueKind == JsonValueKind.Null)
+        {
+            return required ? throw new LadderInputException($"{name} is required") : null;
+        }
+
+        return value.ValueKind == JsonValueKind.String ? value.GetString()! : throw new LadderInputException($"{name} must be a string, got {value.GetRawText()}");
+    }
+
+    private static long Id(string field, string text) =>
+        long.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out long id) && id > 0 ? id : throw new LadderInputException($"{field} must be a match id (a whole number ≥ 1), got {Engine.Messages.MessageText.Quote(text)}");
+
+    private static int Number(string field, string text, int low, int high) =>
+        int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n >= low && n <= high ? n
+        : throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"{field} must be a whole number from {low} to {high}, got {Engine.Messages.MessageText.Quote(text)}"));
+
+    private static IResult Json(string json, int status = 200) => Results.Text(json, "application/json; charset=utf-8", null, status);
+
+    /// <summary>An error answer: <c>{"error": message}</c> with the status.</summary>
+    public static IResult Problem(int status, string message) => Json(JsonText.Error(message), status);
+
+    /// <summary>No such thing: 404.</summary>
+    internal sealed class NotFound(string what) : Exception($"{what}: not found");
+
+    /// <summary>No valid token for the action: 401.</summary>
+    internal sealed class Unauthorised(string message) : Exception(message);
+}

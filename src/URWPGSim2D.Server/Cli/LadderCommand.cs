@@ -1,0 +1,358 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.Globalization;
+using System.Linq;
+using URWPGSim2D.Engine.Items.Catalog;
+using URWPGSim2D.Engine.Messages;
+using URWPGSim2D.Ladder;
+using URWPGSim2D.Server.Cli.Syntax;
+
+namespace URWPGSim2D.Server.Cli;
+
+/// <summary>
+/// <c>ladder serve | team add | submit</c>: the competition ladder (docs/ladder.md). <c>serve</c> runs
+/// the service (<see cref="LadderServer"/>) until stopped; <c>team add</c> and <c>submit</c> talk to a
+/// running one (<see cref="LadderClient"/>). Each sub-command's options are declared once, in its usage line.
+/// </summary>
+internal sealed class LadderCommand : ICliCommand
+{
+    private static readonly Option<bool> HelpOption = CliSyntax.Help();
+
+    private static readonly Option<bool> ServeHelp = CliSyntax.Help();
+    private static readonly Option<string> ItemOption = CliSyntax.Value("--item", "ITEM", "the item of the ladder to create or reopen (default: the newest ladder, else ball-grab)", CliCompletions.TournamentItems);
+    private static readonly Option<string> MinutesOption = CliSyntax.Value("--minutes", "M", "length of its matches: 10, 5, 3 or 1 minutes (default 10 for a new ladder)");
+    private static readonly Option<string> DataOption = CliSyntax.Value("--data", "DIR", "the data folder: database, submissions, replays (default ladder-data)", CliCompletions.Paths);
+    private static readonly Option<string> DatabaseOption = CliSyntax.Value("--database", "CONNECTION", "a PostgreSQL connection string (default: SQLite in DIR)");
+    private static readonly Option<string> PortOption = CliSyntax.Value("--port", "P", "the port to listen on (default 5080; 0: any free one)");
+    private static readonly Option<string> HostOption = CliSyntax.Value("--host", "H", "the address to listen on (default 127.0.0.1, loopback only)");
+    private static readonly Option<string> ServeAdminOption = CliSyntax.Value("--admin-token", "TOKEN", "the organiser's token (default: the stored one, or a new one printed on the first start)");
+    private static readonly Option<string> WorkersOption = CliSyntax.Value("--workers", "N", "matches played at once (default 1; 0: none, another worker plays)");
+
+    private static readonly UsageLine ServeLine = new(
+        UsageLine.Optional(ItemOption), UsageLine.Optional(MinutesOption), UsageLine.Optional(DataOption), UsageLine.Optional(DatabaseOption),
+        UsageLine.Optional(PortOption), UsageLine.Optional(HostOption), UsageLine.Optional(ServeAdminOption), UsageLine.Optional(WorkersOption));
+
+    private static readonly Option<bool> AddHelp = CliSyntax.Help();
+    private static readonly Option<string> AddServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> AddAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
+    private static readonly Option<string> StrategyOption = CliSyntax.Value("--strategy", "demo|chase-ball|idle", "a house entrant playing this built-in strategy");
+
+    private static readonly UsageLine AddLine = new(
+        CliSyntax.Positional("NAME", "the team's name"), AddServerOption, AddAdminOption, UsageLine.Optional(StrategyOption));
+
+    private static readonly Option<bool> SubmitHelp = CliSyntax.Help();
+    private static readonly Option<string> SubmitServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> TokenOption = CliSyntax.Value("--token", "T", "the team's token");
+
+    private static readonly UsageLine SubmitLine = new(
+        SubmitServerOption, TokenOption, CliSyntax.Positional("PATH", "a folder of .cs files, one .cs file or a DLL", CliCompletions.Paths));
+
+    private static readonly Command Serve = CliSyntax.Command("serve", "Run the ladder service.", ServeLine, ServeHelp);
+    private static readonly Command Add = CliSyntax.Command("add", "Add a team to a running ladder.", AddLine, AddHelp);
+    private static readonly Command Team = TeamCommand();
+    private static readonly Command Submit = CliSyntax.Command("submit", "Submit a team's strategy to a running ladder.", SubmitLine, SubmitHelp);
+
+    /// <summary>The usage of <c>ladder serve</c>.</summary>
+    public static string ServeUsage => "ladder serve " + ServeLine.Text;
+
+    /// <summary>The usage of <c>ladder team add</c>.</summary>
+    public static string AddUsage => "ladder team add " + AddLine.Text;
+
+    /// <summary>The usage of <c>ladder submit</c>.</summary>
+    public static string SubmitUsage => "ladder submit " + SubmitLine.Text;
+
+    /// <inheritdoc/>
+    public string Name => "ladder";
+
+    /// <inheritdoc/>
+    public string Synopsis => "ladder serve|team add|submit ...";
+
+    /// <inheritdoc/>
+    public string Summary => "Run a competition ladder: teams upload strategies, ranked matches play without end, standings update live.";
+
+    /// <inheritdoc/>
+    public Command Syntax { get; } = LadderSyntax();
+
+    private static Command TeamCommand()
+    {
+        var team = new Command("team", "Manage a running ladder's teams.");
+        team.Subcommands.Add(Add);
+        return team;
+    }
+
+    private static Command LadderSyntax()
+    {
+        var ladder = CliSyntax.Command("ladder", "Run a competition ladder.", HelpOption);
+        ladder.Subcommands.Add(Serve);
+        ladder.Subcommands.Add(Team);
+        ladder.Subcommands.Add(Submit);
+        return ladder;
+    }
+
+    /// <summary>The sub-command a parse chose: serve, add, submit, or null for <c>ladder</c> (or <c>ladder team</c>) alone.</summary>
+    private static Command? Chosen(IReadOnlyList<CommandLineWord> words)
+    {
+        var positional = words.TakeWhile(w => w.Option is null && !w.Text.StartsWith('-')).Select(w => w.Text).ToList();
+        return positional switch
+        {
+            ["serve", ..] => Serve,
+            ["team", "add", ..] => Add,
+            ["submit", ..] => Submit,
+            _ => null,
+        };
+    }
+
+    /// <inheritdoc/>
+    public int Run(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        var chosen = Chosen(words);
+        var rest = chosen == Add ? words.Skip(2).ToList() : chosen is null ? [.. words] : words.Skip(1).ToList();
+        if (chosen is null)
+        {
+            if (rest.Count > 0 && rest[0].Option == HelpOption)
+            {
+                console.Out.Write(Help());
+                return ExitCodes.Success;
+            }
+
+            if (rest.Count > 0 && rest[0].Text.StartsWith("--", StringComparison.Ordinal))
+            {
+                throw CliUsageException.UnknownOption("ladder", rest[0].Text, Syntax, CliApp.ProgramName + " " + Synopsis);
+            }
+
+            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
+        }
+
+        if (chosen == Serve)
+        {
+            return RunServe(rest, console);
+        }
+
+        return chosen == Add ? RunAdd(rest, console) : RunSubmit(rest, console);
+    }
+
+    private static string Help() =>
+        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit ...\n" +
+        $"  {CliApp.ProgramName} {ServeUsage}\n" +
+        $"  {CliApp.ProgramName} {AddUsage}\n" +
+        $"  {CliApp.ProgramName} {SubmitUsage}\n\n" +
+        "serve runs the ladder service until stopped (Ctrl+C): pages and JSON API, and workers that play ranked\n" +
+        "matches without end. team add adds a team and prints its token alone on the last line. submit uploads a\n" +
+        "team's strategy, which is compiled and checked once; its newest working submission plays. More: docs/ladder.md.\n";
+
+    // The value options of one sub-command, each at most once; positional words apart.
+    private static (Dictionary<Option, string> Values, List<string> Positional) Words(IReadOnlyList<CommandLineWord> words, string name, Command syntax, string usage, Option<bool> help, out bool helpAsked)
+    {
+        var values = new Dictionary<Option, string>();
+        var positional = new List<string>();
+        helpAsked = false;
+        foreach (var word in words)
+        {
+            if (word.Option == help)
+            {
+                helpAsked = true;
+            }
+            else if (word.Option is { } option)
+            {
+                string value = word.Value ?? throw new CliUsageException($"{name}: {option.Name} needs a value", usage);
+                if (!values.TryAdd(option, value))
+                {
+                    throw new CliUsageException($"{name}: {option.Name} given twice", usage);
+                }
+            }
+            else if (word.Text.StartsWith("--", StringComparison.Ordinal))
+            {
+                throw CliUsageException.UnknownOption(name, word.Text, syntax, usage);
+            }
+            else
+            {
+                positional.Add(word.Text);
+            }
+        }
+
+        return (values, positional);
+    }
+
+    private static int RunServe(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        string usage = CliApp.ProgramName + " " + ServeUsage;
+        var (values, positional) = Words(words, "ladder serve", Serve, usage, ServeHelp, out bool help);
+        if (help)
+        {
+            console.Out.Write($"Usage: {usage}\n\nRuns the ladder service until stopped (Ctrl+C). Options:\n{ServeLine.OptionTable(24)}More: docs/ladder.md.\n");
+            return ExitCodes.Success;
+        }
+
+        if (positional.Count > 0)
+        {
+            throw new CliUsageException($"ladder serve: unexpected argument {MessageText.Quote(positional[0])}", usage);
+        }
+
+        var settings = new LadderSettings();
+        if (values.TryGetValue(ItemOption, out string? item))
+        {
+            settings = settings with { Item = ItemRegistry.Find(item)?.Slug ?? throw ItemList.Unknown("ladder serve", item, withDefault: false) };
+        }
+
+        if (values.TryGetValue(MinutesOption, out string? minutes))
+        {
+            settings = settings with { Cycles = minutes switch { "10" => 6000, "5" => 3000, "3" => 1800, "1" => 600, _ => throw new CliUsageException($"ladder serve: --minutes must be 10, 5, 3 or 1, got {MessageText.Quote(minutes)}", null) } };
+        }
+
+        if (values.TryGetValue(DataOption, out string? data))
+        {
+            settings = settings with { DataDir = data.Length > 0 ? data : throw new CliUsageException("ladder serve: --data needs a folder, got \"\"", null) };
+        }
+
+        if (values.TryGetValue(DatabaseOption, out string? database))
+        {
+            settings = settings with { Database = database.Length > 0 ? database : throw new CliUsageException("ladder serve: --database needs a connection string, got \"\"", null) };
+        }
+
+        if (values.TryGetValue(PortOption, out string? port))
+        {
+            settings = settings with { Port = Number("--port", port, 0, 65535) };
+        }
+
+        if (values.TryGetValue(HostOption, out string? host))
+        {
+            settings = settings with { Host = host };
+        }
+
+        if (values.TryGetValue(ServeAdminOption, out string? admin))
+        {
+            settings = settings with { AdminToken = admin.Length >= 8 ? admin : throw new CliUsageException($"ladder serve: --admin-token must be at least 8 characters, got {admin.Length}", null) };
+        }
+
+        if (values.TryGetValue(WorkersOption, out string? workers))
+        {
+            settings = settings with { Workers = Number("--workers", workers, 0, 256) };
+        }
+
+        return Serving(settings, console);
+    }
+
+    private static int Serving(LadderSettings settings, CliConsole console)
+    {
+        LadderServer server;
+        try
+        {
+            server = LadderServer.StartAsync(settings, line => console.ErrorLine(line)).GetAwaiter().GetResult();
+        }
+        catch (LadderInputException e)
+        {
+            console.ErrorLine("ladder serve: " + e.Message);
+            return ExitCodes.BadInput;
+        }
+        catch (System.IO.IOException e)
+        {
+            console.ErrorLine("ladder serve: " + e.Message.ReplaceLineEndings(" "));
+            return ExitCodes.BadInput;
+        }
+
+        try
+        {
+            console.Out.WriteLine($"ladder: {server.Item} at {server.Url} (data: {settings.DataDir}, {(settings.Database is null ? "SQLite" : "PostgreSQL")}); Ctrl+C stops it");
+            if (server.NewAdminToken is { } token)
+            {
+                console.Out.WriteLine("organiser token (shown once; keep it):");
+                console.Out.WriteLine(token);
+            }
+
+            console.Out.Flush();
+            server.WaitForShutdownAsync().GetAwaiter().GetResult();
+        }
+        finally
+        {
+            server.DisposeAsync().AsTask().GetAwaiter().GetResult();
+        }
+
+        return ExitCodes.Success;
+    }
+
+    private static int RunAdd(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        string usage = CliApp.ProgramName + " " + AddUsage;
+        var (values, positional) = Words(words, "ladder team add", Add, usage, AddHelp, out bool help);
+        if (help)
+        {
+            console.Out.Write($"Usage: {usage}\n\nAdds a team to a running ladder and prints its token alone on the last line. Options:\n{AddLine.OptionTable(28)}More: docs/ladder.md.\n");
+            return ExitCodes.Success;
+        }
+
+        if (positional.Count != 1)
+        {
+            throw new CliUsageException(positional.Count == 0 ? "ladder team add: NAME is required" : $"ladder team add: unexpected argument {MessageText.Quote(positional[1])} (one NAME)", usage);
+        }
+
+        string server = values.GetValueOrDefault(AddServerOption) ?? throw new CliUsageException("ladder team add: --server URL is required", usage);
+        string admin = values.GetValueOrDefault(AddAdminOption) ?? throw new CliUsageException("ladder team add: --admin-token T is required", usage);
+        string? strategy = values.GetValueOrDefault(StrategyOption);
+        if (strategy is not null && !LadderSettings.HouseStrategies.Contains(strategy))
+        {
+            throw new CliUsageException($"ladder team add: --strategy must be demo, chase-ball or idle, got {MessageText.Quote(strategy)}", null);
+        }
+
+        try
+        {
+            using var client = new LadderClient(server, admin);
+            var (name, token) = client.AddTeamAsync(positional[0], strategy).GetAwaiter().GetResult();
+            console.Out.WriteLine(strategy is null ? $"team {name} added; its token (shown once):" : $"team {name} added, a house entrant playing {strategy}; its token (shown once):");
+            console.Out.WriteLine(token);
+            return ExitCodes.Success;
+        }
+        catch (LadderInputException e)
+        {
+            console.ErrorLine("ladder team add: " + e.Message);
+            return ExitCodes.BadInput;
+        }
+    }
+
+    private static int RunSubmit(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        string usage = CliApp.ProgramName + " " + SubmitUsage;
+        var (values, positional) = Words(words, "ladder submit", Submit, usage, SubmitHelp, out bool help);
+        if (help)
+        {
+            console.Out.Write($"Usage: {usage}\n\nUploads a team's strategy: a folder of .cs files, one .cs file or a DLL (also one built for the original).\n" +
+                $"It is compiled and checked once; the compile errors are printed as run prints them (exit 2). Options:\n{SubmitLine.OptionTable(14)}More: docs/ladder.md.\n");
+            return ExitCodes.Success;
+        }
+
+        if (positional.Count != 1)
+        {
+            throw new CliUsageException(positional.Count == 0 ? "ladder submit: PATH is required" : $"ladder submit: unexpected argument {MessageText.Quote(positional[1])} (one PATH)", usage);
+        }
+
+        string server = values.GetValueOrDefault(SubmitServerOption) ?? throw new CliUsageException("ladder submit: --server URL is required", usage);
+        string token = values.GetValueOrDefault(TokenOption) ?? throw new CliUsageException("ladder submit: --token T is required", usage);
+        try
+        {
+            using var client = new LadderClient(server, token);
+            var (id, ok, log) = client.SubmitAsync(positional[0]).GetAwaiter().GetResult();
+            if (!ok)
+            {
+                foreach (string line in log.Split('\n'))
+                {
+                    console.ErrorLine(line);
+                }
+
+                return ExitCodes.BadInput;
+            }
+
+            console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"submission {id}: ok"));
+            console.Out.WriteLine(log);
+            return ExitCodes.Success;
+        }
+        catch (LadderInputException e)
+        {
+            console.ErrorLine("ladder submit: " + e.Message);
+            return ExitCodes.BadInput;
+        }
+    }
+
+    private static int Number(string name, string value, int low, int high) =>
+        int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n >= low && n <= high ? n
+        : throw new CliUsageException(string.Create(CultureInfo.InvariantCulture, $"ladder serve: {name} must be a whole number from {low} to {high}, got {MessageText.Quote(value)}"), null);
+}
