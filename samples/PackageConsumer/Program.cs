@@ -19,15 +19,15 @@ Check("ball–box intersect", hit.Intersect);
 Check("ball–box MTV is (−38, 0, 0)", MathF.Abs(hit.MinimumTranslationVector.X + 38f) < 1e-3f
                                      && MathF.Abs(hit.MinimumTranslationVector.Z) < 1e-3f);
 
-// The stepper: a ball rolling at 1,000 mm/s toward a resting one 200 mm away (radii 58) first
-// touches it after (200 − 116) / 1000 s = 0.084 s of the 0.1 s step (the stepper finds the time
+// The motion world: a ball rolling at 1,000 mm/s toward a resting one 200 mm away (radii 58) first
+// touches it after (200 − 116) / 1000 s = 0.084 s of the 0.1 s step (the motion world finds the time
 // of first contact to within about 0.5 mm of travel: here 0.005 of the step).
-var stepper = new Stepper();
-BodyId a = stepper.AddCircle(58f, new Vector2(0f, 0f));
-BodyId b = stepper.AddCircle(58f, new Vector2(200f, 0f));
-stepper.SetVelocity(a, new Vector2(1000f, 0f));
+var world = new MotionWorld();
+BodyId a = world.AddCircle(58f, new Vector2(0f, 0f));
+BodyId b = world.AddCircle(58f, new Vector2(200f, 0f));
+world.SetVelocity(a, new Vector2(1000f, 0f));
 var firstContact = new FirstContact();
-stepper.Step(0.1f, firstContact);
+world.Step(0.1f, firstContact);
 Check($"first contact at 0.84 of the step (got {firstContact.Time})", Math.Abs(firstContact.Time - 0.84) <= 0.005);
 
 // A fish model at the reference's deployed pose is a real, posed object.
@@ -59,17 +59,17 @@ internal sealed class FirstContact : IContactHandler
 {
     public double Time { get; private set; } = double.NaN;
 
-    public void OnContact(Stepper stepper, in Contact contact)
+    public void OnContact(MotionWorld world, in Contact contact)
     {
         if (double.IsNaN(Time))
         {
             Time = contact.Time;
         }
 
-        stepper.SetVelocity(contact.BodyA, Vector2.Zero); // the striker stops
+        world.SetVelocity(contact.BodyA, Vector2.Zero); // the striker stops
     }
 
-    public void OnMoveRejected(Stepper stepper, BodyId body)
+    public void OnMoveRejected(MotionWorld world, BodyId body)
     {
     }
 }

@@ -15,34 +15,34 @@ Console.WriteLine($"pair: contact at {first.Time:0.####} s, depth {first.Result.
 
 // The pool (3000 × 2000 mm): its walls and its four goal blocks.
 var field = new Field();
-var stepper = new Stepper();
-stepper.AddWalls(field);
+var world = new MotionWorld();
+world.AddWalls(field);
 foreach (var block in field.GoalBlocks)
 {
-    stepper.AddStatic(block);
+    world.AddStatic(block);
 }
 
 // A fish swimming at 300 mm/s toward a resting ball, and a fast ball rolling at a wall.
-BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-600f, 0f), 0f, 0.1f, -0.05f, 0.1f));
-stepper.SetVelocity(fish, new Vector2(300f, 0f), 0.2f);
-BodyId ball = stepper.AddCircle(58f, new Vector2(-300f, 10f));
-BodyId fast = stepper.AddCircle(38f, new Vector2(1200f, -600f));
-stepper.SetVelocity(fast, new Vector2(2000f, -1000f));
+BodyId fish = world.AddFish(FishSize.Default, new FishPose(new Vector2(-600f, 0f), 0f, 0.1f, -0.05f, 0.1f));
+world.SetVelocity(fish, new Vector2(300f, 0f), 0.2f);
+BodyId ball = world.AddCircle(58f, new Vector2(-300f, 10f));
+BodyId fast = world.AddCircle(38f, new Vector2(1200f, -600f));
+world.SetVelocity(fast, new Vector2(2000f, -1000f));
 
 // Ten cycles of 100 ms; every contact comes to the response, in time order.
 var response = new StopAndSeparate();
 for (int cycle = 1; cycle <= 10; cycle++)
 {
-    stepper.Step(0.1f, response);
+    world.Step(0.1f, response);
 }
 
-Console.WriteLine($"{response.Contacts} contacts; ball at {stepper.PositionOf(ball)}, fast ball at {stepper.PositionOf(fast)}");
-Console.WriteLine($"deepest overlap now: {stepper.MeasureOverlap():0.###} mm");
+Console.WriteLine($"{response.Contacts} contacts; ball at {world.PositionOf(ball)}, fast ball at {world.PositionOf(fast)}");
+Console.WriteLine($"deepest overlap now: {world.MeasureOverlap():0.###} mm");
 // </snippet>
 
 // What the docs promise, checked: the fish pushed the ball, the fast ball stayed in the pool, nothing overlaps.
-Vector2 f = stepper.PositionOf(fast);
-bool ok = first.Hit && MathF.Abs(first.Time - 0.2f) <= 0.00025f && response.Contacts > 0 && stepper.PositionOf(ball).X > -300f && stepper.MeasureOverlap() <= 0.5f
+Vector2 f = world.PositionOf(fast);
+bool ok = first.Hit && MathF.Abs(first.Time - 0.2f) <= 0.00025f && response.Contacts > 0 && world.PositionOf(ball).X > -300f && world.MeasureOverlap() <= 0.5f
     && MathF.Abs(f.X) + 38f <= 1500.01f && MathF.Abs(f.Y) + 38f <= 1000.01f;
 Console.WriteLine(ok ? "sample Motion: ok" : "sample Motion: FAILED");
 return ok ? 0 : 1;
@@ -58,33 +58,33 @@ internal sealed class StopAndSeparate : IContactHandler
 {
     public int Contacts { get; private set; }
 
-    public void OnContact(Stepper stepper, in Contact contact)
+    public void OnContact(MotionWorld world, in Contact contact)
     {
         Contacts++;
         BodyId a = contact.BodyA, b = contact.BodyB;
-        bool bMoves = stepper.KindOf(b) is BodyKind.Circle or BodyKind.Polygon or BodyKind.Fish;
+        bool bMoves = world.KindOf(b) is BodyKind.Circle or BodyKind.Polygon or BodyKind.Fish;
         float share = bMoves ? 0.5f : 1f;
         var mtv = new Vector2(contact.Result.MinimumTranslationVector.X, contact.Result.MinimumTranslationVector.Z);
         var normal = new Vector2(contact.Result.NormalAxis.X, contact.Result.NormalAxis.Z);
         Vector2 push = (mtv + (normal * 0.01f)) * share;
-        stepper.SetPose(a, stepper.PositionOf(a) + push, stepper.HeadingOf(a));
+        world.SetPose(a, world.PositionOf(a) + push, world.HeadingOf(a));
         if (bMoves)
         {
-            stepper.SetPose(b, stepper.PositionOf(b) - push, stepper.HeadingOf(b));
+            world.SetPose(b, world.PositionOf(b) - push, world.HeadingOf(b));
         }
 
-        Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
+        Vector2 va = world.VelocityOf(a), vb = bMoves ? world.VelocityOf(b) : Vector2.Zero;
         float closing = Vector2.Dot(va - vb, normal);
         if (closing < 0f)
         {
-            stepper.SetVelocity(a, va - (normal * (closing * share)), stepper.AngularVelocityOf(a));
+            world.SetVelocity(a, va - (normal * (closing * share)), world.AngularVelocityOf(a));
             if (bMoves)
             {
-                stepper.SetVelocity(b, vb + (normal * (closing * share)), stepper.AngularVelocityOf(b));
+                world.SetVelocity(b, vb + (normal * (closing * share)), world.AngularVelocityOf(b));
             }
         }
     }
 
-    public void OnMoveRejected(Stepper stepper, BodyId body) => Console.WriteLine($"{body}: move rejected");
+    public void OnMoveRejected(MotionWorld world, BodyId body) => Console.WriteLine($"{body}: move rejected");
 }
 // </snippet>

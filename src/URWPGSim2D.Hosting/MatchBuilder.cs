@@ -23,7 +23,7 @@ public static class MatchBuilder
     /// <param name="seed">Seed override, or null for the scenario's.</param>
     /// <param name="noise">Noise override, or null for the scenario's.</param>
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
-    /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
+    /// <param name="broadPhase">The motion world's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <remarks>
     /// The Box2D side-by-side harness (<c>../shared/peers/box2d</c>) finds this method by name and
@@ -38,7 +38,7 @@ public static class MatchBuilder
     /// <param name="seed">Seed override, or null for the scenario's.</param>
     /// <param name="noise">Noise override, or null for the scenario's.</param>
     /// <param name="strategyTimeoutMs">Time limit of isolated strategies, ms.</param>
-    /// <param name="broadPhase">The stepper's broad phase (every kind gives the same match).</param>
+    /// <param name="broadPhase">The motion world's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <param name="debugDraw">Whether the strategies' debug drawings are recorded (<c>run --debug-draw</c>).</param>
     /// <param name="strategyLog">Whether what the strategies print is recorded (<c>run --strategy-log</c>).</param>

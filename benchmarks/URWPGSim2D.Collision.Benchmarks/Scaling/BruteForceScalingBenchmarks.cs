@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 
 /// <summary>
-/// The crowd scene of <see cref="ScalingBenchmarks"/> with the stepper's broad phase brute force
+/// The crowd scene of <see cref="ScalingBenchmarks"/> with the motion world's broad phase brute force
 /// (every pair of boxes tested), for 100, 1,000 and 10,000 fish and balls: the reference the grid
 /// is measured against (both give the same match, tested). Not run at 30,000 (seconds a cycle).
 /// </summary>

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// <summary>
 /// One whole cycle of a crowd scene (<see cref="CrowdScenario"/>: fish and balls at the default
 /// match's density, the pool growing with the count, fish on fixed random decisions) for 100 to
-/// 30,000 fish and balls, the stepper's broad phase a uniform grid, against the frozen baseline
+/// 30,000 fish and balls, the motion world's broad phase a uniform grid, against the frozen baseline
 /// (<see cref="BaselineMatch"/>: the same scene played by the whole server of the commit tagged
 /// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. The scene is played 20 cycles before measuring (the starting
 /// overlaps are resolved in the first ones); each call plays the next cycle. Brute force, the

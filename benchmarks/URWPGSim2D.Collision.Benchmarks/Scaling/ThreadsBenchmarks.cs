@@ -2,7 +2,7 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 
 /// <summary>
 /// One whole cycle of the crowd scene of <see cref="ScalingBenchmarks"/> at 1,000 and 10,000 fish
-/// and balls, its stepper on one thread (the baseline) and on two (<c>run --threads 2</c>: the
+/// and balls, its motion world on one thread (the baseline) and on two (<c>run --threads 2</c>: the
 /// islands sampled on two threads up to their first contact); both play the same match, tested.
 /// Each scene is played 20 cycles before measuring; each call plays the next cycle.
 /// </summary>
@@ -26,18 +26,18 @@ public class ThreadsBenchmarks
     [GlobalSetup(Target = nameof(TwoThreads))]
     public void SetupTwo() => _two = Warm(2);
 
-    /// <summary>One cycle, the stepper on the calling thread.</summary>
+    /// <summary>One cycle, the motion world on the calling thread.</summary>
     [Benchmark(Baseline = true)]
     public void OneThread() => _one.Step();
 
-    /// <summary>One cycle, the stepper's islands on two threads.</summary>
+    /// <summary>One cycle, the motion world's islands on two threads.</summary>
     [Benchmark]
     public void TwoThreads() => _two.Step();
 
     private Match Warm(int threads)
     {
         var match = MatchBuilder.Build(CrowdScenario.Create(Objects));
-        match.Stepper.Threads = threads;
+        match.Motion.Threads = threads;
         for (int i = 0; i < WarmCycles; i++)
         {
             match.Step();

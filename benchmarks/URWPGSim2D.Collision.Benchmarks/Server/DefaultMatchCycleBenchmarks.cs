@@ -110,9 +110,9 @@ public class DefaultMatchCycleBenchmarks
     /// <summary>Broad phase plus the exact test of every candidate pair; returns the deepest overlap.</summary>
     [Benchmark]
     [BenchmarkCategory("detection")]
-    public float Detection() => _match.Stepper.MeasureOverlap();
+    public float Detection() => _match.Motion.MeasureOverlap();
 
-    /// <summary>The same through the frozen stepper.</summary>
+    /// <summary>The same through the frozen motion world.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("detection")]
     public float DetectionBaseline() => _baseline.Stepper.MeasureOverlap();

@@ -1,8 +1,8 @@
 namespace URWPGSim2D.Collision.BroadPhase;
 
 /// <summary>
-/// Which broad phase a <see cref="Motion.Stepper"/> finds its candidate pairs with. Every kind
-/// finds exactly the same pairs in the same order, so the stepper reports the same contacts, bit
+/// Which broad phase a <see cref="Motion.MotionWorld"/> finds its candidate pairs with. Every kind
+/// finds exactly the same pairs in the same order, so the motion world reports the same contacts, bit
 /// for bit, whichever is chosen; they differ only in speed (docs/performance.md).
 /// </summary>
 public enum BroadPhaseKind

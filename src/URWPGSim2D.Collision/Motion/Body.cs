@@ -3,7 +3,7 @@ using URWPGSim2D.Collision.Pool;
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// One body of a <see cref="Stepper"/>: its shape, its pose now, and its motion within the step.
+/// One body of a <see cref="MotionWorld"/>: its shape, its pose now, and its motion within the step.
 /// A moving body moves linearly in time from its last committed state (base pose at base time):
 /// P = P₀ + v·Δt, θ = θ₀ + ω·Δt, so it can be placed at any time of the step without touching the
 /// others. A fish's collision model is rebuilt only when its joints change; otherwise it stays
@@ -58,10 +58,10 @@ internal sealed class Body
         Invalidate();
     }
 
-    /// <summary>The body's number in its stepper.</summary>
+    /// <summary>The body's number in its motion world.</summary>
     public int Id { get; }
 
-    /// <summary>The id the stepper returned for the body (its number, its stepper's, whether it is static).</summary>
+    /// <summary>The id the motion world returned for the body (its number, its motion world's, whether it is static).</summary>
     public BodyId Handle { get; set; }
 
     /// <summary>What the body is.</summary>
@@ -70,7 +70,7 @@ internal sealed class Body
     /// <summary>Whether the body moves (circle, polygon or fish).</summary>
     public bool IsMoving => Kind <= BodyKind.Fish;
 
-    /// <summary>Index among the stepper's movers, or among its static bodies.</summary>
+    /// <summary>Index among the motion world's movers, or among its static bodies.</summary>
     public int Slot { get; set; }
 
     /// <summary>A moving circle's radius, mm.</summary>
@@ -184,13 +184,13 @@ internal sealed class Body
     /// <summary>Whether the body takes part in contacts (false: it is never paired, not even with the walls).</summary>
     public bool Collides = true;
 
-    /// <summary>The caller's tag (see <see cref="Stepper.TagOf"/>).</summary>
+    /// <summary>The caller's tag (see <see cref="MotionWorld.TagOf"/>).</summary>
     public int Tag;
 
     /// <summary>Whether the body's move was rejected since the current or last step began.</summary>
     public bool Rejected;
 
-    /// <summary>Deep position corrections a response reported this step (<see cref="Stepper.CountCorrection"/>).</summary>
+    /// <summary>Deep position corrections a response reported this step (<see cref="MotionWorld.CountCorrection"/>).</summary>
     public int Corrections;
 
     /// <summary>A moving circle.</summary>

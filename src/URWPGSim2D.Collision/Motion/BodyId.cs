@@ -3,11 +3,11 @@ using System.Threading;
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// A body of a <see cref="Stepper"/>, as the <c>Add…</c> methods return it: its number in the
-/// stepper (<see cref="Index"/>), whether it is static, and which stepper made it. Every method that
-/// takes a body checks that the id is one of that stepper's bodies, so an id from another stepper,
+/// A body of a <see cref="MotionWorld"/>, as the <c>Add…</c> methods return it: its number in the
+/// motion world (<see cref="Index"/>), whether it is static, and which motion world made it. Every method that
+/// takes a body checks that the id is one of that motion world's bodies, so an id from another motion world,
 /// or <c>default(BodyId)</c>, is refused by name instead of naming some other body. What a body is
-/// in the caller's game (a fish, a ball and its index) is its tag (<see cref="Stepper.SetTag"/>),
+/// in the caller's game (a fish, a ball and its index) is its tag (<see cref="MotionWorld.SetTag"/>),
 /// not where its id falls.
 /// </summary>
 public readonly struct BodyId : IEquatable<BodyId>
@@ -27,7 +27,7 @@ public readonly struct BodyId : IEquatable<BodyId>
         _static = isStatic;
     }
 
-    /// <summary>The body's number in its stepper: 0 … <see cref="Stepper.BodyCount"/> − 1, in the order bodies were added (−1 for <c>default</c>).</summary>
+    /// <summary>The body's number in its motion world: 0 … <see cref="MotionWorld.BodyCount"/> − 1, in the order bodies were added (−1 for <c>default</c>).</summary>
     public int Index => IsNull ? -1 : _index;
 
     /// <summary>Whether the body never moves: a static body or the walls.</summary>
@@ -36,13 +36,13 @@ public readonly struct BodyId : IEquatable<BodyId>
     /// <summary>Whether the id names no body (<c>default(BodyId)</c>).</summary>
     public bool IsNull => _world == 0;
 
-    /// <summary>The number of the stepper that made the id (never 0).</summary>
+    /// <summary>The number of the motion world that made the id (never 0).</summary>
     internal int World => _world;
 
-    /// <summary>Which body of that index the id names (the stepper's body carries the same one).</summary>
+    /// <summary>Which body of that index the id names (the motion world's body carries the same one).</summary>
     internal int Generation => _generation;
 
-    /// <summary>Whether two ids name the same body of the same stepper.</summary>
+    /// <summary>Whether two ids name the same body of the same motion world.</summary>
     /// <param name="left">The first id.</param>
     /// <param name="right">The second id.</param>
     /// <returns>True when equal.</returns>
@@ -68,7 +68,7 @@ public readonly struct BodyId : IEquatable<BodyId>
     /// <returns>The text.</returns>
     public override string ToString() => IsNull ? "no body" : (_static ? "static body " : "body ") + _index;
 
-    /// <summary>A new stepper's number, distinct from every other stepper's of the process.</summary>
+    /// <summary>A new motion world's number, distinct from every other motion world's of the process.</summary>
     internal static int NextWorld()
     {
         int world = Interlocked.Increment(ref s_lastWorld);

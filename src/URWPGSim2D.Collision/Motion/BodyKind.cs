@@ -1,6 +1,6 @@
 namespace URWPGSim2D.Collision.Motion;
 
-/// <summary>What a stepper body is: one of the three moving kinds or a static one.</summary>
+/// <summary>What a motion world body is: one of the three moving kinds or a static one.</summary>
 public enum BodyKind : byte
 {
     /// <summary>A moving circle (a ball): translates only.</summary>

@@ -1,6 +1,6 @@
 namespace URWPGSim2D.Collision.Motion;
 
-/// <summary>One contact the <see cref="Stepper"/> reports: two bodies overlapping at a time of the step.</summary>
+/// <summary>One contact the <see cref="MotionWorld"/> reports: two bodies overlapping at a time of the step.</summary>
 public readonly struct Contact
 {
     internal Contact(Body bodyA, Body bodyB, in Hit hit, double time)

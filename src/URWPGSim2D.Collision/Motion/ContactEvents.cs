@@ -14,7 +14,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// </summary>
 internal sealed class ContactEvents
 {
-    private readonly Stepper _world;
+    private readonly MotionWorld _world;
     private readonly PairSchedule _schedule;
     private readonly PairTable _table;
     private readonly PairSampler _sampler;
@@ -30,7 +30,7 @@ internal sealed class ContactEvents
     private int _pendingCount;
 
     /// <summary>Creates the stage over the world, its pair schedule and its settling stage (where the bodies an event touched are settled).</summary>
-    public ContactEvents(Stepper world, PairSchedule schedule, Settling settling, List<Body> bodies)
+    public ContactEvents(MotionWorld world, PairSchedule schedule, Settling settling, List<Body> bodies)
     {
         _world = world;
         _schedule = schedule;

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// Hits held back for the stepper's event loop: each island sampled on its own stops at the first
+/// Hits held back for the motion world's event loop: each island sampled on its own stops at the first
 /// sample that finds a hit and hands its hits over (tick, pair slot, the slot's generation then,
 /// the contact), to be handled when the event loop reaches that tick. Storage grows by doubling,
 /// never shrinks.

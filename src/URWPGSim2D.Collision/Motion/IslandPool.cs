@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// The process's island workers: background threads created once, on first need, that wait for
 /// chunks of work. <see cref="Run"/> runs chunk 0 on the calling thread and chunks 1 … n − 1 on
 /// workers, and returns when all are done; an exception of a chunk is thrown again on the calling
-/// thread. One run at a time (steppers on several threads take turns). Nothing allocates per run.
+/// thread. One run at a time (motion worlds on several threads take turns). Nothing allocates per run.
 /// </summary>
 internal static class IslandPool
 {

@@ -4,7 +4,7 @@ namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// Every leaf contact of a fish with another body at their poses now (see
-/// <see cref="Stepper.DetectLeaves"/>). The world's own fish models follow its stepping (a fish is
+/// <see cref="MotionWorld.DetectLeaves"/>). The world's own fish models follow its stepping (a fish is
 /// carried rigidly between rebuilds) and are left alone: this query lays the fish out on scratch
 /// models instead, two per fish size of the world (one per fish of a pair), made when the bodies
 /// are loaded, so that no query builds one; each use poses them again.

@@ -1,9 +1,9 @@
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// The stepper's tolerances (mm): how deep an overlap may be and still count as touching, and how
-/// closely the time of first contact is found. A contact response plugged into the stepper uses
-/// them to tell a resolved pair and a refined contact; the work limits stay the stepper's own.
+/// The motion world's tolerances (mm): how deep an overlap may be and still count as touching, and how
+/// closely the time of first contact is found. A contact response plugged into the motion world uses
+/// them to tell a resolved pair and a refined contact; the work limits stay the motion world's own.
 /// </summary>
 public static class MotionTolerances
 {

@@ -5,7 +5,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// Samples candidate pairs on their own clocks: the queue of sample times, the pairs due at a
 /// time, the hits a sample finds, the exact tests it remembers, and the ticks it sampled. The
-/// stepper has one for its event loop, which also samples the islands on one thread; each island
+/// motion world has one for its event loop, which also samples the islands on one thread; each island
 /// worker of a step on several threads has its own, so that islands sampled on several threads
 /// share nothing but the pair table's slots of their own pairs. Storage grows by doubling, never
 /// shrinks.
@@ -38,6 +38,9 @@ internal sealed class PairSampler
     /// <summary>Deepest overlap (within the contact slop) of the pairs sampled at the end of the step, mm.</summary>
     public float DeepestAtEnd { get; private set; }
 
+    /// <summary>Distinct sample times of the last step, counted when its event loop ends (<see cref="EndStep"/>).</summary>
+    public int SubSteps { get; private set; }
+
     /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers.</summary>
     public void Reserve(int movers)
     {
@@ -55,7 +58,11 @@ internal sealed class PairSampler
         Array.Clear(_sampled);
         HitCount = 0;
         DeepestAtEnd = 0f;
+        SubSteps = 0;
     }
+
+    /// <summary>The event loop of the step is over: its distinct sample times are counted.</summary>
+    public void EndStep() => SubSteps = SampledTicks();
 
     /// <summary>Takes the live entries of a sample time, starting a new sample (no hits yet); returns their number (the tick counts as sampled when there are any).</summary>
     public int TakeDue(double time, PairTable table)
@@ -220,8 +227,8 @@ internal sealed class PairSampler
         DeepestAtEnd = MathF.Max(DeepestAtEnd, other.DeepestAtEnd);
     }
 
-    /// <summary>Number of distinct ticks sampled this step.</summary>
-    public int SampledTicks()
+    // Number of distinct ticks sampled this step.
+    private int SampledTicks()
     {
         int count = 0;
         foreach (ulong word in _sampled)

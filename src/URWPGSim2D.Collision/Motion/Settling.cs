@@ -7,9 +7,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// and measuring. It owns the bodies that took part in contacts this step (<see cref="MarkTouched"/>),
 /// the wedged bodies whose hits were left to the end, and the count of rejected moves.
 /// <para>
-/// A body is wedged when the stepper sees it in many events this step, or in several in a row at
+/// A body is wedged when the motion world sees it in many events this step, or in several in a row at
 /// one time (pushed back and forth between two obstacles), or when the caller's response says so
-/// (<see cref="Stepper.RejectMove"/>). A wedged body's hits that cannot tunnel before the step
+/// (<see cref="MotionWorld.RejectMove"/>). A wedged body's hits that cannot tunnel before the step
 /// ends are left to the end of the step; there, a body left inside another by more than the
 /// guarantee allows, or a wedged one still overlapping after settling, has its move rejected.
 /// Rejecting a move, whoever decides it, is one thing: the body goes back to where it started the
@@ -18,7 +18,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// </summary>
 internal sealed class Settling
 {
-    private readonly Stepper _world;
+    private readonly MotionWorld _world;
     private readonly PairSchedule _schedule;
     private readonly List<Body> _bodies;
     private readonly PairCollector _collector = new();
@@ -28,15 +28,18 @@ internal sealed class Settling
     private BodySet _other = new(0);
 
     /// <summary>Creates the stage over the world and its pair schedule.</summary>
-    public Settling(Stepper world, PairSchedule schedule, List<Body> bodies)
+    public Settling(MotionWorld world, PairSchedule schedule, List<Body> bodies)
     {
         _world = world;
         _schedule = schedule;
         _bodies = bodies;
     }
 
-    /// <summary>When a body counts as wedged and its move is rejected (<see cref="Stepper.Wedging"/>).</summary>
+    /// <summary>When a body counts as wedged and its move is rejected (<see cref="MotionWorld.Wedging"/>).</summary>
     public WedgePolicy Policy { get; set; } = new();
+
+    /// <summary>Deepest overlap of any pair at the end of the last step (<see cref="EndStep"/>) or <see cref="SettleAll"/>, mm.</summary>
+    public float LeftoverOverlap { get; private set; }
 
     /// <summary>Bodies whose move was rejected in the current or last step (or <see cref="SettleAll"/>).</summary>
     public int RejectedMoves { get; private set; }
@@ -65,9 +68,9 @@ internal sealed class Settling
     /// <summary>
     /// Between steps: every mover's pairs settled without motion, then the moves of bodies still
     /// inside another one rejected (those whose hits the last step left to its end as soon as they
-    /// overlap at all). Returns the deepest overlap left.
+    /// overlap at all). The deepest overlap left is <see cref="LeftoverOverlap"/>.
     /// </summary>
-    public float SettleAll()
+    public void SettleAll()
     {
         RejectedMoves = 0;
         _touched.Clear();
@@ -76,7 +79,7 @@ internal sealed class Settling
             _touched.Add(m);
         }
 
-        return RejectOverlapping(SettleTouched());
+        LeftoverOverlap = RejectOverlapping(SettleTouched());
     }
 
     /// <summary>Deepest overlap among all pairs of bodies now (no motion), mm.</summary>
@@ -88,13 +91,20 @@ internal sealed class Settling
     }
 
     /// <summary>
+    /// The end of a step, every body at its end: the touched bodies settled, then the moves of those
+    /// left inside others rejected. <paramref name="deepestAtEnd"/> is the deepest overlap the event
+    /// loop found at the end of the step; the deepest left is <see cref="LeftoverOverlap"/>.
+    /// </summary>
+    public void EndStep(float deepestAtEnd) => LeftoverOverlap = RejectOverlapping(MathF.Max(deepestAtEnd, SettleTouched()));
+
+    /// <summary>
     /// Up to <see cref="MotionTolerances.SettlePasses"/> passes over the pairs of the bodies that
     /// took part in contacts this step: overlaps go to the handler and the bodies that moved are
     /// checked again; returns the deepest overlap left among them. When the first pass finds
     /// nothing to resolve (the usual case: the events left every pair apart), nothing moved and its
     /// depths are the answer: the pairs are not tested a second time.
     /// </summary>
-    public float SettleTouched()
+    private float SettleTouched()
     {
         BodySet current = _touched;
         BodySet next = _spare;
@@ -175,7 +185,7 @@ internal sealed class Settling
     /// was free, so this ends). A body whose contacts were left to the end of the step (it is
     /// wedged) is rejected as soon as it still overlaps after settling. Returns the deepest overlap left.
     /// </summary>
-    public float RejectOverlapping(float deepest)
+    private float RejectOverlapping(float deepest)
     {
         if (deepest <= MotionTolerances.RejectOverlap && (_deferred.Count == 0 || deepest <= MotionTolerances.ContactSlop))
         {
@@ -231,12 +241,12 @@ internal sealed class Settling
         return Deepest(_collector.Pairs);
     }
 
-    /// <summary>A response's verdict (<see cref="Stepper.RejectMove"/>): the body goes back to where it began the step, at rest.</summary>
+    /// <summary>A response's verdict (<see cref="MotionWorld.RejectMove"/>): the body goes back to where it began the step, at rest.</summary>
     public void RejectToStepStart(Body b) =>
         MoveBack(b, b.StepStartPosition, b.StepStartHeading, b.StepStartJoint1, b.StepStartJoint2, b.StepStartJoint3, stamp: false);
 
     /// <summary>
-    /// Counts a response's correction of a body (<see cref="Stepper.CountCorrection"/>) at a
+    /// Counts a response's correction of a body (<see cref="MotionWorld.CountCorrection"/>) at a
     /// contact's depth: true when it is a deep one past the policy's allowance for the step and
     /// the body's move is not rejected yet (the caller rejects it).
     /// </summary>

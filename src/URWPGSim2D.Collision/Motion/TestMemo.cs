@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
-/// The last exact tests of a stepper, so that a pair tested again with both bodies exactly where
+/// The last exact tests of a motion world, so that a pair tested again with both bodies exactly where
 /// they were (same positions, headings and joints) is answered without testing: the response
 /// tests the pair the search for the time of first contact stopped at, the re-planning after a
 /// response tests the pair the handler has just separated, the end of a step tests the pairs the

@@ -2,7 +2,7 @@ namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// The time of first contact of two bodies moving rigidly over an interval: the
-/// <see cref="Stepper"/>'s own detection, run on a world of these two bodies for one step of the
+/// <see cref="MotionWorld"/>'s own detection, run on a world of these two bodies for one step of the
 /// interval's length. The pair is sampled on its own clock, often enough that it cannot pass
 /// through itself between two samples and not at all while its bounding circles are too far apart
 /// to meet; the first overlapping sample is refined (a false-position guess, then bisection) until
@@ -31,11 +31,11 @@ public static class TimeOfImpact
             throw new ArgumentException("at least one body must move (both are static)", nameof(b));
         }
 
-        var world = new Stepper();
+        var world = new MotionWorld();
         BodyId first = Add(world, a);
         BodyId second = Add(world, b);
 
-        // Overlapping at the start: the contact is at time 0 (the stepper's first sample would find it later).
+        // Overlapping at the start: the contact is at time 0 (the motion world's first sample would find it later).
         bool aMoves = IsMoving(a.Kind);
         Contact now = aMoves ? world.Detect(first, second) : world.Detect(second, first);
         if (now.Depth > MotionTolerances.ContactSlop)
@@ -69,7 +69,7 @@ public static class TimeOfImpact
     }
 
     // The body in the two-body world, with its motion over the interval.
-    private static BodyId Add(Stepper world, in MovingBody m)
+    private static BodyId Add(MotionWorld world, in MovingBody m)
     {
         BodyId id = m.Kind switch
         {
@@ -94,7 +94,7 @@ public static class TimeOfImpact
 
         public Contact Contact { get; private set; }
 
-        public void OnContact(Stepper stepper, in Contact contact)
+        public void OnContact(MotionWorld motionWorld, in Contact contact)
         {
             if (!Found)
             {
@@ -102,14 +102,14 @@ public static class TimeOfImpact
                 Contact = contact;
             }
 
-            stepper.SetCollides(contact.BodyA, false);
-            if (IsMoving(stepper.KindOf(contact.BodyB)))
+            motionWorld.SetCollides(contact.BodyA, false);
+            if (IsMoving(motionWorld.KindOf(contact.BodyB)))
             {
-                stepper.SetCollides(contact.BodyB, false);
+                motionWorld.SetCollides(contact.BodyB, false);
             }
         }
 
-        public void OnMoveRejected(Stepper stepper, BodyId body)
+        public void OnMoveRejected(MotionWorld motionWorld, BodyId body)
         {
         }
     }

@@ -3,7 +3,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>The answer of <see cref="TimeOfImpact.Find"/>: when two moving bodies first touch, and how.</summary>
 public readonly struct TimeOfImpactResult
 {
-    // The stepper's contact, seen from the query's first body (swap: the contact's A is the query's second body).
+    // The motion world's contact, seen from the query's first body (swap: the contact's A is the query's second body).
     internal TimeOfImpactResult(float time, in Contact contact, bool swap)
     {
         Hit = true;

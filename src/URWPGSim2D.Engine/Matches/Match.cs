@@ -35,7 +35,7 @@ public sealed class Match
         Rules = referee ?? new PlainSceneReferee(0);
         Contacts = new ContactLog(world.Fish.Length + world.Balls.Length);
         _view = new MatchSnapshotWriter(world.Fish.Length, world.Balls.Length, world.Obstacles, world.Field.Length, world.Field.Width);
-        Stepper = new CycleMotion(world, Contacts);
+        Motion = new CycleMotion(world, Contacts);
         Rules.Start(world);
         if (noise)
         {
@@ -60,7 +60,7 @@ public sealed class Match
     public ContactLog Contacts { get; }
 
     /// <summary>Motion interpolation and contact handling.</summary>
-    public CycleMotion Stepper { get; }
+    public CycleMotion Motion { get; }
 
     /// <summary>The competition item's referee, or null for a plain scene.</summary>
     public ItemReferee? Referee { get; }
@@ -82,15 +82,15 @@ public sealed class Match
         Rules.AfterDecisions(World);
         Contacts.BeginCycle();
         Locomotion.Apply(World, _motionNoise, (World.Cycle + 1) * 0.1);
-        Stepper.Run();
+        Motion.Run();
         World.Cycle++;
         if (Rules.Judge(World, Contacts.Cycle))
         {
-            Stepper.Settle();
+            Motion.Settle();
         }
 
         Locomotion.Finish(World);
-        Statistics.Record(World.Cycle, Stepper.SubSteps, Stepper.Events, Stepper.LeftoverOverlap);
+        Statistics.Record(World.Cycle, Motion.SubSteps, Motion.Events, Motion.LeftoverOverlap);
     }
 
     /// <summary>

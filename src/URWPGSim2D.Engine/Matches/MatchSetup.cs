@@ -52,7 +52,7 @@ public static class MatchSetup
     {
         ArgumentNullException.ThrowIfNull(scenario);
         var field = new Field(scenario.FieldLength, scenario.FieldWidth, scenario.GoalBlocks);
-        var motion = new Stepper(broadPhase);
+        var motion = new MotionWorld(broadPhase);
         var fish = new FishState[scenario.Fish.Count];
         for (int i = 0; i < fish.Length; i++)
         {

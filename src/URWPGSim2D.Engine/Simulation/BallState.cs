@@ -6,14 +6,14 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <summary>
 /// One ball's game state: its start (where it is put back after a goal) (mm; X = world X, Y =
 /// world Z). Its body — radius, position, velocity, noise drift, whether it collides — is the
-/// motion world's (<see cref="Stepper"/>), reached by <see cref="Handle"/>.
+/// motion world's (<see cref="MotionWorld"/>), reached by <see cref="Handle"/>.
 /// </summary>
 public sealed class BallState
 {
-    private readonly Stepper _motion;
+    private readonly MotionWorld _motion;
 
     /// <summary>Adds the ball's body to the motion world and sets up its game state.</summary>
-    public BallState(Stepper motion, int index, float radius, Vector2 position, Vector2 velocity)
+    public BallState(MotionWorld motion, int index, float radius, Vector2 position, Vector2 velocity)
     {
         _motion = motion;
         Index = index;

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
-/// The tag the match gives each of its bodies in the motion world (<c>Stepper.SetTag</c>): what
+/// The tag the match gives each of its bodies in the motion world (<c>MotionWorld.SetTag</c>): what
 /// the body is (a fish, a ball, a static body, the walls) and its index in the world's array of
 /// that kind, so that a contact's bodies are found from their tags, not from where their ids fall.
 /// </summary>

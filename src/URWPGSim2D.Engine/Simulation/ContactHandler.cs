@@ -15,27 +15,27 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     private readonly ContactResponse _response = new(world);
 
     /// <inheritdoc/>
-    public void OnContact(Stepper stepper, in Contact contact)
+    public void OnContact(MotionWorld motionWorld, in Contact contact)
     {
         CandidatePair pair = world.PairOf(contact);
-        TakeInOrder(stepper, pair, contact.BodyA, contact.BodyB);
+        TakeInOrder(motionWorld, pair, contact.BodyA, contact.BodyB);
         ContactKind kind = _response.Apply(pair, contact);
         log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
     }
 
     /// <inheritdoc/>
-    public void OnMoveRejected(Stepper stepper, BodyId body)
+    public void OnMoveRejected(MotionWorld motionWorld, BodyId body)
     {
         // The motion world put the body back and stopped it (velocity and noise drift zero) and
         // remembers it (FishState.MoveRejected): a fish holds still, immovable in contacts, for
         // the rest of the cycle. Nothing to keep here.
     }
 
-    // The stepper re-plans the bodies a response changes in the order it first changes or involves
+    // The motion world re-plans the bodies a response changes in the order it first changes or involves
     // them, and simultaneous contacts come in that order: the body the separation moves first is
     // involved first (A, unless A is a fish whose move was rejected, which its partner alone is
     // pushed away from), then the other.
-    private void TakeInOrder(Stepper stepper, in CandidatePair pair, BodyId a, BodyId b)
+    private void TakeInOrder(MotionWorld motionWorld, in CandidatePair pair, BodyId a, BodyId b)
     {
         bool aStays = pair.Kind switch
         {
@@ -46,15 +46,15 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
         bool bMoves = pair.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.BallBall;
         if (aStays && bMoves)
         {
-            stepper.Involve(b);
-            stepper.Involve(a);
+            motionWorld.Involve(b);
+            motionWorld.Involve(a);
         }
         else
         {
-            stepper.Involve(a);
+            motionWorld.Involve(a);
             if (bMoves)
             {
-                stepper.Involve(b);
+                motionWorld.Involve(b);
             }
         }
     }

@@ -27,7 +27,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// </list>
 /// A fish's speed and angular speed (its gear approach) are never changed by a contact: each cycle
 /// it swims with its own motion again. Every position correction of a fish is counted by the motion
-/// world's wedge policy (<see cref="Stepper.CountCorrection"/>): a fish corrected deeper than the
+/// world's wedge policy (<see cref="MotionWorld.CountCorrection"/>): a fish corrected deeper than the
 /// time-of-impact tolerance more than <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> times in
 /// one cycle is wedged and the motion world rejects its move (back where it started the cycle, at
 /// rest); for the rest of that cycle it counts as immovable (its partners take the whole

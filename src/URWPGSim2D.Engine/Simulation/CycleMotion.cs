@@ -4,7 +4,7 @@ namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
 /// The motion stage of a cycle: the world's bodies move through the 100 ms cycle in the motion
-/// world (the collision library's <see cref="Stepper"/>: pseudo-continuous detection, every contact
+/// world (the collision library's <see cref="MotionWorld"/>: pseudo-continuous detection, every contact
 /// at its time of first contact, in time order), with the server's contact response plugged in
 /// (<see cref="ContactHandler"/>). See docs/motion.md.
 /// </summary>
@@ -22,7 +22,7 @@ public sealed class CycleMotion
         _handler = new ContactHandler(world, log);
     }
 
-    /// <summary>Threads the stepper spreads a cycle's islands over (1 by default; the same match whatever the number).</summary>
+    /// <summary>Threads the motion world spreads a cycle's islands over (1 by default; the same match whatever the number).</summary>
     public int Threads
     {
         get => _world.Motion.Threads;

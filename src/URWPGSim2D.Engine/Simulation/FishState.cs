@@ -7,18 +7,18 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <summary>
 /// One fish's game state: team, size, the decision it executes, its speed and turn gears, its
 /// tail-wave phase, its corrections this cycle and whether its move was rejected. Its body — pose, joints, shape,
-/// velocity, noise drift, whether it collides — is the motion world's (<see cref="Stepper"/>),
+/// velocity, noise drift, whether it collides — is the motion world's (<see cref="MotionWorld"/>),
 /// reached by <see cref="Handle"/>: the properties of those read and write it there, so there is
-/// one copy. Within a cycle the stepper moves it with
+/// one copy. Within a cycle the motion world moves it with
 /// <see cref="Velocity"/> (+ noise) and <see cref="AngularVelocity"/>; contacts may change both
 /// for the rest of the cycle (the swimming speed and turn rate are not changed by contacts).
 /// </summary>
 public sealed class FishState
 {
-    private readonly Stepper _motion;
+    private readonly MotionWorld _motion;
 
     /// <summary>Adds the fish's body to the motion world (joints straight) and sets up its game state.</summary>
-    public FishState(Stepper motion, int index, int team, FishSize size, Vector2 position, float heading)
+    public FishState(MotionWorld motion, int index, int team, FishSize size, Vector2 position, float heading)
     {
         _motion = motion;
         Index = index;
@@ -123,9 +123,9 @@ public sealed class FishState
 
     /// <summary>
     /// True when this cycle's move was rejected (by the motion world, or by the response through
-    /// <see cref="Stepper.RejectMove"/>): the fish is back where it started the cycle and holds still
+    /// <see cref="MotionWorld.RejectMove"/>): the fish is back where it started the cycle and holds still
     /// (it counts as immovable in contacts) for the rest of the cycle. The motion world's
-    /// <see cref="Stepper.WasRejected"/>, read through the fish's handle.
+    /// <see cref="MotionWorld.WasRejected"/>, read through the fish's handle.
     /// </summary>
     public bool MoveRejected => _motion.WasRejected(Handle);
 

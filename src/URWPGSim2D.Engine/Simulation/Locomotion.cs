@@ -9,7 +9,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// from the decision's codes (<see cref="TailWave"/>), and the cycle's motion is set: velocity v·u along the heading and
 /// angular velocity ω. With noise on, the reference's disturbances are added to this cycle's motion
 /// (heading ±v²/500000 rad, position ±30·|ω| mm per axis, a moving ball ±1 mm per axis) so the
-/// stepper carries them like any other motion. Balls keep their velocity; their drag is applied
+/// motion world carries them like any other motion. Balls keep their velocity; their drag is applied
 /// after the cycle's travel (<see cref="BallMotion"/>).
 /// </summary>
 internal static class Locomotion

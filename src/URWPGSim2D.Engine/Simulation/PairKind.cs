@@ -1,6 +1,6 @@
 namespace URWPGSim2D.Engine.Simulation;
 
-/// <summary>The pair kinds the stepper tests (A and B index the arrays named by the kind).</summary>
+/// <summary>The pair kinds the motion world tests (A and B index the arrays named by the kind).</summary>
 public enum PairKind : byte
 {
     /// <summary>Fish A, fish B (A &lt; B).</summary>

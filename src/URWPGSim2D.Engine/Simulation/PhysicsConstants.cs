@@ -2,7 +2,7 @@ namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
 /// The reference's physical constants and the server's response limits (mm, s, reference mass
-/// units). The stepper's own tolerances (contact slop, time-of-impact tolerance) are the
+/// units). The motion world's own tolerances (contact slop, time-of-impact tolerance) are the
 /// library's <c>MotionTolerances</c>, which the response uses too.
 /// </summary>
 internal static class PhysicsConstants

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Engine.Simulation;
 /// <summary>
 /// The pool and everything in it: the field (walls, goal blocks), fish, balls and obstacles, plus
 /// the match clock (the score is the match's rules'). The bodies themselves live in the motion world (<see cref="Motion"/>,
-/// the collision library's <see cref="Stepper"/>), each tagged with what it is and its index here
+/// the collision library's <see cref="MotionWorld"/>), each tagged with what it is and its index here
 /// (<see cref="BodyTag"/>); the fish and balls here hold the game state and their body's handle.
 /// Arrays are fixed for the whole match; iteration is always by index.
 /// </summary>
@@ -17,7 +17,7 @@ public sealed class World
     private readonly BodyId[] _staticHandles;
 
     /// <summary>Creates the world over a motion world that already holds its fish and balls (each tagged by its state); adds the static bodies and the walls, tagged likewise.</summary>
-    public World(Stepper motion, Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
+    public World(MotionWorld motion, Field field, FishState[] fish, BallState[] balls, ObstacleView[] obstacles, StaticBody[] statics)
     {
         Motion = motion;
         Field = field;
@@ -44,7 +44,7 @@ public sealed class World
     }
 
     /// <summary>The motion world: every body's pose, joints, shape and in-cycle motion.</summary>
-    public Stepper Motion { get; }
+    public MotionWorld Motion { get; }
 
     /// <summary>The walls' handle in the motion world.</summary>
     public BodyId WallsHandle { get; }

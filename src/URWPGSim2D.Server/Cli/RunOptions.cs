@@ -47,7 +47,7 @@ internal sealed class RunOptions
 
     /// <summary>
     /// <c>--threads P</c>: with <c>--batch</c>, matches played at once (default: every core); for a
-    /// single match, threads its stepper spreads each cycle's islands over (default 1).
+    /// single match, threads its motion world spreads each cycle's islands over (default 1).
     /// </summary>
     public int? Threads { get; private set; }
 

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// The bounds a stepper fish gives without rebuilding its model hold every leaf vertex of the
+/// The bounds a motion world fish gives without rebuilding its model hold every leaf vertex of the
 /// model rebuilt at its pose: after a joint change (body circle carried with the body, tail
 /// skeleton circle) and after a rigid move (the model's circles carried by the frame), over random poses.
 /// </summary>

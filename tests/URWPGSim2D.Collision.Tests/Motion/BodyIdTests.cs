@@ -5,14 +5,14 @@ public sealed class BodyIdTests
     [Fact]
     public void IdsNumberTheBodiesInTheOrderAddedAndTellTheStaticOnes()
     {
-        var stepper = new Stepper();
+        var world = new MotionWorld();
         BodyId[] ids =
         [
-            stepper.AddStatic(new Circle(new Vector2(500f, 0f), 40f)),
-            stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f)),
-            stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false)),
-            stepper.AddCircle(58f, new Vector2(0f, 300f)),
-            stepper.AddPolygon(new ConvexPolygon([new Vector2(-20f, -10f), new Vector2(20f, -10f), new Vector2(0f, 15f)]), new Vector2(0f, -300f), 0.5f),
+            world.AddStatic(new Circle(new Vector2(500f, 0f), 40f)),
+            world.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f)),
+            world.AddWalls(new Field(3000f, 2000f, goalBlocks: false)),
+            world.AddCircle(58f, new Vector2(0f, 300f)),
+            world.AddPolygon(new ConvexPolygon([new Vector2(-20f, -10f), new Vector2(20f, -10f), new Vector2(0f, 15f)]), new Vector2(0f, -300f), 0.5f),
         ];
         bool[] isStatic = [true, false, true, false, false];
         BodyKind[] kinds = [BodyKind.Static, BodyKind.Fish, BodyKind.Walls, BodyKind.Circle, BodyKind.Polygon];
@@ -21,7 +21,7 @@ public sealed class BodyIdTests
             Assert.Equal(i, ids[i].Index);
             Assert.Equal(isStatic[i], ids[i].IsStatic);
             Assert.False(ids[i].IsNull);
-            Assert.Equal(kinds[i], stepper.KindOf(ids[i]));
+            Assert.Equal(kinds[i], world.KindOf(ids[i]));
             Assert.Equal((isStatic[i] ? "static body " : "body ") + i, ids[i].ToString());
         }
 
@@ -29,10 +29,10 @@ public sealed class BodyIdTests
     }
 
     [Fact]
-    public void AnIdEqualsItselfOnlyNotTheSameIndexOfAnotherStepper()
+    public void AnIdEqualsItselfOnlyNotTheSameIndexOfAnotherMotionWorld()
     {
-        var one = new Stepper();
-        var two = new Stepper();
+        var one = new MotionWorld();
+        var two = new MotionWorld();
         BodyId a = one.AddCircle(10f, Vector2.Zero);
         BodyId b = two.AddCircle(10f, Vector2.Zero);
         BodyId again = a;
@@ -54,70 +54,70 @@ public sealed class BodyIdTests
         Assert.False(none.IsStatic);
         Assert.Equal("no body", none.ToString());
 
-        var stepper = new Stepper();
-        BodyId first = stepper.AddCircle(10f, Vector2.Zero);
+        var world = new MotionWorld();
+        BodyId first = world.AddCircle(10f, Vector2.Zero);
         Assert.NotEqual(first, none);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.PositionOf(none)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => world.PositionOf(none)).ParamName);
     }
 
     [Fact]
-    public void AnIdOfAnotherStepperIsRefusedByEveryMethodThatTakesABody()
+    public void AnIdOfAnotherMotionWorldIsRefusedByEveryMethodThatTakesABody()
     {
-        // The same index in another stepper names a body there, not here: every method refuses it
-        // instead of answering for this stepper's body 0.
-        var stepper = new Stepper();
-        BodyId mine = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
-        var other = new Stepper();
+        // The same index in another motion world names a body there, not here: every method refuses it
+        // instead of answering for this motion world's body 0.
+        var world = new MotionWorld();
+        BodyId mine = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        var other = new MotionWorld();
         BodyId theirs = other.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
         var contacts = new FishContact[FishCollision.MaxContactsWithFish];
         Action[] calls =
         [
-            () => stepper.KindOf(theirs),
-            () => stepper.PositionOf(theirs),
-            () => stepper.HeadingOf(theirs),
-            () => stepper.VelocityOf(theirs),
-            () => stepper.AngularVelocityOf(theirs),
-            () => stepper.DriftOf(theirs),
-            () => stepper.AngularDriftOf(theirs),
-            () => stepper.FishModelOf(theirs),
-            () => stepper.FishPoseOf(theirs),
-            () => stepper.SetPose(theirs, Vector2.Zero, 0f),
-            () => stepper.SetJoints(theirs, 0f, 0f, 0f),
-            () => stepper.SetVelocity(theirs, Vector2.One),
-            () => stepper.SetDrift(theirs, Vector2.One),
-            () => stepper.SetCollides(theirs, false),
-            () => stepper.Involve(theirs),
-            () => stepper.WasRejected(theirs),
-            () => stepper.TagOf(theirs),
-            () => stepper.SetTag(theirs, 1),
-            () => stepper.CollidesOf(theirs),
-            () => stepper.Detect(theirs, mine),
-            () => stepper.Detect(mine, theirs),
-            () => stepper.DetectLeaves(theirs, mine, contacts),
-            () => stepper.DetectLeaves(mine, theirs, contacts),
-            () => stepper.RejectMove(theirs),
+            () => world.KindOf(theirs),
+            () => world.PositionOf(theirs),
+            () => world.HeadingOf(theirs),
+            () => world.VelocityOf(theirs),
+            () => world.AngularVelocityOf(theirs),
+            () => world.DriftOf(theirs),
+            () => world.AngularDriftOf(theirs),
+            () => world.FishModelOf(theirs),
+            () => world.FishPoseOf(theirs),
+            () => world.SetPose(theirs, Vector2.Zero, 0f),
+            () => world.SetJoints(theirs, 0f, 0f, 0f),
+            () => world.SetVelocity(theirs, Vector2.One),
+            () => world.SetDrift(theirs, Vector2.One),
+            () => world.SetCollides(theirs, false),
+            () => world.Involve(theirs),
+            () => world.WasRejected(theirs),
+            () => world.TagOf(theirs),
+            () => world.SetTag(theirs, 1),
+            () => world.CollidesOf(theirs),
+            () => world.Detect(theirs, mine),
+            () => world.Detect(mine, theirs),
+            () => world.DetectLeaves(theirs, mine, contacts),
+            () => world.DetectLeaves(mine, theirs, contacts),
+            () => world.RejectMove(theirs),
         ];
         foreach (Action call in calls)
         {
             var e = Assert.Throws<ArgumentException>(call);
-            Assert.Contains("not a body of this stepper", e.Message, StringComparison.Ordinal);
+            Assert.Contains("not a body of this motion world", e.Message, StringComparison.Ordinal);
         }
 
-        Assert.Equal(0, stepper.TagOf(mine));
-        Assert.True(stepper.CollidesOf(mine));
+        Assert.Equal(0, world.TagOf(mine));
+        Assert.True(world.CollidesOf(mine));
     }
 
     [Fact]
     public void ContactsAndRejectedMovesCarryTheIdsTheAddMethodsReturned()
     {
-        var stepper = new Stepper();
-        BodyId walls = stepper.AddWalls(new Field(1000f, 800f, goalBlocks: false));
-        BodyId block = stepper.AddStatic(new Aabb(new Vector2(-50f, -50f), new Vector2(50f, 50f)));
+        var world = new MotionWorld();
+        BodyId walls = world.AddWalls(new Field(1000f, 800f, goalBlocks: false));
+        BodyId block = world.AddStatic(new Aabb(new Vector2(-50f, -50f), new Vector2(50f, 50f)));
         var balls = new List<BodyId>();
         for (int i = 0; i < 6; i++)
         {
-            BodyId ball = stepper.AddCircle(40f, new Vector2(-350f + (i * 140f), 250f - (i % 2 * 500f)));
-            stepper.SetVelocity(ball, new Vector2(i % 2 == 0 ? 4000f : -3000f, i % 3 == 0 ? -2500f : 2500f));
+            BodyId ball = world.AddCircle(40f, new Vector2(-350f + (i * 140f), 250f - (i % 2 * 500f)));
+            world.SetVelocity(ball, new Vector2(i % 2 == 0 ? 4000f : -3000f, i % 3 == 0 ? -2500f : 2500f));
             balls.Add(ball);
         }
 
@@ -125,7 +125,7 @@ public sealed class BodyIdTests
         var handler = new RecordingHandler(restitution: 1f);
         for (int step = 0; step < 10; step++)
         {
-            stepper.Step(0.1f, handler);
+            world.Step(0.1f, handler);
         }
 
         Assert.True(handler.Contacts.Count > 5, $"only {handler.Contacts.Count} contacts: the scene does not test the ids");

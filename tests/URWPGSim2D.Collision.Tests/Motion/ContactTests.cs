@@ -6,12 +6,12 @@ public sealed class ContactTests
     [Fact]
     public void TwoBallsOverlappingAlongADiagonal()
     {
-        var stepper = new Stepper();
-        BodyId a = stepper.AddCircle(50f, new Vector2(0f, 0f));
-        BodyId b = stepper.AddCircle(50f, new Vector2(60f, 80f)); // centres 100 mm apart: touching
-        stepper.SetPose(a, new Vector2(6f, 8f), 0f);          // now 90 mm apart: 10 mm deep along (−0.6, −0.8)
+        var world = new MotionWorld();
+        BodyId a = world.AddCircle(50f, new Vector2(0f, 0f));
+        BodyId b = world.AddCircle(50f, new Vector2(60f, 80f)); // centres 100 mm apart: touching
+        world.SetPose(a, new Vector2(6f, 8f), 0f);          // now 90 mm apart: 10 mm deep along (−0.6, −0.8)
 
-        Contact c = stepper.Detect(a, b);
+        Contact c = world.Detect(a, b);
 
         Assert.True(c.Intersect);
         Assert.Equal(10f, c.Depth, 1e-3f);
@@ -27,15 +27,15 @@ public sealed class ContactTests
     public void ThePlaneViewIsTheResultsAndTheDepthItsTranslationsLength()
     {
         var random = new Random(5);
-        var stepper = new Stepper();
-        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
-        BodyId ball = stepper.AddCircle(58f, new Vector2(1000f, 0f));
+        var world = new MotionWorld();
+        BodyId fish = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f));
+        BodyId ball = world.AddCircle(58f, new Vector2(1000f, 0f));
         int hits = 0;
         for (int i = 0; i < 2_000; i++)
         {
-            stepper.SetPose(fish, Vector2.Zero, (float)((random.NextDouble() * 6.2) - 3.1));
-            stepper.SetPose(ball, new Vector2((float)((random.NextDouble() * 800) - 400), (float)((random.NextDouble() * 300) - 150)), 0f);
-            Contact c = stepper.Detect(fish, ball);
+            world.SetPose(fish, Vector2.Zero, (float)((random.NextDouble() * 6.2) - 3.1));
+            world.SetPose(ball, new Vector2((float)((random.NextDouble() * 800) - 400), (float)((random.NextDouble() * 300) - 150)), 0f);
+            Contact c = world.Detect(fish, ball);
             CollisionDetectionResult r = c.Result;
             if (!c.Intersect)
             {

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// A stepper body tested at its current pose without rebuilding (a fish's partner carried into
+/// A motion world body tested at its current pose without rebuilding (a fish's partner carried into
 /// the frame of a model left at an older pose, a polygon's outline posed in place) finds the same
 /// contact as the library's plain tests on shapes built at the pose: fish against fish, ball,
 /// moving polygon, round and rectangle obstacles, goal blocks, segments, 8-DOPs and walls; polygon

@@ -14,7 +14,7 @@ internal sealed class RecordingHandler(float restitution = 0f, float leaveOverla
 
     public bool Record { get; set; } = true;
 
-    public void OnContact(Stepper stepper, in Contact contact)
+    public void OnContact(MotionWorld world, in Contact contact)
     {
         if (Record)
         {
@@ -22,32 +22,32 @@ internal sealed class RecordingHandler(float restitution = 0f, float leaveOverla
         }
 
         BodyId a = contact.BodyA, b = contact.BodyB;
-        bool bMoves = stepper.KindOf(b) <= BodyKind.Fish;
+        bool bMoves = world.KindOf(b) <= BodyKind.Fish;
         Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
         Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
         float depth = mtv.Length();
         Vector2 push = leaveOverlap <= 0f ? mtv + (n * 0.01f) : depth > leaveOverlap ? mtv * ((depth - leaveOverlap) / depth) : Vector2.Zero;
         float share = bMoves ? 0.5f : 1f;
-        stepper.SetPose(a, stepper.PositionOf(a) + (push * share), stepper.HeadingOf(a));
+        world.SetPose(a, world.PositionOf(a) + (push * share), world.HeadingOf(a));
         if (bMoves)
         {
-            stepper.SetPose(b, stepper.PositionOf(b) - (push * share), stepper.HeadingOf(b));
+            world.SetPose(b, world.PositionOf(b) - (push * share), world.HeadingOf(b));
         }
 
-        Vector2 va = stepper.VelocityOf(a), vb = bMoves ? stepper.VelocityOf(b) : Vector2.Zero;
+        Vector2 va = world.VelocityOf(a), vb = bMoves ? world.VelocityOf(b) : Vector2.Zero;
         float vn = Vector2.Dot(va - vb, n);
         if (vn < 0f)
         {
             Vector2 dv = -(1f + restitution) * vn * n;
-            stepper.SetVelocity(a, va + (dv * share), stepper.AngularVelocityOf(a));
+            world.SetVelocity(a, va + (dv * share), world.AngularVelocityOf(a));
             if (bMoves)
             {
-                stepper.SetVelocity(b, vb - (dv * share), stepper.AngularVelocityOf(b));
+                world.SetVelocity(b, vb - (dv * share), world.AngularVelocityOf(b));
             }
         }
     }
 
-    public void OnMoveRejected(Stepper stepper, BodyId body)
+    public void OnMoveRejected(MotionWorld world, BodyId body)
     {
         if (Record)
         {

@@ -1,7 +1,7 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// The stepper's memo of exact tests answers a repeated test exactly as the test itself does, and
+/// The motion world's memo of exact tests answers a repeated test exactly as the test itself does, and
 /// never answers from a stale test: over random poses of fish, balls, a moving polygon, static
 /// bodies and the walls, each pair is asked again unchanged (answered from the memo), after a move
 /// of either body, after a fish's joints change, and after other pairs pushed it out of its entry.

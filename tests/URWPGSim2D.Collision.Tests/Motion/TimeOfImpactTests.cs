@@ -1,6 +1,6 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
-/// <summary>The pair-level time of impact (the stepper's detection on two bodies) against analytic times of first contact.</summary>
+/// <summary>The pair-level time of impact (the motion world's detection on two bodies) against analytic times of first contact.</summary>
 public sealed class TimeOfImpactTests
 {
     private const float Tolerance = MotionTolerances.TimeOfImpactTolerance;
@@ -194,7 +194,7 @@ public sealed class TimeOfImpactTests
     // Whether the fish, moved on at 500 mm/s for the time, overlaps a ball at the origin (a world tested in place, no motion).
     private static bool Overlaps(FishPose start, float seconds, float radius)
     {
-        var world = new Stepper();
+        var world = new MotionWorld();
         BodyId fish = world.AddFish(FishSize.Default, start.Translated(new Vector2(500f * seconds, 0f)));
         BodyId ball = world.AddCircle(radius, Vector2.Zero);
         return world.Detect(fish, ball).Depth > MotionTolerances.ContactSlop;

@@ -4,7 +4,7 @@ using URWPGSim2D.Server.Tests.Trace;
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>
-/// The stepper finds its candidate pairs through a broad phase, at the start of each cycle and for
+/// The motion world finds its candidate pairs through a broad phase, at the start of each cycle and for
 /// every body re-planned after a contact. Brute force (every pair of boxes) is the reference: the
 /// grid, sweep and prune and the tree must give byte-identical traces over random scenarios, so
 /// they found exactly the same pairs in the same order.

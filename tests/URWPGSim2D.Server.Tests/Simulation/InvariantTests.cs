@@ -35,7 +35,7 @@ public sealed class InvariantTests
             match.Step();
             float deepest = OverlapAudit.DeepestOverlap(match.World, out string where);
             Assert.True(deepest <= 1f, $"scenario {index}, cycle {k}: {where} overlaps {deepest} mm\n{json}");
-            Assert.True(match.Stepper.LeftoverOverlap <= 1f);
+            Assert.True(match.Motion.LeftoverOverlap <= 1f);
         }
     }
 
@@ -46,12 +46,12 @@ public sealed class InvariantTests
     public void TheDefaultMatchKeepsItsJamsApart(ulong seed, int cycles)
     {
         // Chase-ball makes every fish fight for the same balls: balls squeezed between fish, fish
-        // against goal blocks. The stepper's own measure every cycle, the audit every 25th.
+        // against goal blocks. The motion world's own measure every cycle, the audit every 25th.
         var match = MatchBuilder.Build(DefaultScenario.Load(), seed: seed);
         for (int k = 1; k <= cycles; k++)
         {
             match.Step();
-            Assert.True(match.Stepper.LeftoverOverlap <= 1f, $"seed {seed}, cycle {k}: {match.Stepper.LeftoverOverlap} mm left");
+            Assert.True(match.Motion.LeftoverOverlap <= 1f, $"seed {seed}, cycle {k}: {match.Motion.LeftoverOverlap} mm left");
             if (k % 25 == 0)
             {
                 float deepest = OverlapAudit.DeepestOverlap(match.World, out string where);
@@ -69,7 +69,7 @@ public sealed class InvariantTests
         for (int k = 1; k <= 60; k++)
         {
             match.Step();
-            Assert.True(match.Stepper.LeftoverOverlap <= 1f, $"cycle {k}: {match.Stepper.LeftoverOverlap} mm left");
+            Assert.True(match.Motion.LeftoverOverlap <= 1f, $"cycle {k}: {match.Motion.LeftoverOverlap} mm left");
             if (k % 15 == 0)
             {
                 float deepest = OverlapAudit.DeepestOverlap(match.World, out string where);

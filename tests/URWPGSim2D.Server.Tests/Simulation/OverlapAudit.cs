@@ -5,7 +5,7 @@ namespace URWPGSim2D.Server.Tests.Simulation;
 /// <summary>
 /// Independent check of a world's state by brute force: every leaf polygon of every fish and every
 /// ball against every other body and the pool's bounds, with the library's plain shape tests (no
-/// bounding volumes, no stepper code).
+/// bounding volumes, no motion world code).
 /// </summary>
 internal static class OverlapAudit
 {

@@ -1,6 +1,6 @@
 namespace URWPGSim2D.Server.Tests.Simulation;
 
-/// <summary>The stepper finds the analytic time of first contact and resolves the contact there.</summary>
+/// <summary>The motion world finds the analytic time of first contact and resolves the contact there.</summary>
 public sealed class TimeOfFirstContactTests
 {
     [Theory]

@@ -67,6 +67,6 @@ public sealed class TunnellingTests
         Vector2 u = fish.Forward;
         Vector2 ball = match.BallAt(0);
         Assert.True((u.X * (ball.Y - middle.Y)) - (u.Y * (ball.X - middle.X)) < 0f, $"ball at {ball}, tail at {middle}, heading {fish.Heading}");
-        Assert.True(match.Stepper.LeftoverOverlap <= 1f);
+        Assert.True(match.Motion.LeftoverOverlap <= 1f);
     }
 }

@@ -14,7 +14,7 @@ namespace URWPGSim2D.Server.Tests.Trace;
 /// new digest; a deliberate change of the physics or of the trace format updates the table.
 /// A few whole matches of 6,000 cycles are pinned too (a change of, say, the order of two
 /// simultaneous contacts can take thousands of cycles to show). Every case, and one whole match, is
-/// played again with the stepper's islands spread over two threads: the same bytes.
+/// played again with the motion world's islands spread over two threads: the same bytes.
 /// </summary>
 public sealed class TraceDigestTests
 {
@@ -172,7 +172,7 @@ public sealed class TraceDigestTests
         Match match = new MatchSettings(scenario, cycles, seed, Threads: threads).Build();
         if (threads > 1)
         {
-            match.Stepper.MinimumMoversForThreads = 2;
+            match.Motion.MinimumMoversForThreads = 2;
         }
 
         using var loop = new MatchLoop(match, cycles, hash);

@@ -1,20 +1,20 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// Islands and <see cref="Stepper.Threads"/>: the islands agree with brute force (two movers whose
+/// Islands and <see cref="MotionWorld.Threads"/>: the islands agree with brute force (two movers whose
 /// swept circles meet are in one island), and a crowd stepped on 1, 2, 3 or 4 threads ends every
 /// step with the same poses, velocities, contacts (in order) and counts, bit for bit.
 /// </summary>
-public sealed class StepperIslandTests
+public sealed class MotionWorldIslandTests
 {
     private const float Seconds = 0.1f;
 
     [Fact]
     public void MoversWhoseSweptCirclesMeetShareAnIsland()
     {
-        var stepper = StepperAllocationTests.World(600);
-        stepper.Threads = 2; // islands are then found at the start of every step (one thread finds them only at a first hit)
-        stepper.MinimumMoversForThreads = 64;
+        var world = MotionWorldAllocationTests.World(600);
+        world.Threads = 2; // islands are then found at the start of every step (one thread finds them only at a first hit)
+        world.MinimumMoversForThreads = 64;
         var handler = new RecordingHandler(0.3f) { Record = false };
         for (int step = 0; step < 4; step++)
         {
@@ -22,22 +22,22 @@ public sealed class StepperIslandTests
             // the definition (bounding circle grown by the most any of its points moves in the step).
             var movers = new List<BodyId>();
             var circles = new List<(Vector2 Center, float Radius)>();
-            for (int id = 0; id < stepper.BodyCount; id++)
+            for (int id = 0; id < world.BodyCount; id++)
             {
-                if (stepper.KindOf(stepper.IdAt(id)) > BodyKind.Fish)
+                if (world.KindOf(world.IdAt(id)) > BodyKind.Fish)
                 {
                     continue;
                 }
 
-                Body body = stepper.BodyAt(id);
+                Body body = world.BodyAt(id);
                 Disc bound = body.Bound();
                 float reach = body.Kind == BodyKind.Circle ? 0f : Vector2.Distance(bound.Center, body.Position) + bound.Radius;
                 float travel = (body.Velocity.Length() * Seconds) + (MathF.Abs(body.AngularVelocity) * reach * Seconds);
-                movers.Add(stepper.IdAt(id));
+                movers.Add(world.IdAt(id));
                 circles.Add((bound.Center, bound.Radius + travel));
             }
 
-            stepper.Step(Seconds, handler);
+            world.Step(Seconds, handler);
             int joined = 0;
             for (int i = 0; i < movers.Count; i++)
             {
@@ -48,14 +48,14 @@ public sealed class StepperIslandTests
                     {
                         joined++;
                         Assert.True(
-                            stepper.IslandOf(movers[i]) == stepper.IslandOf(movers[j]),
-                            $"step {step}: bodies {movers[i]} and {movers[j]} can meet but are in islands {stepper.IslandOf(movers[i])} and {stepper.IslandOf(movers[j])}");
+                            world.IslandOf(movers[i]) == world.IslandOf(movers[j]),
+                            $"step {step}: bodies {movers[i]} and {movers[j]} can meet but are in islands {world.IslandOf(movers[i])} and {world.IslandOf(movers[j])}");
                     }
                 }
             }
 
             Assert.True(joined > 10, $"step {step}: only {joined} pairs can meet: the scene does not test islands");
-            Assert.InRange(stepper.IslandCount, 2, movers.Count - 1);
+            Assert.InRange(world.IslandCount, 2, movers.Count - 1);
         }
     }
 
@@ -64,8 +64,8 @@ public sealed class StepperIslandTests
     {
         // One thread finds the islands only when a step's first sample with a hit needs them, from
         // the pairs planned at the start of the step; two threads find them first thing. Stepped side by side.
-        var one = StepperAllocationTests.World(600);
-        var two = StepperAllocationTests.World(600);
+        var one = MotionWorldAllocationTests.World(600);
+        var two = MotionWorldAllocationTests.World(600);
         two.Threads = 2;
         two.MinimumMoversForThreads = 64;
         var handlerOne = new RecordingHandler(0.3f) { Record = false };
@@ -101,7 +101,7 @@ public sealed class StepperIslandTests
     {
         var reference = Run(1, out var referenceContacts, out int oneChunk);
         Assert.Equal(1, oneChunk);
-        Assert.True(referenceContacts.Count > 100, $"only {referenceContacts.Count} contacts: the scene does not exercise the stepper");
+        Assert.True(referenceContacts.Count > 100, $"only {referenceContacts.Count} contacts: the scene does not exercise the motion world");
         foreach (int threads in new[] { 2, 3, 4 })
         {
             var other = Run(threads, out var contacts, out int chunks);
@@ -126,32 +126,32 @@ public sealed class StepperIslandTests
     [InlineData(1025)]
     public void ThreadsOutOfRangeAreRejected(int threads)
     {
-        var stepper = new Stepper();
-        var e = Assert.Throws<ArgumentException>(() => stepper.Threads = threads);
+        var world = new MotionWorld();
+        var e = Assert.Throws<ArgumentException>(() => world.Threads = threads);
         Assert.Contains($"got {threads}", e.Message, StringComparison.Ordinal);
-        Assert.Equal(1, stepper.Threads);
+        Assert.Equal(1, world.Threads);
     }
 
     // 12 steps of a 1,000-body crowd (about 600 movers): per step the counts, per mover its exact state.
     private static List<string> Run(int threads, out List<Contact> contacts, out int chunks)
     {
-        var stepper = StepperAllocationTests.World(1_000);
-        stepper.Threads = threads;
-        stepper.MinimumMoversForThreads = 64; // below the default, so that a test-sized crowd uses the threads
+        var world = MotionWorldAllocationTests.World(1_000);
+        world.Threads = threads;
+        world.MinimumMoversForThreads = 64; // below the default, so that a test-sized crowd uses the threads
         var handler = new RecordingHandler(0.3f);
         var lines = new List<string>();
         chunks = 0;
         for (int step = 0; step < 12; step++)
         {
-            stepper.Step(Seconds, handler);
-            chunks = Math.Max(chunks, stepper.Chunks);
-            lines.Add($"step {step}: sub-steps {stepper.SubSteps}, events {stepper.Events}, rejected {stepper.RejectedMoves}, overlap {Bits(stepper.LeftoverOverlap)}");
-            for (int id = 0; id < stepper.BodyCount; id++)
+            world.Step(Seconds, handler);
+            chunks = Math.Max(chunks, world.Chunks);
+            lines.Add($"step {step}: sub-steps {world.SubSteps}, events {world.Events}, rejected {world.RejectedMoves}, overlap {Bits(world.LeftoverOverlap)}");
+            for (int id = 0; id < world.BodyCount; id++)
             {
-                if (stepper.KindOf(stepper.IdAt(id)) <= BodyKind.Fish)
+                if (world.KindOf(world.IdAt(id)) <= BodyKind.Fish)
                 {
-                    Vector2 p = stepper.PositionOf(stepper.IdAt(id)), v = stepper.VelocityOf(stepper.IdAt(id));
-                    lines.Add($"{id}: {Bits(p.X)} {Bits(p.Y)} {Bits(stepper.HeadingOf(stepper.IdAt(id)))} {Bits(v.X)} {Bits(v.Y)} {Bits(stepper.AngularVelocityOf(stepper.IdAt(id)))}");
+                    Vector2 p = world.PositionOf(world.IdAt(id)), v = world.VelocityOf(world.IdAt(id));
+                    lines.Add($"{id}: {Bits(p.X)} {Bits(p.Y)} {Bits(world.HeadingOf(world.IdAt(id)))} {Bits(v.X)} {Bits(v.Y)} {Bits(world.AngularVelocityOf(world.IdAt(id)))}");
                 }
             }
         }

@@ -5,7 +5,7 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// blocks, fish, balls, polygons and obstacles (a fifth of the bodies each), at 100, 1,000 and
 /// 10,000 bodies, balls at up to 2,000 mm/s.
 /// </summary>
-public sealed class StepperAllocationTests
+public sealed class MotionWorldAllocationTests
 {
     [Theory]
     [InlineData(100, 60, 20)]
@@ -13,11 +13,11 @@ public sealed class StepperAllocationTests
     [InlineData(10_000, 10, 4)]
     public void AStepAllocatesNothingAfterWarmUp(int bodies, int warmUp, int steps)
     {
-        var stepper = World(bodies);
+        var world = World(bodies);
         var handler = new RecordingHandler(0.3f) { Record = false };
         for (int i = 0; i < warmUp; i++)
         {
-            stepper.Step(0.1f, handler);
+            world.Step(0.1f, handler);
         }
 
         // Up to three windows of the same length: a step that allocates fails every window; a
@@ -29,11 +29,11 @@ public sealed class StepperAllocationTests
             long before = GC.GetAllocatedBytesForCurrentThread();
             for (int i = 0; i < steps; i++)
             {
-                stepper.Step(0.1f, handler);
+                world.Step(0.1f, handler);
             }
 
             windows[w] = GC.GetAllocatedBytesForCurrentThread() - before;
-            Assert.True(stepper.Events > 0, "no contact: the scene does not exercise the stepper");
+            Assert.True(world.Events > 0, "no contact: the scene does not exercise the motion world");
             if (windows[w] == 0L)
             {
                 return;
@@ -44,15 +44,15 @@ public sealed class StepperAllocationTests
     }
 
     // Bodies on a jittered lattice (no overlaps) in a pool whose area grows with their number.
-    internal static Stepper World(int bodies)
+    internal static MotionWorld World(int bodies)
     {
         float scale = MathF.Sqrt(bodies / 60f);
         var field = new Field(MathF.Max(3000f, 3000f * scale), MathF.Max(2000f, 2000f * scale));
-        var stepper = new Stepper();
-        stepper.AddWalls(field);
+        var world = new MotionWorld();
+        world.AddWalls(field);
         foreach (Aabb block in field.GoalBlocks)
         {
-            stepper.AddStatic(block);
+            world.AddStatic(block);
         }
 
         var random = new Random(bodies);
@@ -69,23 +69,23 @@ public sealed class StepperAllocationTests
             switch (i % 5)
             {
                 case 0:
-                    BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(at, heading, 0.1f, -0.1f, 0.2f));
-                    stepper.SetVelocity(fish, 300f * new Vector2(MathF.Cos(heading), MathF.Sin(heading)), 0.3f);
+                    BodyId fish = world.AddFish(FishSize.Default, new FishPose(at, heading, 0.1f, -0.1f, 0.2f));
+                    world.SetVelocity(fish, 300f * new Vector2(MathF.Cos(heading), MathF.Sin(heading)), 0.3f);
                     break;
                 case 1:
-                    BodyId polygon = stepper.AddPolygon(square, at, heading);
-                    stepper.SetVelocity(polygon, velocity * 0.2f, 1f);
+                    BodyId polygon = world.AddPolygon(square, at, heading);
+                    world.SetVelocity(polygon, velocity * 0.2f, 1f);
                     break;
                 case 2:
-                    stepper.AddStatic(new Circle(at, 25f));
+                    world.AddStatic(new Circle(at, 25f));
                     break;
                 default:
-                    BodyId ball = stepper.AddCircle(38f, at);
-                    stepper.SetVelocity(ball, velocity * 0.5f);
+                    BodyId ball = world.AddCircle(38f, at);
+                    world.SetVelocity(ball, velocity * 0.5f);
                     break;
             }
         }
 
-        return stepper;
+        return world;
     }
 }

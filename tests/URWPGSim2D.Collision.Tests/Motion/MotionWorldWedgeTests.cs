@@ -8,29 +8,29 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// there does not free it, its move is rejected (it stays where the last step ended, which was
 /// free). (Without that the bar below takes 65 events a step.)
 /// </summary>
-public sealed class StepperWedgeTests
+public sealed class MotionWorldWedgeTests
 {
     [Fact]
     public void ABarSpinningInASlotTooNarrowForItEndsEveryStepWithinTheGuarantee()
     {
         // A bar 200 × 40 mm turning at 3 rad/s between two boxes 150 mm apart: once it jams, pushing
         // one end out of one box pushes the other end into the other one, and it keeps turning.
-        var stepper = BarInSlot(out BodyId body);
+        var world = BarInSlot(out BodyId body);
         var handler = new RecordingHandler { Record = false };
         int most = 0, rejected = 0;
         for (int step = 0; step < 30; step++)
         {
-            stepper.SetVelocity(body, Vector2.Zero, 3f);
-            stepper.Step(0.1f, handler);
-            most = Math.Max(most, stepper.Events);
-            Assert.True(stepper.LeftoverOverlap <= MotionTolerances.ContactSlop, $"step {step}: {stepper.LeftoverOverlap} mm left");
-            rejected += stepper.RejectedMoves;
-            Assert.True(stepper.MeasureOverlap() <= 0.5f, $"step {step}: measured {stepper.MeasureOverlap()} mm");
+            world.SetVelocity(body, Vector2.Zero, 3f);
+            world.Step(0.1f, handler);
+            most = Math.Max(most, world.Events);
+            Assert.True(world.LeftoverOverlap <= MotionTolerances.ContactSlop, $"step {step}: {world.LeftoverOverlap} mm left");
+            rejected += world.RejectedMoves;
+            Assert.True(world.MeasureOverlap() <= 0.5f, $"step {step}: measured {world.MeasureOverlap()} mm");
         }
 
         // Jammed (it turned from π/2 until both ends met the boxes, about 0.6 rad), and without the
         // deferral it would take the 64 events a body may have before contacts are handled where found.
-        Assert.InRange(stepper.HeadingOf(body), 2.0f, 2.3f);
+        Assert.InRange(world.HeadingOf(body), 2.0f, 2.3f);
         Assert.True(most <= new WedgePolicy().EventsBeforeDeferring + 2, $"{most} events in one step");
 
         // A jammed step whose overlap settling cannot remove goes back to where the last one ended.
@@ -38,14 +38,14 @@ public sealed class StepperWedgeTests
     }
 
     /// <summary>A bar 200 × 40 mm standing (heading π/2) between two boxes 150 mm apart, in a pool.</summary>
-    internal static Stepper BarInSlot(out BodyId bar)
+    internal static MotionWorld BarInSlot(out BodyId bar)
     {
-        var stepper = new Stepper();
-        stepper.AddWalls(new Field());
-        stepper.AddStatic(new Aabb(new Vector2(-400f, -300f), new Vector2(-75f, 300f)));
-        stepper.AddStatic(new Aabb(new Vector2(75f, -300f), new Vector2(400f, 300f)));
+        var world = new MotionWorld();
+        world.AddWalls(new Field());
+        world.AddStatic(new Aabb(new Vector2(-400f, -300f), new Vector2(-75f, 300f)));
+        world.AddStatic(new Aabb(new Vector2(75f, -300f), new Vector2(400f, 300f)));
         var shape = new ConvexPolygon([new Vector2(-100f, -20f), new Vector2(100f, -20f), new Vector2(100f, 20f), new Vector2(-100f, 20f)]);
-        bar = stepper.AddPolygon(shape, Vector2.Zero, MathF.PI / 2f);
-        return stepper;
+        bar = world.AddPolygon(shape, Vector2.Zero, MathF.PI / 2f);
+        return world;
     }
 }

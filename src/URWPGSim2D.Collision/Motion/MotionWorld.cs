@@ -15,7 +15,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// give the same contacts, bit for bit. After warm-up a step allocates nothing.
 /// </summary>
 /// <remarks>See docs/motion.md for the algorithm and a worked example.</remarks>
-public sealed partial class Stepper
+public sealed partial class MotionWorld
 {
     // The stages of a step, each owning its data: the candidate pairs and when each is sampled,
     // the first samples island by island, contact events (time of first contact, response,
@@ -27,17 +27,17 @@ public sealed partial class Stepper
     private readonly Settling _settling;
     private IContactHandler? _handler;
 
-    /// <summary>Creates an empty stepper.</summary>
+    /// <summary>Creates an empty motion world.</summary>
     /// <param name="broadPhase">The broad phase over the bodies' swept boxes; every kind gives the same contacts.</param>
     /// <exception cref="ArgumentException"><paramref name="broadPhase"/> is not a defined kind.</exception>
-    public Stepper(BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
+    public MotionWorld(BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid)
         : this(BroadPhaseFactory.Create(broadPhase, nameof(broadPhase)))
     {
     }
 
-    /// <summary>Creates an empty stepper over a given broad phase instance (tests: a grid of a chosen cell size).</summary>
+    /// <summary>Creates an empty motion world over a given broad phase instance (tests: a grid of a chosen cell size).</summary>
     /// <param name="broadPhase">The broad phase over the bodies' swept boxes.</param>
-    internal Stepper(IBroadPhase broadPhase)
+    internal MotionWorld(IBroadPhase broadPhase)
     {
         ArgumentNullException.ThrowIfNull(broadPhase);
         _schedule = new PairSchedule(broadPhase, _bodies);
@@ -50,7 +50,7 @@ public sealed partial class Stepper
     public double Time { get; internal set; }
 
     /// <summary>Distinct sample times of the last step.</summary>
-    public int SubSteps { get; private set; }
+    public int SubSteps => _schedule.Sampler.SubSteps;
 
     /// <summary>Contact events (times of first contact) of the last step.</summary>
     public int Events => _events.Count;
@@ -59,7 +59,7 @@ public sealed partial class Stepper
     public int RejectedMoves => _settling.RejectedMoves;
 
     /// <summary>Deepest overlap of any pair (walls included) at the end of the last step, mm.</summary>
-    public float LeftoverOverlap { get; private set; }
+    public float LeftoverOverlap => _settling.LeftoverOverlap;
 
     /// <summary>
     /// Moves every body through one step of <paramref name="seconds"/>, reporting each contact to
@@ -86,10 +86,9 @@ public sealed partial class Stepper
             }
         }
 
-        SubSteps = sampler.SampledTicks();
+        sampler.EndStep();
         MoveAllTo(1.0);
-        float deepest = MathF.Max(sampler.DeepestAtEnd, _settling.SettleTouched());
-        LeftoverOverlap = _settling.RejectOverlapping(deepest);
+        _settling.EndStep(sampler.DeepestAtEnd);
         End();
     }
 
@@ -113,7 +112,7 @@ public sealed partial class Stepper
         _handler = handler;
         _stepping = true;
         Time = 0.0;
-        LeftoverOverlap = _settling.SettleAll();
+        _settling.SettleAll();
         _stepping = false;
         foreach (Body body in _schedule.Planner.MoverBodies)
         {
@@ -135,7 +134,7 @@ public sealed partial class Stepper
     /// Rejects a moving body's move in the current step, from a handler (a response that finds the
     /// body wedged): it goes back to where it began the step (its pose and joints at the end of the
     /// previous step, or where it was last placed between steps), at rest (own velocity and drift
-    /// zero), and <see cref="IContactHandler.OnMoveRejected"/> is called, as for a move the stepper
+    /// zero), and <see cref="IContactHandler.OnMoveRejected"/> is called, as for a move the motion world
     /// rejects itself. While <see cref="Settle"/> runs after a step, the move rejected is that
     /// step's. The body stays there for the rest of the step unless moved again.
     /// </summary>
@@ -221,7 +220,7 @@ public sealed partial class Stepper
     /// Threads a step may use (1 by default): the islands of bodies that cannot meet within the step
     /// are sampled on up to this many threads up to their first contact. The contacts, poses and
     /// counts are the same whatever the number; a world of fewer than 2,048 moving bodies uses the
-    /// calling thread alone. Threads are created once, on first need, and shared by all steppers.
+    /// calling thread alone. Threads are created once, on first need, and shared by all motion worlds.
     /// </summary>
     /// <exception cref="ArgumentException">The value is below 1 or above 1024, or a step is running.</exception>
     public int Threads
@@ -246,7 +245,7 @@ public sealed partial class Stepper
     /// <summary>Chunks of islands the last step ran at once (1: the calling thread alone).</summary>
     public int Chunks => _islands.Chunks;
 
-    /// <summary>Bytes the island workers' threads allocated while they ran this stepper's chunks (tests).</summary>
+    /// <summary>Bytes the island workers' threads allocated while they ran this motion world's chunks (tests).</summary>
     internal long WorkerAllocatedBytes => _islands.WorkerAllocatedBytes;
 
     /// <summary>Number of islands of the last step, or −1 when it did not need them (one thread and no hit before the event loop; tests).</summary>
@@ -275,7 +274,6 @@ public sealed partial class Stepper
         ArgumentNullException.ThrowIfNull(handler);
         EnsureLoaded();
         _handler = handler;
-        SubSteps = 0;
         _events.BeginStep();
         _settling.BeginStep();
         Time = 0.0;

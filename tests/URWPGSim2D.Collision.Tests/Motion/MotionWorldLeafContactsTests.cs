@@ -1,22 +1,22 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// <see cref="Stepper.DetectLeaves"/>: every leaf contact of a fish with another body, as
+/// <see cref="MotionWorld.DetectLeaves"/>: every leaf contact of a fish with another body, as
 /// <see cref="FishCollision.DetectAll(FishModel, FishModel, Span{FishContact})"/> gives them for
 /// models built fresh at the two poses, without touching the world's own models or allocating.
 /// </summary>
-public sealed class StepperLeafContactsTests
+public sealed class MotionWorldLeafContactsTests
 {
     private static readonly FishSize Small = new(120f, 35f, 22f, 66f, 50f, 41f);
 
     [Fact]
     public void TheContactsAreThoseOfFreshModelsAtThePosesNow()
     {
-        var stepper = new Stepper();
-        BodyId big = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
-        BodyId small = stepper.AddFish(Small, new FishPose(new Vector2(100f, 0f), 0f, 0f, 0f, 0f));
-        BodyId other = stepper.AddFish(FishSize.Default, new FishPose(new Vector2(-100f, 0f), 0f, 0f, 0f, 0f));
-        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 100f));
+        var world = new MotionWorld();
+        BodyId big = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        BodyId small = world.AddFish(Small, new FishPose(new Vector2(100f, 0f), 0f, 0f, 0f, 0f));
+        BodyId other = world.AddFish(FishSize.Default, new FishPose(new Vector2(-100f, 0f), 0f, 0f, 0f, 0f));
+        BodyId ball = world.AddCircle(58f, new Vector2(0f, 100f));
         Shape[] shapes =
         [
             new Circle(new Vector2(60f, -40f), 45f),
@@ -28,7 +28,7 @@ public sealed class StepperLeafContactsTests
         var statics = new List<BodyId>();
         foreach (Shape shape in shapes)
         {
-            statics.Add(stepper.AddStatic(shape));
+            statics.Add(world.AddStatic(shape));
         }
 
         var random = new Random(40);
@@ -39,20 +39,20 @@ public sealed class StepperLeafContactsTests
         {
             foreach (BodyId f in (BodyId[])[big, small, other])
             {
-                stepper.SetPose(f, new Vector2(Next(random, 150f), Next(random, 150f)), Next(random, 3f));
-                stepper.SetJoints(f, Next(random, 0.5f), Next(random, 0.5f), Next(random, 0.5f));
+                world.SetPose(f, new Vector2(Next(random, 150f), Next(random, 150f)), Next(random, 3f));
+                world.SetJoints(f, Next(random, 0.5f), Next(random, 0.5f), Next(random, 0.5f));
             }
 
-            stepper.SetPose(ball, new Vector2(Next(random, 150f), Next(random, 150f)), 0f);
+            world.SetPose(ball, new Vector2(Next(random, 150f), Next(random, 150f)), 0f);
             BodyId fish = trial % 2 == 0 ? big : small;
-            FishModel a = new(fish == small ? Small : FishSize.Default, stepper.FishPoseOf(fish));
+            FishModel a = new(fish == small ? Small : FishSize.Default, world.FishPoseOf(fish));
             foreach (BodyId partner in (BodyId[])[fish == big ? small : big, other, ball, .. statics])
             {
-                int n = stepper.DetectLeaves(fish, partner, got);
-                int expected = stepper.KindOf(partner) switch
+                int n = world.DetectLeaves(fish, partner, got);
+                int expected = world.KindOf(partner) switch
                 {
-                    BodyKind.Fish => FishCollision.DetectAll(a, new FishModel(partner == small ? Small : FishSize.Default, stepper.FishPoseOf(partner)), want),
-                    BodyKind.Circle => FishCollision.DetectAll(a, new Circle(stepper.PositionOf(partner), 58f), want),
+                    BodyKind.Fish => FishCollision.DetectAll(a, new FishModel(partner == small ? Small : FishSize.Default, world.FishPoseOf(partner)), want),
+                    BodyKind.Circle => FishCollision.DetectAll(a, new Circle(world.PositionOf(partner), 58f), want),
                     _ => Static(a, shapes[statics.IndexOf(partner)], want),
                 };
                 Assert.Equal(expected, n);
@@ -83,19 +83,19 @@ public sealed class StepperLeafContactsTests
     [Fact]
     public void AfterWarmUpTheQueryAllocatesNothing()
     {
-        var stepper = new Stepper();
-        BodyId a = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0.2f, 0f, -0.2f));
-        BodyId b = stepper.AddFish(Small, new FishPose(new Vector2(150f, 40f), 1f, 0f, 0.1f, 0f));
-        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
+        var world = new MotionWorld();
+        BodyId a = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0.2f, 0f, -0.2f));
+        BodyId b = world.AddFish(Small, new FishPose(new Vector2(150f, 40f), 1f, 0f, 0.1f, 0f));
+        BodyId ball = world.AddCircle(58f, new Vector2(0f, 60f));
         var contacts = new FishContact[FishCollision.MaxContactsWithFish];
-        stepper.DetectLeaves(a, b, contacts);
-        stepper.DetectLeaves(b, ball, contacts);
+        world.DetectLeaves(a, b, contacts);
+        world.DetectLeaves(b, ball, contacts);
         long before = GC.GetAllocatedBytesForCurrentThread();
         for (int i = 0; i < 100; i++)
         {
-            stepper.DetectLeaves(a, b, contacts);
-            stepper.DetectLeaves(b, a, contacts);
-            stepper.DetectLeaves(a, ball, contacts);
+            world.DetectLeaves(a, b, contacts);
+            world.DetectLeaves(b, a, contacts);
+            world.DetectLeaves(a, ball, contacts);
         }
 
         Assert.Equal(0L, GC.GetAllocatedBytesForCurrentThread() - before);
@@ -104,48 +104,48 @@ public sealed class StepperLeafContactsTests
     [Fact]
     public void WhatIsNotAFishOrHasNoShapeIsRefusedByName()
     {
-        var stepper = new Stepper();
-        BodyId fish = stepper.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
-        BodyId ball = stepper.AddCircle(58f, new Vector2(0f, 60f));
-        BodyId walls = stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        var world = new MotionWorld();
+        BodyId fish = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        BodyId ball = world.AddCircle(58f, new Vector2(0f, 60f));
+        BodyId walls = world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         var contacts = new FishContact[FishCollision.MaxContactsWithFish];
-        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(ball, fish, contacts)).ParamName);
-        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(default, fish, contacts)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, walls, contacts)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, fish, contacts)).ParamName);
-        Assert.Equal("body", Assert.Throws<ArgumentException>(() => stepper.DetectLeaves(fish, new Stepper().AddCircle(58f, Vector2.Zero), contacts)).ParamName);
+        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => world.DetectLeaves(ball, fish, contacts)).ParamName);
+        Assert.Equal("fish", Assert.Throws<ArgumentException>(() => world.DetectLeaves(default, fish, contacts)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => world.DetectLeaves(fish, walls, contacts)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => world.DetectLeaves(fish, fish, contacts)).ParamName);
+        Assert.Equal("body", Assert.Throws<ArgumentException>(() => world.DetectLeaves(fish, new MotionWorld().AddCircle(58f, Vector2.Zero), contacts)).ParamName);
     }
 
     private static (Vector2[] Positions, int Contacts) Run(bool query)
     {
-        var stepper = new Stepper();
-        stepper.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        var world = new MotionWorld();
+        world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         var random = new Random(7);
         var ids = new List<BodyId>();
         for (int i = 0; i < 6; i++)
         {
-            BodyId f = stepper.AddFish(i % 2 == 0 ? FishSize.Default : Small, new FishPose(new Vector2(-900f + (i * 350f), (i % 3 * 300f) - 300f), i, 0.2f, -0.1f, 0.1f));
-            stepper.SetVelocity(f, new Vector2(Next(random, 2500f), Next(random, 2500f)), Next(random, 4f));
+            BodyId f = world.AddFish(i % 2 == 0 ? FishSize.Default : Small, new FishPose(new Vector2(-900f + (i * 350f), (i % 3 * 300f) - 300f), i, 0.2f, -0.1f, 0.1f));
+            world.SetVelocity(f, new Vector2(Next(random, 2500f), Next(random, 2500f)), Next(random, 4f));
             ids.Add(f);
         }
 
         for (int i = 0; i < 6; i++)
         {
-            BodyId b = stepper.AddCircle(58f, new Vector2(-800f + (i * 320f), 400f - (i % 2 * 700f)));
-            stepper.SetVelocity(b, new Vector2(Next(random, 3000f), Next(random, 3000f)));
+            BodyId b = world.AddCircle(58f, new Vector2(-800f + (i * 320f), 400f - (i % 2 * 700f)));
+            world.SetVelocity(b, new Vector2(Next(random, 3000f), Next(random, 3000f)));
             ids.Add(b);
         }
 
         var handler = new QueryingHandler(query);
         for (int step = 0; step < 20; step++)
         {
-            stepper.Step(0.1f, handler);
+            world.Step(0.1f, handler);
         }
 
         var positions = new Vector2[ids.Count];
         for (int i = 0; i < ids.Count; i++)
         {
-            positions[i] = stepper.PositionOf(ids[i]);
+            positions[i] = world.PositionOf(ids[i]);
         }
 
         return (positions, handler.Inner.Contacts.Count);
@@ -169,16 +169,16 @@ public sealed class StepperLeafContactsTests
 
         public RecordingHandler Inner { get; } = new(restitution: 0.5f);
 
-        public void OnContact(Stepper stepper, in Contact contact)
+        public void OnContact(MotionWorld world, in Contact contact)
         {
-            if (query && stepper.KindOf(contact.BodyA) == BodyKind.Fish && stepper.KindOf(contact.BodyB) != BodyKind.Walls)
+            if (query && world.KindOf(contact.BodyA) == BodyKind.Fish && world.KindOf(contact.BodyB) != BodyKind.Walls)
             {
-                stepper.DetectLeaves(contact.BodyA, contact.BodyB, _contacts);
+                world.DetectLeaves(contact.BodyA, contact.BodyB, _contacts);
             }
 
-            Inner.OnContact(stepper, contact);
+            Inner.OnContact(world, contact);
         }
 
-        public void OnMoveRejected(Stepper stepper, BodyId body) => Inner.OnMoveRejected(stepper, body);
+        public void OnMoveRejected(MotionWorld world, BodyId body) => Inner.OnMoveRejected(world, body);
     }
 }

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// now. During a step the world also keeps the bodies a response has changed since they were last
 /// committed (<see cref="ChangedBodies"/>), in the order they were first changed.
 /// </content>
-public sealed partial class Stepper
+public sealed partial class MotionWorld
 {
     private readonly List<Body> _bodies = [];
     private readonly int _world = BodyId.NextWorld();
@@ -73,7 +73,7 @@ public sealed partial class Stepper
     /// <summary>Adds the pool's four walls: every moving body must stay inside <paramref name="field"/>'s bounds (its goal blocks are added separately, as boxes).</summary>
     /// <param name="field">The pool.</param>
     /// <returns>The walls' id.</returns>
-    /// <exception cref="ArgumentException">The stepper has walls already, or a step is running.</exception>
+    /// <exception cref="ArgumentException">The motion world has walls already, or a step is running.</exception>
     public BodyId AddWalls(Field field)
     {
         ArgumentNullException.ThrowIfNull(field);
@@ -81,7 +81,7 @@ public sealed partial class Stepper
         {
             if (b.Kind == BodyKind.Walls)
             {
-                throw new ArgumentException($"the stepper has walls already ({b.Handle})", nameof(field));
+                throw new ArgumentException($"the motion world has walls already ({b.Handle})", nameof(field));
             }
         }
 
@@ -123,13 +123,13 @@ public sealed partial class Stepper
     /// <returns>The turning drift.</returns>
     public float AngularDriftOf(BodyId body) => Get(body).AngularDrift;
 
-    /// <summary>A fish's collision model at its current pose (read only: the stepper owns it).</summary>
+    /// <summary>A fish's collision model at its current pose (read only: the motion world owns it).</summary>
     /// <param name="fish">The fish's id.</param>
     /// <returns>The model.</returns>
     /// <exception cref="ArgumentException">The body is not a fish.</exception>
     public FishModel FishModelOf(BodyId fish) => Moving(fish, BodyKind.Fish, nameof(fish)).PosedModel;
 
-    /// <summary>A fish's pose now: position, heading and joint angles, as the stepper holds them.</summary>
+    /// <summary>A fish's pose now: position, heading and joint angles, as the motion world holds them.</summary>
     /// <param name="fish">The fish's id.</param>
     /// <returns>The pose a <see cref="FishModel"/> of the fish's size is laid out at to show the fish now.</returns>
     /// <exception cref="ArgumentException">The body is not a fish.</exception>
@@ -270,29 +270,29 @@ public sealed partial class Stepper
     /// <summary>
     /// The caller's tag of a body: a number the caller chooses (0 until set) to find its own record
     /// of the body from a contact (a game's kind of body and its index, say) without decoding the
-    /// body's id. The stepper never reads it.
+    /// body's id. The motion world never reads it.
     /// </summary>
     /// <param name="body">The body's id (any body: moving, static or the walls).</param>
     /// <returns>The tag.</returns>
-    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    /// <exception cref="ArgumentException">The id is not one of this motion world's bodies.</exception>
     public int TagOf(BodyId body) => Existing(body, nameof(body)).Tag;
 
     /// <summary>Sets the caller's tag of a body (see <see cref="TagOf"/>); allowed at any time, it changes nothing of the motion.</summary>
     /// <param name="body">The body's id (any body: moving, static or the walls).</param>
     /// <param name="tag">The tag.</param>
-    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    /// <exception cref="ArgumentException">The id is not one of this motion world's bodies.</exception>
     public void SetTag(BodyId body, int tag) => Existing(body, nameof(body)).Tag = tag;
 
     /// <summary>Whether a body takes part in contacts (see <see cref="SetCollides"/>).</summary>
     /// <param name="body">The body's id.</param>
-    /// <exception cref="ArgumentException">The id is not one of this stepper's bodies.</exception>
+    /// <exception cref="ArgumentException">The id is not one of this motion world's bodies.</exception>
     public bool CollidesOf(BodyId body) => Get(body).Collides;
 
     /// <summary>Tests two bodies at their current poses (for a handler that separates them step by step).</summary>
     /// <param name="bodyA">The first body (moving): the result's translation moves it.</param>
     /// <param name="bodyB">The second body.</param>
     /// <returns>The contact now, or one whose <see cref="Contact.Intersect"/> is false.</returns>
-    /// <exception cref="ArgumentException">An id is not one of this stepper's bodies, A does not move, or A and B are the same.</exception>
+    /// <exception cref="ArgumentException">An id is not one of this motion world's bodies, A does not move, or A and B are the same.</exception>
     public Contact Detect(BodyId bodyA, BodyId bodyB)
     {
         Body a = Moving(bodyA, null, nameof(bodyA));
@@ -318,7 +318,7 @@ public sealed partial class Stepper
     /// <param name="body">The other body: a fish, a circle or a static body (not the walls or a moving polygon).</param>
     /// <param name="contacts">Where to write the contacts: <see cref="FishCollision.MaxContactsWithFish"/> always suffice.</param>
     /// <returns>The number of contacts written.</returns>
-    /// <exception cref="ArgumentException">An id is not one of this stepper's bodies, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
+    /// <exception cref="ArgumentException">An id is not one of this motion world's bodies, the first is not a fish, the second is the first, the walls or a moving polygon, or <paramref name="contacts"/> is too short.</exception>
     public int DetectLeaves(BodyId fish, BodyId body, Span<FishContact> contacts)
     {
         Body a = Moving(fish, BodyKind.Fish, nameof(fish));
@@ -405,7 +405,7 @@ public sealed partial class Stepper
         {
             throw new ArgumentException(id.IsNull
                 ? "default(BodyId) names no body: use an id an Add method returned"
-                : $"{id} is not a body of this stepper (it has {_bodies.Count}; an id is valid only in the stepper that returned it)", name);
+                : $"{id} is not a body of this motion world (it has {_bodies.Count}; an id is valid only in the motion world that returned it)", name);
         }
 
         return _bodies[index];

@@ -1,55 +1,55 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// The stepper's one wedge policy (<see cref="Stepper.Wedging"/>): the corrections a response
-/// reports (<see cref="Stepper.CountCorrection"/>) are counted per body and step against the
+/// The motion world's one wedge policy (<see cref="MotionWorld.Wedging"/>): the corrections a response
+/// reports (<see cref="MotionWorld.CountCorrection"/>) are counted per body and step against the
 /// policy's allowance, the first deep one past it rejects the move; the events before a body's
 /// contacts are left to the end of the step are the policy's too.
 /// </summary>
-public sealed class StepperWedgePolicyTests
+public sealed class MotionWorldWedgePolicyTests
 {
     [Fact]
     public void TheFirstDeepCorrectionPastTheAllowanceRejectsTheMoveOnce()
     {
         // Ball a is thrown 50 mm into ball b between steps; settling reports the contact and the
         // response counts twelve corrections of a for it.
-        var (stepper, a, _) = JumpedInto(overlap: 50f);
+        var (world, a, _) = JumpedInto(overlap: 50f);
         var handler = new CountingHandler(a, perContact: 12);
-        stepper.Settle(handler);
+        world.Settle(handler);
 
         // Default allowance 8: the ninth rejects, the rest find it rejected already.
         Assert.Equal(8, new WedgePolicy().CorrectionsBeforeRejecting);
         bool[] expected = [false, false, false, false, false, false, false, false, true, false, false, false];
         Assert.Equal(expected, handler.Verdicts.GetRange(0, 12));
         Assert.Equal([a], handler.Rejected);
-        Assert.True(stepper.WasRejected(a));
+        Assert.True(world.WasRejected(a));
 
         // Rejected as RejectMove rejects: back where the last step began (its start, 0,0), at rest.
-        Assert.Equal(Vector2.Zero, stepper.PositionOf(a));
-        Assert.Equal(Vector2.Zero, stepper.VelocityOf(a));
+        Assert.Equal(Vector2.Zero, world.PositionOf(a));
+        Assert.Equal(Vector2.Zero, world.VelocityOf(a));
     }
 
     [Fact]
     public void ShallowCorrectionsAreNotCounted()
     {
         // 0.2 mm deep: within the time-of-impact tolerance (0.25 mm), a correction at a refined time of first contact.
-        var (stepper, a, _) = JumpedInto(overlap: 0.2f);
+        var (world, a, _) = JumpedInto(overlap: 0.2f);
         var handler = new CountingHandler(a, perContact: 30);
-        stepper.Settle(handler);
+        world.Settle(handler);
 
         Assert.True(handler.Contacts > 0, "settling reported no contact");
         Assert.All(handler.Verdicts, v => Assert.False(v));
         Assert.Empty(handler.Rejected);
-        Assert.False(stepper.WasRejected(a));
+        Assert.False(world.WasRejected(a));
     }
 
     [Fact]
     public void TheAllowanceIsThePolicys()
     {
-        var (stepper, a, _) = JumpedInto(overlap: 50f);
-        stepper.Wedging = new WedgePolicy { CorrectionsBeforeRejecting = 2 };
+        var (world, a, _) = JumpedInto(overlap: 50f);
+        world.Wedging = new WedgePolicy { CorrectionsBeforeRejecting = 2 };
         var handler = new CountingHandler(a, perContact: 4);
-        stepper.Settle(handler);
+        world.Settle(handler);
         Assert.Equal([false, false, true, false], handler.Verdicts.GetRange(0, 4));
 
         var (strict, b, _) = JumpedInto(overlap: 50f);
@@ -63,11 +63,11 @@ public sealed class StepperWedgePolicyTests
     public void TheCountRunsThroughSettlesAndStartsAgainWithAStep()
     {
         // Six corrections in one settle, six in the next: the ninth of the step rejects.
-        var (stepper, a, b) = JumpedInto(overlap: 50f);
+        var (world, a, b) = JumpedInto(overlap: 50f);
         var handler = new CountingHandler(a, perContact: 6);
-        stepper.Settle(handler);
-        stepper.SetPose(a, stepper.PositionOf(b) - new Vector2(50f, 0f), 0f);
-        stepper.Settle(handler);
+        world.Settle(handler);
+        world.SetPose(a, world.PositionOf(b) - new Vector2(50f, 0f), 0f);
+        world.Settle(handler);
         Assert.Equal([false, false, false, false, false, false, false, false, true, false, false, false], handler.Verdicts.GetRange(0, 12));
 
         // A step between the two settles starts the count again: twelve corrections, none rejects.
@@ -87,20 +87,20 @@ public sealed class StepperWedgePolicyTests
     {
         int Most(WedgePolicy? policy)
         {
-            var stepper = StepperWedgeTests.BarInSlot(out BodyId body);
+            var world = MotionWorldWedgeTests.BarInSlot(out BodyId body);
             if (policy is not null)
             {
-                stepper.Wedging = policy;
+                world.Wedging = policy;
             }
 
             var handler = new RecordingHandler { Record = false };
             int most = 0;
             for (int step = 0; step < 30; step++)
             {
-                stepper.SetVelocity(body, Vector2.Zero, 3f);
-                stepper.Step(0.1f, handler);
-                most = Math.Max(most, stepper.Events);
-                Assert.True(stepper.MeasureOverlap() <= 0.5f, $"step {step}: measured {stepper.MeasureOverlap()} mm");
+                world.SetVelocity(body, Vector2.Zero, 3f);
+                world.Step(0.1f, handler);
+                most = Math.Max(most, world.Events);
+                Assert.True(world.MeasureOverlap() <= 0.5f, $"step {step}: measured {world.MeasureOverlap()} mm");
             }
 
             return most;
@@ -129,38 +129,38 @@ public sealed class StepperWedgePolicyTests
         Assert.Contains("got -3", corrections.Message, StringComparison.Ordinal);
 
         // A ball 10 mm into a static box: settling reports their contact to a handler that tries both.
-        var stepper = new Stepper();
-        BodyId ball = stepper.AddCircle(50f, Vector2.Zero);
-        stepper.AddStatic(new Aabb(new Vector2(40f, -50f), new Vector2(90f, 50f)));
-        Assert.Throws<ArgumentNullException>(() => stepper.Wedging = null!);
-        var contact = stepper.Detect(ball, stepper.IdAt(1));
+        var world = new MotionWorld();
+        BodyId ball = world.AddCircle(50f, Vector2.Zero);
+        world.AddStatic(new Aabb(new Vector2(40f, -50f), new Vector2(90f, 50f)));
+        Assert.Throws<ArgumentNullException>(() => world.Wedging = null!);
+        var contact = world.Detect(ball, world.IdAt(1));
         Assert.True(contact.Intersect);
 
         // Between steps nothing is counted: a hundred deep corrections reject nothing.
         for (int i = 0; i < 100; i++)
         {
-            Assert.False(stepper.CountCorrection(ball, contact));
+            Assert.False(world.CountCorrection(ball, contact));
         }
 
-        Assert.False(stepper.WasRejected(ball));
-        Assert.Equal(Vector2.Zero, stepper.PositionOf(ball));
+        Assert.False(world.WasRejected(ball));
+        Assert.Equal(Vector2.Zero, world.PositionOf(ball));
 
         var during = new DuringStep();
-        stepper.Settle(during);
+        world.Settle(during);
         Assert.Equal("value", during.PolicyRefused?.ParamName);
         Assert.Equal("body", during.StaticRefused?.ParamName);
     }
 
     // Ball a (radius 50) starts a step at the origin and ends it there; then it is placed
     // `overlap` mm into ball b (radius 50, at 400, 0).
-    private static (Stepper Stepper, BodyId A, BodyId B) JumpedInto(float overlap)
+    private static (MotionWorld MotionWorld, BodyId A, BodyId B) JumpedInto(float overlap)
     {
-        var stepper = new Stepper();
-        BodyId a = stepper.AddCircle(50f, Vector2.Zero);
-        BodyId b = stepper.AddCircle(50f, new Vector2(400f, 0f));
-        stepper.Step(0.1f, new CountingHandler(default, 0));
-        stepper.SetPose(a, new Vector2(300f + overlap, 0f), 0f);
-        return (stepper, a, b);
+        var world = new MotionWorld();
+        BodyId a = world.AddCircle(50f, Vector2.Zero);
+        BodyId b = world.AddCircle(50f, new Vector2(400f, 0f));
+        world.Step(0.1f, new CountingHandler(default, 0));
+        world.SetPose(a, new Vector2(300f + overlap, 0f), 0f);
+        return (world, a, b);
     }
 
     // Counts `perContact` corrections of `body` for every contact it is in (records the verdicts),
@@ -173,31 +173,31 @@ public sealed class StepperWedgePolicyTests
 
         public int Contacts { get; private set; }
 
-        public void OnContact(Stepper stepper, in Contact contact)
+        public void OnContact(MotionWorld world, in Contact contact)
         {
             Contacts++;
             if (contact.BodyA == body || contact.BodyB == body)
             {
                 for (int i = 0; i < perContact; i++)
                 {
-                    Verdicts.Add(stepper.CountCorrection(body, contact));
+                    Verdicts.Add(world.CountCorrection(body, contact));
                 }
             }
 
             Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
             Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
             Vector2 push = mtv + (n * 0.01f);
-            if (!stepper.WasRejected(contact.BodyA))
+            if (!world.WasRejected(contact.BodyA))
             {
-                stepper.SetPose(contact.BodyA, stepper.PositionOf(contact.BodyA) + push, 0f);
+                world.SetPose(contact.BodyA, world.PositionOf(contact.BodyA) + push, 0f);
             }
-            else if (stepper.KindOf(contact.BodyB) <= BodyKind.Fish)
+            else if (world.KindOf(contact.BodyB) <= BodyKind.Fish)
             {
-                stepper.SetPose(contact.BodyB, stepper.PositionOf(contact.BodyB) - push, 0f);
+                world.SetPose(contact.BodyB, world.PositionOf(contact.BodyB) - push, 0f);
             }
         }
 
-        public void OnMoveRejected(Stepper stepper, BodyId rejected) => Rejected.Add(rejected);
+        public void OnMoveRejected(MotionWorld world, BodyId rejected) => Rejected.Add(rejected);
     }
 
     // Tries to change the policy and to count a static body's correction from a handler.
@@ -207,21 +207,21 @@ public sealed class StepperWedgePolicyTests
 
         public ArgumentException? StaticRefused { get; private set; }
 
-        public void OnContact(Stepper stepper, in Contact contact)
+        public void OnContact(MotionWorld world, in Contact contact)
         {
-            PolicyRefused ??= Record(() => stepper.Wedging = new WedgePolicy());
+            PolicyRefused ??= Record(() => world.Wedging = new WedgePolicy());
             BodyId other = contact.BodyB;
             Contact copy = contact;
-            if (stepper.KindOf(other) == BodyKind.Static)
+            if (world.KindOf(other) == BodyKind.Static)
             {
-                StaticRefused ??= Record(() => stepper.CountCorrection(other, copy));
+                StaticRefused ??= Record(() => world.CountCorrection(other, copy));
             }
 
             Vector2 push = XZPlane.ToPlane(contact.Result.MinimumTranslationVector) * 1.01f;
-            stepper.SetPose(contact.BodyA, stepper.PositionOf(contact.BodyA) + push, 0f);
+            world.SetPose(contact.BodyA, world.PositionOf(contact.BodyA) + push, 0f);
         }
 
-        public void OnMoveRejected(Stepper stepper, BodyId rejected)
+        public void OnMoveRejected(MotionWorld world, BodyId rejected)
         {
         }
 

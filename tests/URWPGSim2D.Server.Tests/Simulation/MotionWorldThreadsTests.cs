@@ -3,12 +3,12 @@ using URWPGSim2D.Server.Tests.Trace;
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>
-/// <c>--threads P</c> for a single match: the stepper samples each cycle's islands on P threads,
+/// <c>--threads P</c> for a single match: the motion world samples each cycle's islands on P threads,
 /// and the trace (poses, contacts in order, scores, events) is byte-identical for 1, 2 and 4
 /// threads, on crowds large enough to use the threads and on the default match; the CLI prints
 /// the same summary whatever P.
 /// </summary>
-public sealed class StepperThreadsTests
+public sealed class MotionWorldThreadsTests
 {
     [Theory]
     [InlineData(400, 3UL)]
@@ -51,10 +51,10 @@ public sealed class StepperThreadsTests
     private static byte[] Trace(ScenarioDefinition scenario, int threads, int cycles, out int chunks)
     {
         var match = MatchBuilder.Build(scenario);
-        match.Stepper.Threads = threads;
-        match.Stepper.MinimumMoversForThreads = 64; // below the default, so that these crowds use the threads
+        match.Motion.Threads = threads;
+        match.Motion.MinimumMoversForThreads = 64; // below the default, so that these crowds use the threads
         int most = 0;
-        byte[] trace = TraceBytes.Of(match, cycles, _ => most = Math.Max(most, match.Stepper.Chunks));
+        byte[] trace = TraceBytes.Of(match, cycles, _ => most = Math.Max(most, match.Motion.Chunks));
         chunks = most;
         return trace;
     }
