@@ -1,5 +1,4 @@
 using URWPGSim2D.Testing;
-using Xunit.Sdk;
 
 namespace URWPGSim2D.Protocol.Tests;
 
@@ -13,35 +12,26 @@ public class PackedCycleTests
     [Fact]
     public void Packed_cycles_cross_bit_for_bit_and_read_as_the_json_form_does()
     {
-        const int seed = 37;
-        var random = new Random(seed);
         var writer = new MessageWriter();
-        for (int i = 0; i < 300; i++)
+        Runs.RandomCases(37, 300, random =>
         {
-            try
+            var assignment = RandomSnapshots.Assignment(random) with { Packed = true };
+            var server = assignment.CreateSnapshot();
+            var packed = new CycleReader(assignment);
+            var json = new CycleReader(assignment);
+            for (int c = 0; c < 3; c++)
             {
-                var assignment = RandomSnapshots.Assignment(random) with { Packed = true };
-                var server = assignment.CreateSnapshot();
-                var packed = new CycleReader(assignment);
-                var json = new CycleReader(assignment);
-                for (int c = 0; c < 3; c++)
-                {
-                    RandomSnapshots.Fill(server, random, assignment.ItemName, assignment.TotalCycles);
-                    var line = writer.Cycle(server, packed: true).ToArray();
-                    Assert.Equal(-1, line.AsSpan(0, line.Length - 1).IndexOf((byte)'\n'));
-                    Assert.Equal(-1, line.AsSpan().IndexOf("\"fish\""u8));
-                    Assert.Equal(MessageType.Cycle, MessageReader.TypeOf(line.AsSpan(0, line.Length - 1)));
-                    Assert.Equal(server.Cycle, packed.Read(line.AsSpan(0, line.Length - 1)));
-                    RandomSnapshots.AssertSame(server, packed.Snapshot);
-                    json.Read(writer.Cycle(server)[..^1]);
-                    RandomSnapshots.AssertSame(json.Snapshot, packed.Snapshot);
-                }
+                RandomSnapshots.Fill(server, random, assignment.ItemName, assignment.TotalCycles);
+                var line = writer.Cycle(server, packed: true).ToArray();
+                Assert.Equal(-1, line.AsSpan(0, line.Length - 1).IndexOf((byte)'\n'));
+                Assert.Equal(-1, line.AsSpan().IndexOf("\"fish\""u8));
+                Assert.Equal(MessageType.Cycle, MessageReader.TypeOf(line.AsSpan(0, line.Length - 1)));
+                Assert.Equal(server.Cycle, packed.Read(line.AsSpan(0, line.Length - 1)));
+                RandomSnapshots.AssertSame(server, packed.Snapshot);
+                json.Read(writer.Cycle(server)[..^1]);
+                RandomSnapshots.AssertSame(json.Snapshot, packed.Snapshot);
             }
-            catch (XunitException e)
-            {
-                throw RandomCaseException.At(seed, i, e);
-            }
-        }
+        });
     }
 
     [Fact]
@@ -103,14 +93,6 @@ public class PackedCycleTests
 
         void Once() => client.Read(writer.Cycle(server, packed: true)[..^1]);
 
-        Once();
-        Once();
-        long before = GC.GetAllocatedBytesForCurrentThread();
-        for (int i = 0; i < 100; i++)
-        {
-            Once();
-        }
-
-        Assert.Equal(0, GC.GetAllocatedBytesForCurrentThread() - before);
+        Assert.Equal(0, Runs.SteadyStateAllocations(Once));
     }
 }

@@ -28,7 +28,8 @@ internal sealed class LiveTournament : IDisposable
     private LiveServer? _server;
     private LiveMatch? _player;
     private Thread? _playing;
-    private MatchSettings? _pending;
+    private (Match Match, int Cycles)? _pending;
+    private Exception? _failure;
     private ScheduledMatch? _current;
     private MatchResult? _result;
     private int _disposed;
@@ -65,10 +66,11 @@ internal sealed class LiveTournament : IDisposable
     /// <param name="settings">Its settings, with its entrants' fresh strategies.</param>
     public MatchResult Play(ScheduledMatch match, MatchSettings settings)
     {
+        var built = (settings.Build(), settings.Cycles); // a match that cannot be built fails here, on the tournament's thread
         LiveMatch? player;
         lock (_gate)
         {
-            _pending = settings;
+            _pending = built;
             _current = match;
             _result = null;
             player = _player;
@@ -82,7 +84,7 @@ internal sealed class LiveTournament : IDisposable
                 _player = player;
             }
 
-            _playing = new Thread(() => player.Run(_stop.Token)) { IsBackground = true, Name = "live tournament" };
+            _playing = new Thread(() => Run(player)) { IsBackground = true, Name = "live tournament" };
             _playing.Start();
         }
         else
@@ -93,12 +95,12 @@ internal sealed class LiveTournament : IDisposable
         MatchResult result;
         lock (_gate)
         {
-            while (_result is null)
+            while (_result is null && _failure is null)
             {
                 Monitor.Wait(_gate);
             }
 
-            result = _result;
+            result = _result ?? throw new InvalidOperationException("the live page's match failed: " + _failure!.Message, _failure);
         }
 
         _console.Out.Write(string.Create(CultureInfo.InvariantCulture, $"live: match {match.Index} (seed {match.Seed}) over: {string.Join(':', result.Scores ?? [result.Goals0, result.Goals1])}\n"));
@@ -126,16 +128,30 @@ internal sealed class LiveTournament : IDisposable
         _stop.Dispose();
     }
 
-    // The match to play now (the player's thread asks at the first match and at every start).
+    // The match to play now, built by Play (the player asks at the first match and at every start).
     private (Match Match, int Cycles) Build()
     {
-        MatchSettings settings;
         lock (_gate)
         {
-            settings = _pending ?? throw new InvalidOperationException("no match to play");
+            return _pending ?? throw new InvalidOperationException("no match to play");
         }
+    }
 
-        return (settings.Build(), settings.Cycles);
+    // The player's thread: a failure of the match being played ends the wait of Play (the tournament records it) instead of the process.
+    private void Run(LiveMatch player)
+    {
+        try
+        {
+            player.Run(_stop.Token);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            lock (_gate)
+            {
+                _failure = e;
+                Monitor.PulseAll(_gate);
+            }
+        }
     }
 
     // On the player's thread when a match is over: its result, read before the next start disposes it.

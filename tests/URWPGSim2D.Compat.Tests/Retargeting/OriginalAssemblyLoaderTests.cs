@@ -23,6 +23,21 @@ public sealed class OriginalAssemblyLoaderTests
 
     private static AssemblyLoadContext Context() => new("old-dll-test", isCollectible: true);
 
+    // Runs test with a fresh collectible context, then unloads it and deletes the temporary folder of the DLL at path.
+    private static void InFreshContext(string path, Action<AssemblyLoadContext> test)
+    {
+        var context = Context();
+        try
+        {
+            test(context);
+        }
+        finally
+        {
+            context.Unload();
+            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
+        }
+    }
+
     [Fact]
     public void TheTestDllsHaveTheShapeOfTheOriginalsDlls()
     {
@@ -49,8 +64,7 @@ public sealed class OriginalAssemblyLoaderTests
     public void AnOldDllThatTouchesEveryMemberOfTheOriginalsApiLoadsAndBindsThemAll()
     {
         string path = OldStrategyCompiler.WriteTemporary("OldToucher.dll", ToucherImage.Value);
-        var context = Context();
-        try
+        InFreshContext(path, context =>
         {
             var assembly = OriginalAssemblyLoader.Load(context, path);
             Assert.Equal(string.Empty, assembly.Location);
@@ -62,12 +76,7 @@ public sealed class OriginalAssemblyLoaderTests
             Assert.Equal("Old toucher 0", strategy.GetTeamName());
             // A floor against the stand-ins silently leaving members out (378 when written, 443 with XNA's vector statics, 479 with the original's further Common members, 651 with XNA's Matrix, Quaternion and transforms, 657 with Field's rectangles and SysConfig).
             Assert.True(ApiToucher.Members >= 657, $"{ApiToucher.Members} members touched");
-        }
-        finally
-        {
-            context.Unload();
-            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
-        }
+        });
     }
 
     [Fact]
@@ -104,17 +113,11 @@ public sealed class OriginalAssemblyLoaderTests
         }
 
         string path = OldStrategyCompiler.WriteTemporary("OldAnyCpu.dll", image);
-        var context = Context();
-        try
+        InFreshContext(path, context =>
         {
             var type = OriginalAssemblyLoader.Load(context, path).GetType("URWPGSim2D.Strategy.Strategy")!;
             Assert.Equal("Old dribbler", ((StrategyLoader.IStrategy)Activator.CreateInstance(type)!).GetTeamName());
-        }
-        finally
-        {
-            context.Unload();
-            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
-        }
+        });
     }
 
     [Fact]
@@ -171,18 +174,12 @@ public sealed class OriginalAssemblyLoaderTests
             }
             """;
         string path = OldStrategyCompiler.WriteTemporary("OldVector4.dll", OldStrategyCompiler.CompileWithXnaVector4("OldVector4", OldStrategySources.Dribbler, UsesVector4));
-        var context = Context();
-        try
+        InFreshContext(path, context =>
         {
             var e = Assert.Throws<FileLoadException>(() => OriginalAssemblyLoader.Load(context, path));
             Assert.Contains("Microsoft.Xna.Framework.Vector4", e.Message, StringComparison.Ordinal);
             Assert.DoesNotContain('\n', e.Message);
-        }
-        finally
-        {
-            context.Unload();
-            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
-        }
+        });
     }
 
     [Fact]
@@ -195,17 +192,11 @@ public sealed class OriginalAssemblyLoaderTests
             """;
         byte[] image = OldStrategyCompiler.CompileWithExtraAssembly("URWPGSim2D.Match", OldStrategyCompiler.OriginalToken, Match, "OldScores", OldStrategySources.Dribbler, UsesMatch);
         string path = OldStrategyCompiler.WriteTemporary("OldScores.dll", image);
-        var context = Context();
-        try
+        InFreshContext(path, context =>
         {
             var e = Assert.Throws<FileLoadException>(() => OriginalAssemblyLoader.Load(context, path));
             Assert.Equal("it uses assemblies that are not here (URWPGSim2D.Match): URWPGSim2D.Match.Polo, URWPGSim2D.Match.Polo.Score", e.Message);
-        }
-        finally
-        {
-            context.Unload();
-            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
-        }
+        });
     }
 
     [Fact]
@@ -240,17 +231,11 @@ public sealed class OriginalAssemblyLoaderTests
             }
             """;
         string path = OldStrategyCompiler.WriteTemporary("OldRes.dll", OldStrategyCompiler.CompileWithResources("OldRes", [("OldRes.Strings.resources", blob)], Named));
-        var context = Context();
-        try
+        InFreshContext(path, context =>
         {
             var type = OriginalAssemblyLoader.Load(context, path).GetType("URWPGSim2D.Strategy.Strategy")!;
             Assert.Equal("红队 from resources", ((StrategyLoader.IStrategy)Activator.CreateInstance(type)!).GetTeamName());
-        }
-        finally
-        {
-            context.Unload();
-            Directory.Delete(Path.GetDirectoryName(path)!, recursive: true);
-        }
+        });
     }
 
     [Fact]

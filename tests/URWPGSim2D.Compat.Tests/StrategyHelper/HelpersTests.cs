@@ -9,6 +9,14 @@ namespace URWPGSim2D.Compat.Tests.StrategyHelper;
 /// </summary>
 public sealed class HelpersTests
 {
+    // Dribble with the parameters every case here uses (direction 0, 10°/30° aim thresholds, 150 mm near, VCodes 14/8, 15 cycles of 100 ms), as (VCode, TCode); fromCentre: measure from the centre, else from the head tip.
+    private static (int VCode, int TCode) Dribble(RoboFish fish, XnaFramework.Vector3 target, bool fromCentre)
+    {
+        var d = default(Decision);
+        Helpers.Dribble(ref d, fish, target, 0f, 10f, 30f, 150f, 14, 8, 15, 100, fromCentre);
+        return (d.VCode, d.TCode);
+    }
+
     private static RoboFish FishAtOrigin(float heading = 0f, float angularVelocity = 0f, float speed = 0f)
     {
         var fish = new RoboFish { BodyDirectionRad = heading, AngularVelocityRadPs = angularVelocity, VelocityMmPs = speed };
@@ -32,26 +40,20 @@ public sealed class HelpersTests
     public void DribbleStraightAheadAndFarSwimsAtVCode1()
     {
         // From the head tip (110, 0) to (1000, 0): 890 mm > 150, aim error 0 < 10° → VCode1; no turn → TCode 7.
-        var d = default(Decision);
-        Helpers.Dribble(ref d, FishAtOrigin(), new XnaFramework.Vector3(1000f, 0f, 0f), 0f, 10f, 30f, 150f, 14, 8, 15, 100, false);
-        Assert.Equal((14, 7), (d.VCode, d.TCode));
+        Assert.Equal((14, 7), Dribble(FishAtOrigin(), new XnaFramework.Vector3(1000f, 0f, 0f), false));
     }
 
     [Fact]
     public void DribbleNearAndAlignedSwimsAtVCode2()
     {
-        var d = default(Decision);
-        Helpers.Dribble(ref d, FishAtOrigin(), new XnaFramework.Vector3(200f, 0f, 0f), 0f, 10f, 30f, 150f, 14, 8, 15, 100, false);
-        Assert.Equal((8, 7), (d.VCode, d.TCode)); // 90 mm from the head tip
+        Assert.Equal((8, 7), Dribble(FishAtOrigin(), new XnaFramework.Vector3(200f, 0f, 0f), false)); // 90 mm from the head tip
     }
 
     [Fact]
     public void DribbleFarOffAxisTurnsSlowly()
     {
         // Target straight down (+Z): error π/2 > 30° → VCode 1; rate needed (π/2)/1.5 s ≈ 1.05 rad/s → sharpest right, 14.
-        var d = default(Decision);
-        Helpers.Dribble(ref d, FishAtOrigin(), new XnaFramework.Vector3(0f, 0f, 1000f), 0f, 10f, 30f, 150f, 14, 8, 15, 100, true);
-        Assert.Equal((1, 14), (d.VCode, d.TCode));
+        Assert.Equal((1, 14), Dribble(FishAtOrigin(), new XnaFramework.Vector3(0f, 0f, 1000f), true));
     }
 
     [Fact]
@@ -60,13 +62,10 @@ public sealed class HelpersTests
         // 20° off, 1000 mm: turn time 0.349066/0.3715 = 0.94 s → 1064 mm/s needed → VCode capped at 10.
         // Turn rate 0.349066/1.5 = 0.2327 rad/s → first TCode from 7 with rate ≥ it: 12 (0.244).
         var target = new XnaFramework.Vector3(1000f * System.MathF.Cos(0.34906584f), 0f, 1000f * System.MathF.Sin(0.34906584f));
-        var d = default(Decision);
-        Helpers.Dribble(ref d, FishAtOrigin(), target, 0f, 10f, 30f, 150f, 14, 8, 15, 100, true);
-        Assert.Equal((10, 12), (d.VCode, d.TCode));
+        Assert.Equal((10, 12), Dribble(FishAtOrigin(), target, true));
 
         // Already turning right at 0.3 rad/s: 0.3·1.5 s = 0.45 rad > 0.349 → counter-steer, TCode 2.
-        Helpers.Dribble(ref d, FishAtOrigin(angularVelocity: 0.3f), target, 0f, 10f, 30f, 150f, 14, 8, 15, 100, true);
-        Assert.Equal((10, 2), (d.VCode, d.TCode));
+        Assert.Equal((10, 2), Dribble(FishAtOrigin(angularVelocity: 0.3f), target, true));
     }
 
     [Fact]
@@ -75,9 +74,7 @@ public sealed class HelpersTests
         // 15° off, 100 mm: turn time 0.261799/0.3715 = 0.7047 s → 141.9 mm/s → VCode 7 (154);
         // horizon min(100/307, 1.5) = 0.3257 s → 0.80 rad/s → TCode 14.
         var target = new XnaFramework.Vector3(100f * System.MathF.Cos(0.2617994f), 0f, 100f * System.MathF.Sin(0.2617994f));
-        var d = default(Decision);
-        Helpers.Dribble(ref d, FishAtOrigin(), target, 0f, 10f, 30f, 150f, 14, 8, 15, 100, true);
-        Assert.Equal((7, 14), (d.VCode, d.TCode));
+        Assert.Equal((7, 14), Dribble(FishAtOrigin(), target, true));
     }
 
     [Fact]
