@@ -9,181 +9,16 @@ namespace URWPGSim2D.Protocol;
 /// </summary>
 public static class MessageReader
 {
+    private delegate T Reading<T>(ref Utf8JsonReader r);
+
     /// <summary>The <c>type</c> of the message on <paramref name="line"/>.</summary>
-    public static MessageType TypeOf(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (!r.ValueTextEquals("type"u8))
-                {
-                    JsonFields.Skip(ref r);
-                    continue;
-                }
-
-                r.Read();
-                if (r.TokenType != JsonTokenType.String)
-                {
-                    throw new ProtocolException($"type: expected a string, got {JsonFields.Describe(ref r)}");
-                }
-
-                return r.ValueTextEquals("hello"u8) ? MessageType.Hello
-                    : r.ValueTextEquals("assignment"u8) ? MessageType.Assignment
-                    : r.ValueTextEquals("cycle"u8) ? MessageType.Cycle
-                    : r.ValueTextEquals("decisions"u8) ? MessageType.Decisions
-                    : r.ValueTextEquals("end"u8) ? MessageType.End
-                    : r.ValueTextEquals("error"u8) ? MessageType.Error
-                    : MessageType.Unknown;
-            }
-
-            return MessageType.Unknown;
-        }
-        catch (JsonException e)
-        {
-            throw NotJson(e);
-        }
-    }
+    public static MessageType TypeOf(ReadOnlySpan<byte> line) => Read(line, TypeField);
 
     /// <summary>Reads a <c>hello</c>.</summary>
-    public static HelloMessage ReadHello(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            int? version = null;
-            string? token = null;
-            string? name = null;
-            bool packed = false;
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (r.ValueTextEquals("version"u8))
-                {
-                    version = JsonFields.Int(ref r, "version");
-                }
-                else if (r.ValueTextEquals("packed"u8))
-                {
-                    packed = JsonFields.Bool(ref r, "packed");
-                }
-                else if (r.ValueTextEquals("token"u8))
-                {
-                    token = JsonFields.Text(ref r, "token");
-                }
-                else if (r.ValueTextEquals("name"u8))
-                {
-                    name = JsonFields.Text(ref r, "name");
-                }
-                else
-                {
-                    JsonFields.Skip(ref r);
-                }
-            }
-
-            return new HelloMessage(version ?? throw Missing("version"), token, name) { Packed = packed };
-        }
-        catch (JsonException e)
-        {
-            throw NotJson(e);
-        }
-    }
+    public static HelloMessage ReadHello(ReadOnlySpan<byte> line) => Read(line, Hello);
 
     /// <summary>Reads an <c>assignment</c>.</summary>
-    public static AssignmentMessage ReadAssignment(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            int? version = null, team = null, fishCount = null, ballCount = null, totalCycles = null, deadline = null;
-            string item = "", itemName = "match";
-            int[]? fish = null;
-            float? length = null, width = null;
-            ObstacleView[] obstacles = [];
-            bool draw = false, log = false, packed = false;
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (r.ValueTextEquals("version"u8))
-                {
-                    version = JsonFields.Int(ref r, "version");
-                }
-                else if (r.ValueTextEquals("team"u8))
-                {
-                    team = JsonFields.Int(ref r, "team");
-                }
-                else if (r.ValueTextEquals("item"u8))
-                {
-                    item = JsonFields.Text(ref r, "item") ?? "";
-                }
-                else if (r.ValueTextEquals("itemName"u8))
-                {
-                    itemName = JsonFields.Text(ref r, "itemName") ?? "match";
-                }
-                else if (r.ValueTextEquals("fish"u8))
-                {
-                    fish = Ints(ref r, "fish");
-                }
-                else if (r.ValueTextEquals("fishCount"u8))
-                {
-                    fishCount = JsonFields.Int(ref r, "fishCount");
-                }
-                else if (r.ValueTextEquals("ballCount"u8))
-                {
-                    ballCount = JsonFields.Int(ref r, "ballCount");
-                }
-                else if (r.ValueTextEquals("totalCycles"u8))
-                {
-                    totalCycles = JsonFields.Int(ref r, "totalCycles");
-                }
-                else if (r.ValueTextEquals("deadlineMs"u8))
-                {
-                    deadline = JsonFields.Int(ref r, "deadlineMs");
-                }
-                else if (r.ValueTextEquals("field"u8))
-                {
-                    (length, width) = Field(ref r);
-                }
-                else if (r.ValueTextEquals("obstacles"u8))
-                {
-                    obstacles = Obstacles(ref r);
-                }
-                else if (r.ValueTextEquals("draw"u8))
-                {
-                    draw = JsonFields.Bool(ref r, "draw");
-                }
-                else if (r.ValueTextEquals("log"u8))
-                {
-                    log = JsonFields.Bool(ref r, "log");
-                }
-                else if (r.ValueTextEquals("packed"u8))
-                {
-                    packed = JsonFields.Bool(ref r, "packed");
-                }
-                else
-                {
-                    JsonFields.Skip(ref r);
-                }
-            }
-
-            var a = new AssignmentMessage(
-                version ?? throw Missing("version"), team ?? throw Missing("team"), item, itemName, fish ?? throw Missing("fish"),
-                fishCount ?? throw Missing("fishCount"), ballCount ?? throw Missing("ballCount"), totalCycles ?? 0,
-                deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles)
-            {
-                Draw = draw,
-                Log = log,
-                Packed = packed,
-            };
-            Check(a);
-            return a;
-        }
-        catch (JsonException e)
-        {
-            throw NotJson(e);
-        }
-    }
+    public static AssignmentMessage ReadAssignment(ReadOnlySpan<byte> line) => Read(line, Assignment);
 
     /// <summary>
     /// Reads a client's <c>decisions</c> for <paramref name="cycle"/> into <paramref name="decisions"/>
@@ -278,70 +113,10 @@ public static class MessageReader
     }
 
     /// <summary>Reads an <c>end</c>.</summary>
-    public static EndMessage ReadEnd(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            int cycle = 0, faults = 0;
-            Span<int> goals = stackalloc int[MaxTeams];
-            int teams = 2;
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (r.ValueTextEquals("cycle"u8))
-                {
-                    cycle = JsonFields.Int(ref r, "cycle");
-                }
-                else if (r.ValueTextEquals("faults"u8))
-                {
-                    faults = JsonFields.Int(ref r, "faults");
-                }
-                else if (r.ValueTextEquals("goals"u8))
-                {
-                    teams = Goals(ref r, goals);
-                }
-                else
-                {
-                    JsonFields.Skip(ref r);
-                }
-            }
-
-            return new EndMessage(cycle, goals[..teams].ToArray(), faults);
-        }
-        catch (JsonException e)
-        {
-            throw NotJson(e);
-        }
-    }
+    public static EndMessage ReadEnd(ReadOnlySpan<byte> line) => Read(line, End);
 
     /// <summary>Reads an <c>error</c>'s message.</summary>
-    public static string ReadError(ReadOnlySpan<byte> line)
-    {
-        try
-        {
-            var r = new Utf8JsonReader(line);
-            JsonFields.StartObject(ref r);
-            string? message = null;
-            while (JsonFields.NextProperty(ref r))
-            {
-                if (r.ValueTextEquals("message"u8))
-                {
-                    message = JsonFields.Text(ref r, "message");
-                }
-                else
-                {
-                    JsonFields.Skip(ref r);
-                }
-            }
-
-            return message ?? "(no message)";
-        }
-        catch (JsonException e)
-        {
-            throw NotJson(e);
-        }
-    }
+    public static string ReadError(ReadOnlySpan<byte> line) => Read(line, Error);
 
     /// <summary>The most teams a match has (a four-team item).</summary>
     internal const int MaxTeams = 4;
@@ -364,10 +139,218 @@ public static class MessageReader
         return n is 2 or MaxTeams ? n : throw new ProtocolException($"goals: expected 2 or {MaxTeams} integers, got {n}");
     }
 
+    // Reads the one JSON object on line with read (the reader on the object's start); a line that is not JSON throws
+    // ProtocolException (NotJson).
+    private static T Read<T>(ReadOnlySpan<byte> line, Reading<T> read)
+    {
+        try
+        {
+            var r = new Utf8JsonReader(line);
+            JsonFields.StartObject(ref r);
+            return read(ref r);
+        }
+        catch (JsonException e)
+        {
+            throw NotJson(e);
+        }
+    }
+
     internal static ProtocolException NotJson(JsonException e) =>
         new($"not a JSON message (line {e.LineNumber + 1}, byte {e.BytePositionInLine + 1}): {e.Message.Split('.')[0]}");
 
     internal static ProtocolException Missing(string field) => new($"{field}: missing");
+
+    private static MessageType TypeField(ref Utf8JsonReader r)
+    {
+        while (JsonFields.NextProperty(ref r))
+        {
+            if (!r.ValueTextEquals("type"u8))
+            {
+                JsonFields.Skip(ref r);
+                continue;
+            }
+
+            r.Read();
+            if (r.TokenType != JsonTokenType.String)
+            {
+                throw new ProtocolException($"type: expected a string, got {JsonFields.Describe(ref r)}");
+            }
+
+            return r.ValueTextEquals("hello"u8) ? MessageType.Hello
+                : r.ValueTextEquals("assignment"u8) ? MessageType.Assignment
+                : r.ValueTextEquals("cycle"u8) ? MessageType.Cycle
+                : r.ValueTextEquals("decisions"u8) ? MessageType.Decisions
+                : r.ValueTextEquals("end"u8) ? MessageType.End
+                : r.ValueTextEquals("error"u8) ? MessageType.Error
+                : MessageType.Unknown;
+        }
+
+        return MessageType.Unknown;
+    }
+
+    private static HelloMessage Hello(ref Utf8JsonReader r)
+    {
+        int? version = null;
+        string? token = null;
+        string? name = null;
+        bool packed = false;
+        while (JsonFields.NextProperty(ref r))
+        {
+            if (r.ValueTextEquals("version"u8))
+            {
+                version = JsonFields.Int(ref r, "version");
+            }
+            else if (r.ValueTextEquals("packed"u8))
+            {
+                packed = JsonFields.Bool(ref r, "packed");
+            }
+            else if (r.ValueTextEquals("token"u8))
+            {
+                token = JsonFields.Text(ref r, "token");
+            }
+            else if (r.ValueTextEquals("name"u8))
+            {
+                name = JsonFields.Text(ref r, "name");
+            }
+            else
+            {
+                JsonFields.Skip(ref r);
+            }
+        }
+
+        return new HelloMessage(version ?? throw Missing("version"), token, name) { Packed = packed };
+    }
+
+    private static AssignmentMessage Assignment(ref Utf8JsonReader r)
+    {
+        int? version = null, team = null, fishCount = null, ballCount = null, totalCycles = null, deadline = null;
+        string item = "", itemName = "match";
+        int[]? fish = null;
+        float? length = null, width = null;
+        ObstacleView[] obstacles = [];
+        bool draw = false, log = false, packed = false;
+        while (JsonFields.NextProperty(ref r))
+        {
+            if (r.ValueTextEquals("version"u8))
+            {
+                version = JsonFields.Int(ref r, "version");
+            }
+            else if (r.ValueTextEquals("team"u8))
+            {
+                team = JsonFields.Int(ref r, "team");
+            }
+            else if (r.ValueTextEquals("item"u8))
+            {
+                item = JsonFields.Text(ref r, "item") ?? "";
+            }
+            else if (r.ValueTextEquals("itemName"u8))
+            {
+                itemName = JsonFields.Text(ref r, "itemName") ?? "match";
+            }
+            else if (r.ValueTextEquals("fish"u8))
+            {
+                fish = Ints(ref r, "fish");
+            }
+            else if (r.ValueTextEquals("fishCount"u8))
+            {
+                fishCount = JsonFields.Int(ref r, "fishCount");
+            }
+            else if (r.ValueTextEquals("ballCount"u8))
+            {
+                ballCount = JsonFields.Int(ref r, "ballCount");
+            }
+            else if (r.ValueTextEquals("totalCycles"u8))
+            {
+                totalCycles = JsonFields.Int(ref r, "totalCycles");
+            }
+            else if (r.ValueTextEquals("deadlineMs"u8))
+            {
+                deadline = JsonFields.Int(ref r, "deadlineMs");
+            }
+            else if (r.ValueTextEquals("field"u8))
+            {
+                (length, width) = Field(ref r);
+            }
+            else if (r.ValueTextEquals("obstacles"u8))
+            {
+                obstacles = Obstacles(ref r);
+            }
+            else if (r.ValueTextEquals("draw"u8))
+            {
+                draw = JsonFields.Bool(ref r, "draw");
+            }
+            else if (r.ValueTextEquals("log"u8))
+            {
+                log = JsonFields.Bool(ref r, "log");
+            }
+            else if (r.ValueTextEquals("packed"u8))
+            {
+                packed = JsonFields.Bool(ref r, "packed");
+            }
+            else
+            {
+                JsonFields.Skip(ref r);
+            }
+        }
+
+        var a = new AssignmentMessage(
+            version ?? throw Missing("version"), team ?? throw Missing("team"), item, itemName, fish ?? throw Missing("fish"),
+            fishCount ?? throw Missing("fishCount"), ballCount ?? throw Missing("ballCount"), totalCycles ?? 0,
+            deadline ?? throw Missing("deadlineMs"), length ?? throw Missing("field.length"), width ?? throw Missing("field.width"), obstacles)
+        {
+            Draw = draw,
+            Log = log,
+            Packed = packed,
+        };
+        Check(a);
+        return a;
+    }
+
+    private static EndMessage End(ref Utf8JsonReader r)
+    {
+        int cycle = 0, faults = 0;
+        Span<int> goals = stackalloc int[MaxTeams];
+        int teams = 2;
+        while (JsonFields.NextProperty(ref r))
+        {
+            if (r.ValueTextEquals("cycle"u8))
+            {
+                cycle = JsonFields.Int(ref r, "cycle");
+            }
+            else if (r.ValueTextEquals("faults"u8))
+            {
+                faults = JsonFields.Int(ref r, "faults");
+            }
+            else if (r.ValueTextEquals("goals"u8))
+            {
+                teams = Goals(ref r, goals);
+            }
+            else
+            {
+                JsonFields.Skip(ref r);
+            }
+        }
+
+        return new EndMessage(cycle, goals[..teams].ToArray(), faults);
+    }
+
+    private static string Error(ref Utf8JsonReader r)
+    {
+        string? message = null;
+        while (JsonFields.NextProperty(ref r))
+        {
+            if (r.ValueTextEquals("message"u8))
+            {
+                message = JsonFields.Text(ref r, "message");
+            }
+            else
+            {
+                JsonFields.Skip(ref r);
+            }
+        }
+
+        return message ?? "(no message)";
+    }
 
     // The decisions array: writes up to decisions.Length entries, returns how many there were; the
     // first unusable entry goes to bad.

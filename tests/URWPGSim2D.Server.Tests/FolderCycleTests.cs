@@ -1,7 +1,6 @@
 using System.Text.RegularExpressions;
 using Mono.Cecil;
 using Mono.Cecil.Cil;
-using URWPGSim2D.Server.Tests.Docs;
 
 namespace URWPGSim2D.Server.Tests;
 

@@ -1,7 +1,6 @@
 using System.Reflection.Metadata;
 using System.Reflection.PortableExecutable;
 using System.Xml.Linq;
-using URWPGSim2D.Server.Tests.Docs;
 
 namespace URWPGSim2D.Server.Tests;
 

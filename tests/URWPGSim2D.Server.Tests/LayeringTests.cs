@@ -1,5 +1,4 @@
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Tests.Docs;
 
 namespace URWPGSim2D.Server.Tests;
 

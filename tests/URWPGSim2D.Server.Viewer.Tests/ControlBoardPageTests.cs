@@ -1,5 +1,4 @@
 using System.Threading;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Scenario;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;

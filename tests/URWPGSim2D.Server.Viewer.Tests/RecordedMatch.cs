@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Cli;
-
 namespace URWPGSim2D.Server.Viewer.Tests;
 
 /// <summary>

@@ -2,7 +2,6 @@ extern alias baseline;
 
 using System;
 using System.Numerics;
-using BenchmarkDotNet.Attributes;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;

@@ -1,5 +1,3 @@
-using System.IO;
-
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;
 
 /// <summary>

@@ -2,8 +2,6 @@ extern alias baseline;
 
 using System;
 using System.Numerics;
-using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Collision.Benchmarks.Reporting;
 using URWPGSim2D.Collision.Shapes;
 using FrozenDetector = baseline::URWPGSim2D.Collision.CollisionDetector;
 using FrozenResult = baseline::URWPGSim2D.Collision.CollisionDetectionResult;

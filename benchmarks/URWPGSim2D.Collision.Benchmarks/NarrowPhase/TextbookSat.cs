@@ -1,5 +1,3 @@
-using System.Collections.Generic;
-
 namespace URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 
 /// <summary>

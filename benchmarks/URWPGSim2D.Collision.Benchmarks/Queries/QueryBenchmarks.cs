@@ -1,4 +1,3 @@
-using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Queries;
 

@@ -1,13 +1,7 @@
 extern alias baseline;
 
-using BenchmarkDotNet.Attributes;
-using URWPGSim2D.Collision.Benchmarks.Reporting;
-using URWPGSim2D.Hosting;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Items;
-using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Engine.Scenario;
-using URWPGSim2D.Engine.Simulation;
 using BaselineBuilder = baseline::URWPGSim2D.Server.Scenario.MatchBuilder;
 using BaselineMatch = baseline::URWPGSim2D.Server.Simulation.Match;
 using BaselineRegistry = baseline::URWPGSim2D.Server.Items.ItemRegistry;

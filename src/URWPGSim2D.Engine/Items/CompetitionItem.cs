@@ -9,25 +9,30 @@ namespace URWPGSim2D.Engine.Items;
 /// <see cref="ItemReferee"/> (and its demo strategy), and list it in <see cref="Catalog.ItemRegistry"/>;
 /// see docs/items.md, "Adding an item".
 /// </summary>
-public abstract class CompetitionItem : IScenarioItem
+/// <param name="slug">English slug for <c>run --item</c>, e.g. "ball-grab".</param>
+/// <param name="chineseName">The original's name, e.g. "抢球博弈".</param>
+/// <param name="summary">The rules in one line for <c>run --list-items</c>.</param>
+/// <param name="teamCount">Number of teams.</param>
+/// <param name="fishPerTeam">Fish per team.</param>
+public abstract class CompetitionItem(string slug, string chineseName, string summary, int teamCount, int fishPerTeam) : IScenarioItem
 {
     /// <summary>Cycles of the default duration, ten minutes.</summary>
     public const int DefaultCycles = 6000;
 
     /// <summary>English slug for <c>run --item</c>, e.g. "ball-grab".</summary>
-    public abstract string Slug { get; }
+    public string Slug { get; } = Named(slug, nameof(slug));
 
     /// <summary>The original's name, e.g. "抢球博弈" (also accepted by <c>--item</c>).</summary>
-    public abstract string ChineseName { get; }
+    public string ChineseName { get; } = Named(chineseName, nameof(chineseName));
 
     /// <summary>The rules in one line for <c>run --list-items</c>.</summary>
-    public abstract string Summary { get; }
+    public string Summary { get; } = Named(summary, nameof(summary));
 
-    /// <summary>Number of teams (1 or 2).</summary>
-    public abstract int TeamCount { get; }
+    /// <summary>Number of teams (1, 2 or 4).</summary>
+    public int TeamCount { get; } = teamCount >= 1 ? teamCount : throw new ArgumentOutOfRangeException(nameof(teamCount), teamCount, "an item has at least one team");
 
     /// <summary>Fish per team.</summary>
-    public abstract int FishPerTeam { get; }
+    public int FishPerTeam { get; } = fishPerTeam >= 1 ? fishPerTeam : throw new ArgumentOutOfRangeException(nameof(fishPerTeam), fishPerTeam, "a team has at least one fish");
 
     /// <summary>
     /// The layout at cycle 0 as a scenario: field, obstacles, balls, fish start poses (every fish on
@@ -41,4 +46,7 @@ public abstract class CompetitionItem : IScenarioItem
 
     /// <summary>The built-in demo strategy of a team; it may read the referee's state.</summary>
     public abstract IStrategy CreateDemoStrategy(int team, ItemReferee referee);
+
+    private static string Named(string value, string name) =>
+        string.IsNullOrWhiteSpace(value) ? throw new ArgumentException($"{name} is empty", name) : value;
 }

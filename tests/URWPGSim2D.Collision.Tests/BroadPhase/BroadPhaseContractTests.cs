@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.BroadPhase;
-
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 
 /// <summary>Hand-made cases, the bad-input rule, balance of the tree and zero allocation once warm.</summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.BroadPhase;
-
 namespace URWPGSim2D.Collision.Tests.BroadPhase;
 
 /// <summary>

@@ -2,7 +2,6 @@ extern alias baseline;
 
 using System.Numerics;
 using URWPGSim2D.Collision.Geometry;
-using URWPGSim2D.Collision.NarrowPhase;
 using URWPGSim2D.Collision.Shapes;
 using Frozen = baseline::URWPGSim2D.Collision;
 using URWPGSim2D.Collision.Tests.Support;

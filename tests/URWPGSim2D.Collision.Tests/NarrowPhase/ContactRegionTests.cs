@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.NarrowPhase;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 public sealed class ContactRegionTests

@@ -1,5 +1,4 @@
 using System.Runtime.Intrinsics;
-using URWPGSim2D.Collision.NarrowPhase;
 
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 

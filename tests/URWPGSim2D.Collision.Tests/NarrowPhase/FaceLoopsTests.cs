@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.NarrowPhase;
-using URWPGSim2D.Collision.Tests.Fish;
-
 namespace URWPGSim2D.Collision.Tests.NarrowPhase;
 
 public sealed class FaceLoopsTests

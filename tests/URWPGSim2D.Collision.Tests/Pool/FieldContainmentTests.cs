@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Tests.Fish;
-
 namespace URWPGSim2D.Collision.Tests.Pool;
 
 public class FieldContainmentTests

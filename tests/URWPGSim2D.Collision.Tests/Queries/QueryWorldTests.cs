@@ -1,7 +1,3 @@
-using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Tests.Fish;
-
 namespace URWPGSim2D.Collision.Tests.Queries;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Tests.Fish;
-
 namespace URWPGSim2D.Collision.Tests.Queries;
 
 /// <summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Server.Tests.Batch;
 
 /// <summary>A match that fails inside the server still has its line in a batch, with the reason; the others are played.</summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament.Batch;
-
 namespace URWPGSim2D.Server.Tests.Batch;
 
 /// <summary>The aggregate's arithmetic on hand-made results, and the result file's round trip.</summary>

@@ -1,7 +1,5 @@
 using System.CommandLine;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Cli;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>What one in-process run of the command line produced.</summary>

@@ -1,6 +1,4 @@
-using System.Globalization;
 using URWPGSim2D.Collision;
-using URWPGSim2D.Collision.Shapes;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

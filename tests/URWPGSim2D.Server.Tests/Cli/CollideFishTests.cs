@@ -1,7 +1,4 @@
-using System.Text.Json;
 using URWPGSim2D.Collision;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Shapes;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

@@ -1,8 +1,4 @@
-using System.Globalization;
-using System.Text;
-using System.Text.Json;
 using URWPGSim2D.Collision;
-using URWPGSim2D.Collision.Shapes;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;

@@ -1,6 +1,4 @@
 using URWPGSim2D.Engine.Messages;
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Json;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,6 +1,3 @@
-using System.Text;
-using URWPGSim2D.Server.Tests.Docs;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>

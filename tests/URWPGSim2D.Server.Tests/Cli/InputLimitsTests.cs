@@ -1,7 +1,3 @@
-using System.Text;
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>Each command's input limits (docs/cli.md, "Limits"): one element over is refused up front, exactly the limit is read.</summary>

@@ -1,4 +1,3 @@
-using URWPGSim2D.Server.Tests.Hosting;
 using URWPGSim2D.Tests.OldStrategies;
 
 namespace URWPGSim2D.Server.Tests.Cli;

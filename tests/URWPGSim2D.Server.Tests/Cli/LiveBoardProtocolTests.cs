@@ -1,10 +1,4 @@
-using System.Globalization;
-using System.Net;
 using System.Net.Http;
-using System.Text.Json;
-using System.Threading;
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Engine.Items.Catalog;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

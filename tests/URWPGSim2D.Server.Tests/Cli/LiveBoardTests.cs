@@ -1,6 +1,4 @@
 using System.Collections.Specialized;
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Viewer;
 

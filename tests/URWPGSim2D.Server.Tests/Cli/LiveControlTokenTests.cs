@@ -1,9 +1,5 @@
-using System.Globalization;
-using System.Net;
 using System.Net.Http;
 using System.Text.RegularExpressions;
-using System.Threading;
-using URWPGSim2D.Server.Cli;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

@@ -1,10 +1,5 @@
-using System.Globalization;
-using System.Net;
 using System.Net.Sockets;
-using System.Text;
 using System.Text.RegularExpressions;
-using System.Threading;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Server.Tests.Cli;

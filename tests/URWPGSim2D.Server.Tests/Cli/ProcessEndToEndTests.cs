@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,6 +1,4 @@
-using System.Text.Json;
 using URWPGSim2D.Collision.Queries;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

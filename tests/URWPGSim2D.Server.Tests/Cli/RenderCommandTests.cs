@@ -1,6 +1,4 @@
-using System.Globalization;
 using System.Xml.Linq;
-using URWPGSim2D.Collision.Fish;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

@@ -1,5 +1,3 @@
-using System.Text.Json;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>The run command: summary, trace, SVG, bad input.</summary>

@@ -1,6 +1,4 @@
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Tests.Batch.Slurm;
-using URWPGSim2D.Tournament.Batch.Slurm;
 
 namespace URWPGSim2D.Server.Tests.Cli;
 

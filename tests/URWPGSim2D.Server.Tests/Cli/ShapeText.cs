@@ -1,5 +1,3 @@
-using System.Globalization;
-
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>SHAPE objects and pair arrays as JSON text, for building inputs.</summary>

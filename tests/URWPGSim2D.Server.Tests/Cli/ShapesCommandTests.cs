@@ -1,5 +1,3 @@
-using System.Text.Json;
-using URWPGSim2D.Collision.Fish;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

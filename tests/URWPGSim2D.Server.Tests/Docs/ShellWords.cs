@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace URWPGSim2D.Server.Tests.Docs;
 
 /// <summary>The words of a command line as a page shows it.</summary>

@@ -1,5 +1,4 @@
 using System.Reflection;
-using URWPGSim2D.Server.Tests.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Docs;
 

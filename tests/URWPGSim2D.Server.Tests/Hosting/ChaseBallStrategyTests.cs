@@ -1,6 +1,4 @@
-using System.Globalization;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

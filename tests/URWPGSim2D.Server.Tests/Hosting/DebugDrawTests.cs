@@ -1,7 +1,4 @@
-using System.Text;
-using System.Text.Json;
 using URWPGSim2D.Engine.Items.BallGrab;
-using URWPGSim2D.Server.Tests.Simulation;
 using OriginalDraw = URWPGSim2D.StrategyHelper.DebugDraw;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

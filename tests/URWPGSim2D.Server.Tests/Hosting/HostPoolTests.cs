@@ -1,6 +1,3 @@
-using System.Diagnostics;
-using URWPGSim2D.Server.Cli;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

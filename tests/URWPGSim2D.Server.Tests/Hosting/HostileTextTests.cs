@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Runtime.InteropServices;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

@@ -1,8 +1,6 @@
 using Microsoft.CodeAnalysis;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Server.Tests.Items;
-using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Tests.OldStrategies;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

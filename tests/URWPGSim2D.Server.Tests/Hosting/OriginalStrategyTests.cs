@@ -1,9 +1,7 @@
 using System.Reflection;
 using System.Runtime.Loader;
 using URWPGSim2D.Compat.Hosting;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

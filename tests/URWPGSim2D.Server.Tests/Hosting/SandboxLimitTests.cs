@@ -1,6 +1,3 @@
-using System.Diagnostics;
-using System.Globalization;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

@@ -1,5 +1,3 @@
-using System.Diagnostics;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Server.Tests.Simulation;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>A strategy that throws or runs too long does not stop the match; its fish keep their last decisions.</summary>

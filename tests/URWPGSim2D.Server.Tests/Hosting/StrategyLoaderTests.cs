@@ -1,5 +1,4 @@
 using System.Runtime.Loader;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Hosting;
 

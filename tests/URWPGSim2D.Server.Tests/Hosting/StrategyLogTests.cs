@@ -1,6 +1,4 @@
 #define DEBUG // Debug.WriteLine is this test's subject: compiled in Release builds of the tests too
-using System.Diagnostics;
-using System.Text.Json;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Server.Tests.Trace;

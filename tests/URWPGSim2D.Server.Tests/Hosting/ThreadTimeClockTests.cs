@@ -1,5 +1,3 @@
-using System.Threading;
-
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary>The real deadline clock counts the strategy thread's CPU time, not wall time.</summary>

@@ -1,4 +1,3 @@
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -1,4 +1,3 @@
-using System.Text.Json;
 using URWPGSim2D.Engine.Items.FourTeams;
 
 namespace URWPGSim2D.Server.Tests.Items;

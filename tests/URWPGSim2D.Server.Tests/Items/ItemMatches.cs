@@ -1,4 +1,3 @@
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Server.Tests.Items;

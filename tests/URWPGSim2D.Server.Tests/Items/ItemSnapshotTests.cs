@@ -1,5 +1,3 @@
-using URWPGSim2D.Engine.Items.Catalog;
-
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>What strategies see of an item: its name, its HtMissionVariables and its length.</summary>

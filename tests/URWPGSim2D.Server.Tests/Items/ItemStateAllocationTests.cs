@@ -1,5 +1,3 @@
-using URWPGSim2D.Engine.Items.Catalog;
-
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>

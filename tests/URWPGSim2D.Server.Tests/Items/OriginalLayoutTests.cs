@@ -1,4 +1,3 @@
-using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Engine.Items.CrossCountry;
 using URWPGSim2D.Engine.Items.Polo;
 using URWPGSim2D.Engine.Items.Rescue;

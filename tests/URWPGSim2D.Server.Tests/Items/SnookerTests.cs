@@ -1,6 +1,5 @@
 using URWPGSim2D.Engine.Items.Snooker;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items;
 

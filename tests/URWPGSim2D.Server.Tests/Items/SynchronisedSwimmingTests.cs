@@ -1,5 +1,3 @@
-using System.Text;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Engine.Items.SynchronisedSwimming;
 
 namespace URWPGSim2D.Server.Tests.Items;

@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Tests.Json;
 
 /// <summary>Serializer paths (<c>$[3].a.radius</c>) become user paths (<c>pairs[3].a.radius</c>).</summary>

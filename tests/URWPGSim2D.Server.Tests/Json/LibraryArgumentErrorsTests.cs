@@ -1,6 +1,3 @@
-using URWPGSim2D.Collision.Shapes;
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Tests.Json;
 
 /// <summary>The library's <see cref="ArgumentException"/>s become <c>SHAPE.FIELD: message</c>.</summary>

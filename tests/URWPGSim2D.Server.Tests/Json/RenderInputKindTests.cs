@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Json;
-
 namespace URWPGSim2D.Server.Tests.Json;
 
 /// <summary>How <c>render</c> tells an array of pairs from an array of SHAPEs: by the first element's fields.</summary>

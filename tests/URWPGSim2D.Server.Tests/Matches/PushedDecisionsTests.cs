@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.BuiltInStrategies;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Teams;
 using URWPGSim2D.Engine.Trace;

@@ -1,6 +1,4 @@
-using System.Text.Json;
 using System.Xml.Linq;
-using URWPGSim2D.Server.Tests.Docs;
 
 namespace URWPGSim2D.Server.Tests.Packaging;
 

@@ -1,5 +1,4 @@
 using URWPGSim2D.Collision.BroadPhase;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Server.Tests.Trace;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

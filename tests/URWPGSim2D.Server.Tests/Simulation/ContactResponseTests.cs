@@ -1,4 +1,3 @@
-using URWPGSim2D.Collision.Fish;
 using Xunit.Sdk;
 using URWPGSim2D.Testing;
 using URWPGSim2D.Collision.Motion;

@@ -1,6 +1,3 @@
-using System.Text;
-using System.Threading;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Server.Tests.Trace;
 

@@ -1,6 +1,4 @@
 using URWPGSim2D.Collision;
-using URWPGSim2D.Collision.Fish;
-using URWPGSim2D.Collision.Shapes;
 
 namespace URWPGSim2D.Server.Tests.Simulation;
 

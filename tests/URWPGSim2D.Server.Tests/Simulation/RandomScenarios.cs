@@ -1,6 +1,3 @@
-using System.Globalization;
-using System.Text;
-
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>Random but valid scenario files (fixed seed per scenario) for the invariant tests.</summary>

@@ -1,6 +1,3 @@
-using System.Globalization;
-using System.Text;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

@@ -1,5 +1,3 @@
-using URWPGSim2D.Collision.Fish;
-
 namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>A ball at 5,000 mm/s (500 mm per cycle) passes through nothing.</summary>

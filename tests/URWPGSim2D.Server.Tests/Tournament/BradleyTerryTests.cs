@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>The maximum-likelihood fit against cases solved by hand and against a brute-force search of the likelihood.</summary>

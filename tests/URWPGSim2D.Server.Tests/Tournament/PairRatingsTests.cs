@@ -1,4 +1,3 @@
-using URWPGSim2D.Tournament;
 using Xunit.Abstractions;
 
 namespace URWPGSim2D.Server.Tests.Tournament;

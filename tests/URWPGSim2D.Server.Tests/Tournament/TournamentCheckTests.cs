@@ -1,5 +1,4 @@
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Tests.Hosting;
 
 namespace URWPGSim2D.Server.Tests.Tournament;
 

@@ -1,6 +1,3 @@
-using System.Text.Json;
-using URWPGSim2D.Server.Tests.Hosting;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>

@@ -1,7 +1,3 @@
-using System.Text;
-using System.Text.Json;
-using URWPGSim2D.Tournament;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using URWPGSim2D.Server.Tests.Hosting;
-using URWPGSim2D.Tournament;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>

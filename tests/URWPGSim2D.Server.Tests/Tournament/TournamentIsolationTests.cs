@@ -1,6 +1,3 @@
-using URWPGSim2D.Server.Tests.Docs;
-using URWPGSim2D.Server.Tests.Hosting;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>

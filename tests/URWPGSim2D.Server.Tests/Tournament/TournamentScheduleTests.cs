@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>The schedules: every pairing as often as documented, seed by seed, and the same every time.</summary>

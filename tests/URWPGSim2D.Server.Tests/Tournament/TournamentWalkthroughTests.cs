@@ -1,5 +1,3 @@
-using URWPGSim2D.Server.Tests.Docs;
-
 namespace URWPGSim2D.Server.Tests.Tournament;
 
 /// <summary>

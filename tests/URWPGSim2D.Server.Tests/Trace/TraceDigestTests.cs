@@ -1,6 +1,4 @@
-using System.Globalization;
 using System.Security.Cryptography;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Trace;
 

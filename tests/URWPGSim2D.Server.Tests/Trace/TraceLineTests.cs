@@ -1,6 +1,3 @@
-using System.Text;
-using System.Text.Json;
-using URWPGSim2D.Server.Tests.Simulation;
 using URWPGSim2D.Engine.Trace;
 
 namespace URWPGSim2D.Server.Tests.Trace;

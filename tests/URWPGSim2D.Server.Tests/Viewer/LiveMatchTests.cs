@@ -1,7 +1,3 @@
-using System.Text;
-using System.Text.Json;
-using System.Threading;
-using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Viewer;
 
 namespace URWPGSim2D.Server.Tests.Viewer;

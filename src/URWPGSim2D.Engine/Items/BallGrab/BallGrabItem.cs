@@ -8,23 +8,13 @@ namespace URWPGSim2D.Engine.Items.BallGrab;
 /// it starts from). Two halves; at half time the teams change ends and the balls are mirrored
 /// through the centre. Equal scores: the earlier first score wins.
 /// </summary>
-internal sealed class BallGrabItem : CompetitionItem
+internal sealed class BallGrabItem() : CompetitionItem(
+    slug: "ball-grab",
+    chineseName: "抢球博弈",
+    summary: "9 balls worth 3/2/1; a ball's value once per team on its first entry into the team's goal box; halves swap ends; tie: earlier first score",
+    teamCount: 2,
+    fishPerTeam: 2)
 {
-    /// <inheritdoc/>
-    public override string Slug => "ball-grab";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "抢球博弈";
-
-    /// <inheritdoc/>
-    public override string Summary => "9 balls worth 3/2/1; a ball's value once per team on its first entry into the team's goal box; halves swap ends; tie: earlier first score";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)
     {

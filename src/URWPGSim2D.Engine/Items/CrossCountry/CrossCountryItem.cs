@@ -9,23 +9,13 @@ namespace URWPGSim2D.Engine.Items.CrossCountry;
 /// time is up. The times of the four steps are the result (the original shows them; the score is
 /// the number of balls home).
 /// </summary>
-internal sealed class CrossCountryItem : CompetitionItem
+internal sealed class CrossCountryItem() : CompetitionItem(
+    slug: "cross-country",
+    chineseName: "障碍越野",
+    summary: "1 fish: touch ball 0, bring it within 22 mm of its target, then the same with ball 1; ends when both are home; times reported",
+    teamCount: 1,
+    fishPerTeam: 1)
 {
-    /// <inheritdoc/>
-    public override string Slug => "cross-country";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "障碍越野";
-
-    /// <inheritdoc/>
-    public override string Summary => "1 fish: touch ball 0, bring it within 22 mm of its target, then the same with ball 1; ends when both are home; times reported";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 1;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => CrossCountryLayout.Scenario() with
     {

@@ -5,23 +5,13 @@ namespace URWPGSim2D.Engine.Items.DoubleFishRace;
 /// centre wall through its holes; the match ends when one catches up with the other, and the larger
 /// angle swum wins (see <see cref="DoubleFishRaceReferee"/>).
 /// </summary>
-internal sealed class DoubleFishRaceItem : CompetitionItem
+internal sealed class DoubleFishRaceItem() : CompetitionItem(
+    slug: "double-fish-race-via-holes",
+    chineseName: "双鱼竞速",
+    summary: "1 fish each, half a lap apart, round the centre wall through its holes; ends when one catches up (angles within 2 degrees); larger angle swum wins; going back or cutting across: put back",
+    teamCount: 2,
+    fishPerTeam: 1)
 {
-    /// <inheritdoc/>
-    public override string Slug => "double-fish-race-via-holes";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "双鱼竞速";
-
-    /// <inheritdoc/>
-    public override string Summary => "1 fish each, half a lap apart, round the centre wall through its holes; ends when one catches up (angles within 2 degrees); larger angle swum wins; going back or cutting across: put back";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 1;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => DoubleFishRaceLayout.Scenario() with
     {

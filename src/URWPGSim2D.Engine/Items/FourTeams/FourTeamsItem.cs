@@ -5,28 +5,18 @@ namespace URWPGSim2D.Engine.Items.FourTeams;
 /// match with four teams of three fish, one from each side of the pool, and one ball at the centre;
 /// the original gives it no rules and no score (see <see cref="FourTeamsReferee"/>).
 /// </summary>
-internal sealed class FourTeamsItem : CompetitionItem
+internal sealed class FourTeamsItem() : CompetitionItem(
+    slug: "four-teams",
+    chineseName: "4支队伍测试",
+    summary: "4 teams of 3 fish, one from each side, and a ball at the centre: a test of four teams, no rules and no score; ends with the time",
+    teamCount: 4,
+    fishPerTeam: 3)
 {
     /// <summary>The fish's body length in the original, mm.</summary>
     public const float BodyLength = 160f;
 
     /// <summary>The fish's body width in the original, mm.</summary>
     public const float BodyWidth = 45f;
-
-    /// <inheritdoc/>
-    public override string Slug => "four-teams";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "4支队伍测试";
-
-    /// <inheritdoc/>
-    public override string Summary => "4 teams of 3 fish, one from each side, and a ball at the centre: a test of four teams, no rules and no score; ends with the time";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 4;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 3;
 
     /// <summary>
     /// The start pose of fish <paramref name="j"/> (0–2) of team <paramref name="team"/> (0–3): teams 0 and 1

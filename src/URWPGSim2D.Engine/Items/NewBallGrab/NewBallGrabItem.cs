@@ -8,28 +8,18 @@ namespace URWPGSim2D.Engine.Items.NewBallGrab;
 /// 3 × 3 grid 120 apart at the centre; a team's score is what lies in its box now — 1 a ball, 3 the
 /// centre ball — two halves, and a clutch shot on a tie (see <see cref="NewBallGrabReferee"/>).
 /// </summary>
-internal sealed class NewBallGrabItem : CompetitionItem
+internal sealed class NewBallGrabItem() : CompetitionItem(
+    slug: "new-ball-grab",
+    chineseName: "抢球大作战",
+    summary: "9 balls in a grid, the centre one worth 3, the rest 1; a team's score is what lies in its goal box now; halves swap ends; tie: clutch shot of 5 min, first to lead wins",
+    teamCount: 2,
+    fishPerTeam: 2)
 {
     /// <summary>Ball radius, mm (every ball is the standard one).</summary>
     public const float BallRadius = 58f;
 
     /// <summary>The ball worth 3 (the centre of the grid, drawn dark orange and black in the original).</summary>
     public const int CentreBall = 4;
-
-    /// <inheritdoc/>
-    public override string Slug => "new-ball-grab";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "抢球大作战";
-
-    /// <inheritdoc/>
-    public override string Summary => "9 balls in a grid, the centre one worth 3, the rest 1; a team's score is what lies in its goal box now; halves swap ends; tie: clutch shot of 5 min, first to lead wins";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
 
     /// <summary>Ball i's start: row i / 3 at x = 40 × (i − i % 3 − 3), column i % 3 at z = 120 × (i % 3 − 1), as the original's loop.</summary>
     public static Vector2 BallStart(int i) => new(40f * ((i - (i % 3)) - 3), 120f * ((i % 3) - 1));

@@ -13,26 +13,17 @@ namespace URWPGSim2D.Engine.Items.PlainScene;
 internal sealed class PlainScene : CompetitionItem
 {
     private PlainScene()
+        : base(
+            slug: "default",
+            chineseName: "match",
+            summary: "the plain scene: a ball wholly inside a goal mouth scores for the attacking team",
+            teamCount: 2,
+            fishPerTeam: 2)
     {
     }
 
     /// <summary>The one instance.</summary>
     public static PlainScene Instance { get; } = new();
-
-    /// <inheritdoc/>
-    public override string Slug => "default";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "match";
-
-    /// <inheritdoc/>
-    public override string Summary => "the plain scene: a ball wholly inside a goal mouth scores for the attacking team";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
 
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => DefaultScenario.Load() with { Seed = seed };

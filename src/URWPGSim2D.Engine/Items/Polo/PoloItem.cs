@@ -12,30 +12,20 @@ namespace URWPGSim2D.Engine.Items.Polo;
 /// defender or forward leaving its half. A ball held in a corner by both teams for 10 s is a dead
 /// ball, restarted at the nearest free-ball spot.
 /// </summary>
-internal sealed class PoloItem(int perTeam) : CompetitionItem
-{
-    /// <summary>Fish per team: 1, 3 or 5.</summary>
-    public int PerTeam { get; } = perTeam;
-
-    /// <inheritdoc/>
-    public override string Slug { get; } = string.Create(CultureInfo.InvariantCulture, $"polo-{perTeam}v{perTeam}");
-
-    /// <inheritdoc/>
-    public override string ChineseName { get; } = string.Create(CultureInfo.InvariantCulture, $"水球{perTeam}VS{perTeam}");
-
-    /// <inheritdoc/>
-    public override string Summary => PerTeam switch
+internal sealed class PoloItem(int perTeam) : CompetitionItem(
+    slug: string.Create(CultureInfo.InvariantCulture, $"polo-{perTeam}v{perTeam}"),
+    chineseName: string.Create(CultureInfo.InvariantCulture, $"水球{perTeam}VS{perTeam}"),
+    summary: perTeam switch
     {
         1 => "water polo: goal = ball wholly in the goal; halves swap ends; tie: extra time, penalties, clutch shot; 5 s in own goal sends off; dead ball",
         3 => "water polo 3v3: as 1v1, plus a third fish 5 s in the own forbidden zone is sent off",
         _ => "water polo 5v5 on 4500 x 3000: as 3v3, plus defenders stay in their half and forwards in the other",
-    };
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => PerTeam;
+    },
+    teamCount: 2,
+    fishPerTeam: perTeam)
+{
+    /// <summary>Fish per team: 1, 3 or 5.</summary>
+    public int PerTeam { get; } = perTeam;
 
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)

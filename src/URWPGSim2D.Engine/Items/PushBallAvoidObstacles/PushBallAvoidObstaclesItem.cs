@@ -6,23 +6,13 @@ namespace URWPGSim2D.Engine.Items.PushBallAvoidObstacles;
 /// Touching an obstacle costs time (fish 5 s, ball 3 s) and puts the fish or ball back; the score is
 /// the legs done (see <see cref="PushBallAvoidObstaclesReferee"/>).
 /// </summary>
-internal sealed class PushBallAvoidObstaclesItem : CompetitionItem
+internal sealed class PushBallAvoidObstaclesItem() : CompetitionItem(
+    slug: "push-ball-avoid-obstacles",
+    chineseName: "带球避障",
+    summary: "1 fish: 4 legs through two walls' passages (+1 each), the last two pushing the ball; ends when the ball is past x = -500; touching an obstacle: fish -5 s and back, ball -3 s and back",
+    teamCount: 1,
+    fishPerTeam: 1)
 {
-    /// <inheritdoc/>
-    public override string Slug => "push-ball-avoid-obstacles";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "带球避障";
-
-    /// <inheritdoc/>
-    public override string Summary => "1 fish: 4 legs through two walls' passages (+1 each), the last two pushing the ball; ends when the ball is past x = -500; touching an obstacle: fish -5 s and back, ball -3 s and back";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 1;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => PushBallAvoidObstaclesLayout.Scenario() with
     {

@@ -5,23 +5,13 @@ namespace URWPGSim2D.Engine.Items.PushBallViaChannel;
 /// goal mouth through the channel of each of three walls and into the left goal; each of the four
 /// stages scores 1 when both fish touched the ball during it (see <see cref="PushBallViaChannelReferee"/>).
 /// </summary>
-internal sealed class PushBallViaChannelItem : CompetitionItem
+internal sealed class PushBallViaChannelItem() : CompetitionItem(
+    slug: "push-ball-via-channel",
+    chineseName: "协作过孔",
+    summary: "2 fish push the ball past 3 walls through their channels and into the left goal; each of the 4 stages +1 if both fish touched the ball in it; ends when the ball is in the goal",
+    teamCount: 1,
+    fishPerTeam: 2)
 {
-    /// <inheritdoc/>
-    public override string Slug => "push-ball-via-channel";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "协作过孔";
-
-    /// <inheritdoc/>
-    public override string Summary => "2 fish push the ball past 3 walls through their channels and into the left goal; each of the 4 stages +1 if both fish touched the ball in it; ends when the ball is in the goal";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => PushBallViaChannelLayout.Scenario(seed) with
     {

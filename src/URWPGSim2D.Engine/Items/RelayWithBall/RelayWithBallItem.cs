@@ -5,23 +5,13 @@ namespace URWPGSim2D.Engine.Items.RelayWithBall;
 /// I-shaped obstacle four times, fish 0 through the top channel and fish 1 through the bottom one
 /// (see <see cref="RelayWithBallReferee"/>).
 /// </summary>
-internal sealed class RelayWithBallItem : CompetitionItem
+internal sealed class RelayWithBallItem() : CompetitionItem(
+    slug: "relay-with-ball",
+    chineseName: "带球接力",
+    summary: "2 fish: 4 legs carrying the ball between the pockets either side of the centre post (+1 each); fish 0 keeps to the top channel, fish 1 to the bottom; legs 2-4 have their channel; a foul puts back the fish or ball",
+    teamCount: 1,
+    fishPerTeam: 2)
 {
-    /// <inheritdoc/>
-    public override string Slug => "relay-with-ball";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "带球接力";
-
-    /// <inheritdoc/>
-    public override string Summary => "2 fish: 4 legs carrying the ball between the pockets either side of the centre post (+1 each); fish 0 keeps to the top channel, fish 1 to the bottom; legs 2-4 have their channel; a foul puts back the fish or ball";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => RelayWithBallLayout.Scenario() with
     {

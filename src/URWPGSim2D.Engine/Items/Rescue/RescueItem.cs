@@ -10,23 +10,13 @@ namespace URWPGSim2D.Engine.Items.Rescue;
 /// time. Equal scores: the earlier second rescue, then the earlier first rescue, then the earlier
 /// first touch of a ball wins (times counted from the start of each team's half).
 /// </summary>
-internal sealed class RescueItem : CompetitionItem
+internal sealed class RescueItem() : CompetitionItem(
+    slug: "rescue",
+    chineseName: "急速救援",
+    summary: "2 balls; +1 per ball whose centre enters the rescue zone; a half ends at 2 rescues; halves swap rescuer and defender; tie: earlier rescues, then earlier first touch",
+    teamCount: 2,
+    fishPerTeam: 2)
 {
-    /// <inheritdoc/>
-    public override string Slug => "rescue";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "急速救援";
-
-    /// <inheritdoc/>
-    public override string Summary => "2 balls; +1 per ball whose centre enters the rescue zone; a half ends at 2 rescues; halves swap rescuer and defender; tie: earlier rescues, then earlier first touch";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => RescueLayout.Scenario() with
     {

@@ -9,23 +9,13 @@ namespace URWPGSim2D.Engine.Items.Snooker;
 /// (a red goes back beside a side wall, a colour to its spot). Ends when every ball is down or the
 /// time is up.
 /// </summary>
-internal sealed class SnookerItem : CompetitionItem
+internal sealed class SnookerItem() : CompetitionItem(
+    slug: "snooker",
+    chineseName: "斯诺克",
+    summary: "6 reds (1) and 4 colours (id - 4 = 2..5) into 6 pockets: red then colour while reds remain, then colours in order; ends when all are down",
+    teamCount: 1,
+    fishPerTeam: 1)
 {
-    /// <inheritdoc/>
-    public override string Slug => "snooker";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "斯诺克";
-
-    /// <inheritdoc/>
-    public override string Summary => "6 reds (1) and 4 colours (id - 4 = 2..5) into 6 pockets: red then colour while reds remain, then colours in order; ends when all are down";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 1;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)
     {

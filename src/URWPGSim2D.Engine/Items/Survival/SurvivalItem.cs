@@ -9,23 +9,13 @@ namespace URWPGSim2D.Engine.Items.Survival;
 /// the prey is parked off the field). A half ends after its time or at three catches; the roles swap
 /// at half time. Equal scores: the earlier last catch, counted from the start of each half, wins.
 /// </summary>
-internal sealed class SurvivalItem : CompetitionItem
+internal sealed class SurvivalItem() : CompetitionItem(
+    slug: "survival",
+    chineseName: "生存挑战",
+    summary: "fish 0 hunts the other team's fish 1-3 (speed gear <= 8): +1 per catch by touch, the prey parked; a half ends at 3 catches; halves swap hunter and prey; tie: earlier last catch",
+    teamCount: 2,
+    fishPerTeam: SurvivalLayout.FishPerTeam)
 {
-    /// <inheritdoc/>
-    public override string Slug => "survival";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "生存挑战";
-
-    /// <inheritdoc/>
-    public override string Summary => "fish 0 hunts the other team's fish 1-3 (speed gear <= 8): +1 per catch by touch, the prey parked; a half ends at 3 catches; halves swap hunter and prey; tie: earlier last catch";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 2;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => SurvivalLayout.FishPerTeam;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)
     {

@@ -4,23 +4,13 @@ namespace URWPGSim2D.Engine.Items.SynchronisedSwimming;
 /// 花样游泳 synchronised swimming: one team of ten fish from random start poses swims a routine for
 /// people to judge; the server drives fish 0 with random codes. No balls, no score.
 /// </summary>
-internal sealed class SynchronisedSwimmingItem : CompetitionItem
+internal sealed class SynchronisedSwimmingItem() : CompetitionItem(
+    slug: "synchronised-swimming",
+    chineseName: "花样游泳",
+    summary: "10 fish from random poses (seeded); the server drives fish 0 with random codes (seeded); judged by people: no score",
+    teamCount: 1,
+    fishPerTeam: SynchronisedSwimmingLayout.FishCount)
 {
-    /// <inheritdoc/>
-    public override string Slug => "synchronised-swimming";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "花样游泳";
-
-    /// <inheritdoc/>
-    public override string Summary => "10 fish from random poses (seeded); the server drives fish 0 with random codes (seeded); judged by people: no score";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => SynchronisedSwimmingLayout.FishCount;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed) => SynchronisedSwimmingLayout.Scenario(seed) with
     {

@@ -8,23 +8,13 @@ namespace URWPGSim2D.Engine.Items.Transport;
 /// 22 mm of hole i. The match ends when all six are in or the time is up; the time of the last
 /// ball in is reported.
 /// </summary>
-internal sealed class TransportItem : CompetitionItem
+internal sealed class TransportItem() : CompetitionItem(
+    slug: "transport",
+    chineseName: "水中搬运",
+    summary: "2 fish, 6 balls: +1 when ball i's centre comes within 22 mm of hole i (once per ball); ends when all 6 are in; time of the last reported",
+    teamCount: 1,
+    fishPerTeam: 2)
 {
-    /// <inheritdoc/>
-    public override string Slug => "transport";
-
-    /// <inheritdoc/>
-    public override string ChineseName => "水中搬运";
-
-    /// <inheritdoc/>
-    public override string Summary => "2 fish, 6 balls: +1 when ball i's centre comes within 22 mm of hole i (once per ball); ends when all 6 are in; time of the last reported";
-
-    /// <inheritdoc/>
-    public override int TeamCount => 1;
-
-    /// <inheritdoc/>
-    public override int FishPerTeam => 2;
-
     /// <inheritdoc/>
     public override ScenarioDefinition CreateScenario(ulong seed)
     {

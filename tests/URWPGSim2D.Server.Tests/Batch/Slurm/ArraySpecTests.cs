@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament.Batch.Slurm;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary><see cref="ArraySpec"/>: the shards to play as sbatch's <c>--array</c> list.</summary>

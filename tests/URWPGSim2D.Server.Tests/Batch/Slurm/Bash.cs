@@ -1,5 +1,3 @@
-using System.Diagnostics;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary>Runs a script with bash, the shell Slurm runs the generated scripts with: the independent judge of their quoting.</summary>

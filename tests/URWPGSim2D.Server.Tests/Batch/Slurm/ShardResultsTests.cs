@@ -1,6 +1,3 @@
-using URWPGSim2D.Tournament.Batch;
-using URWPGSim2D.Tournament.Batch.Slurm;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary>

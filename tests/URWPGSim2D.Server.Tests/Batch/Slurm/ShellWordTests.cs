@@ -1,6 +1,3 @@
-using System.Text;
-using URWPGSim2D.Tournament.Batch.Slurm;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary>

@@ -1,5 +1,3 @@
-using URWPGSim2D.Tournament.Batch.Slurm;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary>

@@ -1,6 +1,3 @@
-using URWPGSim2D.Tournament.Batch.Slurm;
-using URWPGSim2D.Server.Cli;
-
 namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 
 /// <summary>

@@ -1,5 +1,4 @@
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;

@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;

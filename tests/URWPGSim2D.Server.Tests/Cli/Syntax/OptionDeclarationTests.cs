@@ -1,7 +1,6 @@
 using System.CommandLine;
 using System.CommandLine.Completions;
 using System.Text.RegularExpressions;
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;

@@ -1,6 +1,4 @@
-using URWPGSim2D.Server.Cli;
 using URWPGSim2D.Server.Cli.Syntax;
-using URWPGSim2D.Engine.Items.Catalog;
 
 namespace URWPGSim2D.Server.Tests.Cli.Syntax;
 

@@ -1,7 +1,4 @@
-using System.Net;
 using System.Net.Sockets;
-using System.Text;
-using System.Threading;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

@@ -1,7 +1,4 @@
 using System.Text.RegularExpressions;
-using System.Threading;
-using URWPGSim2D.Server.Cli;
-using URWPGSim2D.Engine.Items.Catalog;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

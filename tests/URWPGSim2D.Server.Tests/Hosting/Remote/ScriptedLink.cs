@@ -1,5 +1,3 @@
-using System.Text;
-
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 
 /// <summary>

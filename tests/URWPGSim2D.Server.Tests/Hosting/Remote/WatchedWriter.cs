@@ -1,6 +1,4 @@
-using System.Text;
 using System.Text.RegularExpressions;
-using System.Threading;
 
 namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 

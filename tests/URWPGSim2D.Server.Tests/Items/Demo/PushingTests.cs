@@ -1,7 +1,6 @@
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Engine.Items.Demo;
 using URWPGSim2D.Engine.Matches;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;
 

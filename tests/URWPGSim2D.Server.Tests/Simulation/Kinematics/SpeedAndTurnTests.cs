@@ -1,5 +1,4 @@
 using URWPGSim2D.Engine.Simulation.Kinematics;
-using URWPGSim2D.Server.Tests.Simulation;
 
 namespace URWPGSim2D.Server.Tests.Simulation.Kinematics;
 
