@@ -17,7 +17,7 @@ public sealed class InternalsVisibleToTests
     private static readonly string[] Referenced =
     [
         "URWPGSim2D.Server", "URWPGSim2D.Collision", "URWPGSim2D.Engine", "URWPGSim2D.Strategy", "URWPGSim2D.Compat",
-        "URWPGSim2D.Protocol", "URWPGSim2D.Hosting", "URWPGSim2D.Viewer", "URWPGSim2D.Tournament",
+        "URWPGSim2D.Protocol", "URWPGSim2D.Hosting", "URWPGSim2D.Viewer", "URWPGSim2D.Tournament", "URWPGSim2D.Ladder",
     ];
 
     [Fact]
