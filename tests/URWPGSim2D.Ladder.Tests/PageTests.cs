@@ -55,13 +55,29 @@ public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
         return Regex.Match(await shown.InnerTextAsync(), "([A-Za-z0-9_-]{43})$").Groups[1].Value;
     }
 
+    private static async Task<string> SignInResult(IPage page) =>
+        await page.Locator("#signin-result").CountAsync() > 0 ? await page.InnerTextAsync("#signin-result") : "(no sign-in form on this page)";
+
     private async Task SubmitThroughThePage(string token, string expectedName, string file)
     {
         var (page, errors) = await _browser.NewPageAsync();
         await page.GotoAsync(Url("/"));
         await page.FillAsync("#signin input[name=token]", token);
         await page.ClickAsync("#signin button");
-        await page.WaitForURLAsync(Url("/teams/" + expectedName));
+        // Signed in, the page moves to the team's page; refused, it says why under the form.
+        try
+        {
+            await page.WaitForFunctionAsync(
+                "name => location.pathname === '/teams/' + name || (document.getElementById('signin-result')?.textContent ?? '') !== ''",
+                expectedName, new() { Timeout = Browser.HangMs, PollingInterval = 100 });
+        }
+        catch (TimeoutException)
+        {
+            Assert.Fail($"sign-in as {expectedName}: neither the team's page nor a refusal after {Browser.HangMs} ms; at {page.Url}, page errors: {string.Join(" | ", errors)}");
+        }
+
+        Assert.True(page.Url == Url("/teams/" + expectedName), $"sign-in as {expectedName} stayed on {page.Url}: {await SignInResult(page)}");
+        await page.WaitForLoadStateAsync(LoadState.Load, new() { Timeout = Browser.HangMs });
         await Assertions.Expect(page.Locator("#upload")).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
         await page.SetInputFilesAsync("#submit input[type=file]", file);
         await page.ClickAsync("#submit button");
