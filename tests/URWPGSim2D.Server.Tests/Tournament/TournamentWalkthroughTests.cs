@@ -58,7 +58,7 @@ public sealed class TournamentWalkthroughTests : IDisposable
     private static string Play(string command, string tour)
     {
         string[] words = command.Split(' ', StringSplitOptions.RemoveEmptyEntries);
-        Assert.Equal("URWPGSim2D.Server", words[1]);
+        Assert.Equal("urwpgsim2d", words[1]);
         string cup = Path.Combine(Path.GetDirectoryName(tour)!, "cup");
         var args = words.Skip(2).Select(w => w == "tour" ? tour : w == "cup" ? cup : w.Contains("=samples/", StringComparison.Ordinal) ? w[..(w.IndexOf('=', StringComparison.Ordinal) + 1)] + Repository.PathOf(w[(w.IndexOf('=', StringComparison.Ordinal) + 1)..]) : w).ToArray();
         URWPGSim2D.Hosting.CompiledImages.Forget(); // each command is a process of its own: it compiles the sample again
