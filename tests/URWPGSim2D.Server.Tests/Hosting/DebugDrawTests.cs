@@ -9,16 +9,12 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// nothing when they are not recorded (no allocation, the same trace bytes).
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class DebugDrawTests : IDisposable
+public sealed class DebugDrawTests() : TempFolderTest("urwpg-draw-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-draw-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     // An SDK strategy that circles each of its fish (per fish, team colour), joins it to ball 0 (per fish, green) and marks ball 0 for the team.
     private string SdkDrawer()
     {
-        string path = Path.Combine(_folder, "SdkDrawer.cs");
+        string path = Path.Combine(Folder, "SdkDrawer.cs");
         File.WriteAllText(path, """
             using System;
             using URWPGSim2D.Strategies;
@@ -62,7 +58,7 @@ public sealed class DebugDrawTests : IDisposable
             var traces = new List<byte[]>();
             foreach (string isolation in new[] { "none", "process" })
             {
-                string trace = Path.Combine(_folder, $"{api}-{isolation}.jsonl");
+                string trace = Path.Combine(Folder, $"{api}-{isolation}.jsonl");
                 var run = CliRun.Of(string.Empty, "run", "--item", "default", "--noise", "off", "--cycles", "30", "--strategy", "0=" + spec,
                     "--isolation", isolation, "--strategy-timeout", "5000", "--debug-draw", "--trace", trace);
                 Assert.True(run.ExitCode == 0, run.Stderr);
@@ -109,7 +105,7 @@ public sealed class DebugDrawTests : IDisposable
     [InlineData("ball-grab")] // the demo draws its plan every cycle it is not escaping a wall
     public void Without_debug_draw_the_trace_is_the_same_bytes_as_with_it_less_the_drawings(string item)
     {
-        string on = Path.Combine(_folder, "on.jsonl"), off = Path.Combine(_folder, "off.jsonl");
+        string on = Path.Combine(Folder, "on.jsonl"), off = Path.Combine(Folder, "off.jsonl");
         var a = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--debug-draw", "--trace", on);
         var b = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--trace", off);
         Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
@@ -170,7 +166,7 @@ public sealed class DebugDrawTests : IDisposable
     [Fact]
     public void The_ball_grab_demo_draws_each_fishs_ball_its_route_into_the_teams_box_and_what_it_is_doing()
     {
-        string trace = Path.Combine(_folder, "ball-grab.jsonl");
+        string trace = Path.Combine(Folder, "ball-grab.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--noise", "off", "--cycles", "300", "--debug-draw", "--trace", trace);
         Assert.True(run.ExitCode == 0, run.Stderr);
         var lines = Lines(trace);

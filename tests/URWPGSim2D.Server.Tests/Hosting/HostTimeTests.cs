@@ -6,12 +6,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// processes of its own. The strategies below measure CPU time themselves, so the outcome does not
 /// depend on how busy the machine is; the time banks are too small for what they use.
 /// </summary>
-public sealed class HostTimeTests : IDisposable
+public sealed class HostTimeTests() : TempFolderTest("urwpg-time-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-time-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Attack("sandbox", "CPU")]
     [Theory]
     [InlineData("auto")]
@@ -21,7 +17,7 @@ public sealed class HostTimeTests : IDisposable
         Assert.True(SandboxCgroup.Unavailable is null, "CI runs where control groups can be made: " + SandboxCgroup.Unavailable);
         // In cycle 2 two threads spin until the process has used 2.5 s more CPU time, while the
         // deciding thread only waits for them (it uses next to none itself); the deadline is 1 s.
-        string file = Path.Combine(_folder, "Helpers.cs");
+        string file = Path.Combine(Folder, "Helpers.cs");
         File.WriteAllText(file, """
             using System; using System.Diagnostics; using System.Threading; using URWPGSim2D.Strategies;
             public sealed class Helpers : IStrategy
@@ -56,7 +52,7 @@ public sealed class HostTimeTests : IDisposable
     // An SDK strategy whose Decide body is given (s: snapshot, d: decisions).
     private string Sdk(string name, string body, string members = "")
     {
-        string file = Path.Combine(_folder, name + ".cs");
+        string file = Path.Combine(Folder, name + ".cs");
         File.WriteAllText(file, "using System; using System.Diagnostics; using System.IO; using System.Threading; using URWPGSim2D.Strategies;\n" + $$"""
             public sealed class {{name}} : IStrategy
             {
@@ -150,7 +146,7 @@ public sealed class HostTimeTests : IDisposable
             """);
         string[] Results(string name)
         {
-            string output = Path.Combine(_folder, name);
+            string output = Path.Combine(Folder, name);
             var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "slow=" + slow, "--entrant", "chaser=chase-ball", "--seeds", "2", "--cycles", "200", "--out", output);
             Assert.True(run.ExitCode == 0, run.Stderr);
             return File.ReadAllLines(Path.Combine(output, "results.jsonl"));

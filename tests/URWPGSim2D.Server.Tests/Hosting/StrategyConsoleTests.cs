@@ -6,15 +6,11 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// <c>--trace</c>, <c>--html</c> or <c>--live</c> prints each cycle's output there with its cycle and team.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class StrategyConsoleTests : IDisposable
+public sealed class StrategyConsoleTests() : TempFolderTest("urwpg-console-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-console-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     private string Printer()
     {
-        string path = Path.Combine(_folder, "Printer.cs");
+        string path = Path.Combine(Folder, "Printer.cs");
         File.WriteAllText(path, """
             using System;
             using URWPGSim2D.Strategies;
