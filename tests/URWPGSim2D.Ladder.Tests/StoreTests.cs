@@ -148,4 +148,24 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
 
         Assert.Equal(ids.Order(), claimed.Order());
     }
+
+    [Theory]
+    [InlineData("sqlite")]
+    [InlineData("postgresql")]
+    public void AFinalRoundDropsTheWaitingRankedMatchesAndStartsOnce(string database)
+    {
+        var (store, ladder, a, b) = Two(database);
+        var played = store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], false, id => (ulong)id);
+        store.Claim(played.Id);
+        store.FinishMatch(played.Id, "{}");
+        store.AddMatch(ladder.Id, [b.Id, a.Id], [0, 0], false, id => (ulong)id); // waiting: dropped
+
+        Assert.True(store.StartFinal(ladder.Id, [(a.Id, b.Id, 0, 0), (b.Id, a.Id, 0, 0)], id => 1000 + (ulong)id));
+        Assert.False(store.StartFinal(ladder.Id, [(a.Id, b.Id, 0, 0)], id => (ulong)id)); // once
+        var final = store.FinalMatches(ladder.Id);
+        Assert.Equal([(true, MatchRow.Queued), (true, MatchRow.Queued)], final.Select(m => (m.Final, m.State)));
+        Assert.All(final, m => Assert.Equal(1000 + (ulong)m.Id, m.Seed));
+        Assert.Equal([played.Id, .. final.Select(m => m.Id)], store.Matches(ladder.Id, [], 100).Select(m => m.Id).Order());
+        Assert.Equal(final[0].Id, store.ClaimNext(ladder.Id)!.Id);
+    }
 }

@@ -356,6 +356,36 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
+    public bool StartFinal(long ladder, IReadOnlyList<(long TeamA, long TeamB, long SubA, long SubB)> matches, Func<long, ulong> seedOf)
+    {
+        using var c = Open();
+        using var t = c.BeginTransaction();
+        if (Convert.ToInt64(Scalar(c, t, "SELECT COUNT(*) FROM matches WHERE ladder_id = @l AND final = 1", ("l", ladder)), CultureInfo.InvariantCulture) > 0)
+        {
+            return false;
+        }
+
+        Execute(c, t, "DELETE FROM matches WHERE ladder_id = @l AND state = @q AND final = 0", ("l", ladder), ("q", MatchRow.Queued));
+        foreach (var (teamA, teamB, subA, subB) in matches)
+        {
+            long id = Convert.ToInt64(Scalar(c, t,
+                "INSERT INTO matches (ladder_id, seed, team_a, team_b, sub_a, sub_b, state, created, final) VALUES (@l, 0, @ta, @tb, @sa, @sb, @s, @c, 1) RETURNING id",
+                ("l", ladder), ("ta", teamA), ("tb", teamB), ("sa", subA), ("sb", subB), ("s", MatchRow.Queued), ("c", Now())), CultureInfo.InvariantCulture);
+            Execute(c, t, "UPDATE matches SET seed = @s WHERE id = @id", ("s", unchecked((long)seedOf(id))), ("id", id));
+        }
+
+        t.Commit();
+        return true;
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<MatchRow> FinalMatches(long ladder)
+    {
+        using var c = Open();
+        return All(c, null, MatchSelect + " WHERE ladder_id = @l AND final = 1 ORDER BY id", ReadMatch, ("l", ladder));
+    }
+
+    /// <inheritdoc/>
     public void Dispose() => _owned?.Dispose();
 
     private DbConnection Open()
