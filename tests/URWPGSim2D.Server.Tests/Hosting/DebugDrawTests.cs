@@ -12,37 +12,23 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 public sealed class DebugDrawTests() : TempFolderTest("urwpg-draw-")
 {
     // An SDK strategy that circles each of its fish (per fish, team colour), joins it to ball 0 (per fish, green) and marks ball 0 for the team.
-    private string SdkDrawer()
-    {
-        string path = Path.Combine(Folder, "SdkDrawer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class SdkDrawer : IStrategy
+    private string SdkDrawer() => SdkStrategy.Write(Folder, "SdkDrawer", "sdk drawer", """
+        for (int i = 0; i < d.Length; i++)
+        {
+            var me = s.Fish[fish[i]];
+            d[i] = new Decision(6, 5);
+            DebugDraw.Circle(me.Position, 50f, fish[i], 0xffd700);
+            if (s.Balls.Length > 0)
             {
-                public string TeamName => "sdk drawer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        var me = s.Fish[fish[i]];
-                        d[i] = new Decision(6, 5);
-                        DebugDraw.Circle(me.Position, 50f, fish[i], 0xffd700);
-                        if (s.Balls.Length > 0)
-                        {
-                            DebugDraw.Line(me.Position, s.Balls[0].Position, fish[i]);
-                        }
-                    }
-
-                    if (s.Balls.Length > 0 && DebugDraw.IsOn)
-                    {
-                        DebugDraw.Text(s.Balls[0].Position, "ball 0");
-                    }
-                }
+                DebugDraw.Line(me.Position, s.Balls[0].Position, fish[i]);
             }
-            """);
-        return path;
-    }
+        }
+
+        if (s.Balls.Length > 0 && DebugDraw.IsOn)
+        {
+            DebugDraw.Text(s.Balls[0].Position, "ball 0");
+        }
+        """);
 
     private static JsonElement[] Lines(string trace) => File.ReadLines(trace).Select(l => JsonDocument.Parse(l).RootElement.Clone()).ToArray();
 

@@ -14,23 +14,8 @@ public sealed class HostileStrategyTests() : TempFolderTest("urwpg-hostile-")
     private const string Header = "using System; using System.IO; using System.Collections.Generic; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;\n";
 
     // An SDK strategy whose Decide body is given (s: snapshot, d: decisions).
-    private string Sdk(string name, string body, string members = "")
-    {
-        string file = Path.Combine(Folder, name + ".cs");
-        File.WriteAllText(file, Header + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                {{members}}
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body, string members = "") =>
+        SdkStrategy.Write(Folder, name, name, "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body, members, Header);
 
     // A deadline no honest call comes near on a loaded machine (ms of CPU time, 10 s of wall time), unless a test needs a short one.
     private static CliRun Run(string spec, int cycles = 20, params string[] more) => RunWithin("1000", spec, cycles, more);

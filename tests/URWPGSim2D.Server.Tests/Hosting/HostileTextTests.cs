@@ -10,21 +10,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// </summary>
 public sealed class HostileTextTests() : TempFolderTest("urwpg-text-")
 {
-    private string Sdk(string name, string body)
-    {
-        string file = Path.Combine(Folder, name + ".cs");
-        File.WriteAllText(file, "using System; using System.IO; using URWPGSim2D.Strategies;\n" + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body) =>
+        SdkStrategy.Write(Folder, name, name, body, usings: "using System; using System.IO; using URWPGSim2D.Strategies;");
 
     [Attack("faults", "control or escape characters")]
     [Theory]

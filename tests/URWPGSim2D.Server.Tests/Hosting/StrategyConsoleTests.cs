@@ -8,27 +8,13 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class StrategyConsoleTests() : TempFolderTest("urwpg-console-")
 {
-    private string Printer()
-    {
-        string path = Path.Combine(Folder, "Printer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Printer : IStrategy
-            {
-                public string TeamName => "printer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    Console.WriteLine($"saw cycle {s.Cycle}");
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = new Decision(5, 7);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+    private string Printer() => SdkStrategy.Write(Folder, "Printer", "printer", """
+        Console.WriteLine($"saw cycle {s.Cycle}");
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = new Decision(5, 7);
+        }
+        """);
 
     [Fact]
     public void What_a_hosted_strategy_prints_reaches_the_servers_standard_error_by_default()

@@ -12,33 +12,19 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class StrategyLogTests() : TempFolderTest("urwpg-log-")
 {
-    private string Printer()
-    {
-        string path = Path.Combine(Folder, "Printer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Printer : IStrategy
-            {
-                public string TeamName => "printer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    Console.WriteLine($"saw cycle {s.Cycle}");
-                    Console.Error.Write("fish " + fish.Length);
-                    if (s.Cycle == 7)
-                    {
-                        Console.Write(new string('x', 10000));
-                    }
+    private string Printer() => SdkStrategy.Write(Folder, "Printer", "printer", """
+        Console.WriteLine($"saw cycle {s.Cycle}");
+        Console.Error.Write("fish " + fish.Length);
+        if (s.Cycle == 7)
+        {
+            Console.Write(new string('x', 10000));
+        }
 
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = new Decision(5, 7);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = new Decision(5, 7);
+        }
+        """);
 
     private static Dictionary<int, string> Logs(string trace, int team) =>
         File.ReadLines(trace).Select(l => JsonDocument.Parse(l).RootElement)

@@ -68,18 +68,5 @@ public sealed class TournamentCheckTests() : TempFolderTest("urwpg-tour-check-")
 
     // DIR/NAME.cs: an SDK strategy named NAME whose Decide(s, fish, d) runs the body (Held: a list it may keep blocks in).
     private static void WriteStrategy(string dir, string name, string body) =>
-        File.WriteAllText(Path.Combine(dir, name + ".cs"), $$"""
-            using System;
-            using System.Collections.Generic;
-            using URWPGSim2D.Strategies;
-            public sealed class Strategy_{{name}} : IStrategy
-            {
-                private static readonly List<byte[]> Held = new();
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-            {{body}}
-                }
-            }
-            """);
+        File.WriteAllText(Path.Combine(dir, name + ".cs"), SdkStrategy.Source("Strategy_" + name, name, body, "private static readonly List<byte[]> Held = new();", "using System; using System.Collections.Generic; using URWPGSim2D.Strategies;"));
 }

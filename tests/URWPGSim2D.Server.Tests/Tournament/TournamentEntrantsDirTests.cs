@@ -11,18 +11,8 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class TournamentEntrantsDirTests() : TempFolderTest("urwpg-tour-dir-")
 {
-    private static string Sdk(string type, string team, int speed) => $$"""
-        using System;
-        using URWPGSim2D.Strategies;
-        public sealed class {{type}} : IStrategy
-        {
-            public string TeamName => "{{team}}";
-            public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-            {
-                for (int i = 0; i < d.Length; i++) d[i] = new Decision({{speed}}, 7);
-            }
-        }
-        """;
+    private static string Sdk(string type, string team, int speed) =>
+        SdkStrategy.Source(type, team, $"for (int i = 0; i < d.Length; i++) d[i] = new Decision({speed}, 7);");
 
     private CliRun Tournament(string dir, string tour, params string[] more)
     {

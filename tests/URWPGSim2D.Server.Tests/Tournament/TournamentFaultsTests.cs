@@ -10,24 +10,10 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class TournamentFaultsTests() : TempFolderTest("urwpg-tour-faults-")
 {
-    private string Thrower()
-    {
-        string file = Path.Combine(Folder, "Thrower.cs");
-        File.WriteAllText(file, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Thrower : IStrategy
-            {
-                public string TeamName => "thrower";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("boom at " + s.Cycle);
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
-                }
-            }
-            """);
-        return file;
-    }
+    private string Thrower() => SdkStrategy.Write(Folder, "Thrower", "thrower", """
+        if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("boom at " + s.Cycle);
+        for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
+        """);
 
     [Theory]
     [InlineData(true)]

@@ -7,22 +7,9 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class TournamentHostileTests() : TempFolderTest("urwpg-tour-hostile-")
 {
-    private string Sdk(string name, string body)
-    {
-        string file = Path.Combine(Folder, name + ".cs");
-        File.WriteAllText(file, "using System; using System.IO; using System.Diagnostics; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;\n" + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                public string TeamName => "{{name}}\u001b[2J";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body) =>
+        SdkStrategy.Write(Folder, name, name + "\\u001b[2J", "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body,
+            usings: "using System; using System.IO; using System.Diagnostics; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;");
 
     [Attack("faults", "it buries its scratch folder")]
     [Attack("faults", "it prints without end")]

@@ -8,26 +8,12 @@ namespace URWPGSim2D.Server.Tests.Trace;
 public sealed class TraceDecisionTests() : TempFolderTest("urwpg-decision-")
 {
     // Decides (VCode, TCode) from the cycle it sees and the fish's index: a known answer for every line.
-    private string Strategy()
-    {
-        string path = Path.Combine(Folder, "Pattern.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Pattern : IStrategy
-            {
-                public string TeamName => "pattern";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = s.Cycle < 60 ? new Decision(10, 3) : new Decision((s.Cycle + fish[i]) % 15, ((s.Cycle * 4) + fish[i]) % 15);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+    private string Strategy() => SdkStrategy.Write(Folder, "Pattern", "pattern", """
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = s.Cycle < 60 ? new Decision(10, 3) : new Decision((s.Cycle + fish[i]) % 15, ((s.Cycle * 4) + fish[i]) % 15);
+        }
+        """);
 
     [Theory]
     [InlineData("none")]
