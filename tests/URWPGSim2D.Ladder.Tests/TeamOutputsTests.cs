@@ -65,22 +65,32 @@ public sealed class TeamOutputsTests : IAsyncLifetime
         await _host.Send(HttpMethod.Post, "/api/ladder/pause", LadderHost.AdminToken);
         await LadderHost.Until(async () => (await _host.Get("/api/matches?state=running")).Body.GetProperty("matches").GetArrayLength() == 0, "the running match finished");
 
-        // Faults: one exception in each of its matches, the first one named.
-        var done = (await _host.Get("/api/matches?team=talker&state=done")).Body.GetProperty("matches").EnumerateArray().ToList();
+        // Faults: its matches' faults summed (one exception a match that reached that call; on a loaded machine a
+        // call may also miss its deadline), the first one named; each match's slowest call.
+        var done = (await _host.Get("/api/matches?team=talker&state=done")).Body.GetProperty("matches").EnumerateArray().OrderBy(m => m.GetProperty("id").GetInt64()).ToList();
         var team = (await _host.Get("/api/teams/talker")).Body;
         var faults = team.GetProperty("faults");
-        Assert.Equal((done.Count, done.Count, 0), (faults.GetProperty("exceptions").GetInt32(), faults.GetProperty("matches").GetInt32(), faults.GetProperty("hostEnds").GetInt32()));
-        Assert.Contains("talker slipped", faults.GetProperty("first").GetProperty("text").GetString(), StringComparison.Ordinal);
-        Assert.Equal(done.Min(m => m.GetProperty("id").GetInt64()), faults.GetProperty("first").GetProperty("match").GetInt64());
+        var mine = done.Select(m => m.GetProperty("sideFaults")[m.GetProperty("teams").EnumerateArray().Select(t => t.GetString()).ToList().IndexOf("talker")]).ToList();
+        int Sum(string kind) => mine.Where(f => f.ValueKind == System.Text.Json.JsonValueKind.Object).Sum(f => f.GetProperty(kind).GetInt32());
+        string detail = string.Join(" | ", mine.Select(f => f.GetRawText()));
+        Assert.True(mine.Count(f => f.ValueKind == System.Text.Json.JsonValueKind.Object && f.GetProperty("exceptions").GetInt32() == 1 && f.GetProperty("first").GetString()!.Contains("talker slipped", StringComparison.Ordinal)) >= 1, detail);
+        Assert.All(mine, f => Assert.True(f.ValueKind == System.Text.Json.JsonValueKind.Null || f.GetProperty("exceptions").GetInt32() <= 1, detail));
+        Assert.Equal(
+            (Sum("exceptions"), Sum("timeouts"), Sum("badAnswers"), Sum("hostEnds"), mine.Count(f => f.ValueKind == System.Text.Json.JsonValueKind.Object)),
+            (faults.GetProperty("exceptions").GetInt32(), faults.GetProperty("timeouts").GetInt32(), faults.GetProperty("badAnswers").GetInt32(), faults.GetProperty("hostEnds").GetInt32(), faults.GetProperty("matches").GetInt32()));
+        int first = mine.FindIndex(f => f.ValueKind == System.Text.Json.JsonValueKind.Object);
+        Assert.Equal(done[first].GetProperty("id").GetInt64(), faults.GetProperty("first").GetProperty("match").GetInt64());
         foreach (var m in done)
         {
             int side = m.GetProperty("teams").EnumerateArray().Select(t => t.GetString()).ToList().IndexOf("talker");
-            Assert.Equal(1, m.GetProperty("sideFaults")[side].GetProperty("exceptions").GetInt32());
             Assert.True(m.GetProperty("slowestMs")[side].GetDouble() >= 0); // a submission plays in a strategy host: its calls are timed
         }
 
         // Its log: what it printed, each cycle's output once, to itself only.
-        long id = done[0].GetProperty("id").GetInt64();
+        int clean = mine.FindIndex(f => f.ValueKind == System.Text.Json.JsonValueKind.Object && f.GetProperty("exceptions").GetInt32() == 1
+            && f.GetProperty("timeouts").GetInt32() == 0 && f.GetProperty("hostEnds").GetInt32() == 0 && f.GetProperty("badAnswers").GetInt32() == 0);
+        Assert.True(clean >= 0, "a match where the strategy was called every cycle: " + detail);
+        long id = done[clean].GetProperty("id").GetInt64();
         string path = $"/api/teams/talker/matches/{id}/log";
         var own = await _host.Get(path, token);
         Assert.Equal(200, own.Status);
