@@ -87,7 +87,7 @@ public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Hea
             names[side] = Header.Entrants[match.Sides[side]].Name;
         }
 
-        string why = StandingsText.Line(e is TeamFaultException t ? $"the match failed inside the server: {t.InnerException!.GetType().Name}: {t.InnerException.Message}" : $"the match failed inside the server: {e.GetType().Name}: {e.Message}");
+        string why = StandingsText.Line(e is TeamFaultException { InnerException: RemoteWaitException w } ? w.Message : e is TeamFaultException t ? $"the match failed inside the server: {t.InnerException!.GetType().Name}: {t.InnerException.Message}" : $"the match failed inside the server: {e.GetType().Name}: {e.Message}");
         var teams = new List<int>();
         for (int side = 0; side < match.Sides.Count; side++)
         {

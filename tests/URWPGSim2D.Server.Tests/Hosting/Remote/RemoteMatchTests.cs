@@ -127,7 +127,7 @@ public sealed class RemoteMatchTests : IDisposable
     [InlineData("--strategy 0=remote:0 --remote-host example.org", "run: --remote-host must be an IP address (127.0.0.1, 0.0.0.0, ::1, ...), got \"example.org\"")]
     [InlineData("--strategy 0=remote:0 --remote-token 1=abc", "run: --remote-token for team 1, which is not remote")]
     [InlineData("--strategy 0=remote:0 --remote-token a --remote-token b", "run: --remote-token given twice for team 0")]
-    [InlineData("--strategy 0=remote:0 --batch 2", "run: a remote team plays one match: --batch and --live do not go with --strategy TEAM=remote:PORT")]
+    [InlineData("--strategy 0=remote:0 --batch 2", "run: a remote team plays one match at a time: --batch and --slurm do not go with --strategy TEAM=remote:PORT")]
     [InlineData("--strategy 0=remote:7000 --strategy 1=remote:7000", "run: both remote teams ask for port 7000; give each its own (or 0 for any free one)")]
     public void Bad_remote_options_are_one_line_and_exit_2(string arguments, string message)
     {
@@ -170,7 +170,7 @@ public sealed class RemoteMatchTests : IDisposable
     }
 
     // The server on its own thread; the function returned waits for its end.
-    private static Func<CliRun> Background(string[] run, WatchedWriter stderr)
+    internal static Func<CliRun> Background(string[] run, WatchedWriter stderr)
     {
         CliRun? result = null;
         var thread = new Thread(() => result = Server(run, stderr)) { IsBackground = true };

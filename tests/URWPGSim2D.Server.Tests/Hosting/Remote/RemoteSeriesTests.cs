@@ -1,0 +1,119 @@
+using System.Text.RegularExpressions;
+
+namespace URWPGSim2D.Server.Tests.Hosting.Remote;
+
+/// <summary>
+/// A remote client that plays a series (<c>"series":true</c>, what <c>connect</c> says): a tournament's
+/// remote entrant (<c>--entrant NAME=remote:PORT</c>) connects once and plays every one of its matches
+/// on that connection, named in the standings by the name its client sent; <c>run --live</c> plays a
+/// remote team; the remote options of <c>tournament</c> are checked. Server and client each run on a
+/// thread of the test over loopback TCP.
+/// </summary>
+[Collection(InProcessStaticsCollection.Name)]
+public sealed class RemoteSeriesTests : IDisposable
+{
+    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-series-").FullName;
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    [Fact]
+    public void A_remote_entrant_connects_once_and_plays_each_of_its_matches_in_turn()
+    {
+        string outDir = Path.Combine(_folder, "t");
+        string[] tournament = ["tournament", "--item", "polo-1v1", "--entrant", "alice=remote:0", "--entrant", "bob=chase-ball", "--entrant", "carol=idle",
+            "--entrant", "dave=remote:0", "--seeds", "1", "--cycles", "30", "--strategy-timeout", "20000", "--out", outDir];
+        var stderr = new WatchedWriter();
+        var server = RemoteMatchTests.Background(tournament, stderr);
+        int[] ports = stderr.WaitForPorts(2); // both entrants' ports, before any client has connected
+        Assert.NotEqual(ports[0], ports[1]);
+        Assert.DoesNotContain("connected from", stderr.ToString(), StringComparison.Ordinal);
+        Assert.Matches(@"^entrant alice \(remote\): waiting for a client on 127\.0\.0\.1:\d+\nentrant dave \(remote\): waiting for a client on 127\.0\.0\.1:\d+\n", stderr.ToString());
+
+        CliRun? second = null;
+        var other = new Thread(() => second = CliRun.Of(string.Empty, "connect", $"127.0.0.1:{ports[1]}", "idle")) { IsBackground = true };
+        other.Start();
+        var first = CliRun.Of(string.Empty, "connect", $"127.0.0.1:{ports[0]}", "chase-ball");
+        other.Join();
+        var result = server();
+        Assert.True(result.ExitCode == 0 && first.ExitCode == 0 && second!.ExitCode == 0, result.Stdout + result.Stderr + first.Stderr + second!.Stderr);
+
+        // Every match was played (no forfeit), each remote entrant's on its one connection: one line per match on its client.
+        var (_, records, _) = TournamentFile.Read(Path.Combine(outDir, TournamentOutputs.Results));
+        Assert.NotEmpty(records);
+        Assert.All(records, r => Assert.False(r.IsForfeit, string.Join("; ", r.Reasons)));
+        int Matches(string name) => records.Count(r => r.Entrants.Contains(name));
+        Assert.True(Matches("alice") >= 3, "alice plays every other entrant");
+        Assert.Equal(Matches("alice"), Lines(first.Stdout));
+        Assert.Equal(Matches("dave"), Lines(second.Stdout));
+        Assert.Single(Regex.Matches(result.Stderr, @"entrant alice \(remote\): client ""chase-ball"" connected from"));
+        Assert.Single(Regex.Matches(result.Stderr, @"entrant dave \(remote\): client ""idle"" connected from"));
+
+        // The standings know each remote entrant by its name and show the name its client sent.
+        string standings = File.ReadAllText(Path.Combine(outDir, TournamentOutputs.StandingsMarkdownName));
+        Assert.Contains("remote:0", standings, StringComparison.Ordinal);
+        Assert.Contains("chase-ball", Regex.Match(standings, @"\| alice \|[^\n]*").Value, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void A_remote_entrant_whose_client_does_not_come_forfeits_its_matches_and_the_others_play()
+    {
+        string outDir = Path.Combine(_folder, "t");
+        var result = CliRun.Of(string.Empty, "tournament", "--item", "polo-1v1", "--entrant", "ghost=remote:0", "--entrant", "bob=chase-ball", "--entrant", "carol=idle",
+            "--seeds", "1", "--cycles", "10", "--remote-wait", "1", "--out", outDir);
+        Assert.True(result.ExitCode == 0, result.Stdout + result.Stderr);
+        var (_, records, _) = TournamentFile.Read(Path.Combine(outDir, TournamentOutputs.Results));
+        foreach (var r in records)
+        {
+            bool ghost = r.Entrants.Contains("ghost");
+            Assert.Equal(ghost, r.IsForfeit);
+            if (ghost)
+            {
+                Assert.Equal([r.Entrants.ToList().IndexOf("ghost")], r.Forfeits);
+                Assert.Matches(@"^--entrant ghost=remote: no client connected to 127\.0\.0\.1:\d+ within 1 s \(--remote-wait\)$", r.Reasons[0]);
+            }
+        }
+    }
+
+    [Fact]
+    public async Task A_live_match_plays_a_remote_team_named_by_its_client()
+    {
+        var options = RunOptions.Parse(["--live", "--speed", "100", "--cycles", "20", "--item", "polo-1v1", "--strategy", "0=remote:0", "--strategy", "1=idle",
+            "--strategy-timeout", "20000", "--port", LiveRunTests.FreePort().ToString(CultureInfo.InvariantCulture)]);
+        var output = new LiveRunTests.SignallingWriter("match over");
+        var stderr = new WatchedWriter();
+        var console = new CliConsole(new StringReader(string.Empty), output, stderr);
+        var teams = RunCommand.LoadTeams(options, console);
+        using var stop = new CancellationTokenSource();
+        var served = Task.Run(() => LiveRun.Serve(options, ItemRegistry.Find("polo-1v1")!.CreateScenario(options.Seed), teams, console, stop.Token, _ => { }));
+        int port = stderr.WaitForPort();
+        CliRun? client = null;
+        var connect = new Thread(() => client = CliRun.Of(string.Empty, "connect", $"127.0.0.1:{port}", "chase-ball")) { IsBackground = true };
+        connect.Start();
+
+        Assert.True(await Task.WhenAny(output.Seen, served, Task.Delay(120_000)) == output.Seen, "no summary: " + output + " / stderr: " + stderr);
+        Assert.Matches(@"\nscore: team 0 \(chase-ball \[remote:\d+\]\) \d+, team 1 \(idle\) \d+\n", "\n" + output);
+        stop.Cancel();
+        Assert.Equal(0, await served);
+        teams[0]!.Remote!.Dispose(); // the run ends: the client, kept for a restart, reads the end of the stream
+        connect.Join();
+        Assert.True(client!.ExitCode == 0, client.Stderr);
+        Assert.Matches(@"^match ended after 20 cycles: \d+:\d+, 0 fault\(s\) charged to this team\n$", client.Stdout);
+    }
+
+    [Theory]
+    [InlineData("--entrant a=remote:x --entrant b=idle", "tournament: --entrant NAME=remote:PORT must be an integer 0..65535, got \"x\"")]
+    [InlineData("--entrant a=idle --entrant b=chase-ball --remote-wait 5", "tournament: --remote-wait, --remote-host and --remote-token belong to --entrant NAME=remote:PORT")]
+    [InlineData("--entrant a=remote:7000 --entrant b=remote:7000", "tournament: remote entrants a and b both ask for port 7000; give each its own (or 0 for any free one)")]
+    [InlineData("--entrant a=remote:0 --entrant b=idle --remote-token b=x", "tournament: --remote-token for entrant b, which is not remote")]
+    [InlineData("--entrant a=remote:0 --entrant b=idle --remote-token x --remote-token y", "tournament: --remote-token given twice for every remote entrant")]
+    [InlineData("--entrant a=remote:0 --entrant b=idle --check", "tournament: a remote entrant plays its matches here, one at a time, with its client: --check, --slurm, --shard and --merge do not go with --entrant NAME=remote:PORT")]
+    public void Bad_remote_entrant_options_are_one_line_and_exit_2(string arguments, string message)
+    {
+        var result = CliRun.Of(string.Empty, ["tournament", "--item", "polo-1v1", "--out", Path.Combine(_folder, "t"), .. arguments.Split(' ')]);
+        Assert.Equal(2, result.ExitCode);
+        Assert.StartsWith(message + ". Usage: ", result.Stderr, StringComparison.Ordinal);
+        Assert.Single(result.Stderr.TrimEnd('\n').Split('\n'));
+    }
+
+    private static int Lines(string text) => Regex.Matches(text, @"^match ended after \d+ cycles: \d+:\d+, \d+ fault\(s\) charged to this team$", RegexOptions.Multiline).Count;
+}
