@@ -43,6 +43,9 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     /// <summary>True: after a disconnect another client may take the team over.</summary>
     public bool Reconnects => true;
 
+    /// <summary>Whether the connected client plays a series (it is told the end and kept, even after its team ran out of time).</summary>
+    public bool Series => _current?.Series == true;
+
     /// <summary>Whether a client is connected.</summary>
     public bool Connected => _current is not null;
 

@@ -69,6 +69,9 @@ internal sealed class StrategyConnection : IConnectedStrategy
     /// <summary>Whether the connection goes on from an earlier match: answers to that match that come before the hello are skipped.</summary>
     public bool Continued { get; }
 
+    /// <summary>Whether the client plays a series and the server keeps it for its next match (both said <c>"series":true</c>).</summary>
+    public bool Series => _series;
+
     /// <summary>Whether the server keeps a client that asks for it (<c>"series":true</c>) for its next match after <c>end</c> (a remote team).</summary>
     public bool OffersSeries { get; init; }
 
