@@ -21,7 +21,9 @@ const subs = m => (m.submissions || []).map(s => s === null ? "house" : "#" + s)
 async function standings() {
   const s = await api("/api/standings");
   document.getElementById("item").textContent = s.item;
-  document.getElementById("summary").textContent = s.matches + " matches played";
+  document.getElementById("summary").textContent = s.final
+    ? `final round: top ${s.finalRound.top}, each pair ${s.finalRound.rounds} times; ${s.finalRound.played} of ${s.finalRound.matches} matches played (ranked play has stopped)`
+    : s.matches + " matches played";
   document.querySelector("#standings tbody").innerHTML = s.entrants.map(e =>
     `<tr><td class="num">${e.rank}</td><td>${teamLink(e.name)}</td><td class="num">${e.rating}</td><td>${e.ci[0]} to ${e.ci[1]}</td>` +
     `<td class="num">${e.played}</td><td class="num">${e.wins}</td><td class="num">${e.draws}</td><td class="num">${e.losses}</td></tr>`).join("");
@@ -31,13 +33,26 @@ async function team() {
   const name = decodeURIComponent(location.pathname.split("/")[2]);
   const t = await api("/api/teams/" + encodeURIComponent(name));
   document.getElementById("name").textContent = t.name;
-  document.getElementById("who").textContent = t.house ? "house entrant: " + t.house : t.signedIn ? "signed in: you see your compile logs" : "";
+  document.getElementById("who").textContent = t.house ? "house entrant: " + t.house : t.signedIn ? "signed in: you see your compile logs and your strategy's logs" : "";
   document.getElementById("upload").hidden = !t.signedIn;
   document.querySelector("#submissions tbody").innerHTML = t.submissions.map(s =>
     `<tr><td class="num">${s.id}</td><td>${esc(s.created)}</td><td>${esc(s.state)}</td><td><pre>${esc(s.log ?? "")}</pre></td></tr>`).join("");
+  document.getElementById("faults").textContent = t.faults
+    ? `faults: ${t.faults.counts}; first in match ${t.faults.first.match}${t.faults.first.cycle ? ", cycle " + t.faults.first.cycle : ""}: ${t.faults.first.text}` : "no faults";
   const m = await api("/api/matches?team=" + encodeURIComponent(name) + "&limit=100");
+  const side = x => x.teams.indexOf(t.name);
+  const faults = x => { const f = (x.sideFaults || [])[side(x)]; return f ? [[f.exceptions, "exceptions"], [f.timeouts, "timeouts"], [f.badAnswers, "bad answers"], [f.hostEnds, "host ends"]].filter(p => p[0]).map(p => p.join(" ")).join(", ") : ""; };
+  const slowest = x => { const ms = (x.slowestMs || [])[side(x)]; return ms === undefined || ms === null ? "" : ms + " ms"; };
+  const log = x => t.signedIn && x.state === "done" ? `<button class="log" data-match="${x.id}">log</button>` : "";
   document.querySelector("#matches tbody").innerHTML = m.matches.map(x =>
-    `<tr><td class="num">${matchLink(x.id)}</td><td>${esc(x.state)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${score(x)}</td><td>${subs(x)}</td></tr>`).join("");
+    `<tr><td class="num">${matchLink(x.id)}</td><td>${esc(x.state)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${score(x)}</td><td>${subs(x)}</td>` +
+    `<td>${esc(faults(x))}</td><td class="num">${esc(slowest(x))}</td><td>${log(x)}</td></tr>`).join("");
+  for (const b of document.querySelectorAll("#matches button.log")) {
+    b.addEventListener("click", async () => {
+      try { const l = await api(`/api/teams/${encodeURIComponent(t.name)}/matches/${b.dataset.match}/log`); show("strategy-log", `match ${l.match}:\n${l.log || "(nothing printed)"}`); }
+      catch (e) { show("strategy-log", e.message, true); }
+    });
+  }
 }
 
 async function match() {
@@ -63,6 +78,8 @@ async function organiser() {
   const l = await api("/api/ladder");
   document.getElementById("ladder").textContent = `${l.item}, ${l.cycles} cycles a match, ${l.paused ? "paused" : "playing"}, ${l.submissionsPerDay} submissions a day`;
   document.getElementById("admin").hidden = !token("admin");
+  document.getElementById("final-state").textContent = l.final
+    ? `final round started: ${l.final.teams.join(", ")}, each pair ${l.final.rounds} times; ${l.final.played} of ${l.final.matches} played` : "";
 }
 
 function form(id, handler) {
@@ -97,6 +114,10 @@ form("add-team", async d => {
   catch (e) { show("team-token", e.message, true); }
 });
 form("requeue", async d => { try { await post(`/api/matches/${encodeURIComponent(d.get("id"))}/requeue`, {}, "admin"); show("admin-result", "requeued"); } catch (e) { show("admin-result", e.message, true); } });
+form("final", async d => {
+  try { const f = await post("/api/final", { top: Number(d.get("top")), rounds: Number(d.get("rounds")) }, "admin"); show("admin-result", `final round started: ${f.final.matches} matches`); refresh(); }
+  catch (e) { show("admin-result", e.message, true); }
+});
 form("limit", async d => { try { await post("/api/settings", { submissionsPerDay: Number(d.get("n")) }, "admin"); show("admin-result", "set"); refresh(); } catch (e) { show("admin-result", e.message, true); } });
 for (const [id, path] of [["pause", "/api/ladder/pause"], ["resume", "/api/ladder/resume"]]) {
   const b = document.getElementById(id);
