@@ -6,8 +6,8 @@ namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 /// A remote client that plays a series (<c>"series":true</c>, what <c>connect</c> says): a tournament's
 /// remote entrant (<c>--entrant NAME=remote:PORT</c>) connects once and plays every one of its matches
 /// on that connection, named in the standings by the name its client sent; <c>run --live</c> plays a
-/// remote team; the remote options of <c>tournament</c> are checked. Server and client each run on a
-/// thread of the test over loopback TCP.
+/// remote team (the remote options of <c>tournament</c> are checked with <c>run</c>'s, in
+/// <see cref="RemoteMatchTests"/>). Server and client each run on a thread of the test over loopback TCP.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
 public sealed class RemoteSeriesTests : IDisposable
@@ -100,21 +100,6 @@ public sealed class RemoteSeriesTests : IDisposable
         connect.Join();
         Assert.True(client!.ExitCode == 0, client.Stderr);
         Assert.Matches(@"^match ended after \d+ cycles: \d+:\d+, 0 fault\(s\) charged to this team\n$", client.Stdout); // one match: a tie plays on past the 20 cycles
-    }
-
-    [Theory]
-    [InlineData("--entrant a=remote:x --entrant b=idle", "tournament: --entrant NAME=remote:PORT must be an integer 0..65535, got \"x\"")]
-    [InlineData("--entrant a=idle --entrant b=chase-ball --remote-wait 5", "tournament: --remote-wait, --remote-host and --remote-token belong to --entrant NAME=remote:PORT")]
-    [InlineData("--entrant a=remote:7000 --entrant b=remote:7000", "tournament: remote entrants a and b both ask for port 7000; give each its own (or 0 for any free one)")]
-    [InlineData("--entrant a=remote:0 --entrant b=idle --remote-token b=x", "tournament: --remote-token for entrant b, which is not remote")]
-    [InlineData("--entrant a=remote:0 --entrant b=idle --remote-token x --remote-token y", "tournament: --remote-token given twice for every remote entrant")]
-    [InlineData("--entrant a=remote:0 --entrant b=idle --check", "tournament: a remote entrant plays its matches here, one at a time, with its client: --check, --slurm, --shard and --merge do not go with --entrant NAME=remote:PORT")]
-    public void Bad_remote_entrant_options_are_one_line_and_exit_2(string arguments, string message)
-    {
-        var result = CliRun.Of(string.Empty, ["tournament", "--item", "polo-1v1", "--out", Path.Combine(_folder, "t"), .. arguments.Split(' ')]);
-        Assert.Equal(2, result.ExitCode);
-        Assert.StartsWith(message + ". Usage: ", result.Stderr, StringComparison.Ordinal);
-        Assert.Single(result.Stderr.TrimEnd('\n').Split('\n'));
     }
 
     private static int Lines(string text) => Regex.Matches(text, @"^match ended after \d+ cycles: \d+:\d+, \d+ fault\(s\) charged to this team$", RegexOptions.Multiline).Count;
