@@ -57,6 +57,23 @@ public sealed class LadderClient : IDisposable
         return (answer.RootElement.GetProperty("name").GetString()!, answer.RootElement.GetProperty("token").GetString()!);
     }
 
+    /// <summary>Starts the final round: every pair of the top <paramref name="top"/> plays <paramref name="rounds"/> matches; returns the finalists and the matches queued.</summary>
+    /// <param name="top">How many of the highest-ranked teams play the final.</param>
+    /// <param name="rounds">Matches of each pair.</param>
+    public async Task<(IReadOnlyList<string> Teams, int Matches)> StartFinalAsync(int top, int rounds)
+    {
+        string body = Json(w =>
+        {
+            w.WriteStartObject();
+            w.WriteNumber("top", top);
+            w.WriteNumber("rounds", rounds);
+            w.WriteEndObject();
+        });
+        using var answer = await Send(() => _http.PostAsync("api/final", new StringContent(body, Encoding.UTF8, "application/json")));
+        var final = answer.RootElement.GetProperty("final");
+        return ([.. final.GetProperty("teams").EnumerateArray().Select(t => t.GetString()!)], final.GetProperty("matches").GetInt32());
+    }
+
     /// <summary>
     /// Submits <paramref name="path"/>: a folder of <c>.cs</c> files (sent as one .zip of its sources),
     /// one <c>.cs</c> file or a DLL. Returns the submission's id, whether it checked, and its log.

@@ -301,15 +301,15 @@ internal sealed class LadderCore : IDisposable
     /// <summary>
     /// Queues the next ranked match when fewer than <paramref name="waiting"/> wait: the team with the
     /// fewest games (then the lowest id) against the team nearest in rating (then fewest games, lowest
-    /// id); sides alternate with the match id. Null when paused, when fewer than two teams can play, or
-    /// when enough wait.
+    /// id); sides alternate with the match id. Null when paused, once the final round has started, when
+    /// fewer than two teams can play, or when enough wait.
     /// </summary>
     public MatchRow? MakeMatch(int waiting)
     {
         lock (_matchmaking)
         {
             var ladder = Ladder;
-            if (ladder.Paused || Store.Matches(LadderId, [MatchRow.Queued], waiting).Count >= waiting)
+            if (ladder.Paused || Store.FinalMatches(LadderId).Count > 0 || Store.Matches(LadderId, [MatchRow.Queued], waiting).Count >= waiting)
             {
                 return null;
             }
@@ -372,13 +372,93 @@ internal sealed class LadderCore : IDisposable
         Interlocked.Increment(ref _changes);
     }
 
-    /// <summary>The standings now (computed again only when a record or a team changed).</summary>
+    /// <summary>
+    /// Starts the final round: every pair of the <paramref name="top"/> teams ranked highest now (of those
+    /// that can play) plays <paramref name="rounds"/> matches, each team with the submission it plays now;
+    /// ranked play stops (the queued ranked matches are dropped, no more are made) and the standings are
+    /// from then on those of the final round's matches alone. Sides alternate between a pair's matches.
+    /// </summary>
+    public FinalRound StartFinal(int top, int rounds)
+    {
+        if (top < 2 || top > 1000)
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"top must be 2 to 1000, got {top}"));
+        }
+
+        if (rounds < 1 || rounds > 100)
+        {
+            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"rounds must be 1 to 100, got {rounds}"));
+        }
+
+        lock (_matchmaking)
+        {
+            if (Store.FinalMatches(LadderId).Count > 0)
+            {
+                throw new LadderInputException("final: the final round has started already");
+            }
+
+            var playing = Playing();
+            var byName = Store.Teams().ToDictionary(t => t.Name, StringComparer.Ordinal);
+            var ranked = Standings().Standings.Rows.OrderBy(r => r.Rank)
+                .Select(r => byName.TryGetValue(r.Name, out var t) ? t : null)
+                .Where(t => t is not null && playing.ContainsKey(t.Id))
+                .Select(t => t!)
+                .ToList();
+            if (ranked.Count < top)
+            {
+                throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"top: {ranked.Count} teams can play, fewer than {top}"));
+            }
+
+            var finalists = ranked.Take(top).ToList();
+            var pairs = new List<(TeamRow A, TeamRow B)>();
+            for (int i = 0; i < finalists.Count; i++)
+            {
+                for (int j = i + 1; j < finalists.Count; j++)
+                {
+                    pairs.Add((finalists[i], finalists[j]));
+                }
+            }
+
+            // The matches get consecutive ids and Play swaps the sides of odd ids: with an even number of
+            // pairs, a pair's id parity is the same every round, so its order is swapped every other round.
+            var matches = new List<(long, long, long, long)>(pairs.Count * rounds);
+            for (int r = 0; r < rounds; r++)
+            {
+                bool swap = pairs.Count % 2 == 0 && r % 2 == 1;
+                foreach (var (a, b) in pairs)
+                {
+                    var (x, y) = swap ? (b, a) : (a, b);
+                    matches.Add((x.Id, y.Id, playing[x.Id].Submission, playing[y.Id].Submission));
+                }
+            }
+
+            var ladder = Ladder;
+            if (!Store.StartFinal(LadderId, matches, id => ladder.FirstSeed + (ulong)id))
+            {
+                throw new LadderInputException("final: the final round has started already");
+            }
+        }
+
+        Touch();
+        return Final()!;
+    }
+
+    /// <summary>The final round (its teams, matches per pair, matches played and in all), or null before it starts.</summary>
+    public FinalRound? Final() => FinalRound.Of(Store.FinalMatches(LadderId));
+
+    /// <summary>
+    /// The standings now (computed again only when a record or a team changed): of the ranked matches,
+    /// or once the final round has started, of its matches alone (its teams, their submissions then),
+    /// marked <c>"final": true</c> with the round's progress.
+    /// </summary>
     public (Standings Standings, string Json) Standings()
     {
-        var records = Store.Records(LadderId);
+        var finalMatches = Store.FinalMatches(LadderId);
+        var final = FinalRound.Of(finalMatches);
+        IReadOnlyList<(long Id, string Record, bool Final)> records = final is null ? Store.Records(LadderId) : [.. finalMatches.Where(m => m.State == MatchRow.Done).Select(m => (m.Id, m.Record!, true))];
         var playing = Playing();
         var teams = Store.Teams();
-        string key = string.Join(',', records.Select(r => r.Id.ToString(CultureInfo.InvariantCulture))) + "|" + string.Join(',', playing.Keys.Order().Select(k => k.ToString(CultureInfo.InvariantCulture)));
+        string key = (final is null ? "ranked|" : "final|") + string.Join(',', records.Select(r => r.Id.ToString(CultureInfo.InvariantCulture))) + "|" + string.Join(',', playing.Keys.Order().Select(k => k.ToString(CultureInfo.InvariantCulture)));
         lock (_standingsGate)
         {
             if (_standings is { } cached && _standingsKey == key)
@@ -387,18 +467,34 @@ internal sealed class LadderCore : IDisposable
             }
 
             var parsed = records.Select(r => TournamentFile.ParseRecord(r.Record)).ToList();
-            var names = new HashSet<string>(parsed.SelectMany(r => r.Entrants), StringComparer.Ordinal);
-            var entrants = teams.Where(t => playing.ContainsKey(t.Id) || names.Contains(t.Name))
-                .Select(t => new Entrant(t.Name, playing.TryGetValue(t.Id, out var p) ? p.Submission == 0 ? p.Spec : "submission " + p.Submission.ToString(CultureInfo.InvariantCulture) : "none"))
-                .ToList();
+            List<Entrant> entrants;
+            if (final is null)
+            {
+                var names = new HashSet<string>(parsed.SelectMany(r => r.Entrants), StringComparer.Ordinal);
+                entrants = [.. teams.Where(t => playing.ContainsKey(t.Id) || names.Contains(t.Name))
+                    .Select(t => new Entrant(t.Name, playing.TryGetValue(t.Id, out var p) ? Spec(p.Submission, p.Spec) : "none"))];
+            }
+            else
+            {
+                entrants = [.. teams.Where(t => final.Teams.ContainsKey(t.Id)).Select(t => new Entrant(t.Name, Spec(final.Teams[t.Id], t.House ?? Entrant.Demo)))];
+            }
+
             var ladder = Ladder;
             var header = new TournamentHeader(Item.Slug, entrants, 1, ladder.FirstSeed, ladder.Cycles, _settings.StrategyTimeoutMs, parsed.Count);
             var standings = Tournament.Standings.Compute(header, Item.TeamCount, parsed);
             string json = StandingsJson.Format(standings, id => File.Exists(ReplayPage(id)));
+            if (final is not null)
+            {
+                json = "{\n  \"final\": true,\n  \"finalRound\": " + string.Create(CultureInfo.InvariantCulture,
+                    $"{{\"top\": {final.Teams.Count}, \"rounds\": {final.Rounds}, \"played\": {final.Played}, \"matches\": {final.Matches}}},\n") + json["{\n".Length..];
+            }
+
             _standings = (standings, json);
             _standingsKey = key;
             return (standings, json);
         }
+
+        static string Spec(long submission, string house) => submission == 0 ? house : "submission " + submission.ToString(CultureInfo.InvariantCulture);
     }
 
     /// <summary>Per team name, its rating in the last standings computed (none before the first).</summary>

@@ -46,10 +46,18 @@ public sealed class CliTests : IDisposable
         var failed = await ServeProcess.RunAsync("ladder", "submit", "--server", serve.Url, "--token", lines[^1], bad);
         Assert.Equal((2, string.Empty), (failed.Code, failed.Out));
         Assert.Equal("compiling Bad.cs (1 file)...\ncannot compile Bad.cs: 1 compile error in 1 file:\nBad.cs(1,19): error CS1525: Invalid expression term ';'\n", failed.Error);
+
+        // The final round from the command line: two house entrants can play, so a final of three is refused.
+        Assert.Equal(0, (await ServeProcess.RunAsync("ladder", "team", "add", "house", "--server", serve.Url, "--admin-token", admin, "--strategy", "demo")).Code);
+        Assert.Equal(0, (await ServeProcess.RunAsync("ladder", "team", "add", "house2", "--server", serve.Url, "--admin-token", admin, "--strategy", "idle")).Code);
+        var three = await ServeProcess.RunAsync("ladder", "final", "--server", serve.Url, "--admin-token", admin, "--top", "3");
+        Assert.Equal((2, string.Empty, "ladder final: top: 2 teams can play, fewer than 3\n"), (three.Code, three.Out, three.Error));
+        var final = await ServeProcess.RunAsync("ladder", "final", "--server", serve.Url, "--admin-token", admin, "--top", "2", "--rounds", "1");
+        Assert.Equal((0, "final round started: house, house2; each pair plays 1 match, 1 in all\n", string.Empty), (final.Code, final.Out, final.Error));
     }
 
     [Theory]
-    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, team add, submit). Usage: urwpgsim2d ladder serve|team add|submit ...")]
+    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, team add, submit, final). Usage: urwpgsim2d ladder serve|team add|submit|final ...")]
     [InlineData(new[] { "ladder", "serve", "--minutes", "2" }, "ladder serve: --minutes must be 10, 5, 3 or 1, got \"2\"")]
     [InlineData(new[] { "ladder", "serve", "--port", "70000" }, "ladder serve: --port must be a whole number from 0 to 65535, got \"70000\"")]
     [InlineData(new[] { "ladder", "serve", "--workers", "-1" }, "ladder serve: --workers must be a whole number from 0 to 256, got \"-1\"")]
@@ -57,6 +65,8 @@ public sealed class CliTests : IDisposable
     [InlineData(new[] { "ladder", "team", "add", "x", "--server", "http://127.0.0.1:1/", "--admin-token", "t", "--strategy", "best" }, "ladder team add: --strategy must be demo, chase-ball or idle, got \"best\"")]
     [InlineData(new[] { "ladder", "submit", "--server", "ftp://x/", "--token", "t", "x.cs" }, "ladder submit: --server must be an http:// or https:// address, got \"ftp://x/\"")]
     [InlineData(new[] { "ladder", "submit", "--server", "http://127.0.0.1:1/", "--token", "t", "nothing.txt" }, "ladder submit: PATH must be a folder of .cs files, a .cs file or a .dll, got \"nothing.txt\"")]
+    [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t", "--top", "1" }, "ladder final: --top must be a whole number from 2 to 1000, got \"1\"")]
+    [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t" }, "ladder final: --top K is required. Usage: urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]")]
     public async Task BadArgumentsAreOneLineAndExitTwo(string[] arguments, string message)
     {
         var (code, output, error) = await ServeProcess.RunAsync(arguments);
@@ -78,5 +88,6 @@ public sealed class CliTests : IDisposable
         Assert.Contains("urwpgsim2d ladder serve [--item ITEM] [--minutes M] [--data DIR] [--database CONNECTION] [--port P] [--host H] [--admin-token TOKEN] [--workers N]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder team add NAME --server URL --admin-token T [--strategy demo|chase-ball|idle]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder submit --server URL --token T PATH\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]\n", output, StringComparison.Ordinal);
     }
 }

@@ -111,4 +111,14 @@ internal interface ILadderStore : IDisposable
 
     /// <summary>Per team, matches of the ladder played, running or queued (teams without any are absent).</summary>
     IReadOnlyDictionary<long, int> Games(long ladder);
+
+    /// <summary>
+    /// Starts a ladder's final round, in one transaction: the queued ranked matches are dropped (ranked
+    /// play stops) and the final's matches queued, each side's team and submission as given. False, with
+    /// nothing changed, when the ladder has a final round already.
+    /// </summary>
+    bool StartFinal(long ladder, IReadOnlyList<(long TeamA, long TeamB, long SubA, long SubB)> matches, Func<long, ulong> seedOf);
+
+    /// <summary>A ladder's final-round matches, by id (none before its final round starts).</summary>
+    IReadOnlyList<MatchRow> FinalMatches(long ladder);
 }

@@ -2,17 +2,23 @@ using System;
 using System.Collections.Generic;
 using System.Data.Common;
 using Microsoft.Data.Sqlite;
+using Npgsql;
 
 namespace URWPGSim2D.Ladder.Storage;
 
-/// <summary>What differs between the databases: the schema's migrations (in order; each a list of statements), how the next queued match is found, and what a fresh connection is told.</summary>
+/// <summary>
+/// What differs between the databases: the type of an id column in the schema's migrations (the
+/// statements themselves are the same for SQLite and PostgreSQL), how the next queued match is found
+/// and locked, how concurrent migrations wait for each other, and what a fresh connection is told.
+/// </summary>
 internal sealed class SqlDialect
 {
-    private SqlDialect(string name, IReadOnlyList<string[]> migrations, string nextQueued, Action<DbConnection> opened)
+    private SqlDialect(string name, string id, string nextQueued, string? migrationLock, Action<DbConnection> opened)
     {
         Name = name;
-        Migrations = migrations;
+        Migrations = Schema(id);
         NextQueued = nextQueued;
+        MigrationLock = migrationLock;
         Opened = opened;
     }
 
@@ -25,27 +31,34 @@ internal sealed class SqlDialect
     /// <summary>The id of the next queued match of ladder @l (final round first, then oldest); @q is the queued state.</summary>
     public string NextQueued { get; }
 
+    /// <summary>Run first in the migrations' transaction so that two processes starting at once migrate one after the other (null: the transaction itself serialises them).</summary>
+    public string? MigrationLock { get; }
+
     /// <summary>Run on each opened connection.</summary>
     public Action<DbConnection> Opened { get; }
 
-    private static string[] Schema1(string id) =>
+    // The migrations, in order, written once for both databases: {id} is the dialect's id column.
+    private static List<string[]> Schema(string id) =>
     [
-        "CREATE TABLE settings (key TEXT PRIMARY KEY, value TEXT NOT NULL)",
-        $"CREATE TABLE ladders (id {id}, item TEXT NOT NULL, cycles INTEGER NOT NULL, first_seed BIGINT NOT NULL, paused INTEGER NOT NULL, created TEXT NOT NULL)",
-        $"CREATE TABLE teams (id {id}, name TEXT NOT NULL UNIQUE, token_hash TEXT NOT NULL UNIQUE, password_hash TEXT NULL, house TEXT NULL, created TEXT NOT NULL)",
-        $"CREATE TABLE submissions (id {id}, team_id BIGINT NOT NULL REFERENCES teams (id), created TEXT NOT NULL, kind TEXT NOT NULL, path TEXT NOT NULL, state TEXT NOT NULL, log TEXT NOT NULL)",
-        "CREATE INDEX submissions_team ON submissions (team_id, id)",
-        $"CREATE TABLE matches (id {id}, ladder_id BIGINT NOT NULL REFERENCES ladders (id), seed BIGINT NOT NULL, team_a BIGINT NOT NULL, team_b BIGINT NOT NULL, "
-            + "sub_a BIGINT NOT NULL, sub_b BIGINT NOT NULL, state TEXT NOT NULL, created TEXT NOT NULL, started TEXT NULL, finished TEXT NULL, record TEXT NULL, final INTEGER NOT NULL)",
-        "CREATE INDEX matches_state ON matches (ladder_id, state, id)",
-        "CREATE TABLE sessions (token_hash TEXT PRIMARY KEY, team_id BIGINT NOT NULL REFERENCES teams (id), created TEXT NOT NULL)",
+        [
+            "CREATE TABLE settings (key TEXT PRIMARY KEY, value TEXT NOT NULL)",
+            $"CREATE TABLE ladders (id {id}, item TEXT NOT NULL, cycles INTEGER NOT NULL, first_seed BIGINT NOT NULL, paused INTEGER NOT NULL, created TEXT NOT NULL)",
+            $"CREATE TABLE teams (id {id}, name TEXT NOT NULL UNIQUE, token_hash TEXT NOT NULL UNIQUE, password_hash TEXT NULL, house TEXT NULL, created TEXT NOT NULL)",
+            $"CREATE TABLE submissions (id {id}, team_id BIGINT NOT NULL REFERENCES teams (id), created TEXT NOT NULL, kind TEXT NOT NULL, path TEXT NOT NULL, state TEXT NOT NULL, log TEXT NOT NULL)",
+            "CREATE INDEX submissions_team ON submissions (team_id, id)",
+            $"CREATE TABLE matches (id {id}, ladder_id BIGINT NOT NULL REFERENCES ladders (id), seed BIGINT NOT NULL, team_a BIGINT NOT NULL, team_b BIGINT NOT NULL, "
+                + "sub_a BIGINT NOT NULL, sub_b BIGINT NOT NULL, state TEXT NOT NULL, created TEXT NOT NULL, started TEXT NULL, finished TEXT NULL, record TEXT NULL, final INTEGER NOT NULL)",
+            "CREATE INDEX matches_state ON matches (ladder_id, state, id)",
+            "CREATE TABLE sessions (token_hash TEXT PRIMARY KEY, team_id BIGINT NOT NULL REFERENCES teams (id), created TEXT NOT NULL)",
+        ],
     ];
 
     /// <summary>SQLite: write-ahead log, a busy wait instead of an error when another connection writes.</summary>
     public static SqlDialect Sqlite { get; } = new(
         "sqlite",
-        [Schema1("INTEGER PRIMARY KEY")],
+        "INTEGER PRIMARY KEY",
         "SELECT id FROM matches WHERE ladder_id = @l AND state = @q ORDER BY final DESC, id LIMIT 1",
+        null,
         c =>
         {
             using var command = c.CreateCommand();
@@ -53,10 +66,30 @@ internal sealed class SqlDialect
             command.ExecuteNonQuery();
         });
 
+    /// <summary>
+    /// PostgreSQL: ids from an identity column; the next queued match locked for the claiming
+    /// transaction and skipped by every other (two processes never claim the same one); the
+    /// migrations under a transaction-scoped advisory lock.
+    /// </summary>
+    public static SqlDialect PostgreSql { get; } = new(
+        "postgresql",
+        "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY",
+        "SELECT id FROM matches WHERE ladder_id = @l AND state = @q ORDER BY final DESC, id LIMIT 1 FOR UPDATE SKIP LOCKED",
+        "SELECT pg_advisory_xact_lock(4242020001)",
+        _ => { });
+
     /// <summary>A store in the SQLite file <paramref name="path"/>.</summary>
     public static SqlLadderStore SqliteStore(string path)
     {
         string connection = new SqliteConnectionStringBuilder { DataSource = path, Pooling = true }.ToString();
         return new SqlLadderStore(() => new SqliteConnection(connection), Sqlite);
+    }
+
+    /// <summary>A store in the PostgreSQL database <paramref name="connection"/> names (<c>Host=…;Database=…</c>).</summary>
+    /// <exception cref="ArgumentException">The connection string is not one.</exception>
+    public static SqlLadderStore PostgreSqlStore(string connection)
+    {
+        var source = NpgsqlDataSource.Create(connection);
+        return new SqlLadderStore(source.CreateConnection, PostgreSql, source);
     }
 }

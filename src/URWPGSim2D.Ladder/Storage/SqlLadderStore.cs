@@ -16,20 +16,30 @@ internal sealed class SqlLadderStore : ILadderStore
 {
     private readonly Func<DbConnection> _connect;
     private readonly SqlDialect _dialect;
+    private readonly IDisposable? _owned;
 
-    /// <summary>A store over connections made by <paramref name="connect"/> (not yet open).</summary>
-    public SqlLadderStore(Func<DbConnection> connect, SqlDialect dialect)
+    /// <summary>A store over connections made by <paramref name="connect"/> (not yet open); <paramref name="owned"/> (the connections' pool) is disposed with it.</summary>
+    public SqlLadderStore(Func<DbConnection> connect, SqlDialect dialect, IDisposable? owned = null)
     {
         _connect = connect;
         _dialect = dialect;
+        _owned = owned;
     }
+
+    /// <summary>The database's dialect.</summary>
+    public SqlDialect Dialect => _dialect;
 
     /// <inheritdoc/>
     public void Migrate()
     {
         using var c = Open();
-        Execute(c, null, "CREATE TABLE IF NOT EXISTS schema_version (version INTEGER NOT NULL)");
         using var t = c.BeginTransaction();
+        if (_dialect.MigrationLock is { } gate)
+        {
+            Execute(c, t, gate);
+        }
+
+        Execute(c, t, "CREATE TABLE IF NOT EXISTS schema_version (version INTEGER NOT NULL)");
         int version = Convert.ToInt32(Scalar(c, t, "SELECT COALESCE(MAX(version), 0) FROM schema_version"), CultureInfo.InvariantCulture);
         var migrations = _dialect.Migrations;
         for (int v = version; v < migrations.Count; v++)
@@ -327,7 +337,7 @@ internal sealed class SqlLadderStore : ILadderStore
     {
         using var c = Open();
         return All(c, null, "SELECT id, record, final FROM matches WHERE ladder_id = @l AND state = @d ORDER BY id",
-            r => (r.GetInt64(0), r.GetString(1), r.GetInt64(2) != 0), ("l", ladder), ("d", MatchRow.Done));
+            r => (r.GetInt64(0), r.GetString(1), Flag(r, 2)), ("l", ladder), ("d", MatchRow.Done));
     }
 
     /// <inheritdoc/>
@@ -346,9 +356,37 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
-    public void Dispose()
+    public bool StartFinal(long ladder, IReadOnlyList<(long TeamA, long TeamB, long SubA, long SubB)> matches, Func<long, ulong> seedOf)
     {
+        using var c = Open();
+        using var t = c.BeginTransaction();
+        if (Convert.ToInt64(Scalar(c, t, "SELECT COUNT(*) FROM matches WHERE ladder_id = @l AND final = 1", ("l", ladder)), CultureInfo.InvariantCulture) > 0)
+        {
+            return false;
+        }
+
+        Execute(c, t, "DELETE FROM matches WHERE ladder_id = @l AND state = @q AND final = 0", ("l", ladder), ("q", MatchRow.Queued));
+        foreach (var (teamA, teamB, subA, subB) in matches)
+        {
+            long id = Convert.ToInt64(Scalar(c, t,
+                "INSERT INTO matches (ladder_id, seed, team_a, team_b, sub_a, sub_b, state, created, final) VALUES (@l, 0, @ta, @tb, @sa, @sb, @s, @c, 1) RETURNING id",
+                ("l", ladder), ("ta", teamA), ("tb", teamB), ("sa", subA), ("sb", subB), ("s", MatchRow.Queued), ("c", Now())), CultureInfo.InvariantCulture);
+            Execute(c, t, "UPDATE matches SET seed = @s WHERE id = @id", ("s", unchecked((long)seedOf(id))), ("id", id));
+        }
+
+        t.Commit();
+        return true;
     }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<MatchRow> FinalMatches(long ladder)
+    {
+        using var c = Open();
+        return All(c, null, MatchSelect + " WHERE ladder_id = @l AND final = 1 ORDER BY id", ReadMatch, ("l", ladder));
+    }
+
+    /// <inheritdoc/>
+    public void Dispose() => _owned?.Dispose();
 
     private DbConnection Open()
     {
@@ -364,8 +402,11 @@ internal sealed class SqlLadderStore : ILadderStore
 
     private static DateTime ParseTime(string s) => DateTime.Parse(s, CultureInfo.InvariantCulture, DateTimeStyles.AdjustToUniversal | DateTimeStyles.AssumeUniversal);
 
+    // A 0/1 column (INTEGER: 64 bits in SQLite, 32 in PostgreSQL).
+    private static bool Flag(DbDataReader r, int column) => Convert.ToInt64(r.GetValue(column), CultureInfo.InvariantCulture) != 0;
+
     private static LadderRow ReadLadder(DbDataReader r) =>
-        new(r.GetInt64(0), r.GetString(1), Convert.ToInt32(r.GetValue(2), CultureInfo.InvariantCulture), unchecked((ulong)r.GetInt64(3)), r.GetInt64(4) != 0, ParseTime(r.GetString(5)));
+        new(r.GetInt64(0), r.GetString(1), Convert.ToInt32(r.GetValue(2), CultureInfo.InvariantCulture), unchecked((ulong)r.GetInt64(3)), Flag(r, 4), ParseTime(r.GetString(5)));
 
     private static TeamRow ReadTeam(DbDataReader r) =>
         new(r.GetInt64(0), r.GetString(1), r.GetString(2), r.IsDBNull(3) ? null : r.GetString(3), r.IsDBNull(4) ? null : r.GetString(4), ParseTime(r.GetString(5)));
@@ -376,7 +417,7 @@ internal sealed class SqlLadderStore : ILadderStore
     private static MatchRow ReadMatch(DbDataReader r) =>
         new(r.GetInt64(0), r.GetInt64(1), unchecked((ulong)r.GetInt64(2)), [r.GetInt64(3), r.GetInt64(4)], [r.GetInt64(5), r.GetInt64(6)], r.GetString(7),
             ParseTime(r.GetString(8)), r.IsDBNull(9) ? null : ParseTime(r.GetString(9)), r.IsDBNull(10) ? null : ParseTime(r.GetString(10)),
-            r.IsDBNull(11) ? null : r.GetString(11), r.GetInt64(12) != 0);
+            r.IsDBNull(11) ? null : r.GetString(11), Flag(r, 12));
 
     private static DbCommand Command(DbConnection c, DbTransaction? t, string sql, (string Name, object? Value)[] parameters)
     {

@@ -35,6 +35,11 @@ internal static class LadderApi
             w.WriteNumber("submissionsPerDay", core.SubmissionsPerDay);
             w.WriteNumber("maxUploadBytes", core.Limits.MaxUploadBytes);
             w.WriteNumber("maxFiles", core.Limits.MaxFiles);
+            if (core.Final() is { } final)
+            {
+                WriteFinal(w, final, core);
+            }
+
             w.WriteEndObject();
         })));
 
@@ -287,6 +292,21 @@ internal static class LadderApi
             return Json("{\"ok\": true}");
         });
 
+        app.MapPost("/api/final", async (HttpRequest request) =>
+        {
+            Admin(core, request);
+            using var body = await Body(request);
+            int top = Whole(body.RootElement, "top", required: true)!.Value;
+            int rounds = Whole(body.RootElement, "rounds", required: false) ?? 2;
+            var final = await Task.Run(() => core.StartFinal(top, rounds));
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                WriteFinal(w, final, core);
+                w.WriteEndObject();
+            }), 201);
+        });
+
         app.MapPost("/api/matches/{id}/requeue", (string id, HttpRequest request) =>
         {
             Admin(core, request);
@@ -309,6 +329,23 @@ internal static class LadderApi
         {
             File.Delete(path);
         }
+    }
+
+    // "final": {"teams": [names], "rounds", "played", "matches"}.
+    private static void WriteFinal(System.Text.Json.Utf8JsonWriter w, FinalRound final, LadderCore core)
+    {
+        w.WriteStartObject("final");
+        w.WriteStartArray("teams");
+        foreach (var t in core.Store.Teams().Where(t => final.Teams.ContainsKey(t.Id)))
+        {
+            w.WriteStringValue(t.Name);
+        }
+
+        w.WriteEndArray();
+        w.WriteNumber("rounds", final.Rounds);
+        w.WriteNumber("played", final.Played);
+        w.WriteNumber("matches", final.Matches);
+        w.WriteEndObject();
     }
 
     private static IResult Replay(LadderCore core, string id)
@@ -444,6 +481,16 @@ internal static class LadderApi
         }
 
         return value.ValueKind == JsonValueKind.String ? value.GetString()! : throw new LadderInputException($"{name} must be a string, got {value.GetRawText()}");
+    }
+
+    private static int? Whole(JsonElement body, string name, bool required)
+    {
+        if (!body.TryGetProperty(name, out var value) || value.ValueKind == JsonValueKind.Null)
+        {
+            return required ? throw new LadderInputException($"{name} is required") : null;
+        }
+
+        return value.ValueKind == JsonValueKind.Number && value.TryGetInt32(out int n) ? n : throw new LadderInputException($"{name} must be a whole number, got {value.GetRawText()}");
     }
 
     private static long Id(string field, string text) =>

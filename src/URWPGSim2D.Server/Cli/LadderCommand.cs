@@ -49,10 +49,19 @@ internal sealed class LadderCommand : ICliCommand
     private static readonly UsageLine SubmitLine = new(
         SubmitServerOption, TokenOption, CliSyntax.Positional("PATH", "a folder of .cs files, one .cs file or a DLL", CliCompletions.Paths));
 
+    private static readonly Option<bool> FinalHelp = CliSyntax.Help();
+    private static readonly Option<string> FinalServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> FinalAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
+    private static readonly Option<string> TopOption = CliSyntax.Value("--top", "K", "how many of the highest-ranked teams play the final (2 or more)");
+    private static readonly Option<string> RoundsOption = CliSyntax.Value("--rounds", "N", "matches of each pair (default 2)");
+
+    private static readonly UsageLine FinalLine = new(FinalServerOption, FinalAdminOption, TopOption, UsageLine.Optional(RoundsOption));
+
     private static readonly Command Serve = CliSyntax.Command("serve", "Run the ladder service.", ServeLine, ServeHelp);
     private static readonly Command Add = CliSyntax.Command("add", "Add a team to a running ladder.", AddLine, AddHelp);
     private static readonly Command Team = TeamCommand();
     private static readonly Command Submit = CliSyntax.Command("submit", "Submit a team's strategy to a running ladder.", SubmitLine, SubmitHelp);
+    private static readonly Command Final = CliSyntax.Command("final", "Start a running ladder's final round.", FinalLine, FinalHelp);
 
     /// <summary>The usage of <c>ladder serve</c>.</summary>
     public static string ServeUsage => "ladder serve " + ServeLine.Text;
@@ -63,11 +72,14 @@ internal sealed class LadderCommand : ICliCommand
     /// <summary>The usage of <c>ladder submit</c>.</summary>
     public static string SubmitUsage => "ladder submit " + SubmitLine.Text;
 
+    /// <summary>The usage of <c>ladder final</c>.</summary>
+    public static string FinalUsage => "ladder final " + FinalLine.Text;
+
     /// <inheritdoc/>
     public string Name => "ladder";
 
     /// <inheritdoc/>
-    public string Synopsis => "ladder serve|team add|submit ...";
+    public string Synopsis => "ladder serve|team add|submit|final ...";
 
     /// <inheritdoc/>
     public string Summary => "Run a competition ladder: teams upload strategies, ranked matches play without end, standings update live.";
@@ -88,6 +100,7 @@ internal sealed class LadderCommand : ICliCommand
         ladder.Subcommands.Add(Serve);
         ladder.Subcommands.Add(Team);
         ladder.Subcommands.Add(Submit);
+        ladder.Subcommands.Add(Final);
         return ladder;
     }
 
@@ -100,6 +113,7 @@ internal sealed class LadderCommand : ICliCommand
             ["serve", ..] => Serve,
             ["team", "add", ..] => Add,
             ["submit", ..] => Submit,
+            ["final", ..] => Final,
             _ => null,
         };
     }
@@ -122,7 +136,7 @@ internal sealed class LadderCommand : ICliCommand
                 throw CliUsageException.UnknownOption("ladder", rest[0].Text, Syntax, CliApp.ProgramName + " " + Synopsis);
             }
 
-            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
+            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit, final)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
         }
 
         if (chosen == Serve)
@@ -130,17 +144,25 @@ internal sealed class LadderCommand : ICliCommand
             return RunServe(rest, console);
         }
 
+        if (chosen == Final)
+        {
+            return RunFinal(rest, console);
+        }
+
         return chosen == Add ? RunAdd(rest, console) : RunSubmit(rest, console);
     }
 
     private static string Help() =>
-        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit ...\n" +
+        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit|final ...\n" +
         $"  {CliApp.ProgramName} {ServeUsage}\n" +
         $"  {CliApp.ProgramName} {AddUsage}\n" +
-        $"  {CliApp.ProgramName} {SubmitUsage}\n\n" +
+        $"  {CliApp.ProgramName} {SubmitUsage}\n" +
+        $"  {CliApp.ProgramName} {FinalUsage}\n\n" +
         "serve runs the ladder service until stopped (Ctrl+C): pages and JSON API, and workers that play ranked\n" +
         "matches without end. team add adds a team and prints its token alone on the last line. submit uploads a\n" +
-        "team's strategy, which is compiled and checked once; its newest working submission plays. More: docs/ladder.md.\n";
+        "team's strategy, which is compiled and checked once; its newest working submission plays. final starts the\n" +
+        "final round: every pair of the top K plays N matches, ranked play stops, the standings become the final's.\n" +
+        "More: docs/ladder.md.\n";
 
     // The value options of one sub-command, each at most once; positional words apart.
     private static (Dictionary<Option, string> Values, List<string> Positional) Words(IReadOnlyList<CommandLineWord> words, string name, Command syntax, string usage, Option<bool> help, out bool helpAsked)
@@ -353,7 +375,44 @@ internal sealed class LadderCommand : ICliCommand
         }
     }
 
-    private static int Number(string name, string value, int low, int high) =>
+    private static int RunFinal(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        string usage = CliApp.ProgramName + " " + FinalUsage;
+        var (values, positional) = Words(words, "ladder final", Final, usage, FinalHelp, out bool help);
+        if (help)
+        {
+            console.Out.Write($"Usage: {usage}\n\nStarts the final round: every pair of the top K teams plays N matches (sides alternate), ranked play\n" +
+                $"stops and the standings become those of the final's matches. Options:\n{FinalLine.OptionTable(20)}More: docs/ladder.md.\n");
+            return ExitCodes.Success;
+        }
+
+        if (positional.Count > 0)
+        {
+            throw new CliUsageException($"ladder final: unexpected argument {MessageText.Quote(positional[0])}", usage);
+        }
+
+        string server = values.GetValueOrDefault(FinalServerOption) ?? throw new CliUsageException("ladder final: --server URL is required", usage);
+        string admin = values.GetValueOrDefault(FinalAdminOption) ?? throw new CliUsageException("ladder final: --admin-token T is required", usage);
+        string top = values.GetValueOrDefault(TopOption) ?? throw new CliUsageException("ladder final: --top K is required", usage);
+        int k = Number("ladder final", "--top", top, 2, 1000);
+        int rounds = values.TryGetValue(RoundsOption, out string? r) ? Number("ladder final", "--rounds", r, 1, 100) : 2;
+        try
+        {
+            using var client = new LadderClient(server, admin);
+            var (teams, matches) = client.StartFinalAsync(k, rounds).GetAwaiter().GetResult();
+            console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"final round started: {string.Join(", ", teams)}; each pair plays {rounds} {(rounds == 1 ? "match" : "matches")}, {matches} in all"));
+            return ExitCodes.Success;
+        }
+        catch (LadderInputException e)
+        {
+            console.ErrorLine("ladder final: " + e.Message);
+            return ExitCodes.BadInput;
+        }
+    }
+
+    private static int Number(string name, string value, int low, int high) => Number("ladder serve", name, value, low, high);
+
+    private static int Number(string command, string name, string value, int low, int high) =>
         int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n >= low && n <= high ? n
-        : throw new CliUsageException(string.Create(CultureInfo.InvariantCulture, $"ladder serve: {name} must be a whole number from {low} to {high}, got {MessageText.Quote(value)}"), null);
+        : throw new CliUsageException(string.Create(CultureInfo.InvariantCulture, $"{command}: {name} must be a whole number from {low} to {high}, got {MessageText.Quote(value)}"), null);
 }

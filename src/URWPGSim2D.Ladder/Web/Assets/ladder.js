@@ -21,7 +21,9 @@ const subs = m => (m.submissions || []).map(s => s === null ? "house" : "#" + s)
 async function standings() {
   const s = await api("/api/standings");
   document.getElementById("item").textContent = s.item;
-  document.getElementById("summary").textContent = s.matches + " matches played";
+  document.getElementById("summary").textContent = s.final
+    ? `final round: top ${s.finalRound.top}, each pair ${s.finalRound.rounds} times; ${s.finalRound.played} of ${s.finalRound.matches} matches played (ranked play has stopped)`
+    : s.matches + " matches played";
   document.querySelector("#standings tbody").innerHTML = s.entrants.map(e =>
     `<tr><td class="num">${e.rank}</td><td>${teamLink(e.name)}</td><td class="num">${e.rating}</td><td>${e.ci[0]} to ${e.ci[1]}</td>` +
     `<td class="num">${e.played}</td><td class="num">${e.wins}</td><td class="num">${e.draws}</td><td class="num">${e.losses}</td></tr>`).join("");
@@ -63,6 +65,8 @@ async function organiser() {
   const l = await api("/api/ladder");
   document.getElementById("ladder").textContent = `${l.item}, ${l.cycles} cycles a match, ${l.paused ? "paused" : "playing"}, ${l.submissionsPerDay} submissions a day`;
   document.getElementById("admin").hidden = !token("admin");
+  document.getElementById("final-state").textContent = l.final
+    ? `final round started: ${l.final.teams.join(", ")}, each pair ${l.final.rounds} times; ${l.final.played} of ${l.final.matches} played` : "";
 }
 
 function form(id, handler) {
@@ -97,6 +101,10 @@ form("add-team", async d => {
   catch (e) { show("team-token", e.message, true); }
 });
 form("requeue", async d => { try { await post(`/api/matches/${encodeURIComponent(d.get("id"))}/requeue`, {}, "admin"); show("admin-result", "requeued"); } catch (e) { show("admin-result", e.message, true); } });
+form("final", async d => {
+  try { const f = await post("/api/final", { top: Number(d.get("top")), rounds: Number(d.get("rounds")) }, "admin"); show("admin-result", `final round started: ${f.final.matches} matches`); refresh(); }
+  catch (e) { show("admin-result", e.message, true); }
+});
 form("limit", async d => { try { await post("/api/settings", { submissionsPerDay: Number(d.get("n")) }, "admin"); show("admin-result", "set"); refresh(); } catch (e) { show("admin-result", e.message, true); } });
 for (const [id, path] of [["pause", "/api/ladder/pause"], ["resume", "/api/ladder/resume"]]) {
   const b = document.getElementById(id);

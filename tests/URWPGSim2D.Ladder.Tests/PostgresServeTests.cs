@@ -1,0 +1,57 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Threading.Tasks;
+using URWPGSim2D.Ladder.Storage;
+using URWPGSim2D.Tournament;
+using Xunit;
+
+namespace URWPGSim2D.Ladder.Tests;
+
+/// <summary><c>ladder serve --database</c> against a real PostgreSQL server: the ladder's rows are there, matches play and their records are written once.</summary>
+[Collection(PostgresCollection.Name)]
+public sealed class PostgresServeTests(PostgresServer postgres) : IDisposable
+{
+    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-ladder-pg-").FullName;
+
+    public void Dispose() => Directory.Delete(_folder, recursive: true);
+
+    [Fact]
+    public async Task ServeKeepsTheLadderInPostgreSql()
+    {
+        string database = postgres.NewDatabase();
+        const string admin = "organiser-postgres";
+        using (var serve = await ServeProcess.StartAsync("ladder", "serve", "--item", "polo-1v1", "--minutes", "1", "--data", _folder, "--database", database, "--port", "0", "--admin-token", admin))
+        {
+            Assert.Contains("PostgreSQL", serve.FirstLine, StringComparison.Ordinal);
+            using var organiser = new LadderClient(serve.Url, admin);
+            await organiser.AddTeamAsync("strong", "demo");
+            await organiser.AddTeamAsync("weak", "idle");
+            using var watch = SqlDialect.PostgreSqlStore(database);
+            await LadderHost.Until(() => Task.FromResult(watch.Records(1).Count >= 2), "two matches played");
+        }
+
+        // The rows are in PostgreSQL (no SQLite file was made), each record once, for its own match and seed.
+        Assert.False(File.Exists(Path.Combine(_folder, "ladder.db")));
+        using var store = SqlDialect.PostgreSqlStore(database);
+        Assert.Equal(["strong", "weak"], store.Teams().Select(t => t.Name));
+        var records = store.Records(1);
+        Assert.True(records.Count >= 2);
+        foreach (var (id, line, _) in records)
+        {
+            var r = TournamentFile.ParseRecord(line);
+            Assert.Equal((id, store.Match(id)!.Seed), (r.Index, r.Seed));
+            Assert.NotNull(r.Result);
+        }
+    }
+
+    [Fact]
+    public async Task AnUnreachableDatabaseIsOneLineAndExitTwo()
+    {
+        var (code, output, error) = await ServeProcess.RunAsync("ladder", "serve", "--data", _folder, "--database", $"Host={_folder}/none;Database=ladder;Timeout=5", "--port", "0");
+        Assert.Equal(2, code);
+        Assert.Equal(string.Empty, output);
+        Assert.StartsWith("ladder serve: --database: cannot use the PostgreSQL database: ", error, StringComparison.Ordinal);
+        Assert.Single(error.TrimEnd('\n').Split('\n'));
+    }
+}
