@@ -6,6 +6,8 @@ using System.Text;
 using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
+using URWPGSim2D.Ladder.Play;
+using URWPGSim2D.Ladder.Web;
 
 namespace URWPGSim2D.Ladder.Tests;
 
@@ -27,12 +29,13 @@ public sealed class LadderHost : IAsyncDisposable
 
     public HttpClient Http { get; }
 
-    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null)
+    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null, URWPGSim2D.Hosting.HostSettings? hostSettings = null)
     {
         string folder = Directory.CreateTempSubdirectory("urwpg-ladder-").FullName;
         var settings = new LadderSettings
         {
             Item = item, Cycles = 600, DataDir = folder, Port = 0, AdminToken = AdminToken, Workers = workers, Limits = limits ?? new LadderLimits(),
+            HostSettings = hostSettings ?? URWPGSim2D.Hosting.HostSettings.Default,
         };
         return new LadderHost(await LadderServer.StartAsync(settings, _ => { }), folder);
     }
