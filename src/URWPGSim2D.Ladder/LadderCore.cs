@@ -48,6 +48,7 @@ internal sealed class LadderCore : IDisposable
             Item = ItemRegistry.Find(player.Item) ?? throw new LadderInputException($"the ladder's item {Engine.Messages.MessageText.Quote(player.Item)} is not an item of this program");
             LadderId = player.Id;
             Directory.CreateDirectory(ReplaysFolder);
+            Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
             _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
             return;
         }
@@ -70,6 +71,7 @@ internal sealed class LadderCore : IDisposable
         LadderId = ladder.Id;
         Directory.CreateDirectory(SubmissionsFolder);
         Directory.CreateDirectory(ReplaysFolder);
+        Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
         if (settings.AdminToken is { } given)
         {
             Store.SetSetting("admin_token_hash", Secrets.HashToken(given));
@@ -115,6 +117,9 @@ internal sealed class LadderCore : IDisposable
 
     /// <summary>Replay pages: match-ID.html.</summary>
     public string ReplaysFolder => Path.Combine(_settings.DataDir, "replays");
+
+    /// <summary>What the strategies of match <paramref name="id"/> printed and their slowest calls (<see cref="MatchOutputs"/>; a team sees its own log only).</summary>
+    public string OutputPage(long id) => Path.Combine(_settings.DataDir, "outputs", string.Create(CultureInfo.InvariantCulture, $"match-{id}.json"));
 
     /// <summary>Match <paramref name="id"/>'s replay page.</summary>
     public string ReplayPage(long id) => Path.Combine(ReplaysFolder, string.Create(CultureInfo.InvariantCulture, $"match-{id}.html"));
@@ -386,7 +391,9 @@ internal sealed class LadderCore : IDisposable
         }
 
         var ladder = Ladder;
-        var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, ReplayPage(match.Id));
+        var output = new StrategyOutput(sides.Count);
+        var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, ReplayPage(match.Id), output);
+        MatchOutputs.Write(OutputPage(match.Id), [.. sides.Select((s, k) => (s.Item1, output.SlowestMs(k), output.Text(k)))]);
         bool written = Store.FinishMatch(match.Id, LadderMatchPlayer.Line(record));
         Interlocked.Increment(ref _changes);
         return written;

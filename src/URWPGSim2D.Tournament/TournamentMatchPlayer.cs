@@ -31,12 +31,25 @@ public static class TournamentMatchPlayer
     /// <param name="cycles">Cycles of the match.</param>
     /// <param name="strategyTimeoutMs">Time limit of loaded strategies per call, ms.</param>
     /// <param name="replayPage">Where to write the replay page, or null for none.</param>
-    public static MatchResult Play(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs, string? replayPage)
+    public static MatchResult Play(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs, string? replayPage) =>
+        Play(item, match, teams, cycles, strategyTimeoutMs, replayPage, null);
+
+    /// <summary>Plays the match and returns its result; with <paramref name="output"/>, also keeps what each team's strategy printed and its slowest call there (never in the replay page).</summary>
+    /// <param name="item">The item.</param>
+    /// <param name="match">The scheduled match.</param>
+    /// <param name="teams">Per team, the entrant's strategy, or null for the item's demo strategy.</param>
+    /// <param name="cycles">Cycles of the match.</param>
+    /// <param name="strategyTimeoutMs">Time limit of loaded strategies per call, ms.</param>
+    /// <param name="replayPage">Where to write the replay page, or null for none.</param>
+    /// <param name="output">Where each team's printed text and slowest call go, or null.</param>
+    public static MatchResult Play(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs, string? replayPage, StrategyOutput? output)
     {
-        var settings = Settings(item, match, teams, cycles, strategyTimeoutMs);
+        var settings = Settings(item, match, teams, cycles, strategyTimeoutMs) with { StrategyLog = output is not null };
         var replay = replayPage is null ? null : new ReplayRecorder();
-        using var loop = new MatchLoop(settings.Build(), settings.Cycles, replay);
-        loop.Play();
+        Engine.Trace.ITraceSink? sink = output is not null && replay is not null ? new StrategyOutput.WithoutLogs(replay) : replay;
+        using var loop = new MatchLoop(settings.Build(), settings.Cycles, sink);
+        loop.Play(played: output is null ? null : _ => output.AddCycle(loop.Match));
+        output?.End(loop.Match);
         if (replay is not null)
         {
             AtomicFile.WriteAllText(replayPage!, ReplayPage.Replay(replay.ToJson()));

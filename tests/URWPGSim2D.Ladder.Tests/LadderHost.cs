@@ -27,12 +27,13 @@ public sealed class LadderHost : IAsyncDisposable
 
     public HttpClient Http { get; }
 
-    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null)
+    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null, URWPGSim2D.Hosting.HostSettings? hostSettings = null)
     {
         string folder = Directory.CreateTempSubdirectory("urwpg-ladder-").FullName;
         var settings = new LadderSettings
         {
             Item = item, Cycles = 600, DataDir = folder, Port = 0, AdminToken = AdminToken, Workers = workers, Limits = limits ?? new LadderLimits(),
+            HostSettings = hostSettings ?? URWPGSim2D.Hosting.HostSettings.Default,
         };
         return new LadderHost(await LadderServer.StartAsync(settings, _ => { }), folder);
     }

@@ -42,7 +42,8 @@ internal sealed class LadderMatchPlayer
     /// <param name="cycles">Its length.</param>
     /// <param name="sides">Per side, the team, the submission (0: house) and the entrant.</param>
     /// <param name="replayPage">Where its replay page goes.</param>
-    public TournamentRecord Play(int index, ulong seed, int cycles, IReadOnlyList<(long Team, long Submission, Entrant Entrant)> sides, string? replayPage)
+    /// <param name="output">Where what each side's strategy printed and its slowest call go (kept out of the replay page), or null.</param>
+    public TournamentRecord Play(int index, ulong seed, int cycles, IReadOnlyList<(long Team, long Submission, Entrant Entrant)> sides, string? replayPage, StrategyOutput? output = null)
     {
         var names = sides.Select(s => s.Entrant.Name).ToArray();
         var match = new ScheduledMatch(index, seed, [.. Enumerable.Range(0, sides.Count)]);
@@ -80,7 +81,7 @@ internal sealed class LadderMatchPlayer
 
         try
         {
-            var result = TournamentMatchPlayer.Play(_item, match, teams, cycles, _strategyTimeoutMs, replayPage);
+            var result = TournamentMatchPlayer.Play(_item, match, teams, cycles, _strategyTimeoutMs, replayPage, output);
             return new TournamentRecord(index, seed, names, result, [], []);
         }
         catch (Exception e) when (e is not OutOfMemoryException)

@@ -139,6 +139,27 @@ internal static class LadderApi
                 }
 
                 w.WriteBoolean("signedIn", own);
+                if (Faults(core, team) is { } faults)
+                {
+                    w.WriteStartObject("faults");
+                    w.WriteNumber("exceptions", faults.Exceptions);
+                    w.WriteNumber("timeouts", faults.Timeouts);
+                    w.WriteNumber("badAnswers", faults.BadAnswers);
+                    w.WriteNumber("hostEnds", faults.HostEnds);
+                    w.WriteNumber("matches", faults.Matches);
+                    w.WriteString("counts", faults.Counts());
+                    w.WriteStartObject("first");
+                    w.WriteNumber("match", faults.FirstMatch);
+                    if (faults.FirstCycle is { } cycle)
+                    {
+                        w.WriteNumber("cycle", cycle);
+                    }
+
+                    w.WriteString("text", faults.FirstText);
+                    w.WriteEndObject();
+                    w.WriteEndObject();
+                }
+
                 w.WriteStartArray("submissions");
                 foreach (var s in core.Store.Submissions(team.Id))
                 {
@@ -155,6 +176,39 @@ internal static class LadderApi
                 }
 
                 w.WriteEndArray();
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapGet("/api/teams/{name}/matches/{id}/log", (string name, string id, HttpRequest request) =>
+        {
+            var team = core.Store.TeamByName(name) ?? throw new NotFound("team");
+            var me = core.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: a team's strategy log needs its token (Authorization: Bearer TOKEN)");
+            if (me.Id != team.Id)
+            {
+                return Problem(403, "authorization: a team's strategy log is its own");
+            }
+
+            var m = core.Store.Match(Id("match", id)) ?? throw new NotFound("match");
+            int[] order = m.Id % 2 == 0 ? [0, 1] : [1, 0];
+            int side = Array.IndexOf(order.Select(k => m.Teams[k]).ToArray(), team.Id);
+            if (side < 0)
+            {
+                throw new NotFound("match of this team");
+            }
+
+            var outputs = MatchOutputs.Read(core.OutputPage(m.Id)) ?? throw new NotFound("log (the match is not played yet)");
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                w.WriteNumber("match", m.Id);
+                w.WriteNumber("side", side);
+                if (outputs[side].SlowestMs is { } ms)
+                {
+                    w.WriteNumber("slowestMs", ms);
+                }
+
+                w.WriteString("log", outputs[side].Log);
                 w.WriteEndObject();
             }));
         });
@@ -331,6 +385,28 @@ internal static class LadderApi
         }
     }
 
+    // A team's runtime faults over its finished matches (the tournament's sum, per match id), or null when it had none.
+    private static EntrantFaults? Faults(LadderCore core, TeamRow team)
+    {
+        EntrantFaults? sum = null;
+        foreach (var m in core.Store.Matches(core.LadderId, [MatchRow.Done], 100_000).Where(m => m.Teams.Contains(team.Id)).OrderBy(m => m.Id))
+        {
+            var r = TournamentFile.ParseRecord(m.Record!);
+            int side = r.Entrants.ToList().IndexOf(team.Name);
+            bool newMatch = true;
+            foreach (var f in r.Result?.Faults ?? [])
+            {
+                if (f.Team == side)
+                {
+                    sum = EntrantFaults.Add(sum, checked((int)m.Id), f, newMatch);
+                    newMatch = false;
+                }
+            }
+        }
+
+        return sum;
+    }
+
     // "final": {"teams": [names], "rounds", "played", "matches"}.
     private static void WriteFinal(System.Text.Json.Utf8JsonWriter w, FinalRound final, LadderCore core)
     {
@@ -414,6 +490,26 @@ internal static class LadderApi
                 w.WriteEndArray();
                 w.WriteNumber("winner", result.Winner);
                 w.WriteNumber("faults", result.StrategyFaults);
+                w.WriteStartArray("sideFaults");
+                for (int side = 0; side < r.Entrants.Count; side++)
+                {
+                    var f = result.Faults?.Where(x => x.Team == side).ToList() ?? [];
+                    if (f.Count == 0)
+                    {
+                        w.WriteNullValue();
+                        continue;
+                    }
+
+                    w.WriteStartObject();
+                    w.WriteNumber("exceptions", f.Sum(x => x.Exceptions));
+                    w.WriteNumber("timeouts", f.Sum(x => x.Timeouts));
+                    w.WriteNumber("badAnswers", f.Sum(x => x.BadAnswers));
+                    w.WriteNumber("hostEnds", f.Sum(x => x.Crashes));
+                    w.WriteString("first", f[0].First);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
             }
             else
             {
@@ -428,6 +524,24 @@ internal static class LadderApi
                 foreach (string reason in r.Reasons)
                 {
                     w.WriteStringValue(reason);
+                }
+
+                w.WriteEndArray();
+            }
+
+            if (MatchOutputs.Read(core.OutputPage(m.Id)) is { } outputs)
+            {
+                w.WriteStartArray("slowestMs");
+                foreach (var side in outputs)
+                {
+                    if (side.SlowestMs is { } ms)
+                    {
+                        w.WriteNumberValue(ms);
+                    }
+                    else
+                    {
+                        w.WriteNullValue();
+                    }
                 }
 
                 w.WriteEndArray();

@@ -64,7 +64,7 @@ internal sealed class LadderCommand : ICliCommand
 
     private static readonly Option<bool> WorkerHelp = CliSyntax.Help();
     private static readonly Option<string> WorkerDatabaseOption = CliSyntax.Value("--database", "CONNECTION", "the service's PostgreSQL connection string");
-    private static readonly Option<string> WorkerDataOption = CliSyntax.Value("--data", "DIR", "the service's data folder: submissions are read there, replays written (default ladder-data)", CliCompletions.Paths);
+    private static readonly Option<string> WorkerDataOption = CliSyntax.Value("--data", "DIR", "the service's data folder: submissions are read there, replays and outputs written (default ladder-data)", CliCompletions.Paths);
     private static readonly Option<string> WorkerWorkersOption = CliSyntax.Value("--workers", "N", "matches played at once (default 1)");
 
     private static readonly UsageLine WorkerLine = new(WorkerDatabaseOption, UsageLine.Optional(WorkerDataOption), UsageLine.Optional(WorkerWorkersOption));

@@ -33,13 +33,26 @@ async function team() {
   const name = decodeURIComponent(location.pathname.split("/")[2]);
   const t = await api("/api/teams/" + encodeURIComponent(name));
   document.getElementById("name").textContent = t.name;
-  document.getElementById("who").textContent = t.house ? "house entrant: " + t.house : t.signedIn ? "signed in: you see your compile logs" : "";
+  document.getElementById("who").textContent = t.house ? "house entrant: " + t.house : t.signedIn ? "signed in: you see your compile logs and your strategy's logs" : "";
   document.getElementById("upload").hidden = !t.signedIn;
   document.querySelector("#submissions tbody").innerHTML = t.submissions.map(s =>
     `<tr><td class="num">${s.id}</td><td>${esc(s.created)}</td><td>${esc(s.state)}</td><td><pre>${esc(s.log ?? "")}</pre></td></tr>`).join("");
+  document.getElementById("faults").textContent = t.faults
+    ? `faults: ${t.faults.counts}; first in match ${t.faults.first.match}${t.faults.first.cycle ? ", cycle " + t.faults.first.cycle : ""}: ${t.faults.first.text}` : "no faults";
   const m = await api("/api/matches?team=" + encodeURIComponent(name) + "&limit=100");
+  const side = x => x.teams.indexOf(t.name);
+  const faults = x => { const f = (x.sideFaults || [])[side(x)]; return f ? [[f.exceptions, "exceptions"], [f.timeouts, "timeouts"], [f.badAnswers, "bad answers"], [f.hostEnds, "host ends"]].filter(p => p[0]).map(p => p.join(" ")).join(", ") : ""; };
+  const slowest = x => { const ms = (x.slowestMs || [])[side(x)]; return ms === undefined || ms === null ? "" : ms + " ms"; };
+  const log = x => t.signedIn && x.state === "done" ? `<button class="log" data-match="${x.id}">log</button>` : "";
   document.querySelector("#matches tbody").innerHTML = m.matches.map(x =>
-    `<tr><td class="num">${matchLink(x.id)}</td><td>${esc(x.state)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${score(x)}</td><td>${subs(x)}</td></tr>`).join("");
+    `<tr><td class="num">${matchLink(x.id)}</td><td>${esc(x.state)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${score(x)}</td><td>${subs(x)}</td>` +
+    `<td>${esc(faults(x))}</td><td class="num">${esc(slowest(x))}</td><td>${log(x)}</td></tr>`).join("");
+  for (const b of document.querySelectorAll("#matches button.log")) {
+    b.addEventListener("click", async () => {
+      try { const l = await api(`/api/teams/${encodeURIComponent(t.name)}/matches/${b.dataset.match}/log`); show("strategy-log", `match ${l.match}:\n${l.log || "(nothing printed)"}`); }
+      catch (e) { show("strategy-log", e.message, true); }
+    });
+  }
 }
 
 async function match() {
