@@ -216,15 +216,6 @@ public sealed partial class WorkerTests(PostgresServer postgres) : IDisposable
             _process.WaitForExit();
         }
 
-        public void Dispose()
-        {
-            if (!_process.HasExited)
-            {
-                _process.Kill(entireProcessTree: true);
-                _process.WaitForExit();
-            }
-
-            _process.Dispose();
-        }
+        public void Dispose() => ServeProcess.End(_process);
     }
 }
