@@ -26,6 +26,9 @@ internal sealed class LadderJobs : IDisposable
     /// <summary>The Hangfire queue of the ladder's matches.</summary>
     public const string Queue = "ladder";
 
+    /// <summary>How long a match taken by a process that stopped answering (its renewals of the job stopped) waits before another process plays it.</summary>
+    public static TimeSpan Invisibility => TimeSpan.FromMinutes(1);
+
     private readonly PostgreSqlStorage _storage;
     private readonly BackgroundJobClient _client;
     private BackgroundJobServer? _server;

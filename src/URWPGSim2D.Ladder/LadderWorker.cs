@@ -52,7 +52,7 @@ public sealed class LadderWorker : IDisposable
         }
 
         Directory.CreateDirectory(settings.DataDir);
-        var jobs = new LadderJobs(settings.Database, LadderServer.JobInvisibility);
+        var jobs = new LadderJobs(settings.Database, LadderJobs.Invisibility);
         var job = MatchJob.Of(store, settings, null, told);
         jobs.Serve(settings.Workers, job);
         return new LadderWorker(store, jobs, job);

@@ -41,8 +41,6 @@ public sealed class LadderServer : IAsyncDisposable
         Url = url;
     }
 
-    /// <summary>How long a match taken by a process that stopped answering (its renewals of the job stopped) waits before another process plays it.</summary>
-    internal static TimeSpan JobInvisibility => TimeSpan.FromMinutes(1);
 
     /// <summary>The address the service answers at, e.g. <c>http://127.0.0.1:5080/</c>.</summary>
     public string Url { get; }
@@ -106,7 +104,7 @@ public sealed class LadderServer : IAsyncDisposable
         if (settings.Database is { } database)
         {
             // PostgreSQL: matches are Hangfire jobs, played by this process's server (--workers) and by every worker process.
-            var jobs = new LadderJobs(database, JobInvisibility);
+            var jobs = new LadderJobs(database, LadderJobs.Invisibility);
             if (settings.Workers > 0)
             {
                 jobs.Serve(settings.Workers, MatchJob.Of(store, settings, core, (_, _) => { }));
