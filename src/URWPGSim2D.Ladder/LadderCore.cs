@@ -66,7 +66,7 @@ internal sealed class LadderCore : IDisposable
             Store.SetSetting("admin_token_hash", Secrets.HashToken(NewAdminToken));
         }
 
-        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
+        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
     }
 
     /// <summary>Where rows are kept.</summary>
