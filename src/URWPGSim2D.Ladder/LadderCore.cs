@@ -9,7 +9,6 @@ using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Ladder.Play;
 using URWPGSim2D.Ladder.Storage;
-using URWPGSim2D.Ladder.Web;
 using URWPGSim2D.Tournament;
 
 namespace URWPGSim2D.Ladder;

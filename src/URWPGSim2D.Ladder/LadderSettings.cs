@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using URWPGSim2D.Hosting;
+using URWPGSim2D.Ladder.Play;
 
 namespace URWPGSim2D.Ladder;
 

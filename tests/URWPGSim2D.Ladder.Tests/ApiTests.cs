@@ -3,6 +3,7 @@ using System.Net.Http;
 using System.Text;
 using System.Text.Json;
 using System.Threading.Tasks;
+using URWPGSim2D.Ladder.Play;
 using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;

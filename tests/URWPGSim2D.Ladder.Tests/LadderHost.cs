@@ -6,6 +6,8 @@ using System.Text;
 using System.Text.Json;
 using System.Threading;
 using System.Threading.Tasks;
+using URWPGSim2D.Ladder.Play;
+using URWPGSim2D.Ladder.Web;
 
 namespace URWPGSim2D.Ladder.Tests;
 

@@ -6,6 +6,7 @@ using System.Linq;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Engine.Messages;
 using URWPGSim2D.Ladder;
+using URWPGSim2D.Ladder.Web;
 using URWPGSim2D.Server.Cli.Syntax;
 
 namespace URWPGSim2D.Server.Cli;

@@ -3,7 +3,7 @@ using System.Globalization;
 using System.Security.Cryptography;
 using System.Text;
 
-namespace URWPGSim2D.Ladder.Web;
+namespace URWPGSim2D.Ladder;
 
 /// <summary>
 /// Tokens and passwords: a token is 32 random bytes (base64url), kept only as its SHA-256 (a

@@ -1,4 +1,4 @@
-namespace URWPGSim2D.Ladder;
+namespace URWPGSim2D.Ladder.Play;
 
 /// <summary>What one upload may hold, and how many uploads a team may make per day.</summary>
 /// <param name="MaxUploadBytes">The most bytes of one upload (all its files).</param>

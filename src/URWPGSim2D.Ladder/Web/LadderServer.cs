@@ -14,9 +14,8 @@ using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using URWPGSim2D.Ladder.Storage;
-using URWPGSim2D.Ladder.Web;
 
-namespace URWPGSim2D.Ladder;
+namespace URWPGSim2D.Ladder.Web;
 
 /// <summary>
 /// The ladder service: the pages and JSON API (ASP.NET Core, Kestrel) over the ladder's database,
