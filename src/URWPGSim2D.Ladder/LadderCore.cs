@@ -81,7 +81,7 @@ internal sealed class LadderCore : IDisposable
             Store.SetSetting("admin_token_hash", Secrets.HashToken(NewAdminToken));
         }
 
-        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
+        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
     }
 
     /// <summary>A core that only plays the matches of <paramref name="ladder"/> (in a worker process): it creates and changes nothing but those matches' records and replay pages.</summary>

@@ -338,17 +338,26 @@ internal sealed class LadderCommand : ICliCommand
             throw new CliUsageException($"ladder team add: --strategy must be demo, chase-ball or idle, got {MessageText.Quote(strategy)}", null);
         }
 
-        try
+        return Ask("ladder team add", server, admin, console, client =>
         {
-            using var client = new LadderClient(server, admin);
             var (name, token) = client.AddTeamAsync(positional[0], strategy).GetAwaiter().GetResult();
             console.Out.WriteLine(strategy is null ? $"team {name} added; its token (shown once):" : $"team {name} added, a house entrant playing {strategy}; its token (shown once):");
             console.Out.WriteLine(token);
             return ExitCodes.Success;
+        });
+    }
+
+    // One request to a running ladder: its refusal (or an unreachable service) is one line on standard error and exit 2.
+    private static int Ask(string command, string server, string token, CliConsole console, Func<LadderClient, int> ask)
+    {
+        try
+        {
+            using var client = new LadderClient(server, token);
+            return ask(client);
         }
         catch (LadderInputException e)
         {
-            console.ErrorLine("ladder team add: " + e.Message);
+            console.ErrorLine(command + ": " + e.Message);
             return ExitCodes.BadInput;
         }
     }
@@ -371,9 +380,8 @@ internal sealed class LadderCommand : ICliCommand
 
         string server = values.GetValueOrDefault(SubmitServerOption) ?? throw new CliUsageException("ladder submit: --server URL is required", usage);
         string token = values.GetValueOrDefault(TokenOption) ?? throw new CliUsageException("ladder submit: --token T is required", usage);
-        try
+        return Ask("ladder submit", server, token, console, client =>
         {
-            using var client = new LadderClient(server, token);
             var (id, ok, log) = client.SubmitAsync(positional[0]).GetAwaiter().GetResult();
             if (!ok)
             {
@@ -388,12 +396,7 @@ internal sealed class LadderCommand : ICliCommand
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"submission {id}: ok"));
             console.Out.WriteLine(log);
             return ExitCodes.Success;
-        }
-        catch (LadderInputException e)
-        {
-            console.ErrorLine("ladder submit: " + e.Message);
-            return ExitCodes.BadInput;
-        }
+        });
     }
 
     private static int RunWorker(IReadOnlyList<CommandLineWord> words, CliConsole console)
@@ -490,18 +493,12 @@ internal sealed class LadderCommand : ICliCommand
         string top = values.GetValueOrDefault(TopOption) ?? throw new CliUsageException("ladder final: --top K is required", usage);
         int k = Number("ladder final", "--top", top, 2, 1000);
         int rounds = values.TryGetValue(RoundsOption, out string? r) ? Number("ladder final", "--rounds", r, 1, 100) : 2;
-        try
+        return Ask("ladder final", server, admin, console, client =>
         {
-            using var client = new LadderClient(server, admin);
             var (teams, matches) = client.StartFinalAsync(k, rounds).GetAwaiter().GetResult();
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"final round started: {string.Join(", ", teams)}; each pair plays {rounds} {(rounds == 1 ? "match" : "matches")}, {matches} in all"));
             return ExitCodes.Success;
-        }
-        catch (LadderInputException e)
-        {
-            console.ErrorLine("ladder final: " + e.Message);
-            return ExitCodes.BadInput;
-        }
+        });
     }
 
     private static int Number(string name, string value, int low, int high) => Number("ladder serve", name, value, low, high);
