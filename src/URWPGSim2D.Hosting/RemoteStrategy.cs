@@ -9,7 +9,8 @@ namespace URWPGSim2D.Hosting;
 /// client's code is compiled, up to the hang limit a strategy in the server's process has), then
 /// charges a time-out exactly as for a local strategy. A client that disconnects or is cut off is
 /// charged once and its fish stop; a client may connect again (with the same token) at any later
-/// cycle and plays on from there.
+/// cycle and plays on from there. A client that plays a series (<see cref="HelloMessage.Series"/>)
+/// is kept on the seat after the match's <c>end</c>, and the seat's next match takes it first.
 /// </summary>
 internal sealed class RemoteStrategy : IConnectedStrategy
 {
@@ -42,14 +43,18 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     /// <summary>True: after a disconnect another client may take the team over.</summary>
     public bool Reconnects => true;
 
+    /// <summary>Whether the connected client plays a series (it is told the end and kept, even after its team ran out of time).</summary>
+    public bool Series => _current?.Series == true;
+
     /// <summary>Whether a client is connected.</summary>
     public bool Connected => _current is not null;
 
     /// <summary>
     /// Says on which address the seat waits for its client: called for every remote team before any
     /// waits (<see cref="WaitForClient"/>), so that each team's address is known before the first client connects.
+    /// Nothing is said when a kept client waits for this match or the seat said it already since its last client came.
     /// </summary>
-    public void Announce() => _seat.Log($"waiting for a client on {_seat.Address}");
+    public void Announce() => _seat.Announce();
 
     /// <summary>
     /// Waits up to the seat's wait for a client that says a good hello; refused ones are logged and
@@ -70,10 +75,14 @@ internal sealed class RemoteStrategy : IConnectedStrategy
             TimeSpan left = _seat.Wait - clock.Elapsed;
             if (left <= TimeSpan.Zero)
             {
-                throw new RemoteWaitException($"--strategy {_seat.Team}=remote: no client connected to {_seat.Address} within {_seat.Wait.TotalSeconds:0.#} s (--remote-wait)");
+                throw new RemoteWaitException($"{_seat.Option}: no client connected to {_seat.Address} within {_seat.Wait.TotalSeconds:0.#} s (--remote-wait)", _assignment.Team);
             }
 
-            TryAccept(left);
+            if (!TryKept())
+            {
+                _seat.Announce(); // the kept client has gone: a new one is waited for
+                TryAccept(left);
+            }
         }
     }
 
@@ -99,7 +108,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
         EndedBy = null;
         for (int i = 0; i < AcceptsPerCycle && _current is null; i++)
         {
-            if (!TryAccept(TimeSpan.Zero))
+            if (!TryKept() && !TryAccept(TimeSpan.Zero))
             {
                 break;
             }
@@ -118,6 +127,7 @@ internal sealed class RemoteStrategy : IConnectedStrategy
 
         EndedBy = connection.EndedBy;
         _seat.Log($"cycle {snapshot.Cycle + 1}: {EndedBy ?? message}; waiting for the client to connect again on {_seat.Address}");
+        _seat.WaitingSaid = true;
         connection.Dispose();
         _current = null;
         return outcome == ConnectionOutcome.Ended ? ConnectionOutcome.Disconnected : outcome;
@@ -126,7 +136,15 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     /// <inheritdoc/>
     public void Stop(EndMessage end)
     {
-        _current?.Stop(end);
+        if (_current is { } connection && connection.KeepFor(end))
+        {
+            _seat.Keep((TcpLink)connection.Link, connection.Channel); // its next match takes it
+        }
+        else
+        {
+            _current?.Stop(end);
+        }
+
         _current = null;
     }
 
@@ -135,6 +153,25 @@ internal sealed class RemoteStrategy : IConnectedStrategy
     {
         _current?.Dispose();
         _current = null;
+    }
+
+    // Takes the client kept from the seat's last match, if there is one and it says hello again; false otherwise (it has gone).
+    private bool TryKept()
+    {
+        if (_seat.TakeKept() is not { } kept)
+        {
+            return false;
+        }
+
+        var connection = Connect(kept.Link, kept.Channel);
+        if (!connection.Handshake(out _))
+        {
+            connection.Dispose();
+            return false;
+        }
+
+        Take(connection, "plays on");
+        return true;
     }
 
     // Takes one client that connects within the time, if it says a good hello.
@@ -147,21 +184,46 @@ internal sealed class RemoteStrategy : IConnectedStrategy
         }
 
         var link = new TcpLink(socket);
-        var deadline = TimeSpan.FromMilliseconds(_assignment.DeadlineMs);
-        var connection = new StrategyConnection(link, _assignment, deadline, RemoteSeat.HelloLimit, _seat.Token, line => _seat.Log($"{link.Peer}: {line}"))
-        {
-            FirstAnswerLimit = ThreadTimeClock.HangLimitFor(deadline),
-        };
+        var connection = Connect(link, null);
         if (!connection.Handshake(out _))
         {
             connection.Dispose();
             return true; // refused (and logged); the caller may take the next
         }
 
-        _seat.Log($"client {(connection.TeamName is { } name ? MessageTextOf(name) + " " : "")}connected from {link.Peer}");
+        Take(connection, "connected from " + link.Peer);
+        return true;
+    }
+
+    private StrategyConnection Connect(TcpLink link, LineChannel? channel)
+    {
+        var deadline = TimeSpan.FromMilliseconds(_assignment.DeadlineMs);
+        return new StrategyConnection(link, _assignment, deadline, RemoteSeat.HelloLimit, _seat.Token, line => _seat.Log($"{link.Peer}: {line}"), channel: channel)
+        {
+            FirstAnswerLimit = ThreadTimeClock.HangLimitFor(deadline),
+            OffersSeries = true,
+        };
+    }
+
+    private void Take(StrategyConnection connection, string how)
+    {
+        if (connection.Continued)
+        {
+            // A series client's next match: said once, when its name changed.
+            if (connection.TeamName != _seat.ClientName)
+            {
+                _seat.Log($"client {(connection.TeamName is { } next ? MessageTextOf(next) + " " : "")}{how}");
+            }
+        }
+        else
+        {
+            _seat.Log($"client {(connection.TeamName is { } name ? MessageTextOf(name) + " " : "")}{how}");
+        }
+
         _current = connection;
         _lastName = connection.TeamName ?? _lastName;
-        return true;
+        _seat.ClientName = _lastName;
+        _seat.WaitingSaid = false;
     }
 
     private static string MessageTextOf(string name) => Engine.Messages.MessageText.Quote(name);

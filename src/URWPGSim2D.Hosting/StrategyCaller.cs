@@ -94,13 +94,13 @@ public sealed class StrategyCaller : IMatchTeams
             try
             {
                 slot.Runner?.Stop();
-                if (slot.IdleFromCycle == 0)
+                if (slot.IdleFromCycle == 0 || slot.Hosted is RemoteStrategy { Series: true })
                 {
                     slot.Hosted?.Stop(new Protocol.EndMessage(cycles, end, slot.Faults));
                 }
                 else
                 {
-                    slot.Hosted?.Dispose(); // out of time: nothing more is said to it
+                    slot.Hosted?.Dispose(); // out of time: nothing more is said to it (a remote client that plays a series is told the end above, for its next match)
                 }
             }
             catch (Exception e) when (e is not OutOfMemoryException)

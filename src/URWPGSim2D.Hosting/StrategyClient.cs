@@ -10,7 +10,8 @@ namespace URWPGSim2D.Hosting;
 /// bank (<see cref="TimeBank"/>), so the client never gives a call up and needs no thread of its own
 /// for it (a cycle passes no thread hand-over inside the client). An exception or a contract
 /// violation is answered as that cycle's fault, and the decisions in force stay as they were. A
-/// strategy host runs this over its standard input and output.
+/// strategy host runs this over its standard input and output. <see cref="PlaySeries"/> plays every
+/// match a server gives one connection (a remote entrant of a tournament).
 /// </summary>
 public sealed class StrategyClient
 {
@@ -47,21 +48,87 @@ public sealed class StrategyClient
     public Ending Play(IStrategy strategy, string? token)
     {
         ArgumentNullException.ThrowIfNull(strategy);
-        string? name;
+        _channel.WriteLine(_writer.Hello(ProtocolVersion.Current, token, NameOf(strategy), packed: true));
+        return Match(_ => strategy, out _);
+    }
+
+    /// <summary>
+    /// Plays every match the server gives the connection (<c>"series":true</c> in the hello, docs/protocol.md): after
+    /// each <c>end</c> (told to <paramref name="ended"/>) it says hello again and waits for the next assignment, with a
+    /// fresh strategy from <paramref name="strategies"/> (given the one before, or null for the first match). A server
+    /// that closes the connection after an <c>end</c> has no more matches: that is <see cref="Ending.Ended"/>.
+    /// </summary>
+    /// <param name="first">The first match's strategy (its name goes in every hello).</param>
+    /// <param name="strategies">The strategy of each later match, given the one before.</param>
+    /// <param name="token">The token the server asks for, or null.</param>
+    /// <param name="ended">Told each match's <c>end</c>.</param>
+    /// <exception cref="ProtocolException">The server broke the protocol.</exception>
+    public Ending PlaySeries(IStrategy first, Func<IStrategy, IStrategy> strategies, string? token, Action<EndMessage>? ended = null)
+    {
+        ArgumentNullException.ThrowIfNull(first);
+        ArgumentNullException.ThrowIfNull(strategies);
+        string? name = NameOf(first);
+        var strategy = first;
+        bool played = false;
+        while (true)
+        {
+            Ending ending;
+            bool more;
+            try
+            {
+                _waiting = true;
+                _channel.WriteLine(_writer.Hello(ProtocolVersion.Current, token, name, packed: true, series: true));
+                ending = Match(assignment => played ? strategy = strategies(strategy) : strategy, out more);
+            }
+            catch (IOException) when (played && _waiting)
+            {
+                return Ending.Ended; // the server closed the connection after the last end (with a reset)
+            }
+
+            if (ending == Ending.Closed && played && _waiting)
+            {
+                return Ending.Ended; // no next match: the server closed the connection after the last end
+            }
+
+            if (ending != Ending.Ended)
+            {
+                return ending;
+            }
+
+            played = true;
+            ended?.Invoke(End!);
+            if (!more)
+            {
+                return Ending.Ended; // the server did not offer a next match
+            }
+        }
+    }
+
+    private bool _waiting; // no assignment read yet since the last hello
+
+    private static string? NameOf(IStrategy strategy)
+    {
         try
         {
-            name = strategy.TeamName;
+            return strategy.TeamName;
         }
         catch (Exception e) when (e is not OutOfMemoryException)
         {
-            name = null; // the name is for display only
+            return null; // the name is for display only
         }
+    }
 
-        _channel.WriteLine(_writer.Hello(ProtocolVersion.Current, token, name, packed: true));
+    // One match after a hello: the assignment, then every cycle until the end; more: the server keeps the connection for another.
+    private Ending Match(Func<AssignmentMessage, IStrategy> strategyFor, out bool more)
+    {
+        more = false;
+        _waiting = true;
         if (!_channel.TryReadLine(out var line))
         {
             return Ending.Closed;
         }
+
+        _waiting = false;
 
         switch (MessageReader.TypeOf(line))
         {
@@ -75,6 +142,7 @@ public sealed class StrategyClient
         }
 
         var assignment = MessageReader.ReadAssignment(line);
+        var strategy = strategyFor(assignment);
         var reader = new CycleReader(assignment);
         var drawings = assignment.Draw ? new DebugRecorder() : null;
         StrategyLog? log = null;
@@ -95,6 +163,7 @@ public sealed class StrategyClient
                     break;
                 case MessageType.End:
                     End = MessageReader.ReadEnd(line);
+                    more = assignment.Series;
                     return Ending.Ended;
                 case MessageType.Error:
                     Error = MessageReader.ReadError(line);

@@ -32,6 +32,7 @@ internal sealed class StrategyConnection : IConnectedStrategy
     private readonly PrintedOutput? _printedText;
     private bool _answered;
     private bool _packed; // the client asked for packed cycles
+    private bool _series; // the client plays several matches on the connection, and the server keeps it
     private bool _started;
     private bool _stopped;
 
@@ -43,7 +44,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
     /// <param name="token">The token the hello must carry, or null for none.</param>
     /// <param name="log">Told every refused hello and every bad answer, one line each; or null.</param>
     /// <param name="peer">What the messages call the other side: <c>the host</c>, <c>the client</c>.</param>
-    public StrategyConnection(IStrategyLink link, AssignmentMessage assignment, TimeSpan answerLimit, TimeSpan helloLimit, string? token, Action<string>? log, string peer = "the client")
+    /// <param name="channel">The framing of the link when it goes on from an earlier match (<see cref="Channel"/>), or null for a new one.</param>
+    public StrategyConnection(IStrategyLink link, AssignmentMessage assignment, TimeSpan answerLimit, TimeSpan helloLimit, string? token, Action<string>? log, string peer = "the client", LineChannel? channel = null)
     {
         _peer = peer;
         ArgumentNullException.ThrowIfNull(link);
@@ -57,8 +59,21 @@ internal sealed class StrategyConnection : IConnectedStrategy
         _helloLimit = helloLimit;
         _log = log;
         AnswerLimit = answerLimit;
-        _channel = new LineChannel(link.FromClient, link.ToClient, ProtocolLimits.ClientLineBytes);
+        _channel = channel ?? new LineChannel(link.FromClient, link.ToClient, ProtocolLimits.ClientLineBytes);
+        Continued = channel is not null;
     }
+
+    /// <summary>The framing of the link (lines read ahead stay in it), for the next match of a series (<see cref="KeepFor"/>).</summary>
+    public LineChannel Channel => _channel;
+
+    /// <summary>Whether the connection goes on from an earlier match: answers to that match that come before the hello are skipped.</summary>
+    public bool Continued { get; }
+
+    /// <summary>Whether the client plays a series and the server keeps it for its next match (both said <c>"series":true</c>).</summary>
+    public bool Series => _series;
+
+    /// <summary>Whether the server keeps a client that asks for it (<c>"series":true</c>) for its next match after <c>end</c> (a remote team).</summary>
+    public bool OffersSeries { get; init; }
 
     /// <summary>Wall time the server waits for a cycle's answer.</summary>
     public TimeSpan AnswerLimit { get; }
@@ -106,7 +121,10 @@ internal sealed class StrategyConnection : IConnectedStrategy
             ReadOnlySpan<byte> line;
             try
             {
-                read = _channel.TryReadLine(out line);
+                // After an earlier match, its late answers may come before the hello: they are skipped.
+                while ((read = _channel.TryReadLine(out line)) && Continued && MessageReader.TypeOf(line) == MessageType.Decisions)
+                {
+                }
             }
             finally
             {
@@ -137,7 +155,8 @@ internal sealed class StrategyConnection : IConnectedStrategy
 
             TeamName = hello.Name;
             _packed = hello.Packed;
-            _channel.WriteLine(_writer.Assignment(_packed ? _assignment with { Packed = true } : _assignment));
+            _series = hello.Series && OffersSeries;
+            _channel.WriteLine(_writer.Assignment(_packed || _series ? _assignment with { Packed = _packed, Series = _series } : _assignment));
             _started = true;
             return true;
         }
@@ -294,6 +313,33 @@ internal sealed class StrategyConnection : IConnectedStrategy
         }
 
         Dispose();
+    }
+
+    /// <summary>
+    /// Ends the match for a client that plays a series (<see cref="HelloMessage.Series"/>): sends <c>end</c> and keeps
+    /// the link open for its next match (the caller owns <see cref="Link"/> and <see cref="Channel"/> then). False,
+    /// and nothing done, for any other connection (<see cref="Stop"/> ends it); false too when the <c>end</c> cannot
+    /// be sent (the link is closed then).
+    /// </summary>
+    /// <param name="end">The match's result.</param>
+    public bool KeepFor(EndMessage end)
+    {
+        if (!_series || !_started || HasEnded || _stopped)
+        {
+            return false;
+        }
+
+        _stopped = true;
+        try
+        {
+            _channel.WriteLine(_writer.End(end));
+            return true;
+        }
+        catch (IOException)
+        {
+            Dispose(); // it has gone already
+            return false;
+        }
     }
 
     /// <inheritdoc/>

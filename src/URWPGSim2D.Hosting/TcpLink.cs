@@ -83,6 +83,31 @@ internal sealed class TcpLink : IStrategyLink
         _socket.Close(ms / 1000);
     }
 
+    /// <summary>
+    /// Closes a connection kept between matches without a reset: says the server sends no more, reads what the
+    /// client still sends (its hello for a next match) for up to a second, then closes, so the client reads the
+    /// end of the stream.
+    /// </summary>
+    public void Close()
+    {
+        try
+        {
+            _socket.Shutdown(SocketShutdown.Send);
+            var drain = new byte[4096];
+            var until = Stopwatch.GetTimestamp() + Stopwatch.Frequency;
+            while (Stopwatch.GetTimestamp() < until && _socket.Poll(100_000, SelectMode.SelectRead) && _socket.Receive(drain) > 0)
+            {
+            }
+        }
+        catch (Exception e) when (e is SocketException or ObjectDisposedException)
+        {
+            // it has gone already
+        }
+
+        _closedByServer = true;
+        _socket.Dispose();
+    }
+
     /// <inheritdoc/>
     public string Ending() => _closedByServer ? $"the server closed the connection to {Peer}" : $"the client at {Peer} disconnected";
 

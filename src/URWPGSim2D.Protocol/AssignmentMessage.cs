@@ -26,6 +26,12 @@ public sealed record AssignmentMessage(
     /// <summary>Whether every <c>cycle</c> message carries the fish and balls packed (<see cref="PackedCycle"/>): only for a client whose hello asked for it.</summary>
     public bool Packed { get; init; }
 
+    /// <summary>
+    /// Whether the server keeps the connection after this match's <c>end</c> for the next match (only for a client
+    /// whose hello said <c>"series":true</c>): the client then says hello again and waits for the next assignment.
+    /// </summary>
+    public bool Series { get; init; }
+
     /// <summary>A snapshot sized for this match, to be filled by each <c>cycle</c> message.</summary>
     public MatchSnapshot CreateSnapshot() => CreateSnapshotWriter().Snapshot;
 

@@ -193,7 +193,7 @@ public static class MessageReader
         int? version = null;
         string? token = null;
         string? name = null;
-        bool packed = false;
+        bool packed = false, series = false;
         while (JsonFields.NextProperty(ref r))
         {
             if (r.ValueTextEquals("version"u8))
@@ -203,6 +203,10 @@ public static class MessageReader
             else if (r.ValueTextEquals("packed"u8))
             {
                 packed = JsonFields.Bool(ref r, "packed");
+            }
+            else if (r.ValueTextEquals("series"u8))
+            {
+                series = JsonFields.Bool(ref r, "series");
             }
             else if (r.ValueTextEquals("token"u8))
             {
@@ -218,7 +222,7 @@ public static class MessageReader
             }
         }
 
-        return new HelloMessage(version ?? throw Missing("version"), token, name) { Packed = packed };
+        return new HelloMessage(version ?? throw Missing("version"), token, name) { Packed = packed, Series = series };
     }
 
     private static AssignmentMessage Assignment(ref Utf8JsonReader r)
@@ -228,7 +232,7 @@ public static class MessageReader
         int[]? fish = null;
         float? length = null, width = null;
         ObstacleView[] obstacles = [];
-        bool draw = false, log = false, packed = false;
+        bool draw = false, log = false, packed = false, series = false;
         while (JsonFields.NextProperty(ref r))
         {
             if (r.ValueTextEquals("version"u8))
@@ -287,6 +291,10 @@ public static class MessageReader
             {
                 packed = JsonFields.Bool(ref r, "packed");
             }
+            else if (r.ValueTextEquals("series"u8))
+            {
+                series = JsonFields.Bool(ref r, "series");
+            }
             else
             {
                 JsonFields.Skip(ref r);
@@ -301,6 +309,7 @@ public static class MessageReader
             Draw = draw,
             Log = log,
             Packed = packed,
+            Series = series,
         };
         Check(a);
         return a;

@@ -21,14 +21,22 @@ public sealed class MessageWriter
         _json = new Utf8JsonWriter(_buffer, new JsonWriterOptions { SkipValidation = true });
     }
 
-    /// <summary>A client's <c>hello</c>; <paramref name="packed"/>: the client reads packed cycles (<see cref="PackedCycle"/>).</summary>
-    public ReadOnlySpan<byte> Hello(int version, string? token, string? name, bool packed = false)
+    /// <summary>
+    /// A client's <c>hello</c>; <paramref name="packed"/>: the client reads packed cycles (<see cref="PackedCycle"/>);
+    /// <paramref name="series"/>: the client can play several matches on the connection (<see cref="HelloMessage.Series"/>).
+    /// </summary>
+    public ReadOnlySpan<byte> Hello(int version, string? token, string? name, bool packed = false, bool series = false)
     {
         Begin("hello");
         _json.WriteNumber("version", version);
         if (packed)
         {
             _json.WriteBoolean("packed", true);
+        }
+
+        if (series)
+        {
+            _json.WriteBoolean("series", true);
         }
 
         WriteOptional("token", token);
@@ -64,6 +72,11 @@ public sealed class MessageWriter
         if (a.Packed)
         {
             _json.WriteBoolean("packed", true);
+        }
+
+        if (a.Series)
+        {
+            _json.WriteBoolean("series", true);
         }
 
         _json.WriteStartObject("field");

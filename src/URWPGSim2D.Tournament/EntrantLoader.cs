@@ -14,22 +14,27 @@ namespace URWPGSim2D.Tournament;
 /// (charged, the match is played), not a load error. The item's demo strategy is no team strategy
 /// (null: the item's layout puts its demo on the team); built-in strategies run in process. Each
 /// hosted entrant reserves a pre-started host when it is readied, kept waiting for its next match
-/// (<see cref="HostPool.Reserve"/>), so its matches' hosts start warm.
+/// (<see cref="HostPool.Reserve"/>), so its matches' hosts start warm. A remote entrant
+/// (<c>remote:PORT</c>) plays each match with the client on its <see cref="RemoteSeat"/>.
 /// </summary>
 public sealed class EntrantLoader
 {
     private readonly IReadOnlyList<Entrant> _entrants;
     private readonly PreparedStrategy?[] _prepared;
+    private readonly string?[] _names;
+    private readonly IReadOnlyList<RemoteSeat?>? _seats;
 
     /// <summary>Readies every entrant under <paramref name="settings"/>.</summary>
     /// <param name="entrants">The entrants, in command-line order.</param>
     /// <param name="settings">How user strategies run (<c>--isolation</c>, <c>--sandbox</c>, <c>--strategy-memory</c>).</param>
     /// <param name="progress">Told a line when an entrant's sources start and finish compiling.</param>
-    public EntrantLoader(IReadOnlyList<Entrant> entrants, HostSettings settings, Action<string>? progress = null)
+    /// <param name="seats">Per entrant, the seat of a remote entrant (bound by the caller), or null; null for none.</param>
+    public EntrantLoader(IReadOnlyList<Entrant> entrants, HostSettings settings, Action<string>? progress = null, IReadOnlyList<RemoteSeat?>? seats = null)
     {
         ArgumentNullException.ThrowIfNull(entrants);
         ArgumentNullException.ThrowIfNull(settings);
         _entrants = entrants;
+        _seats = seats;
         Settings = settings;
         _prepared = new PreparedStrategy?[entrants.Count];
         var errors = new string?[entrants.Count];
@@ -39,16 +44,37 @@ public sealed class EntrantLoader
             (_prepared[i], errors[i], names[i]) = Ready(entrants[i], settings, progress);
         }
 
+        for (int i = 0; i < entrants.Count; i++)
+        {
+            if (entrants[i].RemotePort is not null && seats?[i] is null)
+            {
+                errors[i] = "a remote entrant needs its seat (remote:PORT is played by the tournament command)";
+            }
+        }
+
         Errors = errors;
-        TeamNames = names;
+        _names = names;
         Reserve(settings);
     }
 
     /// <summary>
     /// Per entrant, the team's own name as its code gives it (the original's <c>GetTeamName()</c> or the
-    /// SDK's <c>TeamName</c> when it returns a constant; a built-in strategy's name), or null when not known.
+    /// SDK's <c>TeamName</c> when it returns a constant; a built-in strategy's name; for a remote entrant, the
+    /// name its last client sent), or null when not known.
     /// </summary>
-    public IReadOnlyList<string?> TeamNames { get; }
+    public IReadOnlyList<string?> TeamNames
+    {
+        get
+        {
+            var names = (string?[])_names.Clone();
+            for (int i = 0; i < names.Length; i++)
+            {
+                names[i] ??= _seats?[i]?.ClientName;
+            }
+
+            return names;
+        }
+    }
 
     /// <summary>How user strategies run.</summary>
     public HostSettings Settings { get; }
@@ -75,6 +101,11 @@ public sealed class EntrantLoader
         if (_prepared[index] is { } prepared)
         {
             return TeamStrategy.Hosted(entrant.Name, prepared, Settings);
+        }
+
+        if (_seats?[index] is { } seat)
+        {
+            return TeamStrategy.RemoteClient(entrant.Name, seat);
         }
 
         return TeamStrategy.InProcess(entrant.Name, entrant.Spec, settings: Settings);
@@ -114,7 +145,7 @@ public sealed class EntrantLoader
     // The prepared strategy (hosted entrants) and null, or null and the reason it cannot be used; and the team's own name when known.
     private static (PreparedStrategy? Prepared, string? Error, string? Name) Ready(Entrant entrant, HostSettings settings, Action<string>? progress)
     {
-        if (entrant.Spec == Entrant.Demo)
+        if (entrant.Spec == Entrant.Demo || entrant.RemotePort is not null)
         {
             return (null, null, null);
         }

@@ -57,8 +57,8 @@ public static class StandingsText
 
     private static string Cut(string text, int max) => text.Length <= max ? text : string.Concat(text.AsSpan(0, max), "…");
 
-    /// <summary>Whether the standings list the entrants' code (some entrant is files, with a version).</summary>
-    public static bool ShowsEntrants(Standings s) => s.Header.Entrants.Any(e => e.Version is not null);
+    /// <summary>Whether the standings list the entrants' code (some entrant is files, with a version, or remote, with its client's name).</summary>
+    public static bool ShowsEntrants(Standings s) => s.Header.Entrants.Any(e => e.Version is not null || e.RemotePort is not null);
 
     /// <summary>How a knockout pairing is decided, in a few words.</summary>
     public const string KnockoutRule = "both sides of the field on each seed; more wins go on (each match as the item decides it, its tie rules included), then the better goal difference, then a further seed (at most 3), then the better seed";

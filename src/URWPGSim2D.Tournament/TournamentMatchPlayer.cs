@@ -24,6 +24,29 @@ public static class TournamentMatchPlayer
     public static MatchSettings Settings(CompetitionItem item, ScheduledMatch match, TeamStrategy?[] teams, int cycles, int strategyTimeoutMs) =>
         new(item.CreateScenario(match.Seed), cycles, match.Seed, Noise: null, teams, strategyTimeoutMs);
 
+    /// <summary>
+    /// Builds the match and waits for the clients of its remote entrants (<see cref="StrategyCaller.ConnectRemoteTeams"/>):
+    /// a client that plays a series is taken at once, another is waited for up to the seat's <c>--remote-wait</c>.
+    /// </summary>
+    /// <param name="settings">The match's settings.</param>
+    /// <exception cref="TeamFaultException">A remote entrant's client did not come: the match is that entrant's forfeit.</exception>
+    public static Match Build(MatchSettings settings)
+    {
+        ArgumentNullException.ThrowIfNull(settings);
+        var match = settings.Build();
+        try
+        {
+            match.Caller().ConnectRemoteTeams();
+        }
+        catch (RemoteWaitException e)
+        {
+            match.Teams.Stop();
+            throw new TeamFaultException(e.Team, e);
+        }
+
+        return match;
+    }
+
     /// <summary>Plays the match and returns its result (index and seed as scheduled).</summary>
     /// <param name="item">The item.</param>
     /// <param name="match">The scheduled match.</param>
@@ -47,7 +70,7 @@ public static class TournamentMatchPlayer
         var settings = Settings(item, match, teams, cycles, strategyTimeoutMs) with { StrategyLog = output is not null };
         var replay = replayPage is null ? null : new ReplayRecorder();
         Engine.Trace.ITraceSink? sink = output is not null && replay is not null ? new StrategyOutput.WithoutLogs(replay) : replay;
-        using var loop = new MatchLoop(settings.Build(), settings.Cycles, sink);
+        using var loop = new MatchLoop(Build(settings), settings.Cycles, sink);
         loop.Play(played: output is null ? null : _ => output.AddCycle(loop.Match));
         output?.End(loop.Match);
         if (replay is not null)

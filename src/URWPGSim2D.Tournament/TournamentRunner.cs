@@ -12,7 +12,8 @@ namespace URWPGSim2D.Tournament;
 /// so their faults are charged to their teams and the match is played. A match with an entrant that
 /// could not be loaded is not played: it becomes a forfeit record. A match that fails inside the server is
 /// reported and recorded as a forfeit of the team at fault (<see cref="Failed"/>), which a re-run keeps;
-/// the others go on.
+/// the others go on. A remote entrant whose client does not come forfeits the match (not a failure: a
+/// re-run plays it again).
 /// </summary>
 /// <param name="Item">The item.</param>
 /// <param name="Header">The tournament.</param>
@@ -47,6 +48,10 @@ public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Hea
                 try
                 {
                     record = PlayOne(match);
+                }
+                catch (TeamFaultException e) when (e.InnerException is RemoteWaitException)
+                {
+                    record = Failed(match, e) with { Failed = false }; // a remote entrant's client did not come: its forfeit, played again on a re-run
                 }
                 catch (Exception e) when (e is not OutOfMemoryException)
                 {
@@ -87,7 +92,7 @@ public sealed record TournamentRunner(CompetitionItem Item, TournamentHeader Hea
             names[side] = Header.Entrants[match.Sides[side]].Name;
         }
 
-        string why = StandingsText.Line(e is TeamFaultException t ? $"the match failed inside the server: {t.InnerException!.GetType().Name}: {t.InnerException.Message}" : $"the match failed inside the server: {e.GetType().Name}: {e.Message}");
+        string why = StandingsText.Line(e is TeamFaultException { InnerException: RemoteWaitException w } ? w.Message : e is TeamFaultException t ? $"the match failed inside the server: {t.InnerException!.GetType().Name}: {t.InnerException.Message}" : $"the match failed inside the server: {e.GetType().Name}: {e.Message}");
         var teams = new List<int>();
         for (int side = 0; side < match.Sides.Count; side++)
         {

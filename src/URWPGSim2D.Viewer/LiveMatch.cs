@@ -182,15 +182,19 @@ public sealed class LiveMatch : ITraceSink
 
             if (restart)
             {
-                var fresh = Create();
                 MatchLoop old;
                 lock (_gate)
                 {
                     old = _loop;
+                }
+
+                old.Dispose(); // its strategies stop before the next match's start (a remote team's client goes on to it)
+                var fresh = Create();
+                lock (_gate)
+                {
                     _loop = fresh;
                 }
 
-                old.Dispose();
                 _busy.Reset();
                 _played.Reset();
                 Begin();

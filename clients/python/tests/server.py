@@ -9,10 +9,10 @@ _WAITING = re.compile(r"waiting for a client on 127\.0\.0\.1:(\d+)")
 
 
 class Server:
-    """run ARGS... with a remote team on a free port; .port once it waits; .finish() -> (exit code, stdout, stderr)."""
+    """run ARGS... (or COMMAND ARGS...) with a remote team on a free port; .port once it waits; .finish() -> (exit code, stdout, stderr)."""
 
-    def __init__(self, *args: str):
-        self.process = subprocess.Popen(default_server() + ["run", *args], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    def __init__(self, *args: str, command: str = "run"):
+        self.process = subprocess.Popen(default_server() + [command, *args], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.lines = []
         for raw in self.process.stderr:
             line = raw.decode("utf-8", "replace")

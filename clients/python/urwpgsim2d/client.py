@@ -2,7 +2,7 @@
 
 import contextlib
 import sys
-from typing import List, Optional, Sequence, Tuple
+from typing import Callable, List, Optional, Sequence, Tuple
 
 from . import protocol
 from .drawing import Drawing, Output
@@ -24,7 +24,7 @@ class Strategy:
     decisions when the server records them (run --debug-draw); otherwise every call does nothing."""
 
     def start(self, assignment: Assignment) -> None:
-        """Called once a connection has its assignment (again after a reconnect)."""
+        """Called once a connection has its assignment (again after a reconnect, and for each match of a series)."""
 
     def decide(self, snapshot: Snapshot) -> Sequence[Tuple[int, int]]:
         """One (vcode, tcode) pair, each 0..15, per fish of snapshot.my_fish, in that order."""
@@ -49,29 +49,70 @@ def play(strategy: Strategy, host: str, port: int, token: Optional[str] = None, 
         first = connection.receive()
         if first is None:
             raise ProtocolError("the server closed the connection before the assignment")
-        if first["type"] == "error":
-            raise Refused(str(first.get("message", "")))
-        if first["type"] != "assignment":
-            raise ProtocolError("expected an assignment, got %r" % first["type"])
-        assignment = Assignment.from_json(first)
-        strategy.start(assignment)
-        while True:
-            message = connection.receive()
-            if message is None:
-                raise ProtocolError("the server closed the connection before the end of the match")
-            kind = message["type"]
-            if kind == "cycle":
-                snapshot = Snapshot.from_json(message, assignment)
-                connection.send(_answer(strategy, snapshot, len(assignment.fish), assignment.draw, assignment.log))
-            elif kind == "end":
-                result = End(int(message["cycle"]), goals_of(message), int(message["faults"]))
-                strategy.end(result)
-                return result
-            elif kind == "error":
-                raise ProtocolError("the server ended the connection: %s" % message.get("message", ""))
-            # another message of a later version: not needed here
+        return _match(connection, strategy, first)[0]
     finally:
         connection.close()
+
+
+def play_series(strategy: Strategy, host: str, port: int, token: Optional[str] = None, timeout: float = 10.0,
+                ended: Optional[Callable[[End], None]] = None) -> List[End]:
+    """Connects once and plays every match the server gives the connection; returns each match's result.
+
+    The hello says "series": true, so a server that plays several matches with this client (a
+    tournament's remote entrant, tournament --entrant NAME=remote:PORT) keeps the connection after
+    each end: the client says hello again and waits for the next assignment (strategy.start() is
+    called for each match). When the server closes the connection after an end (or never offered a
+    next match), the series is over. ended, if given, is called with each match's result as it
+    ends. Raises as play() does.
+    """
+    connection = protocol.Connection(host, port, timeout)
+    results: List[End] = []
+    try:
+        while True:
+            try:
+                connection.send(protocol.hello(token, strategy.name, series=True))
+                first = connection.receive()
+            except OSError:
+                if results:
+                    return results  # closed (with a reset) after the last end
+                raise
+            if first is None:
+                if results:
+                    return results  # no next match
+                raise ProtocolError("the server closed the connection before the assignment")
+            result, more = _match(connection, strategy, first)
+            results.append(result)
+            if ended is not None:
+                ended(result)
+            if not more:
+                return results
+    finally:
+        connection.close()
+
+
+def _match(connection: "protocol.Connection", strategy: Strategy, first: dict) -> Tuple[End, bool]:
+    """One match from its assignment (first) to its end: the result, and whether the server keeps the connection for another."""
+    if first["type"] == "error":
+        raise Refused(str(first.get("message", "")))
+    if first["type"] != "assignment":
+        raise ProtocolError("expected an assignment, got %r" % first["type"])
+    assignment = Assignment.from_json(first)
+    strategy.start(assignment)
+    while True:
+        message = connection.receive()
+        if message is None:
+            raise ProtocolError("the server closed the connection before the end of the match")
+        kind = message["type"]
+        if kind == "cycle":
+            snapshot = Snapshot.from_json(message, assignment)
+            connection.send(_answer(strategy, snapshot, len(assignment.fish), assignment.draw, assignment.log))
+        elif kind == "end":
+            result = End(int(message["cycle"]), goals_of(message), int(message["faults"]))
+            strategy.end(result)
+            return result, assignment.series
+        elif kind == "error":
+            raise ProtocolError("the server ended the connection: %s" % message.get("message", ""))
+        # another message of a later version: not needed here
 
 
 def _answer(strategy: Strategy, snapshot: Snapshot, count: int, draw: bool = False, log: bool = False) -> dict:
@@ -120,7 +161,8 @@ def parse_address(text: str) -> Tuple[str, int]:
 
 
 def main(strategy: Strategy, argv: Optional[List[str]] = None) -> int:
-    """Command line of a strategy module: HOST:PORT [--token T]. Exit codes as the server's connect."""
+    """Command line of a strategy module: HOST:PORT [--token T]. Plays every match the server gives the
+    connection (play_series), one line per match on stdout. Exit codes as the server's connect."""
     import argparse
 
     parser = argparse.ArgumentParser(description="Play %s for a server that waits for a remote team." % (strategy.name or "a strategy"))
@@ -131,13 +173,15 @@ def main(strategy: Strategy, argv: Optional[List[str]] = None) -> int:
         host, port = parse_address(args.address)
     except ValueError as e:
         parser.error(str(e))
+    def ended(result: End) -> None:
+        print("match ended after %d cycles: %s, %d fault(s) charged to this team" % (result.cycle, ":".join(str(g) for g in result.goals), result.faults), flush=True)
+
     try:
-        result = play(strategy, host, port, args.token)
+        play_series(strategy, host, port, args.token, ended=ended)
     except Refused as e:
         print("the server refused the client: %s" % e, file=sys.stderr)
         return 6
     except (ProtocolError, OSError) as e:
         print("connection: %s" % e, file=sys.stderr)
         return 5
-    print("match ended after %d cycles: %s, %d fault(s) charged to this team" % (result.cycle, ":".join(str(g) for g in result.goals), result.faults))
     return 0

@@ -48,6 +48,8 @@ class Assignment:
     """Whether the server records debug drawings (run --debug-draw)."""
     log: bool = False
     """Whether the server records what the strategy prints (run --strategy-log)."""
+    series: bool = False
+    """Whether the server keeps the connection after this match's end for a next one (a client that asked for it)."""
 
     @staticmethod
     def from_json(m: dict) -> "Assignment":
@@ -58,7 +60,7 @@ class Assignment:
             _num(f["length"]), _num(f["width"]),
             [Obstacle(int(o["index"]), o["kind"], _pair(o["center"]), _num(o["length"]), _num(o["width"]), _num(o["heading"]), _num(o["radius"]))
              for o in m.get("obstacles", [])],
-            m.get("draw") is True, m.get("log") is True)
+            m.get("draw") is True, m.get("log") is True, m.get("series") is True)
 
 
 @dataclass
@@ -167,8 +169,10 @@ class Connection:
             self._socket.close()
 
 
-def hello(token: Optional[str], name: Optional[str]) -> dict:
+def hello(token: Optional[str], name: Optional[str], series: bool = False) -> dict:
     m = {"type": "hello", "version": VERSION}
+    if series:
+        m["series"] = True
     if token is not None:
         m["token"] = token
     if name is not None:

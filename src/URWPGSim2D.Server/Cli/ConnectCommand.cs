@@ -9,7 +9,9 @@ namespace URWPGSim2D.Server.Cli;
 /// <c>connect HOST:PORT SPEC [--token T] [--wait SECONDS]</c>: plays one team's strategy for a
 /// server that waits for it (<c>run --strategy TEAM=remote:PORT</c>), from another process or
 /// machine. SPEC is anything <c>--strategy TEAM=SPEC</c> takes; the strategy runs exactly as in a
-/// strategy host (<see cref="StrategyClient"/>), with the original's API served as locally.
+/// strategy host (<see cref="StrategyClient"/>), with the original's API served as locally. It plays
+/// every match the server gives the connection (a tournament's remote entrant), each with a fresh
+/// instance of the strategy, and prints one line per match.
 /// </summary>
 internal sealed class ConnectCommand : ICliCommand
 {
@@ -48,9 +50,10 @@ internal sealed class ConnectCommand : ICliCommand
             console.Out.Write(
                 $"Usage: {CliApp.ProgramName} {Synopsis}\n\n" +
                 "Connects to a server that waits for a remote team (run --strategy TEAM=remote:PORT) and plays the strategy\n" +
-                "SPEC for it (a built-in name, .dll, .cs file or folder, as --strategy TEAM=SPEC) until the match ends.\n" +
+                "SPEC for it (a built-in name, .dll, .cs file or folder, as --strategy TEAM=SPEC) until the match ends; for a\n" +
+                "tournament (--entrant NAME=remote:PORT) every match of the entrant, in turn, each with a fresh instance.\n" +
                 Line.OptionTable(18) +
-                "Exit codes: 0 the match ended, 2 bad arguments, 3 the strategy cannot be loaded, 4 its constructor threw,\n" +
+                "Exit codes: 0 the match (or every match) ended, 2 bad arguments, 3 the strategy cannot be loaded, 4 its constructor threw,\n" +
                 "5 the server cannot be reached, broke the protocol or closed the connection, 6 the server refused the client.\n");
             return ExitCodes.Success;
         }
@@ -81,11 +84,15 @@ internal sealed class ConnectCommand : ICliCommand
         var client = new StrategyClient(stream, stream);
         try
         {
-            switch (client.Play(strategy, token))
+            void Ended(EndMessage end)
+            {
+                console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"match ended after {end.Cycle} cycles: {string.Join(':', end.Goals)}, {end.Faults} fault(s) charged to this team"));
+                console.Out.Flush();
+            }
+
+            switch (client.PlaySeries(strategy, before => Fresh(spec, before, console), token, Ended))
             {
                 case StrategyClient.Ending.Ended:
-                    var end = client.End!;
-                    console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"match ended after {end.Cycle} cycles: {string.Join(':', end.Goals)}, {end.Faults} fault(s) charged to this team"));
                     return ExitCodes.Success;
                 case StrategyClient.Ending.Refused:
                     console.ErrorLine("connect: the server refused the client: " + client.Error);
@@ -104,6 +111,20 @@ internal sealed class ConnectCommand : ICliCommand
         {
             console.ErrorLine("connect: the connection broke: " + e.Message);
             return HostCommand.Disconnected;
+        }
+    }
+
+    // A fresh instance of the strategy for the next match; the one before when it can no longer be loaded (said on stderr).
+    private static IStrategy Fresh(string spec, IStrategy before, CliConsole console)
+    {
+        try
+        {
+            return StrategyResolver.Load(spec, null, compileInThisProcess: true);
+        }
+        catch (StrategyLoadException e)
+        {
+            console.ErrorLine($"connect: {e.Message}; the next match plays on with the instance before");
+            return before;
         }
     }
 

@@ -17,7 +17,10 @@ namespace URWPGSim2D.Server.Cli;
 /// (<see cref="LiveBoard"/>) that chooses what the next match plays. On an address other machines
 /// can reach (<c>--host</c> other than loopback) the page only watches unless it holds the control
 /// token printed at start (the <c>control:</c> link), and the banner names the addresses viewers
-/// open (every address of this machine for <c>--host 0.0.0.0</c>).
+/// open (every address of this machine for <c>--host 0.0.0.0</c>). A remote team's client is waited
+/// for before the first match, as <c>run</c> waits (every remote address is said first); a restarted
+/// match takes a client that plays a series at once, or waits for one and plays on without it after
+/// <c>--remote-wait</c> (a client may connect at any cycle).
 /// </summary>
 internal static class LiveRun
 {
@@ -66,13 +69,40 @@ internal static class LiveRun
         var board = options.StrategiesFolder is null ? null : new LiveBoard(options, scenario, teams, console);
         var feed = new LiveFeed();
         Func<MatchSettings> next = board is null ? Default : board.Next;
+        bool built = false;
         (Match, int) Build()
         {
             var settings = next();
-            return (settings.Build(), settings.Cycles);
+            var match = settings.Build();
+            try
+            {
+                match.Caller().ConnectRemoteTeams();
+            }
+            catch (RemoteWaitException e) when (built)
+            {
+                console.ErrorLine($"{e.Message}; the match plays on, and the client may connect at any cycle");
+            }
+            catch (RemoteWaitException)
+            {
+                match.Teams.Stop();
+                throw;
+            }
+
+            built = true;
+            return (match, settings.Cycles);
         }
 
-        var player = new LiveMatch(Build, options.Speed, options.Paused, feed);
+        LiveMatch player;
+        try
+        {
+            player = new LiveMatch(Build, options.Speed, options.Paused, feed);
+        }
+        catch (RemoteWaitException e)
+        {
+            console.ErrorLine(e.Message);
+            return ExitCodes.BadInput;
+        }
+
         LiveReply Control(string action, System.Collections.Specialized.NameValueCollection query) =>
             board?.Control(action, query, player.Start, player.Restart)
             ?? (player.Control(action) ? LiveReply.Done
@@ -83,6 +113,7 @@ internal static class LiveRun
         player.Ended = ended =>
         {
             console.Out.Write(MatchSummary.FormatLive(ended, player.Played, player.Busy));
+            MatchLoop.StopStrategies(ended); // the strategies are told the end now (a remote client that plays a series is kept for a restart)
             console.Out.Write("match over: the page stays up (restart there plays it again; Ctrl+C to stop)\n");
             console.Out.Flush();
             summarised = ended;
@@ -210,7 +241,7 @@ internal static class LiveRun
     {
         try
         {
-            return RunCommand.LoadTeams(options);
+            return RunCommand.LoadTeams(options, seats: teams);
         }
         catch (Hosting.StrategyLoadException)
         {

@@ -66,7 +66,7 @@ internal sealed class LiveTournament : IDisposable
     /// <param name="settings">Its settings, with its entrants' fresh strategies.</param>
     public MatchResult Play(ScheduledMatch match, MatchSettings settings)
     {
-        var built = (settings.Build(), settings.Cycles); // a match that cannot be built fails here, on the tournament's thread
+        var built = (TournamentMatchPlayer.Build(settings), settings.Cycles); // a match that cannot be built (or whose remote client does not come) fails here, on the tournament's thread
         LiveMatch? player;
         lock (_gate)
         {
@@ -157,6 +157,15 @@ internal sealed class LiveTournament : IDisposable
     // On the player's thread when a match is over: its result, read before the next start disposes it.
     private void Over(Match ended)
     {
+        try
+        {
+            MatchLoop.StopStrategies(ended); // told the end now: a remote entrant's client that plays a series goes on to its next match
+        }
+        catch (TeamFaultException)
+        {
+            // the result stands; the strategy's end is no part of it
+        }
+
         lock (_gate)
         {
             if (_current is { } match && _result is null)

@@ -118,14 +118,9 @@ internal sealed class RunCommand : ICliCommand
             return BatchRun.Run(options, scenario, scene, console);
         }
 
-        if (options.Live)
-        {
-            return LiveRun.Run(options, scenario, teams, console);
-        }
-
         try
         {
-            return Play(options, scenario, teams, console);
+            return options.Live ? LiveRun.Run(options, scenario, teams, console) : Play(options, scenario, teams, console);
         }
         finally
         {
@@ -239,9 +234,10 @@ internal sealed class RunCommand : ICliCommand
     /// </summary>
     /// <exception cref="StrategyLoadException">A strategy cannot be used, or <c>--sandbox required</c> cannot be met; the message starts with the option.</exception>
     /// <param name="options">The options.</param>
-    /// <param name="console">Where the remote teams' lines go (null: no remote teams are made; <c>--batch</c> and <c>--live</c> have none).</param>
+    /// <param name="console">Where the remote teams' lines go (null: no remote teams are made; <c>--batch</c> has none).</param>
     /// <param name="progress">Told a line when a team's sources start and finish compiling.</param>
-    public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null, Action<string>? progress = null)
+    /// <param name="seats">The teams of an earlier match, whose remote teams are kept as they are (their seats stay bound), or null.</param>
+    public static TeamStrategy?[] LoadTeams(RunOptions options, CliConsole? console = null, Action<string>? progress = null, IReadOnlyList<TeamStrategy?>? seats = null)
     {
         var teams = new TeamStrategy?[options.Strategies.Length];
         for (int t = 0; t < teams.Length; t++)
@@ -250,13 +246,20 @@ internal sealed class RunCommand : ICliCommand
             {
                 try
                 {
-                    teams[t] = options.RemotePorts[t] is int port && console is not null
-                        ? Remote(options, t, port, console)
+                    teams[t] = options.RemotePorts[t] is int port && seats?[t] is { Remote: not null } kept ? kept
+                        : options.RemotePorts[t] is int free && console is not null ? Remote(options, t, free, console)
                         : LoadTeam(options, spec, progress);
                 }
                 catch (StrategyLoadException e)
                 {
-                    teams[0]?.Remote?.Dispose(); // a seat already bound is let go
+                    if (seats is null)
+                    {
+                        foreach (var bound in teams)
+                        {
+                            bound?.Remote?.Dispose(); // a seat already bound is let go
+                        }
+                    }
+
                     throw new StrategyLoadException($"--strategy {t}: {e.Message}", e.Details);
                 }
             }

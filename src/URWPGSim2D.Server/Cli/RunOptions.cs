@@ -428,9 +428,14 @@ internal sealed class RunOptions
             throw UsageError("--remote-wait, --remote-host and --remote-token belong to --strategy TEAM=remote:PORT");
         }
 
-        if (remote && (Batch is not null || Live))
+        if (remote && (Batch is not null || Slurm is not null))
         {
-            throw UsageError("a remote team plays one match: --batch and --live do not go with --strategy TEAM=remote:PORT");
+            throw UsageError("a remote team plays one match at a time: --batch and --slurm do not go with --strategy TEAM=remote:PORT");
+        }
+
+        if (remote && StrategiesFolder is not null)
+        {
+            throw UsageError("the control board (--strategies) chooses strategies from its folder: it does not go with --strategy TEAM=remote:PORT");
         }
 
         for (int a = 0; a < RemotePorts.Length; a++)

@@ -112,13 +112,70 @@ internal sealed class TournamentCommand : ICliCommand
             return Refuse(console, $"--out: cannot create {o.Out} ({e.Message})");
         }
 
-        return o.Cup is { } cup ? PlayCup(o, header, cup, folder, results, console) : Play(o, header, schedule, folder, results, console);
+        if (Seats(o, console) is not { } seats)
+        {
+            return ExitCodes.BadInput;
+        }
+
+        try
+        {
+            return o.Cup is { } cup ? PlayCup(o, header, cup, folder, results, seats, console) : Play(o, header, schedule, folder, results, seats, console);
+        }
+        finally
+        {
+            foreach (var seat in seats)
+            {
+                seat?.Dispose(); // a client that plays a series reads the end of the stream: no more matches
+            }
+        }
     }
 
-    private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, CliConsole console)
+    // Per entrant, the seat of a remote entrant (remote:PORT), bound now so that a port in use is bad input before
+    // anything is played, and every seat's address said before any client is waited for; null (said) when one cannot be bound.
+    private static RemoteSeat?[]? Seats(TournamentOptions o, CliConsole console)
+    {
+        var seats = new RemoteSeat?[o.Entrants.Count];
+        if (o.AnyRemote && !System.Net.IPAddress.IsLoopback(o.RemoteHost))
+        {
+            console.ErrorLine($"tournament: warning: --remote-host {o.RemoteHost} is not a loopback address: any machine that reaches it may connect{(o.Entrants.Exists(e => e.RemotePort is not null && o.RemoteToken(e.Name) is null) ? " (give --remote-token)" : "")}");
+        }
+
+        for (int i = 0; i < seats.Length; i++)
+        {
+            var e = o.Entrants[i];
+            if (e.RemotePort is not int port)
+            {
+                continue;
+            }
+
+            try
+            {
+                seats[i] = new RemoteSeat($"entrant {e.Name}", $"--entrant {e.Name}=remote", o.RemoteHost, port, o.RemoteToken(e.Name), TimeSpan.FromSeconds(o.RemoteWaitSeconds), console.ErrorLine);
+            }
+            catch (StrategyLoadException x)
+            {
+                foreach (var seat in seats)
+                {
+                    seat?.Dispose();
+                }
+
+                console.ErrorLine($"--entrant {e.Name}: {x.Message}");
+                return null;
+            }
+        }
+
+        foreach (var seat in seats)
+        {
+            seat?.Announce();
+        }
+
+        return seats;
+    }
+
+    private static int Play(TournamentOptions o, TournamentHeader header, TournamentSchedule schedule, string folder, string results, RemoteSeat?[] seats, CliConsole console)
     {
         HostSandbox.Warn = console.ErrorLine;
-        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine);
+        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine, seats);
         var errors = entrants.Errors;
         if (entrants.AnyHosted)
         {
@@ -220,10 +277,10 @@ internal sealed class TournamentCommand : ICliCommand
 
     // --format groups-knockout: the group stage, then the knockout round by round as the results decide it.
     // What the folder holds is kept by match (seed and entrants, each in the same version), wherever the new layout puts it.
-    private static int PlayCup(TournamentOptions o, TournamentHeader header, GroupsKnockout cup, string folder, string results, CliConsole console)
+    private static int PlayCup(TournamentOptions o, TournamentHeader header, GroupsKnockout cup, string folder, string results, RemoteSeat?[] seats, CliConsole console)
     {
         HostSandbox.Warn = console.ErrorLine;
-        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine);
+        var entrants = new EntrantLoader(o.Entrants, o.HostSettings, console.ErrorLine, seats);
         var errors = entrants.Errors;
         if (entrants.AnyHosted)
         {
@@ -349,7 +406,8 @@ internal sealed class TournamentCommand : ICliCommand
 
             var runner = new TournamentRunner(o.Item, header, entrants, replays is null ? null : j => TournamentOutputs.ReplayPage(replays, j)) { Player = live is null ? null : live.Play };
             bool interactive = live is null && ReferenceEquals(console.Out, Console.Out) && !Console.IsOutputRedirected;
-            return new Playing(runner, live is null ? o.Threads ?? Environment.ProcessorCount : 1, interactive, Stopwatch.StartNew(), live);
+            // A remote entrant's client plays one match at a time: with one, the matches are played one after another.
+            return new Playing(runner, live is null && !o.AnyRemote ? o.Threads ?? Environment.ProcessorCount : 1, interactive, Stopwatch.StartNew(), live);
         }
     }
 
@@ -615,6 +673,9 @@ internal sealed class TournamentCommand : ICliCommand
         "Entrants' code runs as with 'run': each in its own strategy host per match (--isolation process, the default;\n" +
         "--sandbox auto|required|off, --strategy-memory MB), or in the server's process with --isolation none; faults\n" +
         "are charged to the team that made them and the match is played.\n" +
+        "NAME=remote:PORT: a remote entrant, played by a client that connects once (connect, or any client of\n" +
+        "docs/protocol.md) and plays its matches in turn; --remote-wait SECONDS (default 60), --remote-host ADDR and\n" +
+        "--remote-token [NAME=]TOKEN as run's; with one, the matches are played one at a time.\n" +
         "--slurm SDIR writes the tournament as a Slurm job array of --shards K tasks (--shard I/K --results FILE each)\n" +
         "and a merge job (--merge FILE...) into SDIR (--partition, --time, --sbatch-arg ARG for any other sbatch\n" +
         "option, --slurm-setup FILE sourced by the jobs first); --submit submits them.\n" +

@@ -59,6 +59,22 @@ internal sealed class TournamentOptions
     /// <summary>Whether the matches are played one after another in the live page (<c>--live</c>).</summary>
     public bool Live { get; private set; }
 
+    /// <summary>How long a match waits for a remote entrant's client (<c>--remote-wait SECONDS</c>; default 60).</summary>
+    public int RemoteWaitSeconds { get; private set; } = RemoteSeat.DefaultWaitSeconds;
+
+    /// <summary>The address remote entrants listen on (<c>--remote-host ADDR</c>; loopback by default).</summary>
+    public System.Net.IPAddress RemoteHost { get; private set; } = System.Net.IPAddress.Loopback;
+
+    /// <summary>Whether some entrant plays remotely (<c>--entrant NAME=remote:PORT</c>).</summary>
+    public bool AnyRemote => Entrants.Exists(e => e.RemotePort is not null);
+
+    private readonly List<string> _tokens = [];
+    private readonly Dictionary<string, string> _tokenOf = new(StringComparer.Ordinal);
+    private string? _tokenForAll;
+
+    /// <summary>The token remote entrant <paramref name="name"/>'s client must present (<c>--remote-token [NAME=]TOKEN</c>), or null.</summary>
+    public string? RemoteToken(string name) => _tokenOf.TryGetValue(name, out string? token) ? token : _tokenForAll;
+
     /// <summary>Port of the live page (<c>--port N</c>).</summary>
     public int Port { get; private set; } = RunOptions.DefaultPort;
 
@@ -230,7 +246,7 @@ internal sealed class TournamentOptions
             }
 
             string value = word.Value ?? throw UsageError($"{name} needs a value");
-            if (name is not ("--entrant" or "--sbatch-arg") && !seen.Add(name))
+            if (name is not ("--entrant" or "--sbatch-arg" or "--remote-token") && !seen.Add(name))
             {
                 throw UsageError($"{name} given twice");
             }
@@ -280,6 +296,12 @@ internal sealed class TournamentOptions
                 case "--host": o.Host = LiveOptions.Host(value, UsageError); break;
                 case "--speed": o.Speed = LiveOptions.Speed(value, UsageError); break;
                 case "--results": o.Results = value.Length > 0 ? value : throw UsageError("--results needs a file, got \"\""); break;
+                case "--remote-wait": o.RemoteWaitSeconds = (int)Number(name, value, 1, 86_400); break;
+                case "--remote-host":
+                    o.RemoteHost = System.Net.IPAddress.TryParse(value, out var address) && value.Length > 0
+                        ? address : throw UsageError($"--remote-host must be an IP address (127.0.0.1, 0.0.0.0, ::1, ...), got {MessageText.Quote(value)}");
+                    break;
+                case "--remote-token": o._tokens.Add(value); seen.Add(name); break;
                 default: throw CliUsageException.UnknownOption("tournament", name, TournamentSyntax.Command, CliApp.ProgramName + " " + Usage);
             }
         }
@@ -330,7 +352,7 @@ internal sealed class TournamentOptions
         for (int i = 0; i < Entrants.Count; i++)
         {
             var e = Entrants[i];
-            if (e.Spec == Entrant.Demo || StrategyResolver.BuiltInNames.Contains(e.Spec))
+            if (e.Spec == Entrant.Demo || StrategyResolver.BuiltInNames.Contains(e.Spec) || e.RemotePort is not null)
             {
                 continue;
             }
@@ -346,6 +368,7 @@ internal sealed class TournamentOptions
         }
 
         CheckFormat(seen);
+        CheckRemote(seen);
         if ((ShardCount > 1 || seen.Contains("--shard")) != (Results is not null))
         {
             throw UsageError("--shard I/K and --results FILE go together (a Slurm task's share of the tournament)");
@@ -374,6 +397,57 @@ internal sealed class TournamentOptions
         if (Live && (Check || Slurm is not null || Results is not null || Merge.Count > 0 || Replays))
         {
             throw UsageError("--live plays the matches on this machine, one after another, in the page: it does not go with --check, --slurm, --shard, --merge or --replays");
+        }
+    }
+
+    // Remote entrants (docs/tournament.md, "Remote entrants") and their options.
+    private void CheckRemote(HashSet<string> seen)
+    {
+        if (!AnyRemote)
+        {
+            if (seen.Contains("--remote-wait") || seen.Contains("--remote-host") || seen.Contains("--remote-token"))
+            {
+                throw UsageError("--remote-wait, --remote-host and --remote-token belong to --entrant NAME=remote:PORT");
+            }
+
+            return;
+        }
+
+        if (Check || Slurm is not null || Results is not null || Merge.Count > 0 || seen.Contains("--shard"))
+        {
+            throw UsageError("a remote entrant plays its matches here, one at a time, with its client: --check, --slurm, --shard and --merge do not go with --entrant NAME=remote:PORT");
+        }
+
+        var ports = new Dictionary<int, string>();
+        foreach (var e in Entrants)
+        {
+            if (e.RemotePort is int port && port != 0 && !ports.TryAdd(port, e.Name))
+            {
+                throw UsageError($"remote entrants {ports[port]} and {e.Name} both ask for port {port}; give each its own (or 0 for any free one)");
+            }
+        }
+
+        foreach (string value in _tokens)
+        {
+            int eq = value.IndexOf('=', StringComparison.Ordinal);
+            string? owner = eq > 0 && Entrants.Exists(e => e.Name == value[..eq]) ? value[..eq] : null;
+            string token = owner is null ? value : value[(eq + 1)..];
+            if (token.Length == 0 || token.Length > URWPGSim2D.Protocol.ProtocolLimits.TextChars || token.Any(char.IsControl))
+            {
+                throw UsageError($"--remote-token must be [NAME=]TOKEN, 1..{URWPGSim2D.Protocol.ProtocolLimits.TextChars} characters without control characters, got {MessageText.Quote(value.Length > 40 ? value[..40] + "..." : value)}");
+            }
+
+            if (owner is not null && Entrants.Find(e => e.Name == owner)!.RemotePort is null)
+            {
+                throw UsageError($"--remote-token for entrant {owner}, which is not remote");
+            }
+
+            if (owner is null ? _tokenForAll is not null : !_tokenOf.TryAdd(owner, token))
+            {
+                throw UsageError($"--remote-token given twice for {(owner is null ? "every remote entrant" : "entrant " + owner)}");
+            }
+
+            _tokenForAll ??= owner is null ? token : null;
         }
     }
 
@@ -491,12 +565,17 @@ internal sealed class TournamentOptions
             return new Entrant(name, spec);
         }
 
+        if (spec.StartsWith(Entrant.RemotePrefix, StringComparison.Ordinal))
+        {
+            return new Entrant(name, Entrant.RemotePrefix + Number("--entrant NAME=remote:PORT", spec[Entrant.RemotePrefix.Length..], 0, 65535).ToString(CultureInfo.InvariantCulture));
+        }
+
         int hash = spec.LastIndexOf('#');
         string path = hash > 0 ? spec[..hash] : spec;
         bool exists = File.Exists(path) || Directory.Exists(path) || File.Exists(spec) || Directory.Exists(spec);
         if (!exists)
         {
-            throw UsageError($"--entrant {name}: {MessageText.Quote(spec)} is not demo, a built-in strategy ({string.Join(", ", StrategyResolver.BuiltInNames)}), or an existing .dll, .cs file or folder");
+            throw UsageError($"--entrant {name}: {MessageText.Quote(spec)} is not demo, a built-in strategy ({string.Join(", ", StrategyResolver.BuiltInNames)}), remote:PORT, or an existing .dll, .cs file or folder");
         }
 
         return new Entrant(name, spec);

@@ -28,6 +28,9 @@ internal static class TournamentSyntax
         UsageLine.Optional(CliSyntax.Value("--strategy-timeout", "MS", "a strategy's CPU time per call")),
         .. HostOptions.Declare(),
         UsageLine.Optional(CliSyntax.Value("--threads", "P", "matches at once")),
+        UsageLine.Optional(CliSyntax.Value("--remote-wait", "SECONDS", "how long a match waits for a remote entrant's client")),
+        UsageLine.Optional(CliSyntax.Value("--remote-host", "ADDR", "the address remote entrants' clients connect to")),
+        UsageLine.Optional(CliSyntax.Repeated("--remote-token", "[NAME=]TOKEN", "the token a remote entrant's client must present")),
         UsageLine.Optional(CliSyntax.Flag("--replays", "write a replay page of every match")),
         UsageLine.Optional(
             CliSyntax.Flag("--live", "play the matches one after another in the live page (a projector view)"),

@@ -120,18 +120,24 @@ public sealed class RemoteMatchTests : IDisposable
     }
 
     [Theory]
-    [InlineData("--strategy 0=remote:x", "run: --strategy TEAM=remote:PORT must be an integer 0..65535, got \"x\"")]
-    [InlineData("--strategy 0=remote:70000", "run: --strategy TEAM=remote:PORT must be an integer 0..65535, got \"70000\"")]
-    [InlineData("--remote-wait 5", "run: --remote-wait, --remote-host and --remote-token belong to --strategy TEAM=remote:PORT")]
-    [InlineData("--strategy 0=remote:0 --remote-wait 0", "run: --remote-wait must be an integer 1..86400, got \"0\"")]
-    [InlineData("--strategy 0=remote:0 --remote-host example.org", "run: --remote-host must be an IP address (127.0.0.1, 0.0.0.0, ::1, ...), got \"example.org\"")]
-    [InlineData("--strategy 0=remote:0 --remote-token 1=abc", "run: --remote-token for team 1, which is not remote")]
-    [InlineData("--strategy 0=remote:0 --remote-token a --remote-token b", "run: --remote-token given twice for team 0")]
-    [InlineData("--strategy 0=remote:0 --batch 2", "run: a remote team plays one match: --batch and --live do not go with --strategy TEAM=remote:PORT")]
-    [InlineData("--strategy 0=remote:7000 --strategy 1=remote:7000", "run: both remote teams ask for port 7000; give each its own (or 0 for any free one)")]
+    [InlineData("run --strategy 0=remote:x", "run: --strategy TEAM=remote:PORT must be an integer 0..65535, got \"x\"")]
+    [InlineData("run --strategy 0=remote:70000", "run: --strategy TEAM=remote:PORT must be an integer 0..65535, got \"70000\"")]
+    [InlineData("run --remote-wait 5", "run: --remote-wait, --remote-host and --remote-token belong to --strategy TEAM=remote:PORT")]
+    [InlineData("run --strategy 0=remote:0 --remote-wait 0", "run: --remote-wait must be an integer 1..86400, got \"0\"")]
+    [InlineData("run --strategy 0=remote:0 --remote-host example.org", "run: --remote-host must be an IP address (127.0.0.1, 0.0.0.0, ::1, ...), got \"example.org\"")]
+    [InlineData("run --strategy 0=remote:0 --remote-token 1=abc", "run: --remote-token for team 1, which is not remote")]
+    [InlineData("run --strategy 0=remote:0 --remote-token a --remote-token b", "run: --remote-token given twice for team 0")]
+    [InlineData("run --strategy 0=remote:0 --batch 2", "run: a remote team plays one match at a time: --batch and --slurm do not go with --strategy TEAM=remote:PORT")]
+    [InlineData("run --strategy 0=remote:7000 --strategy 1=remote:7000", "run: both remote teams ask for port 7000; give each its own (or 0 for any free one)")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=remote:x --entrant b=idle", "tournament: --entrant NAME=remote:PORT must be an integer 0..65535, got \"x\"")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=idle --entrant b=chase-ball --remote-wait 5", "tournament: --remote-wait, --remote-host and --remote-token belong to --entrant NAME=remote:PORT")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=remote:7000 --entrant b=remote:7000", "tournament: remote entrants a and b both ask for port 7000; give each its own (or 0 for any free one)")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=remote:0 --entrant b=idle --remote-token b=x", "tournament: --remote-token for entrant b, which is not remote")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=remote:0 --entrant b=idle --remote-token x --remote-token y", "tournament: --remote-token given twice for every remote entrant")]
+    [InlineData("tournament --item polo-1v1 --out t --entrant a=remote:0 --entrant b=idle --check", "tournament: a remote entrant plays its matches here, one at a time, with its client: --check, --slurm, --shard and --merge do not go with --entrant NAME=remote:PORT")]
     public void Bad_remote_options_are_one_line_and_exit_2(string arguments, string message)
     {
-        var result = CliRun.Of(string.Empty, ["run", .. arguments.Split(' ')]);
+        var result = CliRun.Of(string.Empty, arguments.Split(' '));
         Assert.Equal(2, result.ExitCode);
         Assert.StartsWith(message + ". Usage: ", result.Stderr, StringComparison.Ordinal);
         Assert.Single(result.Stderr.TrimEnd('\n').Split('\n'));
@@ -170,7 +176,7 @@ public sealed class RemoteMatchTests : IDisposable
     }
 
     // The server on its own thread; the function returned waits for its end.
-    private static Func<CliRun> Background(string[] run, WatchedWriter stderr)
+    internal static Func<CliRun> Background(string[] run, WatchedWriter stderr)
     {
         CliRun? result = null;
         var thread = new Thread(() => result = Server(run, stderr)) { IsBackground = true };
