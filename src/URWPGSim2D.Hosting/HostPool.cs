@@ -1,3 +1,5 @@
+using System.Linq;
+
 namespace URWPGSim2D.Hosting;
 
 /// <summary>
@@ -92,6 +94,48 @@ public static class HostPool
         return host;
     }
 
+    /// <summary>
+    /// Ends the hosts waiting for <paramref name="strategy"/> (under any settings) and stops keeping
+    /// any for it: its next match starts its own host, unless it is reserved again. A service that
+    /// readies many strategies keeps hosts waiting only for those that play soon.
+    /// </summary>
+    /// <param name="strategy">The team's strategy.</param>
+    /// <returns>How many waiting hosts were ended.</returns>
+    public static int Release(PreparedStrategy strategy)
+    {
+        var ended = new List<HostProcess>();
+        lock (Gate)
+        {
+            foreach (var key in Kinds.Keys.Where(k => k.Strategy.Equals(strategy)).ToList())
+            {
+                var kind = Kinds[key];
+                kind.Released = true;
+                ended.AddRange(kind.Waiting);
+                kind.Waiting.Clear();
+                Kinds.Remove(key);
+            }
+
+            Monitor.PulseAll(Gate);
+        }
+
+        foreach (var host in ended)
+        {
+            host.Dispose();
+        }
+
+        return ended.Count;
+    }
+
+    /// <summary>The process ids of the hosts waiting for <paramref name="strategy"/> now.</summary>
+    /// <param name="strategy">The team's strategy.</param>
+    public static IReadOnlyList<int> WaitingFor(PreparedStrategy strategy)
+    {
+        lock (Gate)
+        {
+            return [.. Kinds.Where(k => k.Key.Strategy.Equals(strategy)).SelectMany(k => k.Value.Waiting).Select(h => h.ProcessId)];
+        }
+    }
+
     /// <summary>Ends every waiting host (at the program's end).</summary>
     public static void Clear()
     {
@@ -142,15 +186,22 @@ public static class HostPool
             // no waiting host this time: the match starts its own
         }
 
+        bool released;
         lock (Gate)
         {
             kind.Starting--;
-            if (host is not null)
+            released = kind.Released;
+            if (host is not null && !released)
             {
                 kind.Waiting.Enqueue(host);
             }
 
             Monitor.PulseAll(Gate);
+        }
+
+        if (released)
+        {
+            host?.Dispose(); // its strategy was released while this host started
         }
     });
 
@@ -165,5 +216,7 @@ public static class HostPool
         public int Taken { get; set; }
 
         public bool Keep { get; set; }
+
+        public bool Released { get; set; }
     }
 }

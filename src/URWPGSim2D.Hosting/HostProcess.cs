@@ -241,6 +241,9 @@ public sealed class HostProcess : IStrategyLink
         }
     }
 
+    /// <summary>The host's process id (bubblewrap's when sandboxed).</summary>
+    public int ProcessId => _process.Id;
+
     /// <summary>Ends the host and everything it started and deletes its scratch folder; a second call does nothing.</summary>
     public void Dispose()
     {

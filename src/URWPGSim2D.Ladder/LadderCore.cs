@@ -33,9 +33,25 @@ internal sealed class LadderCore : IDisposable
     private long _changes;
 
     public LadderCore(ILadderStore store, LadderSettings settings)
+        : this(store, settings, null)
+    {
+    }
+
+    // With a ladder: a player of that ladder's matches only (a worker process), which creates and changes nothing else.
+    private LadderCore(ILadderStore store, LadderSettings settings, LadderRow? player)
     {
         Store = store;
         _settings = settings;
+        if (player is not null)
+        {
+            Item = ItemRegistry.Find(player.Item) ?? throw new LadderInputException($"the ladder's item {Engine.Messages.MessageText.Quote(player.Item)} is not an item of this program");
+            LadderId = player.Id;
+            Directory.CreateDirectory(ReplaysFolder);
+            Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
+            _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
+            return;
+        }
+
         Store.Migrate();
         var existing = settings.Item is null ? Store.NewestLadder() : null;
         string slug = settings.Item ?? existing?.Item ?? "ball-grab";
@@ -65,8 +81,11 @@ internal sealed class LadderCore : IDisposable
             Store.SetSetting("admin_token_hash", Secrets.HashToken(NewAdminToken));
         }
 
-        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
+        _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
     }
+
+    /// <summary>A core that only plays the matches of <paramref name="ladder"/> (in a worker process): it creates and changes nothing but those matches' records and replay pages.</summary>
+    public static LadderCore Player(ILadderStore store, LadderSettings settings, LadderRow ladder) => new(store, settings, ladder);
 
     /// <summary>Where rows are kept.</summary>
     public ILadderStore Store { get; }
@@ -356,8 +375,8 @@ internal sealed class LadderCore : IDisposable
         return true;
     }
 
-    /// <summary>Plays a claimed (running) match and writes its record once.</summary>
-    public void Play(MatchRow match)
+    /// <summary>Plays a claimed (running) match and writes its record once: true when this play's record was written (false: the match was written already, by another play of it).</summary>
+    public bool Play(MatchRow match)
     {
         var teams = Store.Teams().ToDictionary(t => t.Id);
         var sides = new List<(long, long, Entrant)>();
@@ -374,8 +393,9 @@ internal sealed class LadderCore : IDisposable
         var output = new StrategyOutput(sides.Count);
         var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, ReplayPage(match.Id), output);
         MatchOutputs.Write(OutputPage(match.Id), [.. sides.Select((s, k) => (s.Item1, output.SlowestMs(k), output.Text(k)))]);
-        Store.FinishMatch(match.Id, LadderMatchPlayer.Line(record));
+        bool written = Store.FinishMatch(match.Id, LadderMatchPlayer.Line(record));
         Interlocked.Increment(ref _changes);
+        return written;
     }
 
     /// <summary>

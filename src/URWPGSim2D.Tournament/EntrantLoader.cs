@@ -111,6 +111,24 @@ public sealed class EntrantLoader
         return TeamStrategy.InProcess(entrant.Name, entrant.Spec, settings: Settings);
     }
 
+    /// <summary>Reserves again a waiting host for each hosted entrant (after <see cref="Release"/>), kept waiting as when readied.</summary>
+    public void Reserve() => Reserve(Settings);
+
+    /// <summary>Ends the hosts waiting for these entrants and keeps none waiting until <see cref="Reserve()"/>: their matches still play, each starting its own host.</summary>
+    public void Release()
+    {
+        foreach (var prepared in _prepared)
+        {
+            if (prepared is not null)
+            {
+                HostPool.Release(prepared);
+            }
+        }
+    }
+
+    /// <summary>The process ids of the hosts waiting for these entrants now.</summary>
+    public IReadOnlyList<int> WaitingHosts() => [.. _prepared.Where(p => p is not null).SelectMany(p => HostPool.WaitingFor(p!))];
+
     // A waiting host for each hosted entrant, started now (while the tournament is set up) and replaced whenever taken.
     private void Reserve(HostSettings settings)
     {

@@ -38,6 +38,27 @@ public static class TournamentFile
         }
     }
 
+    /// <summary>Writes a forfeit's <c>"forfeits"</c> (its teams that forfeit) and <c>"reasons"</c> (one line each) as a record's line has them.</summary>
+    public static void WriteForfeits(Utf8JsonWriter w, TournamentRecord r)
+    {
+        ArgumentNullException.ThrowIfNull(w);
+        ArgumentNullException.ThrowIfNull(r);
+        w.WriteStartArray("forfeits");
+        foreach (int team in r.Forfeits)
+        {
+            w.WriteNumberValue(team);
+        }
+
+        w.WriteEndArray();
+        w.WriteStartArray("reasons");
+        foreach (string reason in r.Reasons)
+        {
+            w.WriteStringValue(reason);
+        }
+
+        w.WriteEndArray();
+    }
+
     /// <summary>Writes one record's line to an open file.</summary>
     public static void WriteRecord(Stream stream, TournamentRecord r)
     {
@@ -54,20 +75,7 @@ public static class TournamentFile
             w.WriteNumber("index", r.Index);
             w.WriteNumber("seed", r.Seed);
             Names(w, r.Entrants);
-            w.WriteStartArray("forfeits");
-            foreach (int team in r.Forfeits)
-            {
-                w.WriteNumberValue(team);
-            }
-
-            w.WriteEndArray();
-            w.WriteStartArray("reasons");
-            foreach (string reason in r.Reasons)
-            {
-                w.WriteStringValue(reason);
-            }
-
-            w.WriteEndArray();
+            WriteForfeits(w, r);
             if (r.Failed)
             {
                 w.WriteBoolean("failed", true);

@@ -57,7 +57,7 @@ public sealed class CliTests : IDisposable
     }
 
     [Theory]
-    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, team add, submit, final). Usage: urwpgsim2d ladder serve|team add|submit|final ...")]
+    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, team add, submit, final, worker). Usage: urwpgsim2d ladder serve|team add|submit|final|worker ...")]
     [InlineData(new[] { "ladder", "serve", "--minutes", "2" }, "ladder serve: --minutes must be 10, 5, 3 or 1, got \"2\"")]
     [InlineData(new[] { "ladder", "serve", "--port", "70000" }, "ladder serve: --port must be a whole number from 0 to 65535, got \"70000\"")]
     [InlineData(new[] { "ladder", "serve", "--workers", "-1" }, "ladder serve: --workers must be a whole number from 0 to 256, got \"-1\"")]
@@ -66,6 +66,8 @@ public sealed class CliTests : IDisposable
     [InlineData(new[] { "ladder", "submit", "--server", "ftp://x/", "--token", "t", "x.cs" }, "ladder submit: --server must be an http:// or https:// address, got \"ftp://x/\"")]
     [InlineData(new[] { "ladder", "submit", "--server", "http://127.0.0.1:1/", "--token", "t", "nothing.txt" }, "ladder submit: PATH must be a folder of .cs files, a .cs file or a .dll, got \"nothing.txt\"")]
     [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t", "--top", "1" }, "ladder final: --top must be a whole number from 2 to 1000, got \"1\"")]
+    [InlineData(new[] { "ladder", "worker", "--database", "Host=x;Database=y", "--workers", "0" }, "ladder worker: --workers must be a whole number from 1 to 256, got \"0\"")]
+    [InlineData(new[] { "ladder", "worker", "--data", "x" }, "ladder worker: --database CONNECTION is required. Usage: urwpgsim2d ladder worker --database CONNECTION [--data DIR] [--workers N]")]
     [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t" }, "ladder final: --top K is required. Usage: urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]")]
     public async Task BadArgumentsAreOneLineAndExitTwo(string[] arguments, string message)
     {
@@ -89,5 +91,6 @@ public sealed class CliTests : IDisposable
         Assert.Contains("urwpgsim2d ladder team add NAME --server URL --admin-token T [--strategy demo|chase-ball|idle]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder submit --server URL --token T PATH\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder worker --database CONNECTION [--data DIR] [--workers N]\n", output, StringComparison.Ordinal);
     }
 }

@@ -83,14 +83,17 @@ public sealed class ServeProcess : IDisposable
         _process.WaitForExit();
     }
 
-    public void Dispose()
+    public void Dispose() => End(_process);
+
+    /// <summary>Kills <paramref name="process"/> and what it started when it still runs, waits for it, and disposes of it.</summary>
+    public static void End(Process process)
     {
-        if (!_process.HasExited)
+        if (!process.HasExited)
         {
-            _process.Kill(entireProcessTree: true);
-            _process.WaitForExit();
+            process.Kill(entireProcessTree: true);
+            process.WaitForExit();
         }
 
-        _process.Dispose();
+        process.Dispose();
     }
 }

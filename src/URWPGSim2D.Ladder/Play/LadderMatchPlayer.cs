@@ -24,17 +24,69 @@ internal sealed class LadderMatchPlayer
     private readonly HostSettings _hostSettings;
     private readonly int _strategyTimeoutMs;
     private readonly ConcurrentDictionary<(long Team, long Submission), Lazy<EntrantLoader>> _loaders = new();
+    private readonly LinkedList<(long Team, long Submission)> _warm = new(); // most recently used first
+    private readonly object _warmGate = new();
 
-    public LadderMatchPlayer(CompetitionItem item, HostSettings hostSettings, int strategyTimeoutMs)
+    /// <param name="item">The ladder's item.</param>
+    /// <param name="hostSettings">How strategies run.</param>
+    /// <param name="strategyTimeoutMs">The time limit of a call.</param>
+    /// <param name="warmLimit">The most submissions that keep a started strategy host waiting.</param>
+    public LadderMatchPlayer(CompetitionItem item, HostSettings hostSettings, int strategyTimeoutMs, int warmLimit)
     {
+        ArgumentOutOfRangeException.ThrowIfLessThan(warmLimit, 2);
         _item = item;
         _hostSettings = hostSettings;
         _strategyTimeoutMs = strategyTimeoutMs;
+        WarmLimit = warmLimit;
     }
 
-    /// <summary>The readied entrant of a team's submission (0: its house strategy), made once.</summary>
-    public EntrantLoader Loader(long team, long submission, Entrant entrant) =>
-        _loaders.GetOrAdd((team, submission), _ => new Lazy<EntrantLoader>(() => new EntrantLoader([entrant], _hostSettings))).Value;
+    /// <summary>The most submissions that keep a started strategy host waiting: those used last (checked or played).</summary>
+    public int WarmLimit { get; }
+
+    /// <summary>
+    /// The readied entrant of a team's submission (0: its house strategy), compiled once. It keeps a
+    /// started host waiting for its next match while it is among the <see cref="WarmLimit"/> used last;
+    /// the hosts of the one used longest ago end, and it reserves one again when it is used again.
+    /// </summary>
+    public EntrantLoader Loader(long team, long submission, Entrant entrant)
+    {
+        bool readied = false;
+        var key = (team, submission);
+        var loader = _loaders.GetOrAdd(key, _ => new Lazy<EntrantLoader>(() =>
+        {
+            readied = true; // readying reserves its host
+            return new EntrantLoader([entrant], _hostSettings);
+        })).Value;
+        if (!loader.AnyHosted)
+        {
+            return loader; // a built-in strategy: no host to keep
+        }
+
+        var cold = new List<EntrantLoader>();
+        bool reserve;
+        lock (_warmGate)
+        {
+            reserve = !_warm.Remove(key) && !readied;
+            _warm.AddFirst(key);
+            while (_warm.Count > WarmLimit)
+            {
+                cold.Add(_loaders[_warm.Last!.Value].Value);
+                _warm.RemoveLast();
+            }
+        }
+
+        if (reserve)
+        {
+            loader.Reserve();
+        }
+
+        foreach (var c in cold)
+        {
+            c.Release();
+        }
+
+        return loader;
+    }
 
     /// <summary>Plays match <paramref name="index"/> and returns its record.</summary>
     /// <param name="index">The match's id.</param>

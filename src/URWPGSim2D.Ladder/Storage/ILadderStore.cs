@@ -94,6 +94,19 @@ internal interface ILadderStore : IDisposable
     /// </summary>
     bool FinishMatch(long match, string record);
 
+    /// <summary>
+    /// Claims a match for the job <paramref name="job"/> that plays it (another process's, through the
+    /// job library): a queued match, or one this same job claimed before (the job run again after its
+    /// worker died). False when the match is done, dropped, or another job's.
+    /// </summary>
+    bool ClaimForJob(long match, string job);
+
+    /// <summary>Notes the job a queued match was handed to (when it has none yet).</summary>
+    void SetJob(long match, string job);
+
+    /// <summary>A ladder's queued matches not yet handed to a job, oldest first.</summary>
+    IReadOnlyList<long> Unscheduled(long ladder);
+
     /// <summary>Puts every running match back in the queue (on start: what a stopped service was playing is played again from its seed).</summary>
     int RequeueRunning();
 

@@ -51,6 +51,10 @@ internal sealed class SqlDialect
             "CREATE INDEX matches_state ON matches (ladder_id, state, id)",
             "CREATE TABLE sessions (token_hash TEXT PRIMARY KEY, team_id BIGINT NOT NULL REFERENCES teams (id), created TEXT NOT NULL)",
         ],
+        [
+            // The job (Hangfire's id) a match is queued as or claimed by, when worker processes share the database.
+            "ALTER TABLE matches ADD COLUMN job TEXT NULL",
+        ],
     ];
 
     /// <summary>SQLite: write-ahead log, a busy wait instead of an error when another connection writes.</summary>

@@ -282,6 +282,28 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
+    public bool ClaimForJob(long match, string job)
+    {
+        using var c = Open();
+        return Execute(c, null, "UPDATE matches SET state = @r, started = @t, job = @j WHERE id = @id AND (state = @q OR (state = @r AND job = @j))",
+            ("r", MatchRow.Running), ("t", Now()), ("j", job), ("id", match), ("q", MatchRow.Queued)) == 1;
+    }
+
+    /// <inheritdoc/>
+    public void SetJob(long match, string job)
+    {
+        using var c = Open();
+        Execute(c, null, "UPDATE matches SET job = @j WHERE id = @id AND job IS NULL", ("j", job), ("id", match));
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<long> Unscheduled(long ladder)
+    {
+        using var c = Open();
+        return All(c, null, "SELECT id FROM matches WHERE ladder_id = @l AND state = @q AND job IS NULL ORDER BY final DESC, id", r => r.GetInt64(0), ("l", ladder), ("q", MatchRow.Queued));
+    }
+
+    /// <inheritdoc/>
     public bool FinishMatch(long match, string record)
     {
         using var c = Open();
@@ -303,7 +325,7 @@ internal sealed class SqlLadderStore : ILadderStore
     public bool Requeue(long match)
     {
         using var c = Open();
-        return Execute(c, null, "UPDATE matches SET state = @q, started = NULL, finished = NULL, record = NULL WHERE id = @id AND state = @d",
+        return Execute(c, null, "UPDATE matches SET state = @q, started = NULL, finished = NULL, record = NULL, job = NULL WHERE id = @id AND state = @d",
             ("q", MatchRow.Queued), ("id", match), ("d", MatchRow.Done)) == 1;
     }
 

@@ -513,20 +513,7 @@ internal static class LadderApi
             }
             else
             {
-                w.WriteStartArray("forfeits");
-                foreach (int f in r.Forfeits)
-                {
-                    w.WriteNumberValue(f);
-                }
-
-                w.WriteEndArray();
-                w.WriteStartArray("reasons");
-                foreach (string reason in r.Reasons)
-                {
-                    w.WriteStringValue(reason);
-                }
-
-                w.WriteEndArray();
+                TournamentFile.WriteForfeits(w, r);
             }
 
             if (MatchOutputs.Read(core.OutputPage(m.Id)) is { } outputs)

@@ -28,14 +28,19 @@ public sealed class LadderServer : IAsyncDisposable
     private readonly WebApplication _app;
     private readonly LadderCore _core;
     private readonly LadderWorkers? _workers;
+    private readonly LadderJobs? _jobs;
+    private readonly LadderMatchmaker? _matchmaker;
 
-    private LadderServer(WebApplication app, LadderCore core, LadderWorkers? workers, string url)
+    private LadderServer(WebApplication app, LadderCore core, LadderWorkers? workers, LadderJobs? jobs, LadderMatchmaker? matchmaker, string url)
     {
         _app = app;
         _core = core;
         _workers = workers;
+        _jobs = jobs;
+        _matchmaker = matchmaker;
         Url = url;
     }
+
 
     /// <summary>The address the service answers at, e.g. <c>http://127.0.0.1:5080/</c>.</summary>
     public string Url { get; }
@@ -63,7 +68,11 @@ public sealed class LadderServer : IAsyncDisposable
         var store = LadderDatabase.Open(settings);
         var core = new LadderCore(store, settings);
         core.RecheckInterrupted();
-        store.RequeueRunning();
+        if (settings.Database is null)
+        {
+            // SQLite: this process alone plays, so what was running when it stopped is played again.
+            store.RequeueRunning();
+        }
 
         var builder = WebApplication.CreateSlimBuilder();
         builder.Logging.ClearProviders();
@@ -92,9 +101,23 @@ public sealed class LadderServer : IAsyncDisposable
         LadderPages.Map(app);
         await app.StartAsync();
         string url = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First();
+        if (settings.Database is { } database)
+        {
+            // PostgreSQL: matches are Hangfire jobs, played by this process's server (--workers) and by every worker process.
+            var jobs = new LadderJobs(database, LadderJobs.Invisibility);
+            if (settings.Workers > 0)
+            {
+                jobs.Serve(settings.Workers, MatchJob.Of(store, settings, core, (_, _) => { }));
+            }
+
+            var matchmaker = new LadderMatchmaker(core, jobs, report);
+            matchmaker.Start();
+            return new LadderServer(app, core, null, jobs, matchmaker, url.TrimEnd('/') + "/");
+        }
+
         var workers = settings.Workers > 0 ? new LadderWorkers(core, settings.Workers, report) : null;
         workers?.Start();
-        return new LadderServer(app, core, workers, url.TrimEnd('/') + "/");
+        return new LadderServer(app, core, workers, null, null, url.TrimEnd('/') + "/");
     }
 
     /// <summary>Waits until the service is stopped (Ctrl+C, SIGTERM).</summary>
@@ -104,6 +127,8 @@ public sealed class LadderServer : IAsyncDisposable
     public async ValueTask DisposeAsync()
     {
         _workers?.Dispose();
+        _matchmaker?.Dispose();
+        _jobs?.Dispose();
         await _app.StopAsync();
         await _app.DisposeAsync();
         _core.Dispose();

@@ -63,6 +63,15 @@ internal sealed class LadderCommand : ICliCommand
     private static readonly Command Submit = CliSyntax.Command("submit", "Submit a team's strategy to a running ladder.", SubmitLine, SubmitHelp);
     private static readonly Command Final = CliSyntax.Command("final", "Start a running ladder's final round.", FinalLine, FinalHelp);
 
+    private static readonly Option<bool> WorkerHelp = CliSyntax.Help();
+    private static readonly Option<string> WorkerDatabaseOption = CliSyntax.Value("--database", "CONNECTION", "the service's PostgreSQL connection string");
+    private static readonly Option<string> WorkerDataOption = CliSyntax.Value("--data", "DIR", "the service's data folder: submissions are read there, replays and outputs written (default ladder-data)", CliCompletions.Paths);
+    private static readonly Option<string> WorkerWorkersOption = CliSyntax.Value("--workers", "N", "matches played at once (default 1)");
+
+    private static readonly UsageLine WorkerLine = new(WorkerDatabaseOption, UsageLine.Optional(WorkerDataOption), UsageLine.Optional(WorkerWorkersOption));
+
+    private static readonly Command Worker = CliSyntax.Command("worker", "Play a ladder's matches beside its service (PostgreSQL).", WorkerLine, WorkerHelp);
+
     /// <summary>The usage of <c>ladder serve</c>.</summary>
     public static string ServeUsage => "ladder serve " + ServeLine.Text;
 
@@ -75,11 +84,14 @@ internal sealed class LadderCommand : ICliCommand
     /// <summary>The usage of <c>ladder final</c>.</summary>
     public static string FinalUsage => "ladder final " + FinalLine.Text;
 
+    /// <summary>The usage of <c>ladder worker</c>.</summary>
+    public static string WorkerUsage => "ladder worker " + WorkerLine.Text;
+
     /// <inheritdoc/>
     public string Name => "ladder";
 
     /// <inheritdoc/>
-    public string Synopsis => "ladder serve|team add|submit|final ...";
+    public string Synopsis => "ladder serve|team add|submit|final|worker ...";
 
     /// <inheritdoc/>
     public string Summary => "Run a competition ladder: teams upload strategies, ranked matches play without end, standings update live.";
@@ -101,6 +113,7 @@ internal sealed class LadderCommand : ICliCommand
         ladder.Subcommands.Add(Team);
         ladder.Subcommands.Add(Submit);
         ladder.Subcommands.Add(Final);
+        ladder.Subcommands.Add(Worker);
         return ladder;
     }
 
@@ -114,6 +127,7 @@ internal sealed class LadderCommand : ICliCommand
             ["team", "add", ..] => Add,
             ["submit", ..] => Submit,
             ["final", ..] => Final,
+            ["worker", ..] => Worker,
             _ => null,
         };
     }
@@ -136,7 +150,7 @@ internal sealed class LadderCommand : ICliCommand
                 throw CliUsageException.UnknownOption("ladder", rest[0].Text, Syntax, CliApp.ProgramName + " " + Synopsis);
             }
 
-            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit, final)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
+            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit, final, worker)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
         }
 
         if (chosen == Serve)
@@ -149,19 +163,26 @@ internal sealed class LadderCommand : ICliCommand
             return RunFinal(rest, console);
         }
 
+        if (chosen == Worker)
+        {
+            return RunWorker(rest, console);
+        }
+
         return chosen == Add ? RunAdd(rest, console) : RunSubmit(rest, console);
     }
 
     private static string Help() =>
-        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit|final ...\n" +
+        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit|final|worker ...\n" +
         $"  {CliApp.ProgramName} {ServeUsage}\n" +
         $"  {CliApp.ProgramName} {AddUsage}\n" +
         $"  {CliApp.ProgramName} {SubmitUsage}\n" +
-        $"  {CliApp.ProgramName} {FinalUsage}\n\n" +
+        $"  {CliApp.ProgramName} {FinalUsage}\n" +
+        $"  {CliApp.ProgramName} {WorkerUsage}\n\n" +
         "serve runs the ladder service until stopped (Ctrl+C): pages and JSON API, and workers that play ranked\n" +
         "matches without end. team add adds a team and prints its token alone on the last line. submit uploads a\n" +
         "team's strategy, which is compiled and checked once; its newest working submission plays. final starts the\n" +
         "final round: every pair of the top K plays N matches, ranked play stops, the standings become the final's.\n" +
+        "worker plays matches of a service whose database is PostgreSQL, beside it, until stopped (Ctrl+C).\n" +
         "More: docs/ladder.md.\n";
 
     // The value options of one sub-command, each at most once; positional words apart.
@@ -317,17 +338,26 @@ internal sealed class LadderCommand : ICliCommand
             throw new CliUsageException($"ladder team add: --strategy must be demo, chase-ball or idle, got {MessageText.Quote(strategy)}", null);
         }
 
-        try
+        return Ask("ladder team add", server, admin, console, client =>
         {
-            using var client = new LadderClient(server, admin);
             var (name, token) = client.AddTeamAsync(positional[0], strategy).GetAwaiter().GetResult();
             console.Out.WriteLine(strategy is null ? $"team {name} added; its token (shown once):" : $"team {name} added, a house entrant playing {strategy}; its token (shown once):");
             console.Out.WriteLine(token);
             return ExitCodes.Success;
+        });
+    }
+
+    // One request to a running ladder: its refusal (or an unreachable service) is one line on standard error and exit 2.
+    private static int Ask(string command, string server, string token, CliConsole console, Func<LadderClient, int> ask)
+    {
+        try
+        {
+            using var client = new LadderClient(server, token);
+            return ask(client);
         }
         catch (LadderInputException e)
         {
-            console.ErrorLine("ladder team add: " + e.Message);
+            console.ErrorLine(command + ": " + e.Message);
             return ExitCodes.BadInput;
         }
     }
@@ -350,9 +380,8 @@ internal sealed class LadderCommand : ICliCommand
 
         string server = values.GetValueOrDefault(SubmitServerOption) ?? throw new CliUsageException("ladder submit: --server URL is required", usage);
         string token = values.GetValueOrDefault(TokenOption) ?? throw new CliUsageException("ladder submit: --token T is required", usage);
-        try
+        return Ask("ladder submit", server, token, console, client =>
         {
-            using var client = new LadderClient(server, token);
             var (id, ok, log) = client.SubmitAsync(positional[0]).GetAwaiter().GetResult();
             if (!ok)
             {
@@ -367,12 +396,80 @@ internal sealed class LadderCommand : ICliCommand
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"submission {id}: ok"));
             console.Out.WriteLine(log);
             return ExitCodes.Success;
-        }
-        catch (LadderInputException e)
+        });
+    }
+
+    private static int RunWorker(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        string usage = CliApp.ProgramName + " " + WorkerUsage;
+        var (values, positional) = Words(words, "ladder worker", Worker, usage, WorkerHelp, out bool help);
+        if (help)
         {
-            console.ErrorLine("ladder submit: " + e.Message);
-            return ExitCodes.BadInput;
+            console.Out.Write($"Usage: {usage}\n\nPlays the matches a ladder service queues in its PostgreSQL database, beside it, until stopped (Ctrl+C).\n" +
+                $"DIR must be the service's data folder (the same path on every machine). Options:\n{WorkerLine.OptionTable(24)}More: docs/ladder.md.\n");
+            return ExitCodes.Success;
         }
+
+        if (positional.Count > 0)
+        {
+            throw new CliUsageException($"ladder worker: unexpected argument {MessageText.Quote(positional[0])}", usage);
+        }
+
+        string database = values.GetValueOrDefault(WorkerDatabaseOption) ?? throw new CliUsageException("ladder worker: --database CONNECTION is required", usage);
+        var settings = new LadderSettings { Database = database.Length > 0 ? database : throw new CliUsageException("ladder worker: --database needs a connection string, got \"\"", null) };
+        if (values.TryGetValue(WorkerDataOption, out string? data))
+        {
+            settings = settings with { DataDir = data.Length > 0 ? data : throw new CliUsageException("ladder worker: --data needs a folder, got \"\"", null) };
+        }
+
+        if (values.TryGetValue(WorkerWorkersOption, out string? workers))
+        {
+            settings = settings with { Workers = Number("ladder worker", "--workers", workers, 1, 256) };
+        }
+
+        var gate = new object();
+        void Told(long match, bool done)
+        {
+            lock (gate)
+            {
+                console.Out.WriteLine(done ? $"ladder worker: match {match} played" : $"ladder worker: playing match {match}");
+                console.Out.Flush();
+            }
+        }
+
+        // Its first line before any match's: the matches' lines wait for the lock.
+        LadderWorker worker;
+        lock (gate)
+        {
+            try
+            {
+                worker = LadderWorker.Start(settings, Told);
+            }
+            catch (LadderInputException e)
+            {
+                console.ErrorLine("ladder worker: " + e.Message);
+                return ExitCodes.BadInput;
+            }
+
+            console.Out.WriteLine($"ladder worker: {settings.Workers} match(es) at once (data: {settings.DataDir}, PostgreSQL); Ctrl+C stops it");
+            console.Out.Flush();
+        }
+
+        using var stop = new System.Threading.ManualResetEventSlim();
+        void Stop(System.Runtime.InteropServices.PosixSignalContext context)
+        {
+            context.Cancel = true;
+            stop.Set();
+        }
+
+        using (System.Runtime.InteropServices.PosixSignalRegistration.Create(System.Runtime.InteropServices.PosixSignal.SIGINT, Stop))
+        using (System.Runtime.InteropServices.PosixSignalRegistration.Create(System.Runtime.InteropServices.PosixSignal.SIGTERM, Stop))
+        {
+            stop.Wait();
+            worker.Dispose();
+        }
+
+        return ExitCodes.Success;
     }
 
     private static int RunFinal(IReadOnlyList<CommandLineWord> words, CliConsole console)
@@ -396,18 +493,12 @@ internal sealed class LadderCommand : ICliCommand
         string top = values.GetValueOrDefault(TopOption) ?? throw new CliUsageException("ladder final: --top K is required", usage);
         int k = Number("ladder final", "--top", top, 2, 1000);
         int rounds = values.TryGetValue(RoundsOption, out string? r) ? Number("ladder final", "--rounds", r, 1, 100) : 2;
-        try
+        return Ask("ladder final", server, admin, console, client =>
         {
-            using var client = new LadderClient(server, admin);
             var (teams, matches) = client.StartFinalAsync(k, rounds).GetAwaiter().GetResult();
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"final round started: {string.Join(", ", teams)}; each pair plays {rounds} {(rounds == 1 ? "match" : "matches")}, {matches} in all"));
             return ExitCodes.Success;
-        }
-        catch (LadderInputException e)
-        {
-            console.ErrorLine("ladder final: " + e.Message);
-            return ExitCodes.BadInput;
-        }
+        });
     }
 
     private static int Number(string name, string value, int low, int high) => Number("ladder serve", name, value, low, high);
