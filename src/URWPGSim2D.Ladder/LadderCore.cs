@@ -48,7 +48,7 @@ internal sealed class LadderCore : IDisposable
             LadderId = player.Id;
             Directory.CreateDirectory(ReplaysFolder);
             Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
-            _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs);
+            _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
             return;
         }
 

@@ -245,8 +245,10 @@ public sealed partial class MotionWorld
     /// Counts a moving body as changed by the current response without changing it. After a
     /// response the bodies it changed are committed at the contact's time and planned again in the
     /// order they were first changed or involved, and contacts found together afterwards are
-    /// handled in that order: a response that involves its bodies first, in the order it will move
-    /// them, makes that order explicit. Between steps it does nothing.
+    /// handled in that order. The motion world involves a contact's own moving bodies before the
+    /// handler's response, in the order the separation moves them (A first, unless A's move was
+    /// rejected and A is not a circle while B's was not: then B); a response that will move a
+    /// third body calls this to place it in that order. Between steps it does nothing.
     /// </summary>
     /// <param name="body">The body's id.</param>
     /// <exception cref="ArgumentException">The body does not move.</exception>

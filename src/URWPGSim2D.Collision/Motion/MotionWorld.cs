@@ -257,8 +257,57 @@ public sealed partial class MotionWorld
     /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
     internal Disc SweptCircleOf(BodyId body) => _schedule.Planner.SweptCircle(Get(body).Slot);
 
-    /// <summary>The response to one contact, from the handler.</summary>
-    internal void Report(in Contact contact) => _handler!.OnContact(this, contact);
+    /// <summary>The response to one contact, from the handler, after its bodies are involved in the order the response moves them.</summary>
+    internal void Report(in Contact contact)
+    {
+        InvolveInOrder(Get(contact.BodyA), Get(contact.BodyB));
+        _handler!.OnContact(this, contact);
+    }
+
+    /// <summary>The moving bodies the current response has changed or involved so far, in that order (tests).</summary>
+    internal BodyId[] ChangedInOrder()
+    {
+        ReadOnlySpan<Body> movers = _schedule.Planner.MoverBodies;
+        var ids = new BodyId[_changed.Count];
+        int k = 0;
+        foreach (int slot in _changed.Items)
+        {
+            ids[k++] = movers[slot].Handle;
+        }
+
+        return ids;
+    }
+
+    // Contacts found together after a response are handled in the order their bodies were first
+    // changed or involved (Involve), so before each response its moving bodies are involved in the
+    // order the separation moves them: A first, unless A holds still and B does not (then B, which
+    // alone is pushed away, first). A body holds still when its move was rejected this step and it
+    // is not a circle (a rejected fish is immovable in contacts for the rest of the step; a ball is
+    // pushed whatever its move was). Static bodies and the walls are never involved.
+    private void InvolveInOrder(Body a, Body b)
+    {
+        bool aHolds = HoldsStill(a), bHolds = HoldsStill(b);
+        if (a.IsMoving && aHolds && b.IsMoving && !bHolds)
+        {
+            Involve(b);
+            Involve(a);
+            return;
+        }
+
+        Involve(a);
+        Involve(b);
+
+        static bool HoldsStill(Body x) => x.Rejected && x.Kind != BodyKind.Circle;
+
+        void Involve(Body x)
+        {
+            if (x.IsMoving)
+            {
+                Touch(x);
+                Commit(x);
+            }
+        }
+    }
 
     /// <summary>Tells the handler a body's move was rejected.</summary>
     internal void ReportRejected(BodyId body) => _handler!.OnMoveRejected(this, body);

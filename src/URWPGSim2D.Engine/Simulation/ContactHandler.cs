@@ -18,7 +18,6 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     public void OnContact(MotionWorld motionWorld, in Contact contact)
     {
         CandidatePair pair = world.PairOf(contact);
-        TakeInOrder(motionWorld, pair, contact.BodyA, contact.BodyB);
         ContactKind kind = _response.Apply(pair, contact);
         log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
     }
@@ -29,34 +28,6 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
         // The motion world put the body back and stopped it (velocity and noise drift zero) and
         // remembers it (FishState.MoveRejected): a fish holds still, immovable in contacts, for
         // the rest of the cycle. Nothing to keep here.
-    }
-
-    // The motion world re-plans the bodies a response changes in the order it first changes or involves
-    // them, and simultaneous contacts come in that order: the body the separation moves first is
-    // involved first (A, unless A is a fish whose move was rejected, which its partner alone is
-    // pushed away from), then the other.
-    private void TakeInOrder(MotionWorld motionWorld, in CandidatePair pair, BodyId a, BodyId b)
-    {
-        bool aStays = pair.Kind switch
-        {
-            PairKind.FishBall => world.Fish[pair.A].MoveRejected,
-            PairKind.FishFish => world.Fish[pair.A].MoveRejected && !world.Fish[pair.B].MoveRejected,
-            _ => false,
-        };
-        bool bMoves = pair.Kind is PairKind.FishFish or PairKind.FishBall or PairKind.BallBall;
-        if (aStays && bMoves)
-        {
-            motionWorld.Involve(b);
-            motionWorld.Involve(a);
-        }
-        else
-        {
-            motionWorld.Involve(a);
-            if (bMoves)
-            {
-                motionWorld.Involve(b);
-            }
-        }
     }
 
     // A leaf index for the contact record, −1 for "not a fish".

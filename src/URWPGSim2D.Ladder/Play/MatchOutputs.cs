@@ -1,7 +1,7 @@
 using System.Collections.Generic;
 using System.IO;
 using System.Text.Json;
-using URWPGSim2D.Ladder.Web;
+using URWPGSim2D.Ladder.Storage;
 using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Ladder.Play;

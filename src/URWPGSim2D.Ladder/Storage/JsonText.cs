@@ -4,9 +4,9 @@ using System.Text;
 using System.Text.Encodings.Web;
 using System.Text.Json;
 
-namespace URWPGSim2D.Ladder.Web;
+namespace URWPGSim2D.Ladder.Storage;
 
-/// <summary>JSON answers written with <see cref="Utf8JsonWriter"/> (no reflection).</summary>
+/// <summary>JSON text written with <see cref="Utf8JsonWriter"/> (no reflection): the API's answers and the files kept beside the database.</summary>
 internal static class JsonText
 {
     private static readonly JsonWriterOptions Options = new() { Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping };
