@@ -165,23 +165,7 @@ public static class CompilerProcess
         return File.ReadAllBytes(image);
     }
 
-    private static void End(Process process, SandboxCgroup? cgroup)
-    {
-        if (cgroup is not null)
-        {
-            _ = cgroup.KillAll();
-            return;
-        }
-
-        try
-        {
-            process.Kill(entireProcessTree: true);
-        }
-        catch (Exception e) when (e is InvalidOperationException or System.ComponentModel.Win32Exception or NotSupportedException)
-        {
-            // already gone
-        }
-    }
+    private static void End(Process process, SandboxCgroup? cgroup) => SandboxedProcess.Kill(process, cgroup);
 
     // Reads the stream to its end as UTF-8 lines, each cut to LineLimit characters; keeps the first
     // (or the last) `most` lines and drops the rest, so whatever the child writes, this holds little.

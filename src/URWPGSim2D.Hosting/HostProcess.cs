@@ -223,22 +223,7 @@ public sealed class HostProcess : IStrategyLink
             _killedByWatchdog = true;
         }
 
-        if (_cgroup is not null)
-        {
-            // Every process of the sandbox at once, the host's bubblewrap included, and wait until they have
-            // ended (its PID namespace's init ends last, after all the others).
-            _ = _cgroup.KillAll();
-            return;
-        }
-
-        try
-        {
-            _process.Kill(entireProcessTree: true);
-        }
-        catch (Exception e) when (e is InvalidOperationException or System.ComponentModel.Win32Exception or NotSupportedException)
-        {
-            // already gone
-        }
+        SandboxedProcess.Kill(_process, _cgroup);
     }
 
     /// <summary>The host's process id (bubblewrap's when sandboxed).</summary>

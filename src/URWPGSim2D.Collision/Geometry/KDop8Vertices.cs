@@ -40,13 +40,7 @@ internal static class KDop8Vertices
     {
         Span<double> lo = stackalloc double[4];
         Span<double> hi = stackalloc double[4];
-        double scale = 1;
-        for (int i = 0; i < 4; i++)
-        {
-            lo[i] = min[i];
-            hi[i] = max[i];
-            scale = Math.Max(scale, Math.Max(Math.Abs(lo[i]), Math.Abs(hi[i])));
-        }
+        double scale = Widen(min, max, lo, hi);
 
         double tol = Slack * scale;
         Span<Vector2D> region = stackalloc Vector2D[12];
@@ -125,13 +119,7 @@ internal static class KDop8Vertices
     {
         Span<double> lo = stackalloc double[4];
         Span<double> hi = stackalloc double[4];
-        double scale = 1;
-        for (int i = 0; i < 4; i++)
-        {
-            lo[i] = min[i];
-            hi[i] = max[i];
-            scale = Math.Max(scale, Math.Max(Math.Abs(lo[i]), Math.Abs(hi[i])));
-        }
+        double scale = Widen(min, max, lo, hi);
 
         Span<Vector2D> p = stackalloc Vector2D[12];
         int n = ClipBox(lo, hi, Slack * scale, p);
@@ -269,5 +257,19 @@ internal static class KDop8Vertices
         public static double Distance(Vector2D a, Vector2D b) => Math.Sqrt((a.X - b.X) * (a.X - b.X) + (a.Y - b.Y) * (a.Y - b.Y));
 
         public Vector2 ToFloat() => new((float)X, (float)Y);
+    }
+
+    // The slabs' bounds in double, and the scale of their largest magnitude (at least 1).
+    private static double Widen(Vector4 min, Vector4 max, Span<double> lo, Span<double> hi)
+    {
+        double scale = 1;
+        for (int i = 0; i < 4; i++)
+        {
+            lo[i] = min[i];
+            hi[i] = max[i];
+            scale = Math.Max(scale, Math.Max(Math.Abs(lo[i]), Math.Abs(hi[i])));
+        }
+
+        return scale;
     }
 }
