@@ -226,19 +226,9 @@ public sealed class FishDetailsPageTests(Browser browser, RecordedMatch match)
     [Fact]
     public async Task A_fish_shows_its_teams_faults_up_to_the_cycle_shown()
     {
-        string thrower = Path.Combine(match.Folder, "Thrower.cs");
-        File.WriteAllText(thrower, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Thrower : IStrategy
-            {
-                public string TeamName => "thrower";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("cycle " + s.Cycle);
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
-                }
-            }
+        string thrower = SdkStrategy.Write(match.Folder, "Thrower", "thrower", """
+            if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("cycle " + s.Cycle);
+            for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
             """);
         var (html, lines) = Record("faults", "--item", "default", "--cycles", "60", "--strategy", "0=" + thrower, "--isolation", "none");
         var faults = lines.SelectMany(l => l.GetProperty("events").EnumerateArray().Where(e => e.GetProperty("kind").GetString() == "fault")

@@ -1,7 +1,6 @@
 using System.Globalization;
 using URWPGSim2D.Collision.Fish;
 using Xunit.Sdk;
-using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Viewer.Tests.PageProbe;
 
 namespace URWPGSim2D.Server.Viewer.Tests;

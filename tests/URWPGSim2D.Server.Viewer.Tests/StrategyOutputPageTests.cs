@@ -14,19 +14,10 @@ public sealed class StrategyOutputPageTests(Browser browser, RecordedMatch match
     [Fact]
     public async Task The_output_of_each_team_is_listed_up_to_the_cycle_shown_and_filters_by_team()
     {
-        string source = Path.Combine(match.Folder, "Printer.cs"), html = Path.Combine(match.Folder, "log.html"), trace = Path.Combine(match.Folder, "log.jsonl");
-        File.WriteAllText(source, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Printer : IStrategy
-            {
-                public string TeamName => "printer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    Console.WriteLine($"saw cycle {s.Cycle}, {fish.Length} fish");
-                    d.Fill(new Decision(4, 7));
-                }
-            }
+        string html = Path.Combine(match.Folder, "log.html"), trace = Path.Combine(match.Folder, "log.jsonl");
+        string source = SdkStrategy.Write(match.Folder, "Printer", "printer", """
+            Console.WriteLine($"saw cycle {s.Cycle}, {fish.Length} fish");
+            d.Fill(new Decision(4, 7));
             """);
         var run = RecordedMatch.Cli("run", "--item", "default", "--cycles", "40", "--strategy", "0=" + source, "--strategy", "1=" + source,
             "--strategy-timeout", "5000", "--strategy-log", "--trace", trace, "--html", html);

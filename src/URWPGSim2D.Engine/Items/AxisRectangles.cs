@@ -14,4 +14,18 @@ internal static class AxisRectangles
 
         return obstacles;
     }
+
+    /// <summary>
+    /// Adds to <paramref name="obstacles"/> a <paramref name="length"/> by <paramref name="width"/>
+    /// rectangle at each of <paramref name="centres"/>, in order; returns <paramref name="obstacles"/>.
+    /// </summary>
+    public static List<ObstacleDefinition> AddAt(List<ObstacleDefinition> obstacles, ReadOnlySpan<Vector2> centres, float length, float width)
+    {
+        foreach (var centre in centres)
+        {
+            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, centre, length, width, 0f, 0f));
+        }
+
+        return obstacles;
+    }
 }

@@ -1,3 +1,4 @@
+using URWPGSim2D.Engine.Trace;
 using URWPGSim2D.Strategies;
 
 namespace URWPGSim2D.Engine.Items;
@@ -46,6 +47,21 @@ public abstract class CompetitionItem(string slug, string chineseName, string su
 
     /// <summary>The built-in demo strategy of a team; it may read the referee's state.</summary>
     public abstract IStrategy CreateDemoStrategy(int team, ItemReferee referee);
+
+    /// <summary>
+    /// This item's scenario from its <paramref name="layout"/>: the layout played for
+    /// <see cref="DefaultCycles"/> with <paramref name="seed"/>, refereed as this item, with the balls'
+    /// <paramref name="ballValues"/> and the <paramref name="zones"/> drawn (the layout's own where null).
+    /// </summary>
+    private protected ScenarioDefinition FromLayout(ScenarioDefinition layout, ulong seed, IReadOnlyList<double>? ballValues = null, IReadOnlyList<TraceZone>? zones = null) =>
+        layout with
+        {
+            Cycles = DefaultCycles,
+            Seed = seed,
+            Item = this,
+            BallValues = ballValues ?? layout.BallValues,
+            Zones = zones ?? layout.Zones,
+        };
 
     private static string Named(string value, string name) =>
         string.IsNullOrWhiteSpace(value) ? throw new ArgumentException($"{name} is empty", name) : value;

@@ -31,6 +31,22 @@ public static class PairCorpus
         }
     }
 
+    /// <summary>
+    /// The cases for kinds (a, b) the library finds overlapping, in order, each with the library's
+    /// result; with <paramref name="referenceToo"/> only those the reference finds overlapping too.
+    /// </summary>
+    public static IEnumerable<(PairCase Case, CollisionDetectionResult Result)> Overlapping(ShapeKind a, ShapeKind b, bool referenceToo = false)
+    {
+        foreach (var c in For(a, b))
+        {
+            var r = CollisionDetector.Detect(c.A.Shape, c.B.Shape);
+            if (r.Intersect && (!referenceToo || c.Reference.Intersect))
+            {
+                yield return (c, r);
+            }
+        }
+    }
+
     /// <summary>The cases for kinds (a, b): seed 7919·(5a + b + 1), so every pair has its own fixed sequence.</summary>
     public static PairCase[] For(ShapeKind a, ShapeKind b) =>
         Cache.GetOrAdd((a, b), key => new Lazy<PairCase[]>(() => Generate(key.Item1, key.Item2))).Value;

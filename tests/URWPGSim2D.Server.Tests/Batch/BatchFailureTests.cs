@@ -1,12 +1,8 @@
 namespace URWPGSim2D.Server.Tests.Batch;
 
 /// <summary>A match that fails inside the server still has its line in a batch, with the reason; the others are played.</summary>
-public sealed class BatchFailureTests : IDisposable
+public sealed class BatchFailureTests() : TempFolderTest("urwpg-batch-fail-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-batch-fail-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void Every_match_has_its_line_when_one_fails_inside_the_server()
     {
@@ -20,7 +16,7 @@ public sealed class BatchFailureTests : IDisposable
         Assert.Null(results[2].Failed);
         Assert.Equal("match 1 (seed 2): failed inside the server: IOException: disk \\u001b[2J on fire\n", lines[1]);
 
-        string file = Path.Combine(_folder, "results.jsonl");
+        string file = Path.Combine(Folder, "results.jsonl");
         ResultFile.Write(file, header, results);
         Assert.EndsWith(",\"strategyFaults\":0,\"failed\":\"IOException: disk \\\\u001b[2J on fire\"}", File.ReadAllLines(file)[2], StringComparison.Ordinal);
         var read = ResultFile.Read(file).Results;

@@ -4,14 +4,8 @@ namespace URWPGSim2D.Server.Tests.Batch;
 /// <c>run --batch</c>: the results depend only on the batch, never on the thread count or on how
 /// the batch is sharded; <c>merge</c> of all shards gives the very file one run writes.
 /// </summary>
-public sealed class BatchRunTests : IDisposable
+public sealed class BatchRunTests() : TempFolderTest("urwpg-batch-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-batch-" + Guid.NewGuid().ToString("N"));
-
-    public BatchRunTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void ResultsAreTheSameOnOneThreadAndOnSeveral()
     {
@@ -52,7 +46,7 @@ public sealed class BatchRunTests : IDisposable
             shards[i] = Batch($"shard{i}", "--shard", $"{i}/3", "--threads", "1").File;
         }
 
-        string merged = Path.Combine(_folder, "merged.jsonl");
+        string merged = Path.Combine(Folder, "merged.jsonl");
         var merge = CliRun.Of(string.Empty, ["merge", "--out", merged, shards[2], shards[0], shards[1]]);
         Assert.Equal(0, merge.ExitCode);
         Assert.Equal(File.ReadAllBytes(whole.File), File.ReadAllBytes(merged));
@@ -70,14 +64,14 @@ public sealed class BatchRunTests : IDisposable
         string s0 = Batch("a0", "--shard", "0/2").File;
         string s1 = Batch("a1", "--shard", "1/2").File;
         string other = Batch("b1", seed: 8, "--shard", "1/2").File;
-        string bad = Path.Combine(_folder, "bad.jsonl");
+        string bad = Path.Combine(Folder, "bad.jsonl");
         File.WriteAllText(bad, File.ReadAllLines(s1)[0] + "\n{\"kind\":\"match\",\"index\":1}\n");
 
         AssertError(CliRun.Of(string.Empty, "merge", s0), "missing shard 1 of 2 (give every shard's result file)");
         AssertError(CliRun.Of(string.Empty, "merge", s0, s0), $"{s0}: shard 0/2 is also in {s0}");
         AssertError(CliRun.Of(string.Empty, "merge", s0, other), $"{other}: belongs to another batch than {s0} (first seed 7 vs 8)");
         AssertError(CliRun.Of(string.Empty, "merge", s0, bad), $"{bad}:2: missing field \"seed\"");
-        AssertError(CliRun.Of(string.Empty, "merge", Path.Combine(_folder, "none.jsonl")), "cannot read the result file");
+        AssertError(CliRun.Of(string.Empty, "merge", Path.Combine(Folder, "none.jsonl")), "cannot read the result file");
         Assert.Equal(0, CliRun.Of(string.Empty, "merge", s1, s0).ExitCode);
     }
 
@@ -100,16 +94,16 @@ public sealed class BatchRunTests : IDisposable
         // Merging the shards writes the entries back byte for byte.
         string s0 = Batch("f0", 7, 15, "--strategy", faulty, "--shard", "0/2").File;
         string s1 = Batch("f1", 7, 15, "--strategy", faulty, "--shard", "1/2").File;
-        string merged = Path.Combine(_folder, "faulty-merged.jsonl");
+        string merged = Path.Combine(Folder, "faulty-merged.jsonl");
         Assert.Equal(0, CliRun.Of(string.Empty, "merge", "--out", merged, s1, s0).ExitCode);
         Assert.Equal(File.ReadAllBytes(whole.File), File.ReadAllBytes(merged));
 
         // Entries that do not add up to strategyFaults, or name no fault, are refused.
         string[] shard1 = File.ReadAllLines(s1);
-        string wrong = Path.Combine(_folder, "wrong.jsonl");
+        string wrong = Path.Combine(Folder, "wrong.jsonl");
         File.WriteAllLines(wrong, [shard1[0], shard1[1].Replace("\"exceptions\":5", "\"exceptions\":4", StringComparison.Ordinal), .. shard1.Skip(2)]);
         AssertError(CliRun.Of(string.Empty, "merge", s0, wrong), $"{wrong}:2: \"faults\" add up to 9, but \"strategyFaults\" is 10");
-        string none = Path.Combine(_folder, "none-faults.jsonl");
+        string none = Path.Combine(Folder, "none-faults.jsonl");
         File.WriteAllLines(none, [shard1[0], shard1[1].Replace("\"exceptions\":5,\"timeouts\":0,\"badAnswers\":5", "\"exceptions\":0,\"timeouts\":0,\"badAnswers\":0", StringComparison.Ordinal), .. shard1.Skip(2)]);
         AssertError(CliRun.Of(string.Empty, "merge", s0, none), $"{none}:2: \"faults\"[0] must name team 0 to 3 and counts >= 0 that are not all 0");
     }
@@ -139,7 +133,7 @@ public sealed class BatchRunTests : IDisposable
 
     private (CliRun Run, string File) Batch(string name, int seed, int cycles, params string[] extra)
     {
-        string file = Path.Combine(_folder, name + ".jsonl");
+        string file = Path.Combine(Folder, name + ".jsonl");
         string[] args = ["run", "--batch", "5", "--cycles", cycles.ToString(System.Globalization.CultureInfo.InvariantCulture), "--seed", seed.ToString(System.Globalization.CultureInfo.InvariantCulture), "--results", file, .. extra];
         var run = CliRun.Of(string.Empty, args);
         Assert.True(run.ExitCode == 0, run.Stderr);

@@ -1,6 +1,5 @@
 using URWPGSim2D.Collision;
 using Xunit.Sdk;
-using URWPGSim2D.Testing;
 using static URWPGSim2D.Server.Tests.Cli.ShapeText;
 
 namespace URWPGSim2D.Server.Tests.Cli;

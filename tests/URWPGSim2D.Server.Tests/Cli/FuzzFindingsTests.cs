@@ -6,7 +6,7 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// The failures the fuzzing of issue 15 found, each pinned: every one is now a single stderr
 /// line, exit code 2, nothing on stdout and no file written.
 /// </summary>
-public sealed class FuzzFindingsTests : IDisposable
+public sealed class FuzzFindingsTests() : TempFolderTest("urwpg-findings-")
 {
     private const string Header =
         "{\"kind\":\"batch\",\"scene\":\"default\",\"strategies\":\"\",\"teams\":\"chase-ball;chase-ball\",\"noise\":\"scenario\"," +
@@ -17,10 +17,7 @@ public sealed class FuzzFindingsTests : IDisposable
         "\"fish-obstacle\":0,\"fish-border\":0,\"ball-ball\":0,\"ball-obstacle\":0,\"ball-border\":0},\"subSteps\":5," +
         "\"mostSubSteps\":1,\"events\":0,\"leftoverOverlap\":0,\"leftoverCycle\":0,\"strategyFaults\":0}";
 
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-findings-").FullName;
-
     /// <inheritdoc/>
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Theory]
     [InlineData("[1]")]
@@ -29,7 +26,7 @@ public sealed class FuzzFindingsTests : IDisposable
     [InlineData("7")]
     public void MergeOfAResultLineWithTheWrongNumberOfGoalsIsOneLine(string goals)
     {
-        string file = Path.Combine(_folder, "r.jsonl");
+        string file = Path.Combine(Folder, "r.jsonl");
         File.WriteAllText(file, Header + "\n" + Match.Replace("GOALS", goals, StringComparison.Ordinal) + "\n");
 
         var run = CliRun.Of(string.Empty, "merge", file);
@@ -40,7 +37,7 @@ public sealed class FuzzFindingsTests : IDisposable
     [Fact]
     public void MergeOfAWellFormedFileStillWorks()
     {
-        string file = Path.Combine(_folder, "r.jsonl");
+        string file = Path.Combine(Folder, "r.jsonl");
         File.WriteAllText(file, Header + "\n" + Match.Replace("GOALS", "[2,1]", StringComparison.Ordinal) + "\n");
 
         var run = CliRun.Of(string.Empty, "merge", file);
@@ -60,7 +57,7 @@ public sealed class FuzzFindingsTests : IDisposable
     [Fact]
     public void ABatchSceneHoldingALineBreakIsEscapedWhenMergeEchoesIt()
     {
-        string a = Path.Combine(_folder, "a.jsonl"), b = Path.Combine(_folder, "b.jsonl");
+        string a = Path.Combine(Folder, "a.jsonl"), b = Path.Combine(Folder, "b.jsonl");
         string match = Match.Replace("GOALS", "[0,0]", StringComparison.Ordinal);
         File.WriteAllText(a, Header.Replace("\"scene\":\"default\"", "\"scene\":\"x\\ny\\u2028z\"", StringComparison.Ordinal) + "\n" + match + "\n");
         File.WriteAllText(b, Header + "\n" + match + "\n");
@@ -91,22 +88,22 @@ public sealed class FuzzFindingsTests : IDisposable
     [InlineData("--trace", "t.jsonl")]
     public void AnOutputInAMissingFolderFailsBeforeTheMatch(string option, string name)
     {
-        string missing = Path.Combine(_folder, "missing");
+        string missing = Path.Combine(Folder, "missing");
         string path = Path.Combine(missing, name);
 
         // 30,000 cycles would take minutes: the check must come first.
         var run = CliRun.Of(string.Empty, "run", "--cycles", "30000", option, path);
 
         CollideErrorTests.AssertOneLineFailure(run, $"{option}: cannot write \"{path}\" (folder \"{missing}\" does not exist)");
-        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+        Assert.Empty(Directory.GetFileSystemEntries(Folder));
     }
 
     [Fact]
     public void AnOutputThatIsAFolderFailsBeforeTheMatch()
     {
-        var run = CliRun.Of(string.Empty, "run", "--cycles", "30000", "--svg", _folder);
+        var run = CliRun.Of(string.Empty, "run", "--cycles", "30000", "--svg", Folder);
 
-        CollideErrorTests.AssertOneLineFailure(run, $"--svg: cannot write \"{_folder}\" (it is a folder, give a file name)");
+        CollideErrorTests.AssertOneLineFailure(run, $"--svg: cannot write \"{Folder}\" (it is a folder, give a file name)");
     }
 
     [Theory]
@@ -145,14 +142,14 @@ public sealed class FuzzFindingsTests : IDisposable
     [Fact]
     public void ALoneSurrogateKeyInARenderInputIsBadInput()
     {
-        string svg = Path.Combine(_folder, "f.svg");
+        string svg = Path.Combine(Folder, "f.svg");
 
         var run = CliRun.Of("[{\"a\":{\"type\":\"circle\",\"center\":[0,0],\"radius\":1},\"\\ud800\":{}}]", "render", "-", "--svg", svg);
 
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
         Assert.Single(run.Stderr.Split('\n', StringSplitOptions.RemoveEmptyEntries));
-        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+        Assert.Empty(Directory.GetFileSystemEntries(Folder));
     }
 
     [Fact]
@@ -168,8 +165,8 @@ public sealed class FuzzFindingsTests : IDisposable
     [InlineData("-1")]
     public void MergeRefusesABadOverlapAndLeavesNoPartialFile(string overlap)
     {
-        string input = Path.Combine(_folder, "r.jsonl");
-        string output = Path.Combine(_folder, "out");
+        string input = Path.Combine(Folder, "r.jsonl");
+        string output = Path.Combine(Folder, "out");
         Directory.CreateDirectory(output);
         File.WriteAllText(input, Header + "\n" + Match.Replace("GOALS", "[0,0]", StringComparison.Ordinal).Replace("\"leftoverOverlap\":0", $"\"leftoverOverlap\":{overlap}", StringComparison.Ordinal) + "\n");
 

@@ -6,14 +6,11 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// must exit 0 or 2; on 2 stderr is exactly one line, stdout is empty and no output file exists.
 /// A failure names the reader, seed and case index, and keeps the input to replay.
 /// </summary>
-public sealed class FuzzTests : IDisposable
+public sealed class FuzzTests() : TempFolderTest("urwpg-fuzz-")
 {
     private const int Seed = 20261201;
 
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-fuzz-").FullName;
-
     /// <inheritdoc/>
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
     public void Collide() => Fuzz("collide", Read("examples/pairs.json"), 2000, (input, _) => ["collide", input]);
@@ -34,7 +31,7 @@ public sealed class FuzzTests : IDisposable
     [Fact]
     public void Merge()
     {
-        string results = Path.Combine(_folder, "seed.jsonl");
+        string results = Path.Combine(Folder, "seed.jsonl");
         var batch = CliRun.Of(string.Empty, "run", "--batch", "2", "--cycles", "2", "--threads", "1", "--results", results);
         Assert.Equal(0, batch.ExitCode);
         Fuzz("merge", File.ReadAllBytes(results), 2000, (input, output) => ["merge", "--out", Path.Combine(output, "all.jsonl"), input]);
@@ -44,8 +41,8 @@ public sealed class FuzzTests : IDisposable
 
     private void Fuzz(string reader, byte[] valid, int cases, Func<string, string, string[]> arguments)
     {
-        string input = Path.Combine(_folder, "input.json");
-        string output = Path.Combine(_folder, "out");
+        string input = Path.Combine(Folder, "input.json");
+        string output = Path.Combine(Folder, "out");
         Directory.CreateDirectory(output);
 
         // The unmutated input must succeed, or the fuzzing would test nothing but the error path.

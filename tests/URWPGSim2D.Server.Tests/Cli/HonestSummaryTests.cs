@@ -3,14 +3,8 @@ using System.Text.RegularExpressions;
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>The summary tells what happened: the cycles really played, the halves, the seed, every file written.</summary>
-public sealed class HonestSummaryTests : IDisposable
+public sealed class HonestSummaryTests() : TempFolderTest("urwpg-honest-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-honest-" + Guid.NewGuid().ToString("N"));
-
-    public HonestSummaryTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void AMatchPastNormalTimeSaysHowManyCyclesItPlayedAndItsHalves()
     {
@@ -33,7 +27,7 @@ public sealed class HonestSummaryTests : IDisposable
     [Fact]
     public void EveryFileWrittenHasItsLine()
     {
-        string trace = Path.Combine(_folder, "t.jsonl"), svg = Path.Combine(_folder, "f.svg"), html = Path.Combine(_folder, "m.html");
+        string trace = Path.Combine(Folder, "t.jsonl"), svg = Path.Combine(Folder, "f.svg"), html = Path.Combine(Folder, "m.html");
         var run = CliRun.Of(string.Empty, "run", "--cycles", "3", "--trace", trace, "--svg", svg, "--html", html);
         Assert.Equal(0, run.ExitCode);
         Assert.EndsWith($"strategy faults: none\nwrote {trace} (the trace)\nwrote {svg} (the final frame)\nwrote {html} (the replay page)\n", run.Stdout, StringComparison.Ordinal);

@@ -8,14 +8,8 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// and one line with exit 2 for a file that is not an assembly. docs/strategies.md shows its real output.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class InspectDllCommandTests : IDisposable
+public sealed class InspectDllCommandTests() : TempFolderTest("urwpg-inspect-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-inspect-" + Guid.NewGuid().ToString("N"));
-
-    public InspectDllCommandTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     public static TheoryData<string> Known() => new(RealOldDlls.Known.Select(d => d.File));
 
     [Theory]
@@ -49,11 +43,11 @@ public sealed class InspectDllCommandTests : IDisposable
     [Fact]
     public void TheOutputDocsStrategiesShowsIsRealOutput()
     {
-        string copy = Path.Combine(_folder, "StrategyRainbow2V2.dll");
+        string copy = Path.Combine(Folder, "StrategyRainbow2V2.dll");
         File.Copy(RealOldDlls.PathOf("ball-grab-StrategyRainbow2V2.dll"), copy);
         var run = CliRun.Of(string.Empty, "inspect-dll", copy);
         Assert.Equal(0, run.ExitCode);
-        string shown = run.Stdout.Replace(_folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal);
+        string shown = run.Stdout.Replace(Folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal);
         string docs = File.ReadAllText(Docs.Repository.PathOf("docs/strategies.md")).Replace("\r\n", "\n", StringComparison.Ordinal);
         Assert.Contains("```\n" + shown + "```\n", docs, StringComparison.Ordinal);
     }
@@ -62,7 +56,7 @@ public sealed class InspectDllCommandTests : IDisposable
     public void ADllUsingWhatThisRuntimeLacksIsListedWholeWithExitTwo()
     {
         const string ShowsABox = "namespace Uses { public class Boxes { public int Show() { return System.Windows.Forms.MessageBox.Show(\"hello\"); } } }";
-        string dll = Path.Combine(_folder, "Boxes.dll");
+        string dll = Path.Combine(Folder, "Boxes.dll");
         File.WriteAllBytes(dll, OldStrategyCompiler.CompileWithWindowsForms("Boxes", OldStrategySources.Dribbler, ShowsABox));
         var run = CliRun.Of(string.Empty, "inspect-dll", dll);
         Assert.Equal(2, run.ExitCode);
@@ -78,7 +72,7 @@ public sealed class InspectDllCommandTests : IDisposable
     [Fact]
     public void AFileThatIsNotAnAssemblyIsOneLineWithExitTwo()
     {
-        string text = Path.Combine(_folder, "notes.dll");
+        string text = Path.Combine(Folder, "notes.dll");
         File.WriteAllText(text, "not a DLL");
         var run = CliRun.Of(string.Empty, "inspect-dll", text);
         Assert.Equal(2, run.ExitCode);
@@ -86,9 +80,9 @@ public sealed class InspectDllCommandTests : IDisposable
         Assert.StartsWith($"inspect-dll: {text}: not a .NET assembly", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
 
-        var missing = CliRun.Of(string.Empty, "inspect-dll", Path.Combine(_folder, "absent.dll"));
+        var missing = CliRun.Of(string.Empty, "inspect-dll", Path.Combine(Folder, "absent.dll"));
         Assert.Equal(2, missing.ExitCode);
-        Assert.Equal($"inspect-dll: {Path.Combine(_folder, "absent.dll")}: no such file\n", missing.Stderr);
+        Assert.Equal($"inspect-dll: {Path.Combine(Folder, "absent.dll")}: no such file\n", missing.Stderr);
     }
 
     [Fact]

@@ -10,18 +10,15 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// refuses with the lines the command line prints; restart replays the loaded strategies, recompile
 /// loads them again from their (edited) files.
 /// </summary>
-public sealed class LiveBoardTests : IDisposable
+public sealed class LiveBoardTests : TempFolderTest
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-board-" + Guid.NewGuid().ToString("N"));
-
     public LiveBoardTests()
+        : base("urwpg-board-")
     {
-        Directory.CreateDirectory(Path.Combine(_folder, "alpha"));
-        File.WriteAllText(Path.Combine(_folder, "alpha", "Strategy.cs"), Named("alpha-1"));
-        File.WriteAllText(Path.Combine(_folder, "beta.cs"), Named("beta"));
+        Directory.CreateDirectory(Path.Combine(Folder, "alpha"));
+        File.WriteAllText(Path.Combine(Folder, "alpha", "Strategy.cs"), Named("alpha-1"));
+        File.WriteAllText(Path.Combine(Folder, "beta.cs"), Named("beta"));
     }
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     // An SDK strategy that swims straight and calls itself name.
     internal static string Named(string name) => $$"""
@@ -42,7 +39,7 @@ public sealed class LiveBoardTests : IDisposable
 
     private (LiveBoard Board, Counter Starts) Board(params string[] extra)
     {
-        var options = RunOptions.Parse(["--live", "--strategies", _folder, .. extra]);
+        var options = RunOptions.Parse(["--live", "--strategies", Folder, .. extra]);
         var scenario = options.Item == "default" ? URWPGSim2D.Engine.Scenario.DefaultScenario.Load() : ItemRegistry.Find(options.Item ?? RunCommand.MainItem)!.CreateScenario(1);
         var console = new CliConsole(new StringReader(string.Empty), new StringWriter(), new StringWriter());
         return (new LiveBoard(options, scenario, RunCommand.LoadTeams(options), console), new Counter());
@@ -91,7 +88,7 @@ public sealed class LiveBoardTests : IDisposable
 
         var reply = Send(board, counter, "start", ("item", "polo-1v1"), ("minutes", "1"), ("team0", "alpha/"), ("team1", "idle"));
         Assert.Equal(200, reply.Status);
-        Assert.Equal($"compiling {Path.Combine(_folder, "alpha")} (1 file)...\n", reply.Text.Split('\n')[0] + "\n");
+        Assert.Equal($"compiling {Path.Combine(Folder, "alpha")} (1 file)...\n", reply.Text.Split('\n')[0] + "\n");
         Assert.Equal((1, 0), (counter.Starts, counter.Restarts));
         var (item, cycles, teams) = Played(board);
         Assert.Equal(("polo-1v1", 600), (item, cycles));
@@ -100,7 +97,7 @@ public sealed class LiveBoardTests : IDisposable
         // A length in cycles, a .cs file and the item's demo; the item by its Chinese name, as --item takes it.
         reply = Send(board, counter, "start", ("item", ItemRegistry.Find("ball-grab")!.ChineseName), ("cycles", "40"), ("team0", "beta.cs"), ("team1", "demo"));
         Assert.Equal(200, reply.Status);
-        Assert.StartsWith($"compiling {Path.Combine(_folder, "beta.cs")} (1 file)...\n", reply.Text, StringComparison.Ordinal);
+        Assert.StartsWith($"compiling {Path.Combine(Folder, "beta.cs")} (1 file)...\n", reply.Text, StringComparison.Ordinal);
         (item, cycles, teams) = Played(board);
         Assert.Equal(("ball-grab", 40), (item, cycles));
         Assert.Equal(["beta [beta.cs]", "ball-grab demo"], teams);
@@ -145,21 +142,21 @@ public sealed class LiveBoardTests : IDisposable
         Assert.Equal(200, Send(board, counter, "start", ("item", "default"), ("cycles", "20"), ("team0", "alpha/"), ("team1", "beta.cs")).Status);
         Assert.Equal(["alpha-1 [alpha]", "beta [beta.cs]"], Played(board).Teams);
 
-        File.WriteAllText(Path.Combine(_folder, "alpha", "Strategy.cs"), Named("alpha-2"));
+        File.WriteAllText(Path.Combine(Folder, "alpha", "Strategy.cs"), Named("alpha-2"));
         Assert.Equal(["alpha-1 [alpha]", "beta [beta.cs]"], Played(board).Teams); // a restart: the strategies as loaded
 
         var reply = Send(board, counter, "recompile");
         Assert.Equal((200, 1, 1), (reply.Status, counter.Starts, counter.Restarts));
-        Assert.StartsWith($"compiling {Path.Combine(_folder, "alpha")} (1 file)...\ncompiled {Path.Combine(_folder, "alpha")} in ", reply.Text, StringComparison.Ordinal);
+        Assert.StartsWith($"compiling {Path.Combine(Folder, "alpha")} (1 file)...\ncompiled {Path.Combine(Folder, "alpha")} in ", reply.Text, StringComparison.Ordinal);
         var (item, cycles, teams) = Played(board);
         Assert.Equal(("default", 20), (item, cycles));
         Assert.Equal(["alpha-2 [alpha]", "beta [beta.cs]"], teams);
 
         // A source that no longer compiles: the lines run --strategy prints, and the match plays on as it was.
-        File.WriteAllText(Path.Combine(_folder, "alpha", "Strategy.cs"), Named("alpha-3").Replace("new Decision(10, 7)", "new Decision(10, 7", StringComparison.Ordinal));
+        File.WriteAllText(Path.Combine(Folder, "alpha", "Strategy.cs"), Named("alpha-3").Replace("new Decision(10, 7)", "new Decision(10, 7", StringComparison.Ordinal));
         reply = Send(board, counter, "recompile");
         Assert.Equal(400, reply.Status);
-        var cli = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "1", "--strategy", "0=" + Path.Combine(_folder, "alpha"));
+        var cli = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "1", "--strategy", "0=" + Path.Combine(Folder, "alpha"));
         Assert.Equal(2, cli.ExitCode);
         var expected = cli.Stderr.Split('\n').Where(l => !l.StartsWith("compil", StringComparison.Ordinal)).ToArray();
         Assert.StartsWith("--strategy 0: cannot compile ", expected[0], StringComparison.Ordinal);
@@ -173,7 +170,7 @@ public sealed class LiveBoardTests : IDisposable
     [Fact]
     public void TheCommandLinesStrategyIsTheFirstChoiceAndItsTeamMayChooseItAgain()
     {
-        string outside = Path.Combine(_folder, "alpha", "Strategy.cs"); // a spec as --strategy takes it, not a name of the board
+        string outside = Path.Combine(Folder, "alpha", "Strategy.cs"); // a spec as --strategy takes it, not a name of the board
         var (board, counter) = Board("--item", "default", "--cycles", "10", "--strategy", "1=" + outside);
         Assert.Equal(["chase-ball", "alpha-1 [Strategy.cs]"], Played(board).Teams);
         var json = System.Text.Json.JsonDocument.Parse(board.Json()).RootElement;
@@ -188,35 +185,35 @@ public sealed class LiveBoardTests : IDisposable
     [Fact]
     public void TheFolderOffersItsSourcesFoldersAndAssemblies()
     {
-        File.WriteAllBytes(Path.Combine(_folder, "Gamma.dll"), [0]);
-        Directory.CreateDirectory(Path.Combine(_folder, "delta"));
-        File.WriteAllBytes(Path.Combine(_folder, "delta", "Delta.dll"), [0]);
-        Directory.CreateDirectory(Path.Combine(_folder, "empty"));
-        Directory.CreateDirectory(Path.Combine(_folder, ".hidden"));
-        File.WriteAllText(Path.Combine(_folder, ".hidden", "X.cs"), "class X {}");
-        Directory.CreateDirectory(Path.Combine(_folder, "obj"));
-        File.WriteAllText(Path.Combine(_folder, "obj", "Y.cs"), "class Y {}");
-        File.WriteAllText(Path.Combine(_folder, "notes.txt"), "-");
-        Assert.Equal(["Gamma.dll", "alpha/", "beta.cs", "delta/Delta.dll"], StrategyCatalog.Scan(_folder));
-        Assert.Equal(Path.Combine(_folder, "delta", "Delta.dll"), StrategyCatalog.Spec(_folder, "delta/Delta.dll"));
-        Assert.Empty(StrategyCatalog.Scan(Path.Combine(_folder, "no-such-folder")));
+        File.WriteAllBytes(Path.Combine(Folder, "Gamma.dll"), [0]);
+        Directory.CreateDirectory(Path.Combine(Folder, "delta"));
+        File.WriteAllBytes(Path.Combine(Folder, "delta", "Delta.dll"), [0]);
+        Directory.CreateDirectory(Path.Combine(Folder, "empty"));
+        Directory.CreateDirectory(Path.Combine(Folder, ".hidden"));
+        File.WriteAllText(Path.Combine(Folder, ".hidden", "X.cs"), "class X {}");
+        Directory.CreateDirectory(Path.Combine(Folder, "obj"));
+        File.WriteAllText(Path.Combine(Folder, "obj", "Y.cs"), "class Y {}");
+        File.WriteAllText(Path.Combine(Folder, "notes.txt"), "-");
+        Assert.Equal(["Gamma.dll", "alpha/", "beta.cs", "delta/Delta.dll"], StrategyCatalog.Scan(Folder));
+        Assert.Equal(Path.Combine(Folder, "delta", "Delta.dll"), StrategyCatalog.Spec(Folder, "delta/Delta.dll"));
+        Assert.Empty(StrategyCatalog.Scan(Path.Combine(Folder, "no-such-folder")));
 
         // An assembly that is no strategy is refused at start as the command line refuses it.
         var (board, counter) = Board();
         var reply = Send(board, counter, "start", ("team0", "Gamma.dll"));
         Assert.Equal(400, reply.Status);
-        Assert.StartsWith($"team 0 (Gamma.dll): cannot load strategy assembly {Path.Combine(_folder, "Gamma.dll")}: ", reply.Text, StringComparison.Ordinal);
+        Assert.StartsWith($"team 0 (Gamma.dll): cannot load strategy assembly {Path.Combine(Folder, "Gamma.dll")}: ", reply.Text, StringComparison.Ordinal);
     }
 
     [Fact]
     public void StrategiesBelongToLiveAndNeedAFolder()
     {
-        var alone = CliRun.Of(string.Empty, "run", "--strategies", _folder);
+        var alone = CliRun.Of(string.Empty, "run", "--strategies", Folder);
         Assert.Equal((2, string.Empty), (alone.ExitCode, alone.Stdout));
-        Assert.StartsWith($"run: --strategies \"{_folder}\" belongs to --live (the control board of the live view). Usage: ", alone.Stderr, StringComparison.Ordinal);
+        Assert.StartsWith($"run: --strategies \"{Folder}\" belongs to --live (the control board of the live view). Usage: ", alone.Stderr, StringComparison.Ordinal);
         Assert.Single(alone.Stderr.TrimEnd('\n').Split('\n'));
 
-        string missing = Path.Combine(_folder, "no-such");
+        string missing = Path.Combine(Folder, "no-such");
         var none = CliRun.Of(string.Empty, "run", "--live", "--strategies", missing);
         Assert.Equal((2, string.Empty), (none.ExitCode, none.Stdout));
         Assert.Equal($"run: --strategies \"{missing}\": no such folder\n", none.Stderr);

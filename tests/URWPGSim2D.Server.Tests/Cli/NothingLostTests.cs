@@ -1,14 +1,9 @@
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>An existing results, trace or page file is never replaced unless --force: exit 2, one line, the file untouched.</summary>
-public sealed class NothingLostTests : IDisposable
+public sealed class NothingLostTests() : TempFolderTest("urwpg-nothing-lost-")
 {
     private const string Kept = "a finished file\n";
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-nothing-lost-" + Guid.NewGuid().ToString("N"));
-
-    public NothingLostTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Theory]
     [InlineData("--trace", "run", "--cycles", "3")]
@@ -31,8 +26,8 @@ public sealed class NothingLostTests : IDisposable
     [Fact]
     public void ViewAndMergeRefuseToReplaceAFileWithoutForce()
     {
-        string trace = Path.Combine(_folder, "t.jsonl");
-        string results = Path.Combine(_folder, "r.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
+        string results = Path.Combine(Folder, "r.jsonl");
         Assert.Equal(0, CliRun.Of(string.Empty, "run", "--cycles", "3", "--trace", trace).ExitCode);
         Assert.Equal(0, CliRun.Of(string.Empty, "run", "--cycles", "3", "--batch", "1", "--threads", "1", "--results", results).ExitCode);
 
@@ -53,7 +48,7 @@ public sealed class NothingLostTests : IDisposable
 
     private string Existing(string name)
     {
-        string path = Path.Combine(_folder, name);
+        string path = Path.Combine(Folder, name);
         File.WriteAllText(path, Kept);
         return path;
     }

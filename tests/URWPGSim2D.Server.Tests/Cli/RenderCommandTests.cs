@@ -7,15 +7,10 @@ namespace URWPGSim2D.Server.Tests.Cli;
 /// <c>render</c>: the SVG is well-formed XML with the expected elements (selected by class) at
 /// the library's coordinates, fits its view box, is deterministic, and is written whole or not at all.
 /// </summary>
-public sealed class RenderCommandTests : IDisposable
+public sealed class RenderCommandTests() : TempFolderTest("urwpgsim2d-render-")
 {
     private const string RenderUsage = "Usage: urwpgsim2d render FILE --svg OUT";
     private static readonly XNamespace Svg = "http://www.w3.org/2000/svg";
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), $"urwpgsim2d-render-{Guid.NewGuid():N}");
-
-    public RenderCommandTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
     public void AFishShowsItsLeavesTheirEightDopsAndItsThreeTreeCircles()
@@ -152,7 +147,7 @@ public sealed class RenderCommandTests : IDisposable
     public void DashWritesTheSvgToStandardOutput()
     {
         string input = Shapes(Circle(0, 0, 10));
-        string file = Path.Combine(_folder, "c.svg");
+        string file = Path.Combine(Folder, "c.svg");
 
         var toFile = CliRun.Of(input, "render", "-", "--svg", file);
         var toStdout = CliRun.Of(input, "render", "--svg", "-", "-");
@@ -165,14 +160,14 @@ public sealed class RenderCommandTests : IDisposable
     [Fact]
     public void ASuccessfulRenderReplacesTheFileAndLeavesNoTemporary()
     {
-        string file = Path.Combine(_folder, "out.svg");
+        string file = Path.Combine(Folder, "out.svg");
         File.WriteAllText(file, "old");
 
         var run = CliRun.Of(Shapes(Fish(0, 0, 0)), "render", "-", "--svg", file);
 
         Assert.Equal((0, string.Empty, string.Empty), (run.ExitCode, run.Stdout, run.Stderr));
         Assert.StartsWith("<svg xmlns=\"http://www.w3.org/2000/svg\"", File.ReadAllText(file), StringComparison.Ordinal);
-        Assert.Equal([file], Directory.GetFiles(_folder));
+        Assert.Equal([file], Directory.GetFiles(Folder));
     }
 
     public static TheoryData<string, string> BadInputs() => new()
@@ -190,8 +185,8 @@ public sealed class RenderCommandTests : IDisposable
     [MemberData(nameof(BadInputs))]
     public void BadInputIsOneLineAndWritesNothing(string input, string expected)
     {
-        string existing = Path.Combine(_folder, "existing.svg");
-        string fresh = Path.Combine(_folder, "fresh.svg");
+        string existing = Path.Combine(Folder, "existing.svg");
+        string fresh = Path.Combine(Folder, "fresh.svg");
         File.WriteAllText(existing, "old");
 
         var overExisting = CliRun.Of(input, "render", "-", "--svg", existing);
@@ -200,20 +195,20 @@ public sealed class RenderCommandTests : IDisposable
         CollideErrorTests.AssertOneLineFailure(overExisting, expected);
         CollideErrorTests.AssertOneLineFailure(toFresh, expected);
         Assert.Equal("old", File.ReadAllText(existing));
-        Assert.Equal([existing], Directory.GetFiles(_folder));
+        Assert.Equal([existing], Directory.GetFiles(Folder));
     }
 
     [Fact]
     public void AnOutputThatCannotBeWrittenIsOneLineWithExitCodeTwo()
     {
-        string file = Path.Combine(_folder, "no-such-dir", "out.svg");
+        string file = Path.Combine(Folder, "no-such-dir", "out.svg");
 
         var run = CliRun.Of(Shapes(Circle(0, 0, 1)), "render", "-", "--svg", file);
 
         Assert.Equal((2, string.Empty), (run.ExitCode, run.Stdout));
         Assert.StartsWith(file + ": cannot write file: ", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
-        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+        Assert.Empty(Directory.GetFileSystemEntries(Folder));
     }
 
     [Theory]
@@ -243,7 +238,7 @@ public sealed class RenderCommandTests : IDisposable
 
     private string RenderText(string input)
     {
-        string file = Path.Combine(_folder, "figure.svg");
+        string file = Path.Combine(Folder, "figure.svg");
         var run = CliRun.Of(input, "render", "-", "--svg", file);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Equal((string.Empty, string.Empty), (run.Stdout, run.Stderr));

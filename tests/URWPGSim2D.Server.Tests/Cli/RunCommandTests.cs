@@ -1,14 +1,8 @@
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary>The run command: summary, trace, SVG, bad input.</summary>
-public sealed class RunCommandTests : IDisposable
+public sealed class RunCommandTests() : TempFolderTest("urwpg-run-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-run-" + Guid.NewGuid().ToString("N"));
-
-    public RunCommandTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void TheOldDefaultMatchPrintsTheSummary()
     {
@@ -28,15 +22,15 @@ public sealed class RunCommandTests : IDisposable
     [Fact]
     public void TraceIsJsonLinesFromCycleZeroAndSvgIsWritten()
     {
-        string scenario = Path.Combine(_folder, "s.json");
+        string scenario = Path.Combine(Folder, "s.json");
         File.WriteAllText(scenario, """
             {"cycles": 30, "noise": false,
              "fish": [{"team":0,"position":[-300,0],"decision":{"vcode":15,"tcode":7}}],
              "balls": [{"position":[0,0]}],
              "obstacles": [{"type":"round","center":[0,400],"radius":50}]}
             """);
-        string trace = Path.Combine(_folder, "t.jsonl");
-        string svg = Path.Combine(_folder, "f.svg");
+        string trace = Path.Combine(Folder, "t.jsonl");
+        string svg = Path.Combine(Folder, "f.svg");
         var run = CliRun.Of(string.Empty, "run", "--scenario", scenario, "--trace", trace, "--svg", svg);
         Assert.Equal(0, run.ExitCode);
 
@@ -70,7 +64,7 @@ public sealed class RunCommandTests : IDisposable
         }
 
         Assert.True(sawFishBall, "the fish hit the ball");
-        Assert.Empty(Directory.GetFiles(_folder, "*.partial"));
+        Assert.Empty(Directory.GetFiles(Folder, "*.partial"));
         string picture = File.ReadAllText(svg);
         Assert.StartsWith("<svg xmlns=\"http://www.w3.org/2000/svg\"", picture, StringComparison.Ordinal);
         Assert.Equal(8, CountOf(picture, "<polygon") - 0);
@@ -80,14 +74,14 @@ public sealed class RunCommandTests : IDisposable
     [Fact]
     public void ABadScenarioIsOneLineExitTwoAndNoFileWritten()
     {
-        string scenario = Path.Combine(_folder, "bad.json");
+        string scenario = Path.Combine(Folder, "bad.json");
         File.WriteAllText(scenario, """{"fish":[],"balls":[{"position":[0,0]},{"position":[300,0]},{"position":[0,300],"radius":-5}]}""");
-        string trace = Path.Combine(_folder, "t.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--scenario", scenario, "--trace", trace);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
         Assert.Equal("balls[2].radius: must be > 0, got -5\n", run.Stderr);
-        Assert.Empty(Directory.GetFiles(_folder, "t.jsonl*"));
+        Assert.Empty(Directory.GetFiles(Folder, "t.jsonl*"));
     }
 
     [Theory]

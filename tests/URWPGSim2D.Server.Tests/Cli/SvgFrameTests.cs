@@ -3,18 +3,12 @@ using System.Text.RegularExpressions;
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary><c>run --svg</c>: the final frame has fish and ball ids at their places, team colours and a legend.</summary>
-public sealed class SvgFrameTests : IDisposable
+public sealed class SvgFrameTests() : TempFolderTest("urwpg-svg-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-svg-" + Guid.NewGuid().ToString("N"));
-
-    public SvgFrameTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void TheFinalFrameHasIdsColoursAndALegend()
     {
-        string svg = Path.Combine(_folder, "f.svg"), trace = Path.Combine(_folder, "t.jsonl");
+        string svg = Path.Combine(Folder, "f.svg"), trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "40", "--svg", svg, "--trace", trace);
         Assert.Equal(0, run.ExitCode);
         string picture = File.ReadAllText(svg);
@@ -56,7 +50,7 @@ public sealed class SvgFrameTests : IDisposable
     {
         // The item parks fish at z = 1591, outside the 4500 × 3000 pool: the view box grows to hold
         // every polygon of every fish (and their ids above them), still with the caption on top.
-        string svg = Path.Combine(_folder, item + ".svg");
+        string svg = Path.Combine(Folder, item + ".svg");
         Assert.Equal(0, CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "0", "--svg", svg).ExitCode);
         var picture = System.Xml.Linq.XDocument.Load(svg).Root!;
         double[] box = [.. picture.Attribute("viewBox")!.Value.Split(' ').Select(v => double.Parse(v, CultureInfo.InvariantCulture))];
@@ -86,7 +80,7 @@ public sealed class SvgFrameTests : IDisposable
     public void WithEveryBodyInThePoolThePictureIsThePoolAndItsCaption()
     {
         // Ball-grab's 3000 × 2000 pool: 20 mm each side, 170 above for the caption and legend, 20 below.
-        string svg = Path.Combine(_folder, "ball-grab.svg");
+        string svg = Path.Combine(Folder, "ball-grab.svg");
         Assert.Equal(0, CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "0", "--svg", svg).ExitCode);
         Assert.Contains("viewBox=\"-1520 -1170 3040 2190\"", File.ReadAllText(svg), StringComparison.Ordinal);
     }

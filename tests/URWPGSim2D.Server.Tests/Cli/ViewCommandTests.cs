@@ -1,15 +1,9 @@
 namespace URWPGSim2D.Server.Tests.Cli;
 
 /// <summary><c>view TRACE --html FILE</c> and the viewer options of <c>run</c>: bad input is one line, exit code 2, nothing written.</summary>
-public sealed class ViewCommandTests : IDisposable
+public sealed class ViewCommandTests() : TempFolderTest("urwpg-view-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-view-" + Guid.NewGuid().ToString("N"));
-
-    public ViewCommandTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string File(string name) => Path.Combine(_folder, name);
+    private string File(string name) => Path.Combine(Folder, name);
 
     private string[] Trace(int cycles)
     {

@@ -7,14 +7,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// the likely cause first when the errors show one, the first errors of each file grouped by file,
 /// and the count.
 /// </summary>
-public sealed partial class CompileErrorsTests : IDisposable
+public sealed partial class CompileErrorsTests() : TempFolderTest("urwpg-compile-errors-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-compile-errors-" + Guid.NewGuid().ToString("N"));
-
-    public CompileErrorsTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void TwoStrategiesInOneFolderLeadWithTheCauseThenFewErrorsOfEachFileThenTheCount()
     {
@@ -22,7 +16,7 @@ public sealed partial class CompileErrorsTests : IDisposable
         // its own (undefined names, one per line): more than a file shows.
         string a = Copy("Faulty", "A.cs");
         string b = Copy("Dribbler", "B.cs");
-        string c = Path.Combine(_folder, "C.cs");
+        string c = Path.Combine(Folder, "C.cs");
         var text = new StringBuilder("namespace Other { public static class Helper { public static int Sum() {\n");
         for (int i = 0; i < 8; i++)
         {
@@ -72,7 +66,7 @@ public sealed partial class CompileErrorsTests : IDisposable
     [InlineData("Form f = null;", "Form is a Windows or user-interface API, not available here (CS0246)")]
     public void TheOriginalsApiAndWindowsApisAreRecognised(string statement, string? cause)
     {
-        string file = Path.Combine(_folder, "Strategy.cs");
+        string file = Path.Combine(Folder, "Strategy.cs");
         File.WriteAllText(file, "using URWPGSim2D.Common;\nnamespace T { public static class S { public static void M() { " + statement + " } } }\n");
         var e = Assert.Throws<StrategyLoadException>(() => StrategyCompiler.Compile("S", [file]));
         if (cause is null)
@@ -90,7 +84,7 @@ public sealed partial class CompileErrorsTests : IDisposable
     public void AMissingMemberOfTheTeamsOwnTypeIsNoCauseAndTheCountLeads()
     {
         // The same CS1061 as the original's API gives, on a type the team wrote: a plain error.
-        string file = Path.Combine(_folder, "Own.cs");
+        string file = Path.Combine(Folder, "Own.cs");
         string source = "namespace T { public class Own { } public static class S { public static int M(Own o) { return o.Missing; } } }\n";
         File.WriteAllText(file, source);
         int column = source.IndexOf("Missing", StringComparison.Ordinal) + 1;
@@ -101,7 +95,7 @@ public sealed partial class CompileErrorsTests : IDisposable
 
     private string Copy(string strategy, string name)
     {
-        string to = Path.Combine(_folder, name);
+        string to = Path.Combine(Folder, name);
         File.Copy(Path.Combine(OriginalStrategyTests.Folder(strategy), "Strategy.cs"), to);
         return to;
     }

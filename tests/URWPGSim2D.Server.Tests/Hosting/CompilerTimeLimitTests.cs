@@ -6,12 +6,9 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// names the limit, and the compiler child and everything it started are gone afterwards (checked by
 /// process ID). Nothing depends on how fast the machine is: the compilation never ends within the limit.
 /// </summary>
-public sealed class CompilerTimeLimitTests : IDisposable
+public sealed class CompilerTimeLimitTests() : TempFolderTest("urwpg-compile-time-")
 {
     private const int Limit = 3;
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-compile-time-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     // Ten nested lambdas, each an argument of a method with five overloads whose parameter types differ: the compiler binds every
     // lambda for every overload of every enclosing one (5^10 bindings): nine of them took over a minute here.
@@ -32,7 +29,7 @@ public sealed class CompilerTimeLimitTests : IDisposable
 
         text.Append("    public string TeamName => \"spin\";\n");
         text.Append("    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) => d[0] = new Decision(").Append(expression).Append(", 7);\n}\n");
-        string file = Path.Combine(_folder, "Spin.cs");
+        string file = Path.Combine(Folder, "Spin.cs");
         File.WriteAllText(file, text.ToString());
         return file;
     }
@@ -62,7 +59,7 @@ public sealed class CompilerTimeLimitTests : IDisposable
                 continue; // ended meanwhile
             }
 
-            Assert.False(commandLine.Contains(_folder, StringComparison.Ordinal), $"process {Path.GetFileName(proc)} is left: {commandLine}");
+            Assert.False(commandLine.Contains(Folder, StringComparison.Ordinal), $"process {Path.GetFileName(proc)} is left: {commandLine}");
         }
     }
 }

@@ -9,44 +9,26 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// nothing when they are not recorded (no allocation, the same trace bytes).
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class DebugDrawTests : IDisposable
+public sealed class DebugDrawTests() : TempFolderTest("urwpg-draw-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-draw-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     // An SDK strategy that circles each of its fish (per fish, team colour), joins it to ball 0 (per fish, green) and marks ball 0 for the team.
-    private string SdkDrawer()
-    {
-        string path = Path.Combine(_folder, "SdkDrawer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class SdkDrawer : IStrategy
+    private string SdkDrawer() => SdkStrategy.Write(Folder, "SdkDrawer", "sdk drawer", """
+        for (int i = 0; i < d.Length; i++)
+        {
+            var me = s.Fish[fish[i]];
+            d[i] = new Decision(6, 5);
+            DebugDraw.Circle(me.Position, 50f, fish[i], 0xffd700);
+            if (s.Balls.Length > 0)
             {
-                public string TeamName => "sdk drawer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        var me = s.Fish[fish[i]];
-                        d[i] = new Decision(6, 5);
-                        DebugDraw.Circle(me.Position, 50f, fish[i], 0xffd700);
-                        if (s.Balls.Length > 0)
-                        {
-                            DebugDraw.Line(me.Position, s.Balls[0].Position, fish[i]);
-                        }
-                    }
-
-                    if (s.Balls.Length > 0 && DebugDraw.IsOn)
-                    {
-                        DebugDraw.Text(s.Balls[0].Position, "ball 0");
-                    }
-                }
+                DebugDraw.Line(me.Position, s.Balls[0].Position, fish[i]);
             }
-            """);
-        return path;
-    }
+        }
+
+        if (s.Balls.Length > 0 && DebugDraw.IsOn)
+        {
+            DebugDraw.Text(s.Balls[0].Position, "ball 0");
+        }
+        """);
 
     private static JsonElement[] Lines(string trace) => File.ReadLines(trace).Select(l => JsonDocument.Parse(l).RootElement.Clone()).ToArray();
 
@@ -62,7 +44,7 @@ public sealed class DebugDrawTests : IDisposable
             var traces = new List<byte[]>();
             foreach (string isolation in new[] { "none", "process" })
             {
-                string trace = Path.Combine(_folder, $"{api}-{isolation}.jsonl");
+                string trace = Path.Combine(Folder, $"{api}-{isolation}.jsonl");
                 var run = CliRun.Of(string.Empty, "run", "--item", "default", "--noise", "off", "--cycles", "30", "--strategy", "0=" + spec,
                     "--isolation", isolation, "--strategy-timeout", "5000", "--debug-draw", "--trace", trace);
                 Assert.True(run.ExitCode == 0, run.Stderr);
@@ -109,7 +91,7 @@ public sealed class DebugDrawTests : IDisposable
     [InlineData("ball-grab")] // the demo draws its plan every cycle it is not escaping a wall
     public void Without_debug_draw_the_trace_is_the_same_bytes_as_with_it_less_the_drawings(string item)
     {
-        string on = Path.Combine(_folder, "on.jsonl"), off = Path.Combine(_folder, "off.jsonl");
+        string on = Path.Combine(Folder, "on.jsonl"), off = Path.Combine(Folder, "off.jsonl");
         var a = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--debug-draw", "--trace", on);
         var b = CliRun.Of(string.Empty, "run", "--item", item, "--cycles", "200", "--trace", off);
         Assert.True(a.ExitCode == 0 && b.ExitCode == 0, a.Stderr + b.Stderr);
@@ -170,7 +152,7 @@ public sealed class DebugDrawTests : IDisposable
     [Fact]
     public void The_ball_grab_demo_draws_each_fishs_ball_its_route_into_the_teams_box_and_what_it_is_doing()
     {
-        string trace = Path.Combine(_folder, "ball-grab.jsonl");
+        string trace = Path.Combine(Folder, "ball-grab.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--noise", "off", "--cycles", "300", "--debug-draw", "--trace", trace);
         Assert.True(run.ExitCode == 0, run.Stderr);
         var lines = Lines(trace);

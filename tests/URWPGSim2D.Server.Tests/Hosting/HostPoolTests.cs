@@ -5,30 +5,17 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// was started and warmed up before the match, in the same sandbox, with the match's CPU limit set
 /// at the hand-over; a waiting host that never gets its strategy line ends.
 /// </summary>
-public sealed class HostPoolTests : IDisposable
+public sealed class HostPoolTests() : TempFolderTest("urwpg-pool-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-pool-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void A_compiled_strategy_plays_in_a_waiting_host_with_the_matchs_cpu_limit()
     {
         // The strategy reports the command line of its host and its CPU time limit, and throws every cycle.
-        string file = Path.Combine(_folder, "Limits.cs");
-        File.WriteAllText(file, """
-            using System; using System.IO; using System.Linq; using URWPGSim2D.Strategies;
-            public sealed class Limits : IStrategy
-            {
-                public string TeamName => "Limits";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    string args = File.ReadAllText("/proc/self/cmdline").Replace('\0', ' ').Trim();
-                    string cpu = File.ReadAllLines("/proc/self/limits").First(l => l.StartsWith("Max cpu time"));
-                    throw new Exception("host=" + args.Substring(args.IndexOf(" host ")) + "; cpu=" + string.Join(" ", cpu.Split(' ', StringSplitOptions.RemoveEmptyEntries).Skip(3).Take(2)) + ";");
-                }
-            }
-            """);
+        string file = SdkStrategy.Write(Folder, "Limits", "Limits", """
+            string args = File.ReadAllText("/proc/self/cmdline").Replace('\0', ' ').Trim();
+            string cpu = File.ReadAllLines("/proc/self/limits").First(l => l.StartsWith("Max cpu time"));
+            throw new Exception("host=" + args.Substring(args.IndexOf(" host ")) + "; cpu=" + string.Join(" ", cpu.Split(' ', StringSplitOptions.RemoveEmptyEntries).Skip(3).Take(2)) + ";");
+            """, usings: "using System; using System.IO; using System.Linq; using URWPGSim2D.Strategies;");
 
         // A scratch size of its own: the test's waiting host is no other test's.
         var run = CliRun.Of(string.Empty, "run", "--cycles", "3", "--strategy-timeout", "1000", "--strategy-scratch", "61", "--strategy", "0=" + file);
@@ -45,22 +32,13 @@ public sealed class HostPoolTests : IDisposable
     public void A_tournaments_hosted_entrant_plays_every_match_in_a_waiting_host()
     {
         // The strategy throws every cycle with the command line of its host: "host -" for a pre-started one, "host PATH" for one started for it.
-        string file = Path.Combine(_folder, "Which.cs");
-        File.WriteAllText(file, """
-            using System; using System.IO; using URWPGSim2D.Strategies;
-            public sealed class Which : IStrategy
-            {
-                public string TeamName => "Which";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    string args = File.ReadAllText("/proc/self/cmdline").Replace('\0', ' ').Trim();
-                    throw new Exception("host=" + args.Substring(args.IndexOf(" host ") + 6) + ";");
-                }
-            }
-            """);
+        string file = SdkStrategy.Write(Folder, "Which", "Which", """
+            string args = File.ReadAllText("/proc/self/cmdline").Replace('\0', ' ').Trim();
+            throw new Exception("host=" + args.Substring(args.IndexOf(" host ") + 6) + ";");
+            """, usings: "using System; using System.IO; using URWPGSim2D.Strategies;");
 
         // Two seeds against the demo, ends swapped: four matches, one after the other; a scratch size of its own, as above.
-        string output = Path.Combine(_folder, "t");
+        string output = Path.Combine(Folder, "t");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "which=" + file,
             "--seeds", "2", "--cycles", "3", "--strategy-timeout", "5000", "--strategy-scratch", "62", "--threads", "1", "--out", output);
         Assert.True(run.ExitCode == 0, run.Stderr);

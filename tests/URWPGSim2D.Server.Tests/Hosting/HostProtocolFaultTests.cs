@@ -9,15 +9,11 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// over the limit. The host's real answer, left behind, is skipped, so one bad line costs exactly
 /// one cycle; the match is always played to its end. Lockstep makes the order of the lines certain.
 /// </summary>
-public sealed class HostProtocolFaultTests : IDisposable
+public sealed class HostProtocolFaultTests() : TempFolderTest("urwpg-protocol-fault-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-protocol-fault-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     private string Strategy(string name, string line, string after = "")
     {
-        string file = Path.Combine(_folder, name + ".cs");
+        string file = Path.Combine(Folder, name + ".cs");
         File.WriteAllText(file, "using System; using System.IO; using System.Text; using URWPGSim2D.Strategies;\n" + $$"""
             public sealed class {{name}} : IStrategy
             {

@@ -6,12 +6,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// processes of its own. The strategies below measure CPU time themselves, so the outcome does not
 /// depend on how busy the machine is; the time banks are too small for what they use.
 /// </summary>
-public sealed class HostTimeTests : IDisposable
+public sealed class HostTimeTests() : TempFolderTest("urwpg-time-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-time-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Attack("sandbox", "CPU")]
     [Theory]
     [InlineData("auto")]
@@ -21,29 +17,20 @@ public sealed class HostTimeTests : IDisposable
         Assert.True(SandboxCgroup.Unavailable is null, "CI runs where control groups can be made: " + SandboxCgroup.Unavailable);
         // In cycle 2 two threads spin until the process has used 2.5 s more CPU time, while the
         // deciding thread only waits for them (it uses next to none itself); the deadline is 1 s.
-        string file = Path.Combine(_folder, "Helpers.cs");
-        File.WriteAllText(file, """
-            using System; using System.Diagnostics; using System.Threading; using URWPGSim2D.Strategies;
-            public sealed class Helpers : IStrategy
+        string file = SdkStrategy.Write(Folder, "Helpers", "Helpers", """
+            for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
+            if (s.Cycle != 1) return;
+            var me = Process.GetCurrentProcess();
+            TimeSpan until = me.TotalProcessorTime + TimeSpan.FromMilliseconds(2500);
+            var spinners = new Thread[2];
+            for (int t = 0; t < spinners.Length; t++)
             {
-                public string TeamName => "Helpers";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    if (s.Cycle != 1) return;
-                    var me = Process.GetCurrentProcess();
-                    TimeSpan until = me.TotalProcessorTime + TimeSpan.FromMilliseconds(2500);
-                    var spinners = new Thread[2];
-                    for (int t = 0; t < spinners.Length; t++)
-                    {
-                        spinners[t] = new Thread(() => { var p = Process.GetCurrentProcess(); while (true) { p.Refresh(); if (p.TotalProcessorTime >= until) break; } });
-                        spinners[t].Start();
-                    }
-
-                    foreach (var t in spinners) t.Join();
-                }
+                spinners[t] = new Thread(() => { var p = Process.GetCurrentProcess(); while (true) { p.Refresh(); if (p.TotalProcessorTime >= until) break; } });
+                spinners[t].Start();
             }
-            """);
+
+            foreach (var t in spinners) t.Join();
+            """, usings: "using System; using System.Diagnostics; using System.Threading; using URWPGSim2D.Strategies;");
         // 2.5 s of CPU time in a call allowed 1 s, and 5 s of wall time (the spinners take about 1.3 s on
         // two free cores): on a free machine only the CPU time of the helper threads spends the 1 s bank.
         var run = CliRun.Of(string.Empty, "run", "--cycles", "4", "--strategy-timeout", "1000", "--time-bank", "1", "--sandbox", sandbox, "--strategy", "0=" + file);
@@ -54,23 +41,9 @@ public sealed class HostTimeTests : IDisposable
     }
 
     // An SDK strategy whose Decide body is given (s: snapshot, d: decisions).
-    private string Sdk(string name, string body, string members = "")
-    {
-        string file = Path.Combine(_folder, name + ".cs");
-        File.WriteAllText(file, "using System; using System.Diagnostics; using System.IO; using System.Threading; using URWPGSim2D.Strategies;\n" + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                {{members}}
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body, string members = "") =>
+        SdkStrategy.Write(Folder, name, name, "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body, members,
+            "using System; using System.Diagnostics; using System.IO; using System.Threading; using URWPGSim2D.Strategies;");
 
     [Attack("faults", "its time bank is spent")]
     [Fact]
@@ -150,7 +123,7 @@ public sealed class HostTimeTests : IDisposable
             """);
         string[] Results(string name)
         {
-            string output = Path.Combine(_folder, name);
+            string output = Path.Combine(Folder, name);
             var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "slow=" + slow, "--entrant", "chaser=chase-ball", "--seeds", "2", "--cycles", "200", "--out", output);
             Assert.True(run.ExitCode == 0, run.Stderr);
             return File.ReadAllLines(Path.Combine(output, "results.jsonl"));

@@ -8,12 +8,9 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// allocates next to nothing (it would allocate the gigabytes itself if it compiled). Ordinary compile
 /// errors read exactly as the in-process compiler words them.
 /// </summary>
-public sealed class HostileCompileTests : IDisposable
+public sealed class HostileCompileTests() : TempFolderTest("urwpg-compile-")
 {
     private const long ServerAllocationLimit = 64L * 1024 * 1024;
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-compile-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     // 64 characters doubled 20 times: a 64 Mi-character constant, and the compiler needs gigabytes to
     // fold and emit the chain (an in-process compile took the server to 2.3 GB; two more doublings crashed it).
@@ -28,7 +25,7 @@ public sealed class HostileCompileTests : IDisposable
         }
 
         text.Append("    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { }\n}\n");
-        string file = Path.Combine(_folder, name + ".cs");
+        string file = Path.Combine(Folder, name + ".cs");
         File.WriteAllText(file, text.ToString());
         return file;
     }
@@ -55,7 +52,7 @@ public sealed class HostileCompileTests : IDisposable
     public void A_tournament_entrant_whose_sources_swell_the_compiler_forfeits_with_the_limit_named()
     {
         string file = Doubling("Swell");
-        string output = Path.Combine(_folder, "t");
+        string output = Path.Combine(Folder, "t");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "swell=" + file, "--entrant", "idle=idle", "--seeds", "1", "--cycles", "40", "--strategy-memory", "256", "--out", output);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Contains($"tournament: entrant swell cannot be loaded and forfeits its matches: cannot compile {file}: the compiler ran out of memory: its limit is 256 MiB (--strategy-memory)\n", run.Stderr, StringComparison.Ordinal);
@@ -66,7 +63,7 @@ public sealed class HostileCompileTests : IDisposable
     public void Compile_errors_from_the_compilers_process_read_as_the_in_process_compiler_words_them()
     {
         // Seven errors in one file (five shown, then a line for the rest) and one in another.
-        string folder = Path.Combine(_folder, "errors");
+        string folder = Path.Combine(Folder, "errors");
         Directory.CreateDirectory(folder);
         var text = new StringBuilder("namespace Other { public static class Helper { public static int Sum() {\n");
         for (int i = 0; i < 7; i++)

@@ -11,14 +11,11 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// depends on a race with a clock: a strategy that hangs never answers, and the well-behaved cycles
 /// have a deadline far beyond what they need.
 /// </summary>
-public sealed class HostileOriginalApiTests : IDisposable
+public sealed class HostileOriginalApiTests() : TempFolderTest("urwpg-hostile-orig-")
 {
     private const string Deadline = "1000"; // ms of CPU time (and 10 s of wall time); the strategies' honest cycles need well under 1 ms
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-hostile-orig-").FullName;
 
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Source(string name, string body, string members = "") => OriginalSource.Write(_folder, name, body, members);
+    private string Source(string name, string body, string members = "") => OriginalSource.Write(Folder, name, body, members);
 
     private static CliRun Run(string spec, int cycles = 12, params string[] more) =>
         CliRun.Of(string.Empty, ["run", "--cycles", cycles.ToString(System.Globalization.CultureInfo.InvariantCulture), "--strategy", "0=" + spec, "--strategy-timeout", Deadline, "--sandbox", "required", .. more]);
@@ -40,7 +37,7 @@ public sealed class HostileOriginalApiTests : IDisposable
     [InlineData("Killer", "if (cycle == 1) System.Diagnostics.Process.GetCurrentProcess().Kill();", "", 2, "killed by signal 9")]
     public void A_strategy_that_ends_its_host_is_charged_once_and_the_match_is_played(string name, string body, string members, int cycle, string how)
     {
-        string trace = Path.Combine(_folder, name + ".jsonl");
+        string trace = Path.Combine(Folder, name + ".jsonl");
         var run = Run(Source(name, body, members), 12, "--trace", trace);
         Assert.StartsWith("match: 12 cycles,", run.Stdout, StringComparison.Ordinal);
         string faults = Faults(run);
@@ -65,8 +62,8 @@ public sealed class HostileOriginalApiTests : IDisposable
         string source = Source(name, "", members);
         foreach (string isolation in new[] { "process", "none" })
         {
-            string trace = Path.Combine(_folder, $"{name}-{isolation}.jsonl");
-            string results = Path.Combine(_folder, $"{name}-{isolation}-results.jsonl");
+            string trace = Path.Combine(Folder, $"{name}-{isolation}.jsonl");
+            string results = Path.Combine(Folder, $"{name}-{isolation}-results.jsonl");
             var run = Run(source, 12, "--isolation", isolation, "--trace", trace);
             Assert.StartsWith("match: 12 cycles,", run.Stdout, StringComparison.Ordinal);
             string faults = Faults(run);
@@ -118,7 +115,7 @@ public sealed class HostileOriginalApiTests : IDisposable
     [Fact]
     public void A_strategy_cannot_write_outside_its_scratch_folder()
     {
-        string outside = Path.Combine(_folder, "written-by-strategy.txt");
+        string outside = Path.Combine(Folder, "written-by-strategy.txt");
         string home = Source("Writer", "", "");
         string own = File.ReadAllText(home);
         home = Source("Writer", $$"""
@@ -149,7 +146,7 @@ public sealed class HostileOriginalApiTests : IDisposable
     [Fact]
     public void A_strategy_cannot_read_a_secret_or_the_servers_environment()
     {
-        string secret = Path.Combine(_folder, "secret.txt");
+        string secret = Path.Combine(Folder, "secret.txt");
         File.WriteAllText(secret, "TOPSECRET");
         Environment.SetEnvironmentVariable("URWPG_ORIG_TEST_TOKEN", "TOPSECRET");
         string faults = Faults(Run(Source("Reader", $$"""
@@ -225,7 +222,7 @@ public sealed class HostileOriginalApiTests : IDisposable
     [Fact]
     public void A_batch_with_a_crashing_original_strategy_keeps_every_result_line()
     {
-        string results = Path.Combine(_folder, "results.jsonl");
+        string results = Path.Combine(Folder, "results.jsonl");
         var run = Run(Source("Overflow", "if (cycle == 2) Recurse(0);", "static int Recurse(int n) { return Recurse(n + 1) + 1; }"), 8, "--batch", "3", "--threads", "2", "--results", results);
         Assert.True(run.ExitCode == 0, run.Stderr);
         string[] lines = File.ReadAllLines(results);

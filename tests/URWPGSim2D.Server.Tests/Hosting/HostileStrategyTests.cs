@@ -9,32 +9,13 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// so the test reads the outcome from the fault report. No outcome depends on a race with a clock:
 /// a strategy that hangs, hangs forever.
 /// </summary>
-public sealed class HostileStrategyTests : IDisposable
+public sealed class HostileStrategyTests() : TempFolderTest("urwpg-hostile-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-hostile-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     private const string Header = "using System; using System.IO; using System.Collections.Generic; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;\n";
 
     // An SDK strategy whose Decide body is given (s: snapshot, d: decisions).
-    private string Sdk(string name, string body, string members = "")
-    {
-        string file = Path.Combine(_folder, name + ".cs");
-        File.WriteAllText(file, Header + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                {{members}}
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body, string members = "") =>
+        SdkStrategy.Write(Folder, name, name, "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body, members, Header);
 
     // A deadline no honest call comes near on a loaded machine (ms of CPU time, 10 s of wall time), unless a test needs a short one.
     private static CliRun Run(string spec, int cycles = 20, params string[] more) => RunWithin("1000", spec, cycles, more);
@@ -125,8 +106,8 @@ public sealed class HostileStrategyTests : IDisposable
     [Fact]
     public void A_strategy_cannot_write_outside_its_scratch_folder()
     {
-        string outside = Path.Combine(_folder, "written-by-strategy.txt");
-        string home = Path.Combine(_folder, "Writer.cs");
+        string outside = Path.Combine(Folder, "written-by-strategy.txt");
+        string home = Path.Combine(Folder, "Writer.cs");
         var run = Run(Sdk("Writer", $$"""
             if (s.Cycle != 0) return;
             string said = "";
@@ -153,7 +134,7 @@ public sealed class HostileStrategyTests : IDisposable
     [Fact]
     public void A_strategy_cannot_read_a_secret_or_another_teams_files_or_the_environment()
     {
-        string secret = Path.Combine(_folder, "secret.txt");
+        string secret = Path.Combine(Folder, "secret.txt");
         File.WriteAllText(secret, "TOPSECRET");
         Environment.SetEnvironmentVariable("URWPG_TEST_TOKEN", "TOPSECRET");
         var run = Run(Sdk("Reader", $$"""
@@ -164,7 +145,7 @@ public sealed class HostileStrategyTests : IDisposable
                 try { said += File.ReadAllText(path); } catch (Exception e) { said += e.GetType().Name + ";"; }
             }
             said += Environment.GetEnvironmentVariable("URWPG_TEST_TOKEN") ?? "no token;";
-            said += Directory.Exists(@"{{_folder}}") ? " sees the test folder" : " no test folder";
+            said += Directory.Exists(@"{{Folder}}") ? " sees the test folder" : " no test folder";
             throw new Exception(said);
             """));
         string faults = Faults(run);
@@ -247,7 +228,7 @@ public sealed class HostileStrategyTests : IDisposable
     [Fact]
     public void A_batch_with_a_crashing_strategy_keeps_every_result_line()
     {
-        string results = Path.Combine(_folder, "results.jsonl");
+        string results = Path.Combine(Folder, "results.jsonl");
         var run = Run(Sdk("Overflow", "if (s.Cycle == 2) Recurse(0);", "static int Recurse(int n) => Recurse(n + 1) + 1;"), 10, "--batch", "3", "--threads", "1", "--results", results);
         Assert.True(run.ExitCode == 0, run.Stderr);
         string[] lines = File.ReadAllLines(results);

@@ -8,27 +8,10 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// group whose memory limit the kernel enforces), and its folder cannot point the compiler at a
 /// file outside it.
 /// </summary>
-public sealed class HostileTextTests : IDisposable
+public sealed class HostileTextTests() : TempFolderTest("urwpg-text-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-text-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Sdk(string name, string body)
-    {
-        string file = Path.Combine(_folder, name + ".cs");
-        File.WriteAllText(file, "using System; using System.IO; using URWPGSim2D.Strategies;\n" + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body) =>
+        SdkStrategy.Write(Folder, name, name, body, usings: "using System; using System.IO; using URWPGSim2D.Strategies;");
 
     [Attack("faults", "control or escape characters")]
     [Theory]
@@ -68,9 +51,9 @@ public sealed class HostileTextTests : IDisposable
     [Fact]
     public void A_symbolic_link_in_a_strategy_folder_is_refused_with_one_line_and_never_read()
     {
-        string secret = Path.Combine(_folder, "secret.txt");
+        string secret = Path.Combine(Folder, "secret.txt");
         File.WriteAllText(secret, "TOPSECRET class");
-        string team = Path.Combine(_folder, "team");
+        string team = Path.Combine(Folder, "team");
         Directory.CreateDirectory(team);
         File.WriteAllText(Path.Combine(team, "A.cs"), "public sealed class A { }");
         File.CreateSymbolicLink(Path.Combine(team, "B.cs"), secret);
@@ -81,8 +64,8 @@ public sealed class HostileTextTests : IDisposable
 
         // A linked folder likewise.
         File.Delete(Path.Combine(team, "B.cs"));
-        Directory.CreateDirectory(Path.Combine(_folder, "elsewhere"));
-        Directory.CreateSymbolicLink(Path.Combine(team, "more"), Path.Combine(_folder, "elsewhere"));
+        Directory.CreateDirectory(Path.Combine(Folder, "elsewhere"));
+        Directory.CreateSymbolicLink(Path.Combine(team, "more"), Path.Combine(Folder, "elsewhere"));
         run = CliRun.Of(string.Empty, "run", "--cycles", "1", "--strategy", "0=" + team);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal($"--strategy 0: {Path.Combine(team, "more")} is a symbolic link: only regular files inside the strategy's folder are read\n", run.Stderr);

@@ -13,24 +13,18 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// strategies in this test process, so these tests run alone (<see cref="InProcessStaticsCollection"/>).
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class OldDllTests : IDisposable
+public sealed class OldDllTests() : TempFolderTest("urwpg-old-dll-")
 {
     private const string OneFishOneBall =
         """{"noise":false,"fish":[{"team":0,"position":[-600,0]},{"team":1,"position":[1300,900],"heading":3.14159,"strategy":"idle"}],"balls":[{"position":[-200,100]}]}""";
 
     private static readonly Lazy<byte[]> Dribbler = new(() => OldStrategyCompiler.Compile("OldDribbler", Platform.X86, OldStrategySources.Dribbler));
 
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-old-dll-" + Guid.NewGuid().ToString("N"));
-
-    public OldDllTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void AnOldDllPlaysTheSameMatchAsItsSourceCompiledForThisServer()
     {
         string dll = Write("OldDribbler.dll", Dribbler.Value);
-        string source = Path.Combine(_folder, "Dribbler.cs");
+        string source = Path.Combine(Folder, "Dribbler.cs");
         File.WriteAllText(source, OldStrategySources.Dribbler);
         IStrategy old = StrategyResolver.Load(dll);
         Assert.Equal("Old dribbler", old.TeamName);
@@ -127,13 +121,13 @@ public sealed class OldDllTests : IDisposable
             """;
         string dll = Write("OldNotes.dll", OldStrategyCompiler.Compile("OldNotes", Platform.X86, Notes));
         string before = Environment.CurrentDirectory;
-        Environment.CurrentDirectory = _folder;
+        Environment.CurrentDirectory = Folder;
         try
         {
             var run = CliRun.Of(string.Empty, "run", "--cycles", "30", "--strategy", "0=" + dll, "--isolation", isolation);
             Assert.True(run.ExitCode == 0, run.Stderr);
             Assert.True(run.Stdout.Contains("strategy faults: none\n", StringComparison.Ordinal), run.Stdout);
-            Assert.Equal(isolation == "none", File.Exists(Path.Combine(_folder, "notes.txt")));
+            Assert.Equal(isolation == "none", File.Exists(Path.Combine(Folder, "notes.txt")));
         }
         finally
         {
@@ -182,16 +176,16 @@ public sealed class OldDllTests : IDisposable
     // docs/strategies.md shows in a code block of its own.
     private void AssertRefusedAsDocumented(byte[] image)
     {
-        string red = Path.Combine(_folder, "teams", "red");
+        string red = Path.Combine(Folder, "teams", "red");
         Directory.CreateDirectory(red);
         string dll = Path.Combine(red, "Strategy.dll");
         File.WriteAllBytes(dll, image);
-        string trace = Path.Combine(_folder, "t.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + dll, "--trace", trace);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
         Assert.False(File.Exists(trace));
-        string line = run.Stderr.Replace(_folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal);
+        string line = run.Stderr.Replace(Folder + Path.DirectorySeparatorChar, string.Empty, StringComparison.Ordinal);
         Assert.EndsWith("\n", line, StringComparison.Ordinal);
         Assert.DoesNotContain('\n', line.TrimEnd('\n'));
         string docs = File.ReadAllText(Docs.Repository.PathOf("docs/strategies.md")).Replace("\r\n", "\n", StringComparison.Ordinal);
@@ -209,7 +203,7 @@ public sealed class OldDllTests : IDisposable
 
     private string Write(string name, byte[] image)
     {
-        string path = Path.Combine(_folder, name);
+        string path = Path.Combine(Folder, name);
         File.WriteAllBytes(path, image);
         return path;
     }

@@ -103,23 +103,14 @@ public sealed class RunFolderTests : IDisposable
     public void A_strategy_that_buries_its_scratch_folder_does_not_fail_the_match_and_leaves_nothing()
     {
         // Without bubblewrap the scratch folder is on the disk: the strategy reports where it is.
-        string source = Path.Combine(_folder, "Burier.cs");
-        File.WriteAllText(source, """
-            using System; using System.IO; using System.Diagnostics; using URWPGSim2D.Strategies;
-            public sealed class Burier : IStrategy
-            {
-                public string TeamName => "Burier";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    if (s.Cycle != 0) return;
-                    var p = new ProcessStartInfo("/bin/sh") { UseShellExecute = false };
-                    p.ArgumentList.Add("-c");
-                    p.ArgumentList.Add("touch \"$(printf 'bad\\377')\"; mkdir locked; touch locked/x; chmod 000 locked; i=0; while [ $i -lt 200 ]; do mkdir dddddddddddddddddddddddddddddddddddddddddddddddd && cd dddddddddddddddddddddddddddddddddddddddddddddddd; i=$((i+1)); done");
-                    Process.Start(p)!.WaitForExit();
-                    throw new Exception("at=" + Directory.GetCurrentDirectory() + ";");
-                }
-            }
-            """);
+        string source = SdkStrategy.Write(_folder, "Burier", "Burier", """
+            if (s.Cycle != 0) return;
+            var p = new ProcessStartInfo("/bin/sh") { UseShellExecute = false };
+            p.ArgumentList.Add("-c");
+            p.ArgumentList.Add("touch \"$(printf 'bad\\377')\"; mkdir locked; touch locked/x; chmod 000 locked; i=0; while [ $i -lt 200 ]; do mkdir dddddddddddddddddddddddddddddddddddddddddddddddd && cd dddddddddddddddddddddddddddddddddddddddddddddddd; i=$((i+1)); done");
+            Process.Start(p)!.WaitForExit();
+            throw new Exception("at=" + Directory.GetCurrentDirectory() + ";");
+            """, usings: "using System; using System.IO; using System.Diagnostics; using URWPGSim2D.Strategies;");
         var run = CliRun.Of(string.Empty, "run", "--cycles", "3", "--strategy", "0=" + source, "--strategy-timeout", "1000", "--sandbox", "off");
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.DoesNotContain("warning: cannot delete", run.Stderr, StringComparison.Ordinal);

@@ -9,31 +9,12 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// and, without bubblewrap, the processes' IDs and their control group. These tests need bubblewrap
 /// and cgroups (the test machine has both; .ci/install-bubblewrap).
 /// </summary>
-public sealed class SandboxLimitTests : IDisposable
+public sealed class SandboxLimitTests() : TempFolderTest("urwpg-limits-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-limits-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     private const string Header = "using System; using System.IO; using System.Linq; using System.Collections.Generic; using System.Diagnostics; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;\n";
 
-    private string Sdk(string name, string body, string members = "")
-    {
-        string file = Path.Combine(_folder, name + ".cs");
-        File.WriteAllText(file, Header + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                {{members}}
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body, string members = "") =>
+        SdkStrategy.Write(Folder, name, name, "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body, members, Header);
 
     private static CliRun Run(string spec, int cycles, params string[] more) =>
         CliRun.Of(string.Empty, ["run", "--cycles", cycles.ToString(CultureInfo.InvariantCulture), "--strategy", "0=" + spec, .. more, .. Array.IndexOf(more, "--strategy-timeout") < 0 ? new[] { "--strategy-timeout", "1000" } : []]);
@@ -165,7 +146,7 @@ public sealed class SandboxLimitTests : IDisposable
             }
 
             start.ArgumentList.Add(Sandbox.Bwrap);
-            foreach (string arg in Sandbox.Arguments([], Path.Combine(_folder, "scratch"), new Dictionary<string, string> { ["PATH"] = "/usr/bin:/bin" }, 1 << 20))
+            foreach (string arg in Sandbox.Arguments([], Path.Combine(Folder, "scratch"), new Dictionary<string, string> { ["PATH"] = "/usr/bin:/bin" }, 1 << 20))
             {
                 start.ArgumentList.Add(arg);
             }

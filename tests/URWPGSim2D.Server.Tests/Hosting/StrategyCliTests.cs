@@ -1,26 +1,20 @@
 namespace URWPGSim2D.Server.Tests.Hosting;
 
 /// <summary><c>run --strategy TEAM=SPEC</c> end to end: compile errors before the match, faults in the summary, built-in names.</summary>
-public sealed class StrategyCliTests : IDisposable
+public sealed class StrategyCliTests() : TempFolderTest("urwpg-cli-strategy-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-cli-strategy-" + Guid.NewGuid().ToString("N"));
-
-    public StrategyCliTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void CompileErrorsAreFileLineColumnLinesAndExitTwoBeforeTheMatch()
     {
-        string red = Path.Combine(_folder, "teams", "red");
+        string red = Path.Combine(Folder, "teams", "red");
         Directory.CreateDirectory(red);
         File.Copy(Path.Combine(OriginalStrategyTests.Folder("Broken"), "Strategy.cs"), Path.Combine(red, "Strategy.cs"));
-        string trace = Path.Combine(_folder, "t.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + red, "--trace", trace);
         Assert.Equal(2, run.ExitCode);
         Assert.Equal(string.Empty, run.Stdout);
         Assert.False(File.Exists(trace), "nothing is written when the strategy does not compile");
-        string prefix = _folder + Path.DirectorySeparatorChar;
+        string prefix = Folder + Path.DirectorySeparatorChar;
         string[] expected =
         [
             "compiling teams/red (1 file)...",
@@ -55,15 +49,15 @@ public sealed class StrategyCliTests : IDisposable
         var bad = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "1=nonsense");
         Assert.Equal(2, bad.ExitCode);
         Assert.Equal("--strategy 1: \"nonsense\" is not a built-in strategy (idle, chase-ball), a .dll, a .cs file or a folder\n", bad.Stderr);
-        var none = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "1=" + _folder);
+        var none = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "1=" + Folder);
         Assert.Equal(2, none.ExitCode);
-        Assert.Equal($"--strategy 1: no .cs files in {_folder}\n", none.Stderr);
+        Assert.Equal($"--strategy 1: no .cs files in {Folder}\n", none.Stderr);
     }
 
     [Fact]
     public void AnSdkStrategyCompilesFromASingleSourceFile()
     {
-        string file = Path.Combine(_folder, "Sprinter.cs");
+        string file = Path.Combine(Folder, "Sprinter.cs");
         File.WriteAllText(file, StrategyLoaderTests.SprinterSource);
         var run = CliRun.Of(string.Empty, "run", "--cycles", "5", "--strategy", "0=" + file, "--strategy", "1=" + file);
         Assert.Equal(0, run.ExitCode);

@@ -6,33 +6,15 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// <c>--trace</c>, <c>--html</c> or <c>--live</c> prints each cycle's output there with its cycle and team.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class StrategyConsoleTests : IDisposable
+public sealed class StrategyConsoleTests() : TempFolderTest("urwpg-console-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-console-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Printer()
-    {
-        string path = Path.Combine(_folder, "Printer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Printer : IStrategy
-            {
-                public string TeamName => "printer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    Console.WriteLine($"saw cycle {s.Cycle}");
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = new Decision(5, 7);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+    private string Printer() => SdkStrategy.Write(Folder, "Printer", "printer", """
+        Console.WriteLine($"saw cycle {s.Cycle}");
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = new Decision(5, 7);
+        }
+        """);
 
     [Fact]
     public void What_a_hosted_strategy_prints_reaches_the_servers_standard_error_by_default()

@@ -10,39 +10,21 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// its thread in the server's process and from a strategy host, bounded per cycle, and only with the option.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class StrategyLogTests : IDisposable
+public sealed class StrategyLogTests() : TempFolderTest("urwpg-log-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-log-").FullName;
+    private string Printer() => SdkStrategy.Write(Folder, "Printer", "printer", """
+        Console.WriteLine($"saw cycle {s.Cycle}");
+        Console.Error.Write("fish " + fish.Length);
+        if (s.Cycle == 7)
+        {
+            Console.Write(new string('x', 10000));
+        }
 
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Printer()
-    {
-        string path = Path.Combine(_folder, "Printer.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Printer : IStrategy
-            {
-                public string TeamName => "printer";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    Console.WriteLine($"saw cycle {s.Cycle}");
-                    Console.Error.Write("fish " + fish.Length);
-                    if (s.Cycle == 7)
-                    {
-                        Console.Write(new string('x', 10000));
-                    }
-
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = new Decision(5, 7);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = new Decision(5, 7);
+        }
+        """);
 
     private static Dictionary<int, string> Logs(string trace, int team) =>
         File.ReadLines(trace).Select(l => JsonDocument.Parse(l).RootElement)
@@ -57,7 +39,7 @@ public sealed class StrategyLogTests : IDisposable
         var traces = new List<byte[]>();
         foreach (string isolation in new[] { "none", "process" })
         {
-            string trace = Path.Combine(_folder, isolation + ".jsonl");
+            string trace = Path.Combine(Folder, isolation + ".jsonl");
             var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "12", "--strategy", "0=" + Printer(), "--isolation", isolation,
                 "--strategy-timeout", "5000", "--strategy-log", "--trace", trace);
             Assert.True(run.ExitCode == 0, run.Stderr);
@@ -87,7 +69,7 @@ public sealed class StrategyLogTests : IDisposable
     [Fact]
     public void Without_strategy_log_the_trace_has_no_log()
     {
-        string trace = Path.Combine(_folder, "off.jsonl");
+        string trace = Path.Combine(Folder, "off.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "3", "--strategy", "0=" + Printer(), "--isolation", "process", "--trace", trace);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.DoesNotContain("\"log\"", File.ReadAllText(trace), StringComparison.Ordinal);

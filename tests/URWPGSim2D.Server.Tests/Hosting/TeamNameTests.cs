@@ -5,14 +5,8 @@ namespace URWPGSim2D.Server.Tests.Hosting;
 /// with the spec beside it, in the summary, the trace and the result file; a folder spec may end
 /// with a slash; <c>demo</c> is the item's demo strategy.
 /// </summary>
-public sealed class TeamNameTests : IDisposable
+public sealed class TeamNameTests() : TempFolderTest("urwpg-team-name-")
 {
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-team-name-" + Guid.NewGuid().ToString("N"));
-
-    public TeamNameTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Theory]
     [InlineData("chase-ball", "chase-ball")]
     [InlineData("remote:7000", "remote:7000")]
@@ -55,11 +49,11 @@ public sealed class TeamNameTests : IDisposable
     [Fact]
     public void AnOriginalStrategyInAFolderWithATrailingSlashIsNamedByGetTeamNameEverywhere()
     {
-        string red = Path.Combine(_folder, "red");
+        string red = Path.Combine(Folder, "red");
         Directory.CreateDirectory(red);
         string source = File.ReadAllText(Path.Combine(Docs.Repository.PathOf("templates/Strategy"), "Strategy.cs"));
         File.WriteAllText(Path.Combine(red, "Strategy.cs"), source.Replace("\"My Team\"", "\"Team First\"", StringComparison.Ordinal));
-        string trace = Path.Combine(_folder, "t.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "20", "--strategy", "0=" + red + "/", "--strategy", "1=chase-ball", "--trace", trace);
         Assert.Equal(0, run.ExitCode);
         Assert.Contains("score: team 0 (Team First [red]) 0, team 1 (chase-ball) 0\n", run.Stdout, StringComparison.Ordinal);
@@ -68,7 +62,7 @@ public sealed class TeamNameTests : IDisposable
         Assert.Equal("Team First [red]", teams[0].GetProperty("name").GetString());
         Assert.Equal("chase-ball", teams[1].GetProperty("name").GetString());
 
-        string results = Path.Combine(_folder, "r.jsonl");
+        string results = Path.Combine(Folder, "r.jsonl");
         var batch = CliRun.Of(string.Empty, "run", "--item", "ball-grab", "--cycles", "10", "--batch", "1", "--threads", "1", "--strategy", "0=" + red + "/", "--results", results);
         Assert.Equal(0, batch.ExitCode);
         using var header = JsonDocument.Parse(File.ReadLines(results).First());
@@ -84,7 +78,7 @@ public sealed class TeamNameTests : IDisposable
     public void An_original_source_saved_in_GBK_as_VS2008_saved_it_keeps_its_Chinese_team_name(string encoding)
     {
         System.Text.Encoding.RegisterProvider(System.Text.CodePagesEncodingProvider.Instance);
-        string folder = Path.Combine(_folder, "old-" + encoding);
+        string folder = Path.Combine(Folder, "old-" + encoding);
         Directory.CreateDirectory(folder);
         string source = File.ReadAllText(Path.Combine(Docs.Repository.PathOf("templates/Strategy"), "Strategy.cs"))
             .Replace("\"My Team\"", "\"蓝鲨队\" /* 中文注释：抢球 */", StringComparison.Ordinal);

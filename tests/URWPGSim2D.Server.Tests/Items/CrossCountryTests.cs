@@ -3,10 +3,8 @@ using URWPGSim2D.Engine.Items.CrossCountry;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>障碍越野: the four steps in order, the 22 mm target, the end.</summary>
-public sealed class CrossCountryTests
+public sealed class CrossCountryTests() : ItemTests(new CrossCountryItem())
 {
-    private static readonly CrossCountryItem Item = new();
-
     [Fact]
     public void TheStepsCountOnlyInOrder()
     {

@@ -7,10 +7,8 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// position angle and quadrants, the fouls and where they put the fish back, the angle swum, the
 /// level ending and the winner.
 /// </summary>
-public sealed class DoubleFishRaceTests
+public sealed class DoubleFishRaceTests() : ItemTests(new DoubleFishRaceItem())
 {
-    private static readonly DoubleFishRaceItem Item = new();
-
     [Fact]
     public void TheLayoutIsTheOriginals()
     {

@@ -9,15 +9,9 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// tests: a late answer is waited for and paid from the team's time bank, so the results do not
 /// depend on how busy the machine is.
 /// </summary>
-public sealed class FourTeamsTests : IDisposable
+public sealed class FourTeamsTests() : TempFolderTest("urwpg-four-")
 {
     private static readonly FourTeamsItem Item = new();
-
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-four-" + Guid.NewGuid().ToString("N"));
-
-    public FourTeamsTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
     public void TheLayoutIsTheOriginals()
@@ -54,7 +48,7 @@ public sealed class FourTeamsTests : IDisposable
     [Fact]
     public void RunPlaysFourTeamsEachWithItsOwnStrategy()
     {
-        string trace = Path.Combine(_folder, "t.jsonl");
+        string trace = Path.Combine(Folder, "t.jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "four-teams", "--cycles", "20", "--strategy", "2=idle", "--strategy", "3=chase-ball", "--trace", trace);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Contains("score: team 0 (four-teams demo) 0, team 1 (four-teams demo) 0, team 2 (idle) 0, team 3 (chase-ball) 0\n", run.Stdout, StringComparison.Ordinal);
@@ -75,8 +69,8 @@ public sealed class FourTeamsTests : IDisposable
     [Fact]
     public void TeamsTwoAndThreePlayInAStrategyHostAndRemotelyTheSameMatchAsInProcess()
     {
-        string steady = URWPGSim2D.Server.Tests.Hosting.SteadyStrategy.Write(_folder);
-        string local = Path.Combine(_folder, "local.jsonl"), hosted = Path.Combine(_folder, "hosted.jsonl"), remote = Path.Combine(_folder, "remote.jsonl");
+        string steady = URWPGSim2D.Server.Tests.Hosting.SteadyStrategy.Write(Folder);
+        string local = Path.Combine(Folder, "local.jsonl"), hosted = Path.Combine(Folder, "hosted.jsonl"), remote = Path.Combine(Folder, "remote.jsonl");
         string[] match = ["run", "--item", "four-teams", "--cycles", "40", "--seed", "5", "--strategy-timeout", "20000", "--strategy", "2=" + steady];
         var a = CliRun.Of(string.Empty, [.. match, "--strategy", "3=chase-ball", "--isolation", "none", "--trace", local]);
         var b = CliRun.Of(string.Empty, [.. match, "--strategy", "3=chase-ball", "--trace", hosted]);
@@ -99,7 +93,7 @@ public sealed class FourTeamsTests : IDisposable
     [Fact]
     public void BatchResultsAndMergeKeepFourTeams()
     {
-        string all = Path.Combine(_folder, "all.jsonl"), s0 = Path.Combine(_folder, "s0.jsonl"), s1 = Path.Combine(_folder, "s1.jsonl"), merged = Path.Combine(_folder, "m.jsonl");
+        string all = Path.Combine(Folder, "all.jsonl"), s0 = Path.Combine(Folder, "s0.jsonl"), s1 = Path.Combine(Folder, "s1.jsonl"), merged = Path.Combine(Folder, "m.jsonl");
         var whole = CliRun.Of(string.Empty, "run", "--item", "four-teams", "--batch", "2", "--cycles", "10", "--results", all);
         Assert.True(whole.ExitCode == 0, whole.Stderr);
         Assert.Contains("goals team 3 (four-teams demo): mean 0.000", whole.Stdout, StringComparison.Ordinal);

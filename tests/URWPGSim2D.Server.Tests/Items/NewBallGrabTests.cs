@@ -6,10 +6,8 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// 抢球大作战 against the numbers of the original's <c>NewMatch2V2BallRace</c>: the ball grid, the
 /// values, scores that follow what lies in the boxes now, half time, and the clutch shot.
 /// </summary>
-public sealed class NewBallGrabTests
+public sealed class NewBallGrabTests() : ItemTests(new NewBallGrabItem())
 {
-    private static readonly NewBallGrabItem Item = new();
-
     // Wholly inside the left box: x in [-1152, -978] less the radius, |z| <= 507 - 58.
     private static readonly Vector2 LeftBox = new(-1065f, 0f);
 

@@ -7,10 +7,8 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// layout, the four legs and their thresholds, fouls (time off, put back, one per second), the black
 /// line and the time less the penalties.
 /// </summary>
-public sealed class PushBallAvoidObstaclesTests
+public sealed class PushBallAvoidObstaclesTests() : ItemTests(new PushBallAvoidObstaclesItem())
 {
-    private static readonly PushBallAvoidObstaclesItem Item = new();
-
     [Fact]
     public void TheLayoutIsTheOriginals()
     {

@@ -6,10 +6,8 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// 协作过孔 against the numbers of the original's <c>TwoFishPushBallViaChannel</c>: the layout, the
 /// touches per stage, the stage lines, the goal line and the variables.
 /// </summary>
-public sealed class PushBallViaChannelTests
+public sealed class PushBallViaChannelTests() : ItemTests(new PushBallViaChannelItem())
 {
-    private static readonly PushBallViaChannelItem Item = new();
-
     [Fact]
     public void TheLayoutIsTheOriginals()
     {

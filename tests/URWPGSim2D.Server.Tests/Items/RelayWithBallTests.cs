@@ -7,10 +7,8 @@ namespace URWPGSim2D.Server.Tests.Items;
 /// field's numbers, the pockets that end the legs, the channels each fish and the ball must keep to,
 /// the put-back places and the variable.
 /// </summary>
-public sealed class RelayWithBallTests
+public sealed class RelayWithBallTests() : ItemTests(new RelayWithBallItem())
 {
-    private static readonly RelayWithBallItem Item = new();
-
     [Fact]
     public void TheLayoutIsTheOriginals()
     {

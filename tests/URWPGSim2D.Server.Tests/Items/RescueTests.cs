@@ -3,9 +3,8 @@ using URWPGSim2D.Engine.Items.Rescue;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>急速救援: rescues, the half ending at two, the role swap, ties by times, the demo.</summary>
-public sealed class RescueTests
+public sealed class RescueTests() : ItemTests(new RescueItem())
 {
-    private static readonly RescueItem Item = new();
     private static readonly ulong[] Seeds = [1, 2, 3, 4, 5, 6, 7, 8];
 
     [Fact]

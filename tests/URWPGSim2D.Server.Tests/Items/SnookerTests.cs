@@ -4,12 +4,11 @@ using URWPGSim2D.Engine.Matches;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>斯诺克: red then colour, colour values id − 4, wrong pots, the colours in order, BallsInFieldFlag.</summary>
-public sealed class SnookerTests
+public sealed class SnookerTests() : ItemTests(new SnookerItem())
 {
-    private static readonly SnookerItem Item = new();
     private static readonly Vector2 MiddleTop = new(0f, -1420f);
 
-    private static (Match Match, SnookerReferee Referee) Build()
+    private (Match Match, SnookerReferee Referee) Build()
     {
         var match = ItemTestMatches.Build(Item, 6000);
         return (match, (SnookerReferee)match.Referee!);

@@ -3,10 +3,8 @@ using URWPGSim2D.Engine.Items.Survival;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>生存挑战: the layout of MatchTransfer.cs, catches, the half ending at three, the role swap, the speed cap, ties, the demo.</summary>
-public sealed class SurvivalTests
+public sealed class SurvivalTests() : ItemTests(new SurvivalItem())
 {
-    private static readonly SurvivalItem Item = new();
-
     // World fish indices: team 0's fish 0–3 are 0–3, team 1's fish 0–3 are 4–7.
     private const int Hunter0 = 0, Guard1 = 4, Prey1 = 5, Prey2 = 6, Prey3 = 7;
 

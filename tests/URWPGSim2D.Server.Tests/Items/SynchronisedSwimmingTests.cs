@@ -3,10 +3,8 @@ using URWPGSim2D.Engine.Items.SynchronisedSwimming;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>花样游泳: the random start poses of MatchSynchronisedSwimming.cs, the server-driven fish 0, no score, the demo's ring.</summary>
-public sealed class SynchronisedSwimmingTests
+public sealed class SynchronisedSwimmingTests() : ItemTests(new SynchronisedSwimmingItem())
 {
-    private static readonly SynchronisedSwimmingItem Item = new();
-
     [Fact]
     public void TheLayoutIsTenFishAtRandomPosesInTheOriginalsRanges()
     {
@@ -149,7 +147,7 @@ public sealed class SynchronisedSwimmingTests
         }
     }
 
-    private static List<(float, float)> Positions(ulong seed) => Item.CreateScenario(seed).Fish.Select(f => (f.Position.X, f.Position.Y)).ToList();
+    private List<(float, float)> Positions(ulong seed) => Item.CreateScenario(seed).Fish.Select(f => (f.Position.X, f.Position.Y)).ToList();
 
     private static List<Decision> Fish0Codes(ulong seed)
     {

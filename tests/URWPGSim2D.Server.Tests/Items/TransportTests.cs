@@ -3,10 +3,8 @@ using URWPGSim2D.Engine.Items.Transport;
 namespace URWPGSim2D.Server.Tests.Items;
 
 /// <summary>水中搬运: the layout of Match1V1Moving.cs, balls within 22 mm of their holes, the end at six, the demo.</summary>
-public sealed class TransportTests
+public sealed class TransportTests() : ItemTests(new TransportItem())
 {
-    private static readonly TransportItem Item = new();
-
     [Fact]
     public void TheLayoutIsMatch1V1MovingCs()
     {

@@ -1,5 +1,4 @@
 using Xunit.Sdk;
-using URWPGSim2D.Testing;
 using URWPGSim2D.Collision.Motion;
 
 namespace URWPGSim2D.Server.Tests.Simulation;

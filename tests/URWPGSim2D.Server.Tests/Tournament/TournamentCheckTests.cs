@@ -7,16 +7,12 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// minute against idle with its faults, slowest call and score — and nothing written.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentCheckTests : IDisposable
+public sealed class TournamentCheckTests() : TempFolderTest("urwpg-tour-check-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-check-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void Each_entrant_gets_a_line_the_class_can_read_before_the_real_run()
     {
-        string dir = Path.Combine(_folder, "class");
+        string dir = Path.Combine(Folder, "class");
         Directory.CreateDirectory(dir);
         WriteStrategy(dir, "good", "for (int i = 0; i < d.Length; i++) d[i] = new Decision(6, 7);");
         WriteStrategy(dir, "thrower", "if (s.Cycle % 10 == 5) throw new InvalidOperationException(\"oops\");");
@@ -31,7 +27,7 @@ public sealed class TournamentCheckTests : IDisposable
         Assert.Matches(@"^thrower  no             60         0            0          0  +\d+ ms         -  +\d+  cycle 6: InvalidOperationException: oops$", lines[4]);
         Assert.Matches(@"^demo     yes             0         0            0          0  +-         -  +\d+  -$", lines[5]);
         Assert.Equal("2 of 4 entrants ready", lines[6]);
-        Assert.Empty(Directory.GetFileSystemEntries(_folder, "*", SearchOption.TopDirectoryOnly).AsSpan()[1..].ToArray()); // nothing written beside the class
+        Assert.Empty(Directory.GetFileSystemEntries(Folder, "*", SearchOption.TopDirectoryOnly).AsSpan()[1..].ToArray()); // nothing written beside the class
     }
 
     /// <summary>
@@ -42,7 +38,7 @@ public sealed class TournamentCheckTests : IDisposable
     [Fact]
     public void The_memory_column_shows_the_most_memory_each_entrants_host_held()
     {
-        string dir = Path.Combine(_folder, "class");
+        string dir = Path.Combine(Folder, "class");
         Directory.CreateDirectory(dir);
         WriteStrategy(dir, "lean", string.Empty);
         WriteStrategy(dir, "hog", """
@@ -72,18 +68,5 @@ public sealed class TournamentCheckTests : IDisposable
 
     // DIR/NAME.cs: an SDK strategy named NAME whose Decide(s, fish, d) runs the body (Held: a list it may keep blocks in).
     private static void WriteStrategy(string dir, string name, string body) =>
-        File.WriteAllText(Path.Combine(dir, name + ".cs"), $$"""
-            using System;
-            using System.Collections.Generic;
-            using URWPGSim2D.Strategies;
-            public sealed class Strategy_{{name}} : IStrategy
-            {
-                private static readonly List<byte[]> Held = new();
-                public string TeamName => "{{name}}";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-            {{body}}
-                }
-            }
-            """);
+        File.WriteAllText(Path.Combine(dir, name + ".cs"), SdkStrategy.Source("Strategy_" + name, name, body, "private static readonly List<byte[]> Held = new();", "using System; using System.Collections.Generic; using URWPGSim2D.Strategies;"));
 }

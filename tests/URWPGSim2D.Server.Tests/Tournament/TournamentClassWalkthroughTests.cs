@@ -8,12 +8,9 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// bytes), and with one entrant changed (only its group pairings played again).
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentClassWalkthroughTests : IDisposable
+public sealed class TournamentClassWalkthroughTests() : TempFolderTest("urwpg-class-")
 {
     private static readonly string[] Outputs = ["results.jsonl", "standings.json", "standings.md", "standings.csv", "matches.csv", "report.html"];
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-class-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     // A student's strategy: every fish swims at the ball (fast when it faces it), or straight on at a constant speed.
     private static string Strategy(string type, string team, int fast, int slow, bool toward) => $$"""
@@ -49,7 +46,7 @@ public sealed class TournamentClassWalkthroughTests : IDisposable
     [Fact]
     public void A_class_of_eight_is_checked_played_changed_joined_late_and_played_as_groups_and_a_knockout()
     {
-        string dir = Path.Combine(_folder, "class");
+        string dir = Path.Combine(Folder, "class");
         Directory.CreateDirectory(dir);
         (string Name, int Fast, int Slow, bool Toward)[] students =
             [("ada", 14, 4, true), ("ben", 10, 3, true), ("cai", 6, 6, false), ("dai", 12, 2, true), ("eve", 8, 8, false), ("fay", 14, 8, true), ("guo", 3, 3, false), ("hua", 9, 5, true)];
@@ -76,10 +73,10 @@ public sealed class TournamentClassWalkthroughTests : IDisposable
         Assert.Equal(students.Select(s => s.Name), lines[2..10].Select(l => l.Split(' ')[0]));
         Assert.All(lines[2..10], l => Assert.Matches(@"^\w+ +yes +0 +0 +0 +0 ", l));
         Assert.Equal("8 of 8 entrants ready", lines[10]);
-        Assert.DoesNotContain(Directory.GetDirectories(_folder), d => Path.GetFileName(d) != "class");
+        Assert.DoesNotContain(Directory.GetDirectories(Folder), d => Path.GetFileName(d) != "class");
 
         // The round robin: 8 × 7 matches on one seed.
-        string tour = Path.Combine(_folder, "tour");
+        string tour = Path.Combine(Folder, "tour");
         var first = Tournament(dir, "--out", tour);
         Assert.True(first.ExitCode == 0, first.Stderr);
         Assert.StartsWith("tournament: ball-grab, 8 entrants, 1 seed, 56 matches; 56 to play, 0 already there\n", first.Stdout, StringComparison.Ordinal);
@@ -106,7 +103,7 @@ public sealed class TournamentClassWalkthroughTests : IDisposable
         Assert.Equal(73, File.ReadAllLines(Path.Combine(tour, "results.jsonl")).Length);
 
         // The group stage and knockout. Snake seeding in name order: A = ada, dai, eve, hua, ivy; B = ben, cai, fay, guo.
-        string cup = Path.Combine(_folder, "cup");
+        string cup = Path.Combine(Folder, "cup");
         string[] format = ["--format", "groups-knockout", "--groups", "2", "--final-seeds", "2", "--out", cup];
         var knockout = Tournament(dir, format);
         Assert.True(knockout.ExitCode == 0, knockout.Stderr);

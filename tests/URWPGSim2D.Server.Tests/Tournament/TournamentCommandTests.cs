@@ -5,21 +5,16 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// after merging shards; a re-run plays only what is missing or broken; an entrant that cannot be
 /// loaded forfeits; bad input is one line and exit code 2 before anything is written.
 /// </summary>
-public sealed class TournamentCommandTests : IDisposable
+public sealed class TournamentCommandTests() : TempFolderTest("urwpg-tournament-")
 {
     private static readonly string[] Files = ["results.jsonl", "standings.json", "standings.md", "report.html"];
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-tournament-" + Guid.NewGuid().ToString("N"));
-
-    public TournamentCommandTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     private string[] Base(string item = "ball-grab") =>
         ["tournament", "--item", item, "--entrant", "demo=demo", "--entrant", "chase=chase-ball", "--entrant", "idle=idle", "--seeds", "2", "--cycles", "80"];
 
     private CliRun Run(params string[] extra) => CliRun.Of(string.Empty, [.. Base(), .. extra]);
 
-    private string Dir(string name) => Path.Combine(_folder, name);
+    private string Dir(string name) => Path.Combine(Folder, name);
 
     [Fact]
     public void OneAndTwoThreadsAndMergedShardsGiveTheSameBytes()
@@ -34,7 +29,7 @@ public sealed class TournamentCommandTests : IDisposable
         var shards = new List<string>();
         for (int i = 0; i < 3; i++)
         {
-            string file = Path.Combine(_folder, $"shard-{i}.jsonl");
+            string file = Path.Combine(Folder, $"shard-{i}.jsonl");
             var shard = Run("--out", Dir("merged"), "--shard", $"{i}/3", "--results", file);
             Assert.True(shard.ExitCode == 0, shard.Stderr);
             Assert.Contains($"shard {i}/3 finished: 4 of 4 matches", shard.Stdout, StringComparison.Ordinal);
@@ -87,7 +82,7 @@ public sealed class TournamentCommandTests : IDisposable
     [Fact]
     public void AnEntrantThatDoesNotCompileForfeitsAndTheTournamentFinishes()
     {
-        string bad = Path.Combine(_folder, "Bad.cs");
+        string bad = Path.Combine(Folder, "Bad.cs");
         File.WriteAllText(bad, "public class Broken {");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "bad=" + bad, "--entrant", "idle=idle", "--seeds", "1", "--cycles", "40", "--out", Dir("f"));
         Assert.True(run.ExitCode == 0, run.Stderr);
@@ -165,8 +160,8 @@ public sealed class TournamentCommandTests : IDisposable
         Assert.Contains("holds another tournament (first seed 1 vs 5); use another --out or delete it", other.Stderr, StringComparison.Ordinal);
         Assert.Equal(before, File.ReadAllBytes(results));
 
-        File.WriteAllText(Path.Combine(_folder, "note.txt"), "mine");
-        var notEmpty = Run("--out", _folder);
+        File.WriteAllText(Path.Combine(Folder, "note.txt"), "mine");
+        var notEmpty = Run("--out", Folder);
         Assert.Equal(2, notEmpty.ExitCode);
         Assert.Contains("is not empty and holds no results.jsonl", notEmpty.Stderr, StringComparison.Ordinal);
     }

@@ -9,24 +9,10 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// pages); the standings and the report list each entrant's code, version and own team name.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentEntrantsDirTests : IDisposable
+public sealed class TournamentEntrantsDirTests() : TempFolderTest("urwpg-tour-dir-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-dir-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private static string Sdk(string type, string team, int speed) => $$"""
-        using System;
-        using URWPGSim2D.Strategies;
-        public sealed class {{type}} : IStrategy
-        {
-            public string TeamName => "{{team}}";
-            public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-            {
-                for (int i = 0; i < d.Length; i++) d[i] = new Decision({{speed}}, 7);
-            }
-        }
-        """;
+    private static string Sdk(string type, string team, int speed) =>
+        SdkStrategy.Source(type, team, $"for (int i = 0; i < d.Length; i++) d[i] = new Decision({speed}, 7);");
 
     private CliRun Tournament(string dir, string tour, params string[] more)
     {
@@ -38,13 +24,13 @@ public sealed class TournamentEntrantsDirTests : IDisposable
     [Fact]
     public void A_folder_of_entrants_replays_only_what_changed_and_adds_a_late_entrant()
     {
-        string dir = Path.Combine(_folder, "class");
+        string dir = Path.Combine(Folder, "class");
         Directory.CreateDirectory(Path.Combine(dir, "alpha"));
         File.WriteAllText(Path.Combine(dir, "alpha", "Alpha.cs"), Sdk("Alpha", "Team Alpha", 5));
         File.WriteAllText(Path.Combine(dir, "beta.cs"), Sdk("Beta", "Team Beta", 6));
         File.WriteAllText(Path.Combine(dir, "gamma.cs"), Sdk("Gamma", "Team Gamma", 7));
         File.WriteAllText(Path.Combine(dir, "notes.txt"), "not an entrant");
-        string tour = Path.Combine(_folder, "tour");
+        string tour = Path.Combine(Folder, "tour");
 
         var first = Tournament(dir, tour);
         Assert.True(first.ExitCode == 0, first.Stderr);
@@ -73,29 +59,29 @@ public sealed class TournamentEntrantsDirTests : IDisposable
         Assert.StartsWith("tournament: ball-grab, 4 entrants, 1 seed, 12 matches; 6 to play, 6 already there\n", late.Stdout, StringComparison.Ordinal);
         Assert.Equal(13, File.ReadAllLines(Path.Combine(tour, "results.jsonl")).Length);
         Assert.Equal(12, Directory.GetFiles(Path.Combine(tour, "replays"), "match-*.html").Length);
-        var fresh = Tournament(dir, Path.Combine(_folder, "fresh"), "--entrant", "late=idle");
+        var fresh = Tournament(dir, Path.Combine(Folder, "fresh"), "--entrant", "late=idle");
         Assert.True(fresh.ExitCode == 0, fresh.Stderr);
-        Assert.Equal(File.ReadAllText(Path.Combine(Path.Combine(_folder, "fresh"), "standings.json")), File.ReadAllText(Path.Combine(tour, "standings.json")));
-        Assert.Equal(File.ReadAllLines(Path.Combine(Path.Combine(_folder, "fresh"), "results.jsonl")).Skip(1), File.ReadAllLines(Path.Combine(tour, "results.jsonl")).Skip(1));
+        Assert.Equal(File.ReadAllText(Path.Combine(Path.Combine(Folder, "fresh"), "standings.json")), File.ReadAllText(Path.Combine(tour, "standings.json")));
+        Assert.Equal(File.ReadAllLines(Path.Combine(Path.Combine(Folder, "fresh"), "results.jsonl")).Skip(1), File.ReadAllLines(Path.Combine(tour, "results.jsonl")).Skip(1));
     }
 
     [Fact]
     public void A_folder_that_gives_no_entrant_or_a_name_twice_is_one_line_and_exit_2()
     {
-        string empty = Path.Combine(_folder, "empty");
+        string empty = Path.Combine(Folder, "empty");
         Directory.CreateDirectory(empty);
-        var none = Tournament(empty, Path.Combine(_folder, "t1"));
+        var none = Tournament(empty, Path.Combine(Folder, "t1"));
         Assert.Equal(2, none.ExitCode);
         Assert.StartsWith($"tournament: --entrants-dir \"{empty}\" holds no sub-folder, .cs file or .dll file. Usage: ", none.Stderr, StringComparison.Ordinal);
 
-        string twice = Path.Combine(_folder, "twice");
+        string twice = Path.Combine(Folder, "twice");
         Directory.CreateDirectory(Path.Combine(twice, "a"));
         File.WriteAllText(Path.Combine(twice, "a.cs"), Sdk("A", "a", 5));
-        var clash = Tournament(twice, Path.Combine(_folder, "t2"));
+        var clash = Tournament(twice, Path.Combine(Folder, "t2"));
         Assert.Equal(2, clash.ExitCode);
         Assert.Matches("^tournament: --entrants-dir \"[^\"]*\": (a and a.cs|a.cs and a) both make the entrant a; rename one. Usage: ", clash.Stderr);
 
-        var missing = Tournament(Path.Combine(_folder, "nowhere"), Path.Combine(_folder, "t3"));
+        var missing = Tournament(Path.Combine(Folder, "nowhere"), Path.Combine(Folder, "t3"));
         Assert.Equal(2, missing.ExitCode);
         Assert.StartsWith("tournament: --entrants-dir must be a folder, got ", missing.Stderr, StringComparison.Ordinal);
     }

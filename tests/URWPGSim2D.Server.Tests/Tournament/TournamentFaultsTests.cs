@@ -8,37 +8,19 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// cycle, linked to that cycle of the match's replay page when the page was written.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentFaultsTests : IDisposable
+public sealed class TournamentFaultsTests() : TempFolderTest("urwpg-tour-faults-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-faults-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Thrower()
-    {
-        string file = Path.Combine(_folder, "Thrower.cs");
-        File.WriteAllText(file, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Thrower : IStrategy
-            {
-                public string TeamName => "thrower";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("boom at " + s.Cycle);
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
-                }
-            }
-            """);
-        return file;
-    }
+    private string Thrower() => SdkStrategy.Write(Folder, "Thrower", "thrower", """
+        if (s.Cycle == 20 || s.Cycle == 40) throw new InvalidOperationException("boom at " + s.Cycle);
+        for (int i = 0; i < d.Length; i++) d[i] = new Decision(8, 7);
+        """);
 
     [Theory]
     [InlineData(true)]
     [InlineData(false)]
     public void Every_view_shows_each_entrants_faults_and_where_the_first_one_is(bool replays)
     {
-        string tour = Path.Combine(_folder, replays ? "with" : "without");
+        string tour = Path.Combine(Folder, replays ? "with" : "without");
         string[] args = ["tournament", "--item", "ball-grab", "--entrant", "thrower=" + Thrower(), "--entrant", "idle=idle", "--seeds", "1", "--cycles", "60",
             "--strategy-timeout", "5000", "--isolation", "none", "--out", tour, .. replays ? (string[])["--replays"] : []];
         var run = CliRun.Of(string.Empty, args);
@@ -95,7 +77,7 @@ public sealed class TournamentFaultsTests : IDisposable
     [Fact]
     public void A_tournament_without_faults_shows_no_faults_section()
     {
-        string tour = Path.Combine(_folder, "clean");
+        string tour = Path.Combine(Folder, "clean");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "a=idle", "--entrant", "b=chase-ball", "--seeds", "1", "--cycles", "20", "--out", tour);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.DoesNotContain("runtime faults", run.Stdout, StringComparison.Ordinal);

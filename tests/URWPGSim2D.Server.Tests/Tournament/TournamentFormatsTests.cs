@@ -5,16 +5,12 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// standings.md's and report.html's tables, standings.csv and matches.csv, the points recounted
 /// from matches.csv alone; and the CSV writer's quoting of hostile names.
 /// </summary>
-public sealed class TournamentFormatsTests : IDisposable
+public sealed class TournamentFormatsTests() : TempFolderTest("urwpg-formats-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-formats-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void Every_view_has_the_points_table_and_the_csv_files_agree_with_the_matches()
     {
-        string dir = Path.Combine(_folder, "t");
+        string dir = Path.Combine(Folder, "t");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "chaser=chase-ball", "--entrant", "still=idle", "--seeds", "1", "--seed", "6", "--cycles", "600", "--out", dir);
         Assert.True(run.ExitCode == 0, run.Stderr);
         Assert.Contains("points table (3 points a win, 1 a draw; ties: goal difference, goals scored, head to head, name):\n", run.Stdout, StringComparison.Ordinal);

@@ -4,14 +4,10 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// <c>tournament --format groups-knockout</c>'s options: bad input is one line naming the option and its
 /// value, exit code 2, before anything is written; and a short cup of built-in entrants end to end.
 /// </summary>
-public sealed class TournamentGroupsKnockoutCommandTests : IDisposable
+public sealed class TournamentGroupsKnockoutCommandTests() : TempFolderTest("urwpg-cup-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-cup-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     private CliRun Run(string item, params string[] more) =>
-        CliRun.Of(string.Empty, ["tournament", "--item", item, "--entrant", "a=demo", "--entrant", "b=chase-ball", "--entrant", "c=idle", "--entrant", "d=chase-ball", "--seeds", "1", "--cycles", "40", "--out", Path.Combine(_folder, "out"), .. more]);
+        CliRun.Of(string.Empty, ["tournament", "--item", item, "--entrant", "a=demo", "--entrant", "b=chase-ball", "--entrant", "c=idle", "--entrant", "d=chase-ball", "--seeds", "1", "--cycles", "40", "--out", Path.Combine(Folder, "out"), .. more]);
 
     [Theory]
     [InlineData("ball-grab", "--format swiss", "--format must be round-robin or groups-knockout, got \"swiss\"")]
@@ -32,7 +28,7 @@ public sealed class TournamentGroupsKnockoutCommandTests : IDisposable
         Assert.Equal(2, run.ExitCode);
         Assert.StartsWith("tournament: " + message + ". Usage: ", run.Stderr, StringComparison.Ordinal);
         Assert.Single(run.Stderr.TrimEnd('\n').Split('\n'));
-        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+        Assert.Empty(Directory.GetFileSystemEntries(Folder));
     }
 
     [Fact]

@@ -5,28 +5,11 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// match that fails inside the server is recorded as a forfeit of the team at fault, which a re-run keeps.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentHostileTests : IDisposable
+public sealed class TournamentHostileTests() : TempFolderTest("urwpg-tour-hostile-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-hostile-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Sdk(string name, string body)
-    {
-        string file = Path.Combine(_folder, name + ".cs");
-        File.WriteAllText(file, "using System; using System.IO; using System.Diagnostics; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;\n" + $$"""
-            public sealed class {{name}} : IStrategy
-            {
-                public string TeamName => "{{name}}\u001b[2J";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);
-                    {{body}}
-                }
-            }
-            """);
-        return file;
-    }
+    private string Sdk(string name, string body) =>
+        SdkStrategy.Write(Folder, name, name + "\\u001b[2J", "for (int i = 0; i < d.Length; i++) d[i] = new Decision(10, 7);\n" + body,
+            usings: "using System; using System.IO; using System.Diagnostics; using System.Runtime.InteropServices; using URWPGSim2D.Strategies;");
 
     [Attack("faults", "it buries its scratch folder")]
     [Attack("faults", "it prints without end")]
@@ -49,10 +32,10 @@ public sealed class TournamentHostileTests : IDisposable
             for (int i = 0; i < 8192; i++) { IntPtr p = Marshal.AllocHGlobal(1 << 20); Marshal.Copy(page, 0, p, page.Length); }
             """);
         string[] tour = ["tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "bomb=" + bomb, "--entrant", "burier=" + burier, "--entrant", "hog=" + hog,
-            "--seeds", "1", "--cycles", "10", "--strategy-timeout", "60000", "--strategy-memory", "64", "--strategy-processes", "64", "--threads", "2", "--sandbox", "required", "--out", Path.Combine(_folder, "t")];
+            "--seeds", "1", "--cycles", "10", "--strategy-timeout", "60000", "--strategy-memory", "64", "--strategy-processes", "64", "--threads", "2", "--sandbox", "required", "--out", Path.Combine(Folder, "t")];
         var run = CliRun.Of(string.Empty, tour);
         Assert.True(run.ExitCode == 0, run.Stderr);
-        string[] lines = File.ReadAllLines(Path.Combine(_folder, "t", "results.jsonl"));
+        string[] lines = File.ReadAllLines(Path.Combine(Folder, "t", "results.jsonl"));
         Assert.Equal(1 + 12, lines.Length); // header + 4 × 3 matches
         Assert.All(lines.Skip(1), l => Assert.StartsWith("{\"kind\":\"match\"", l, StringComparison.Ordinal));
         Assert.Contains(lines, l => l.Contains("out of memory: its sandbox reached its limit of 448 MiB", StringComparison.Ordinal));
@@ -79,7 +62,7 @@ public sealed class TournamentHostileTests : IDisposable
         Assert.Equal([1], record.Forfeits);
         Assert.Equal(["the match failed inside the server: IOException: disk on fire"], record.Reasons);
 
-        string file = Path.Combine(_folder, "results.jsonl");
+        string file = Path.Combine(Folder, "results.jsonl");
         TournamentFile.Write(file, header, [record]);
         Assert.EndsWith("{\"kind\":\"forfeit\",\"index\":1,\"seed\":1,\"entrants\":[\"b\",\"a\"],\"forfeits\":[1],\"reasons\":[\"the match failed inside the server: IOException: disk on fire\"],\"failed\":true}", File.ReadAllLines(file)[^1], StringComparison.Ordinal);
         var read = Assert.Single(TournamentFile.Read(file).Records);

@@ -7,13 +7,9 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// original's API) fault, are charged in their matches' results, and every match is played.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class TournamentIsolationTests : IDisposable
+public sealed class TournamentIsolationTests() : TempFolderTest("urwpg-tour-iso-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-iso-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
-    private string Dir(string name) => Path.Combine(_folder, name);
+    private string Dir(string name) => Path.Combine(Folder, name);
 
     private static string[] Lines(string folder) => File.ReadAllLines(Path.Combine(folder, "results.jsonl"));
 
@@ -39,8 +35,8 @@ public sealed class TournamentIsolationTests : IDisposable
     [Fact]
     public void Hostile_entrants_are_charged_in_their_matches_and_every_match_is_played()
     {
-        string overflow = OriginalSource.Write(_folder, "Overflow", "if (cycle == 2) Recurse(0);", "static int Recurse(int n) { return Recurse(n + 1) + 1; }");
-        string badCtor = OriginalSource.Write(_folder, "BadCtor", "", "public Strategy() { throw new InvalidOperationException(\"no team today\"); }");
+        string overflow = OriginalSource.Write(Folder, "Overflow", "if (cycle == 2) Recurse(0);", "static int Recurse(int n) { return Recurse(n + 1) + 1; }");
+        string badCtor = OriginalSource.Write(Folder, "BadCtor", "", "public Strategy() { throw new InvalidOperationException(\"no team today\"); }");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "overflow=" + overflow, "--entrant", "ctor=" + badCtor,
             "--seeds", "1", "--cycles", "20", "--strategy-timeout", "5000", "--threads", "2", "--sandbox", "required", "--out", Dir("t"));
         Assert.True(run.ExitCode == 0, run.Stderr);
@@ -67,7 +63,7 @@ public sealed class TournamentIsolationTests : IDisposable
     [Fact]
     public void In_process_a_throwing_constructor_is_a_fault_of_the_match_not_a_forfeit()
     {
-        string badCtor = OriginalSource.Write(_folder, "BadStatic", "", "static readonly int Never = int.Parse(\"not a number\"); public Strategy() { _ = Never; }");
+        string badCtor = OriginalSource.Write(Folder, "BadStatic", "", "static readonly int Never = int.Parse(\"not a number\"); public Strategy() { _ = Never; }");
         var run = CliRun.Of(string.Empty, "tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "ctor=" + badCtor,
             "--seeds", "1", "--cycles", "10", "--strategy-timeout", "5000", "--isolation", "none", "--out", Dir("n"));
         Assert.True(run.ExitCode == 0, run.Stderr);

@@ -15,18 +15,14 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 /// viewer can restart a tournament's match.
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed partial class TournamentLiveTests : IDisposable
+public sealed partial class TournamentLiveTests() : TempFolderTest("urwpg-tour-live-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-tour-live-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
     public void The_matches_play_one_after_another_in_the_page_and_record_what_a_tournament_off_screen_records()
     {
         string[] tournament = ["tournament", "--item", "ball-grab", "--entrant", "demo=demo", "--entrant", "idle=idle", "--entrant", "chase=chase-ball", "--seeds", "1", "--cycles", "300"];
         int port = LiveRunTests.FreePort();
-        string live = Path.Combine(_folder, "live"), off = Path.Combine(_folder, "off");
+        string live = Path.Combine(Folder, "live"), off = Path.Combine(Folder, "off");
         var shown = CliRun.Of(string.Empty, [.. tournament, "--out", live, "--live", "--speed", "1000", "--port", port.ToString(CultureInfo.InvariantCulture)]);
         Assert.True(shown.ExitCode == 0, shown.Stderr);
         var played = CliRun.Of(string.Empty, [.. tournament, "--out", off]);
@@ -81,10 +77,10 @@ public sealed partial class TournamentLiveTests : IDisposable
     [InlineData("--live --speed 0", "--speed must be a number 0.01..1000 (times real time), got \"0\"")]
     public void Bad_live_options_are_one_line_and_exit_2(string options, string message)
     {
-        var run = CliRun.Of(string.Empty, ["tournament", "--item", "ball-grab", "--entrant", "a=demo", "--entrant", "b=idle", "--out", Path.Combine(_folder, "t"), .. options.Split(' ')]);
+        var run = CliRun.Of(string.Empty, ["tournament", "--item", "ball-grab", "--entrant", "a=demo", "--entrant", "b=idle", "--out", Path.Combine(Folder, "t"), .. options.Split(' ')]);
         Assert.Equal(2, run.ExitCode);
         Assert.StartsWith("tournament: " + message + ". Usage: ", run.Stderr, StringComparison.Ordinal);
-        Assert.Empty(Directory.GetFileSystemEntries(_folder));
+        Assert.Empty(Directory.GetFileSystemEntries(Folder));
     }
 
     private static object Dispose(IDisposable d)

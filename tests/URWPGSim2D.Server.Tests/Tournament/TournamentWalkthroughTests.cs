@@ -10,20 +10,15 @@ namespace URWPGSim2D.Server.Tests.Tournament;
 // Its user entrant plays in strategy hosts at the default 100 ms deadline beside parallel tests: a
 // call made late by a busy machine is waited for and paid from the team's time bank, so the results
 // are the same however busy the test process is.
-public sealed class TournamentWalkthroughTests : IDisposable
+public sealed class TournamentWalkthroughTests() : TempFolderTest("urwpg-walkthrough-")
 {
     private const string Page = "docs/tournament.md";
     private const string Marker = "TournamentWalkthroughTests: ";
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-walkthrough-" + Guid.NewGuid().ToString("N"));
-
-    public TournamentWalkthroughTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Fact]
     public void TheWalkthroughShowsWhatTheCommandsPrintAndWrite()
     {
-        string tour = Path.Combine(_folder, "tour");
+        string tour = Path.Combine(Folder, "tour");
         var blocks = MarkdownBlock.Read(Page).Where(b => b.Marker?.Contains(Marker, StringComparison.Ordinal) == true).ToList();
         Assert.Equal(["run", "json", "md", "again", "cup"], blocks.Select(b => b.Marker![(b.Marker!.IndexOf(Marker, StringComparison.Ordinal) + Marker.Length)..].TrimEnd(')')));
         var problems = new List<string>();

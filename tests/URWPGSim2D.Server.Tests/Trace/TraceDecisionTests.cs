@@ -5,40 +5,22 @@ namespace URWPGSim2D.Server.Tests.Trace;
 /// at) on every cycle line after cycle 0: the decision is the one its strategy gave for that cycle,
 /// in process and from a strategy host, and the gears reach a decision that is held.
 /// </summary>
-public sealed class TraceDecisionTests : IDisposable
+public sealed class TraceDecisionTests() : TempFolderTest("urwpg-decision-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-decision-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     // Decides (VCode, TCode) from the cycle it sees and the fish's index: a known answer for every line.
-    private string Strategy()
-    {
-        string path = Path.Combine(_folder, "Pattern.cs");
-        File.WriteAllText(path, """
-            using System;
-            using URWPGSim2D.Strategies;
-            public sealed class Pattern : IStrategy
-            {
-                public string TeamName => "pattern";
-                public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-                {
-                    for (int i = 0; i < d.Length; i++)
-                    {
-                        d[i] = s.Cycle < 60 ? new Decision(10, 3) : new Decision((s.Cycle + fish[i]) % 15, ((s.Cycle * 4) + fish[i]) % 15);
-                    }
-                }
-            }
-            """);
-        return path;
-    }
+    private string Strategy() => SdkStrategy.Write(Folder, "Pattern", "pattern", """
+        for (int i = 0; i < d.Length; i++)
+        {
+            d[i] = s.Cycle < 60 ? new Decision(10, 3) : new Decision((s.Cycle + fish[i]) % 15, ((s.Cycle * 4) + fish[i]) % 15);
+        }
+        """);
 
     [Theory]
     [InlineData("none")]
     [InlineData("process")]
     public void Every_fish_carries_the_decision_its_strategy_gave_for_the_cycle_and_its_gear_codes(string isolation)
     {
-        string trace = Path.Combine(_folder, isolation + ".jsonl");
+        string trace = Path.Combine(Folder, isolation + ".jsonl");
         var run = CliRun.Of(string.Empty, "run", "--item", "default", "--cycles", "120", "--strategy", "0=" + Strategy(), "--strategy", "1=" + Strategy(),
             "--isolation", isolation, "--strategy-timeout", "5000", "--trace", trace);
         Assert.True(run.ExitCode == 0, run.Stderr);

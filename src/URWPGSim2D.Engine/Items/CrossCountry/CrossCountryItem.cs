@@ -17,18 +17,15 @@ internal sealed class CrossCountryItem() : CompetitionItem(
     fishPerTeam: 1)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => CrossCountryLayout.Scenario() with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-        BallValues = [1, 1],
-        Zones =
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(
+        CrossCountryLayout.Scenario(),
+        seed,
+        ballValues: [1, 1],
+        zones:
         [
             TraceZone.Circle("target", 0, CrossCountryLayout.Targets[0], CrossCountryLayout.TargetTolerance),
             TraceZone.Circle("target", 1, CrossCountryLayout.Targets[1], CrossCountryLayout.TargetTolerance),
-        ],
-    };
+        ]);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new CrossCountryReferee(this, scenario, cycles);

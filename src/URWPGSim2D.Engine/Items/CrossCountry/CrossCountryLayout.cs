@@ -58,11 +58,7 @@ internal static class CrossCountryLayout
             obstacles.Add(new ObstacleDefinition(ObstacleKind.Round, c, 2f * PostRadius, 2f * PostRadius, 0f, PostRadius));
         }
 
-        foreach (var c in Blocks)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, c, BlockLength, BlockWidth, 0f, 0f));
-        }
-
+        AxisRectangles.AddAt(obstacles, Blocks, BlockLength, BlockWidth);
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,

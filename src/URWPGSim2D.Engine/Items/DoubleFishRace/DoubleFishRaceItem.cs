@@ -13,12 +13,7 @@ internal sealed class DoubleFishRaceItem() : CompetitionItem(
     fishPerTeam: 1)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => DoubleFishRaceLayout.Scenario() with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-    };
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(DoubleFishRaceLayout.Scenario(), seed);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new DoubleFishRaceReferee(this, scenario, cycles);

@@ -42,7 +42,7 @@ internal sealed class PoloItem(int perTeam) : CompetitionItem(
             TraceZone.Box("forbidden", 1, new Vector2(inner, -zone), new Vector2(l, zone), team: 1),
             TraceZone.Circle("centre", 0, Vector2.Zero, PoloLayout.CentreCircleRadius),
         };
-        return PoloLayout.Scenario(PerTeam) with { Cycles = DefaultCycles, Seed = seed, Item = this, BallValues = [1], Zones = zones };
+        return FromLayout(PoloLayout.Scenario(PerTeam), seed, ballValues: [1], zones: zones);
     }
 
     /// <inheritdoc/>

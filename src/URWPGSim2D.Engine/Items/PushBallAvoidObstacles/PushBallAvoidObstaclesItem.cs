@@ -14,13 +14,7 @@ internal sealed class PushBallAvoidObstaclesItem() : CompetitionItem(
     fishPerTeam: 1)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => PushBallAvoidObstaclesLayout.Scenario() with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-        BallValues = [1],
-    };
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(PushBallAvoidObstaclesLayout.Scenario(), seed, ballValues: [1]);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new PushBallAvoidObstaclesReferee(this, scenario, cycles);

@@ -13,13 +13,7 @@ internal sealed class PushBallViaChannelItem() : CompetitionItem(
     fishPerTeam: 2)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => PushBallViaChannelLayout.Scenario(seed) with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-        BallValues = [1],
-    };
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(PushBallViaChannelLayout.Scenario(seed), seed, ballValues: [1]);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new PushBallViaChannelReferee(this, scenario, cycles);

@@ -13,13 +13,7 @@ internal sealed class RelayWithBallItem() : CompetitionItem(
     fishPerTeam: 2)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => RelayWithBallLayout.Scenario() with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-        BallValues = [1],
-    };
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(RelayWithBallLayout.Scenario(), seed, ballValues: [1]);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new RelayWithBallReferee(this, scenario, cycles);

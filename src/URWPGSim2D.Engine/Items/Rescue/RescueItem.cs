@@ -18,18 +18,15 @@ internal sealed class RescueItem() : CompetitionItem(
     fishPerTeam: 2)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => RescueLayout.Scenario() with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-        BallValues = [1, 1],
-        Zones =
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(
+        RescueLayout.Scenario(),
+        seed,
+        ballValues: [1, 1],
+        zones:
         [
             TraceZone.Box("rescue", 0, RescueLayout.ZoneMin, RescueLayout.ZoneMax),
             TraceZone.Circle("parking", 0, RescueLayout.ParkedFish, 20f, team: 1),
-        ],
-    };
+        ]);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new RescueReferee(this, scenario, cycles);

@@ -64,12 +64,7 @@ internal static class RescueLayout
             fish.Add(new FishDefinition(fish.Count < 2 ? 0 : 1, position, heading, "demo", Decision.Stop));
         }
 
-        var obstacles = new List<ObstacleDefinition>(Walls.Length);
-        foreach (var c in Walls)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, c, WallLength, WallWidth, 0f, 0f));
-        }
-
+        var obstacles = AxisRectangles.AddAt(new List<ObstacleDefinition>(Walls.Length), Walls, WallLength, WallWidth);
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,

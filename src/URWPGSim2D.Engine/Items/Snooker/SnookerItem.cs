@@ -37,7 +37,7 @@ internal sealed class SnookerItem() : CompetitionItem(
             }
         }
 
-        return SnookerLayout.Scenario() with { Cycles = DefaultCycles, Seed = seed, Item = this, BallValues = values, Zones = zones };
+        return FromLayout(SnookerLayout.Scenario(), seed, values, zones);
     }
 
     /// <inheritdoc/>

@@ -123,12 +123,7 @@ internal static class SnookerLayout
             balls.Add(new BallDefinition(Spot(i), Vector2.Zero, BallRadius));
         }
 
-        var cushions = new List<ObstacleDefinition>(4);
-        foreach (var c in Cushions)
-        {
-            cushions.Add(new ObstacleDefinition(ObstacleKind.Rectangle, c, CushionLength, CushionWidth, 0f, 0f));
-        }
-
+        var cushions = AxisRectangles.AddAt(new List<ObstacleDefinition>(4), Cushions, CushionLength, CushionWidth);
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,

@@ -26,7 +26,7 @@ internal sealed class SurvivalItem() : CompetitionItem(
             zones[j + 2] = TraceZone.Circle("parking", j + 2, SurvivalLayout.CaughtPlace(j), 20f);
         }
 
-        return SurvivalLayout.Scenario() with { Cycles = DefaultCycles, Seed = seed, Item = this, Zones = zones };
+        return FromLayout(SurvivalLayout.Scenario(), seed, zones: zones);
     }
 
     /// <inheritdoc/>

@@ -58,12 +58,7 @@ internal static class SurvivalLayout
             fish.Add(new FishDefinition(1, Hunted[j], System.MathF.PI, "demo", Decision.Stop));
         }
 
-        var obstacles = new List<ObstacleDefinition>(Squares.Length);
-        foreach (var c in Squares)
-        {
-            obstacles.Add(new ObstacleDefinition(ObstacleKind.Rectangle, c, SquareSide, SquareSide, 0f, 0f));
-        }
-
+        var obstacles = AxisRectangles.AddAt(new List<ObstacleDefinition>(Squares.Length), Squares, SquareSide, SquareSide);
         return new ScenarioDefinition
         {
             FieldLength = FieldLength,

@@ -12,12 +12,7 @@ internal sealed class SynchronisedSwimmingItem() : CompetitionItem(
     fishPerTeam: SynchronisedSwimmingLayout.FishCount)
 {
     /// <inheritdoc/>
-    public override ScenarioDefinition CreateScenario(ulong seed) => SynchronisedSwimmingLayout.Scenario(seed) with
-    {
-        Cycles = DefaultCycles,
-        Seed = seed,
-        Item = this,
-    };
+    public override ScenarioDefinition CreateScenario(ulong seed) => FromLayout(SynchronisedSwimmingLayout.Scenario(seed), seed);
 
     /// <inheritdoc/>
     public override ItemReferee CreateReferee(ScenarioDefinition scenario, int cycles, ulong seed) => new SynchronisedSwimmingReferee(this, scenario, cycles, seed);

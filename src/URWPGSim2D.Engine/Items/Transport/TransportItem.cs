@@ -24,14 +24,7 @@ internal sealed class TransportItem() : CompetitionItem(
             zones[i] = TraceZone.Circle("hole", i, TransportLayout.Holes[i], TransportLayout.HoleRadius);
         }
 
-        return TransportLayout.Scenario() with
-        {
-            Cycles = DefaultCycles,
-            Seed = seed,
-            Item = this,
-            BallValues = [1, 1, 1, 1, 1, 1],
-            Zones = zones,
-        };
+        return FromLayout(TransportLayout.Scenario(), seed, ballValues: [1, 1, 1, 1, 1, 1], zones: zones);
     }
 
     /// <inheritdoc/>

@@ -5,15 +5,13 @@ namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 /// its file holds every match of the shard; missing, left as <c>.partial</c>, cut short or garbled
 /// files are played again; a file of another batch or another shard is refused, naming the file.
 /// </summary>
-public sealed class ShardResultsTests : IDisposable
+public sealed class ShardResultsTests : TempFolderTest
 {
     private static readonly BatchHeader Whole = new("default", string.Empty, "chase-ball;chase-ball", "scenario", 100, 1, 6, 3, 0, 1);
 
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-shards-" + Guid.NewGuid().ToString("N"));
-
     public ShardResultsTests()
+        : base("urwpg-shards-")
     {
-        Directory.CreateDirectory(_folder);
         for (int i = 0; i < 3; i++)
         {
             var run = CliRun.Of(string.Empty, "run", "--item", "default", "--batch", "6", "--cycles", "3", "--shard", $"{i}/3", "--threads", "1", "--results", Shard(i));
@@ -21,24 +19,22 @@ public sealed class ShardResultsTests : IDisposable
         }
     }
 
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     [Fact]
-    public void EveryShardDoneLeavesNothingToPlay() => Assert.Empty(ShardResults.ToPlay(_folder, Whole, 3));
+    public void EveryShardDoneLeavesNothingToPlay() => Assert.Empty(ShardResults.ToPlay(Folder, Whole, 3));
 
     [Fact]
     public void AnEmptyOrAbsentFolderPlaysEveryShard() =>
-        Assert.Equal([0, 1, 2, 3], ShardResults.ToPlay(Path.Combine(_folder, "not there"), Whole, 4));
+        Assert.Equal([0, 1, 2, 3], ShardResults.ToPlay(Path.Combine(Folder, "not there"), Whole, 4));
 
     [Fact]
     public void MissingPartialShortAndGarbledShardsArePlayedAgain()
     {
         File.Move(Shard(0), Shard(0) + ".partial");                                     // stopped before the rename
         File.WriteAllLines(Shard(2), File.ReadAllLines(Shard(2)).Take(2));              // header and 1 of its 2 matches
-        Assert.Equal([0, 2], ShardResults.ToPlay(_folder, Whole, 3));
+        Assert.Equal([0, 2], ShardResults.ToPlay(Folder, Whole, 3));
 
         File.WriteAllText(Shard(1), File.ReadAllText(Shard(1))[..40]);                  // not JSON any more
-        Assert.Equal([0, 1, 2], ShardResults.ToPlay(_folder, Whole, 3));
+        Assert.Equal([0, 1, 2], ShardResults.ToPlay(Folder, Whole, 3));
     }
 
     [Fact]
@@ -46,16 +42,16 @@ public sealed class ShardResultsTests : IDisposable
     {
         string[] lines = File.ReadAllLines(Shard(1));
         File.WriteAllLines(Shard(1), [lines[0], lines[2], lines[1]]); // both matches, out of order
-        Assert.Equal([1], ShardResults.ToPlay(_folder, Whole, 3));
+        Assert.Equal([1], ShardResults.ToPlay(Folder, Whole, 3));
     }
 
     [Fact]
     public void AFileOfAnotherBatchIsRefusedNamingIt()
     {
-        var e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(_folder, Whole with { Cycles = 4 }, 3));
+        var e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(Folder, Whole with { Cycles = 4 }, 3));
         Assert.Equal($"{Shard(0)}: belongs to another batch (3 vs 4 cycles); use another --slurm folder or delete its shard files", e.Message);
 
-        e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(_folder, Whole, 2));
+        e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(Folder, Whole, 2));
         Assert.Equal($"{Shard(0)}: belongs to another batch (3 vs 2 shards); use another --slurm folder or delete its shard files", e.Message);
     }
 
@@ -63,9 +59,9 @@ public sealed class ShardResultsTests : IDisposable
     public void AFileOfAnotherShardIsRefusedNamingIt()
     {
         File.Copy(Shard(0), Shard(1), overwrite: true);
-        var e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(_folder, Whole, 3));
+        var e = Assert.Throws<ResultFileException>(() => ShardResults.ToPlay(Folder, Whole, 3));
         Assert.Equal($"{Shard(1)}: holds shard 0/3, not 1/3", e.Message);
     }
 
-    private string Shard(int i) => Path.Combine(_folder, ShardResults.FileName(i));
+    private string Shard(int i) => Path.Combine(Folder, ShardResults.FileName(i));
 }

@@ -4,7 +4,7 @@ namespace URWPGSim2D.Server.Tests.Batch.Slurm;
 /// <see cref="ShellWord"/>: bash reads every quoted word back as exactly the string it came from,
 /// whatever it holds (spaces, both quotes, <c>$</c>, backquotes, backslashes, globs, line breaks).
 /// </summary>
-public sealed class ShellWordTests : IDisposable
+public sealed class ShellWordTests() : TempFolderTest("urwpg-shellword-")
 {
     private static readonly string[] Nasty =
     [
@@ -12,12 +12,6 @@ public sealed class ShellWordTests : IDisposable
         "a\nb", "tab\there", "*", "?", "[ab]", "~", "~root", "-n", "-e", "--x=y", "=a", "a=b", "!", "!!", "#c", ";", "&&",
         "|", "<in", ">out", "()", "{a,b}", "%a", "%%", "é ü 中", "/tmp/my results/it's \"q\" $y/shard-%a.txt",
     ];
-
-    private readonly string _folder = Path.Combine(Path.GetTempPath(), "urwpg-shellword-" + Guid.NewGuid().ToString("N"));
-
-    public ShellWordTests() => Directory.CreateDirectory(_folder);
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
 
     [Theory]
     [InlineData("--batch", "--batch")]
@@ -57,12 +51,12 @@ public sealed class ShellWordTests : IDisposable
 
     private void AssertRoundTrip(string[] words, string what = "the nasty words")
     {
-        string recorder = Bash.Recorder(Path.Combine(_folder, "record"));
-        string record = Path.Combine(_folder, "calls");
+        string recorder = Bash.Recorder(Path.Combine(Folder, "record"));
+        string record = Path.Combine(Folder, "calls");
         File.Delete(record);
-        string script = Path.Combine(_folder, "script.sh");
+        string script = Path.Combine(Folder, "script.sh");
         File.WriteAllText(script, ShellWord.Quote(recorder) + " " + string.Join(" ", words.Select(ShellWord.Quote)) + "\n");
-        var (code, _, stderr) = Bash.Run(script, _folder, new() { ["RECORD"] = record });
+        var (code, _, stderr) = Bash.Run(script, Folder, new() { ["RECORD"] = record });
         Assert.True(code == 0, $"{what}: bash exited {code}: {stderr}");
         var call = Assert.Single(Bash.Records(record));
         for (int i = 0; i < words.Length; i++)

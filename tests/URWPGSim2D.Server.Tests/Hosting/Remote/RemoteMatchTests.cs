@@ -11,12 +11,8 @@ namespace URWPGSim2D.Server.Tests.Hosting.Remote;
 /// (<see cref="InProcessStaticsCollection"/>).
 /// </summary>
 [Collection(InProcessStaticsCollection.Name)]
-public sealed class RemoteMatchTests : IDisposable
+public sealed class RemoteMatchTests() : TempFolderTest("urwpg-remote-")
 {
-    private readonly string _folder = Directory.CreateTempSubdirectory("urwpg-remote-").FullName;
-
-    public void Dispose() => Directory.Delete(_folder, recursive: true);
-
     public static IEnumerable<object[]> Items()
     {
         foreach (var item in ItemRegistry.All)
@@ -29,10 +25,10 @@ public sealed class RemoteMatchTests : IDisposable
     [MemberData(nameof(Items))]
     public void A_remote_team_plays_the_same_match_as_in_process(string item)
     {
-        string sdk = SteadyStrategy.Write(_folder);
+        string sdk = SteadyStrategy.Write(Folder);
         foreach (string spec in new[] { sdk, OriginalStrategyTests.Folder("Dribbler") })
         {
-            string local = Path.Combine(_folder, "local.jsonl"), remote = Path.Combine(_folder, "remote.jsonl");
+            string local = Path.Combine(Folder, "local.jsonl"), remote = Path.Combine(Folder, "remote.jsonl");
             string[] match = ["run", "--item", item, "--seed", "3", "--cycles", "150", "--strategy-timeout", "20000", "--force", "--trace"];
             var a = CliRun.Of(string.Empty, [.. match, local, "--strategy", "0=" + spec, "--isolation", "none"]);
             var (b, client) = Remote([.. match, remote, "--strategy", "0=remote:0"], port => ["connect", $"127.0.0.1:{port}", spec]);
@@ -91,7 +87,7 @@ public sealed class RemoteMatchTests : IDisposable
     [Fact]
     public void A_server_without_a_client_gives_up_after_the_wait_with_one_line_and_exit_2()
     {
-        string trace = Path.Combine(_folder, "never.jsonl");
+        string trace = Path.Combine(Folder, "never.jsonl");
         var stderr = new WatchedWriter();
         var result = Server(["run", "--cycles", "20", "--strategy", "0=remote:0", "--remote-wait", "1", "--trace", trace], stderr);
         Assert.Equal(2, result.ExitCode);
@@ -160,7 +156,7 @@ public sealed class RemoteMatchTests : IDisposable
     [Fact]
     public void Connect_reports_a_strategy_it_cannot_load_with_exit_3()
     {
-        var result = CliRun.Of(string.Empty, "connect", "127.0.0.1:7000", Path.Combine(_folder, "missing.dll"));
+        var result = CliRun.Of(string.Empty, "connect", "127.0.0.1:7000", Path.Combine(Folder, "missing.dll"));
         Assert.Equal(3, result.ExitCode);
         Assert.DoesNotContain("   at ", result.Stderr, StringComparison.Ordinal);
     }

@@ -1,6 +1,5 @@
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Engine.Items.Demo;
-using URWPGSim2D.Testing;
 using Xunit.Sdk;
 
 namespace URWPGSim2D.Server.Tests.Items.Demo;
