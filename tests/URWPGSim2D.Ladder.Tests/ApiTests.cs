@@ -1,11 +1,3 @@
-using System;
-using System.Net.Http;
-using System.Text;
-using System.Text.Json;
-using System.Threading.Tasks;
-using URWPGSim2D.Ladder.Play;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>The JSON API's guards: who may do what, bad input as HTTP 400 with one JSON line, cross-site requests refused, a team's logs its own. No worker runs: nothing here waits for a match.</summary>

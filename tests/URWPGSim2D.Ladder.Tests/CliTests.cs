@@ -1,8 +1,3 @@
-using System;
-using System.IO;
-using System.Threading.Tasks;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>

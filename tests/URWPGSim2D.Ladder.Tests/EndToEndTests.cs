@@ -1,11 +1,3 @@
-using System;
-using System.IO;
-using System.Linq;
-using System.Net.Http;
-using System.Text.Json;
-using System.Threading.Tasks;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>
@@ -27,23 +19,8 @@ public sealed class EndToEndTests : IAsyncLifetime
         Directory.Delete(_sources, recursive: true);
     }
 
-    private const string Still = """
-        using System;
-        using URWPGSim2D.Strategies;
-
-        public sealed class Still : IStrategy
-        {
-            public string TeamName => "still";
-
-            public void Decide(MatchSnapshot snapshot, ReadOnlySpan<int> fish, Span<Decision> decisions)
-            {
-                for (int k = 0; k < decisions.Length; k++)
-                {
-                    decisions[k] = Decision.Stop;
-                }
-            }
-        }
-        """;
+    // A team whose fish do not move.
+    private static readonly string Still = URWPGSim2D.Testing.SdkStrategy.Source("Still", "still", "d.Fill(Decision.Stop);");
 
     [Fact]
     public async Task TeamsSubmitMatchesPlayAndTheStandingsOrderKnownStrengths()

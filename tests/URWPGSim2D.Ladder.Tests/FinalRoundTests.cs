@@ -1,13 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-using System.Net.Http;
-using System.Text.Json;
-using System.Threading.Tasks;
-using URWPGSim2D.Ladder.Storage;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>

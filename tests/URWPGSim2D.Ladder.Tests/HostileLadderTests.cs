@@ -1,12 +1,4 @@
-using System;
-using System.IO;
-using System.Linq;
-using System.Net.Http;
-using System.Text;
-using System.Text.Json;
-using System.Threading.Tasks;
 using URWPGSim2D.Hosting;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 

@@ -1,12 +1,5 @@
-using System;
-using System.IO;
-using System.Net.Http;
 using System.Net.Http.Headers;
-using System.Text;
-using System.Text.Json;
 using System.Threading;
-using System.Threading.Tasks;
-using URWPGSim2D.Ladder.Play;
 using URWPGSim2D.Ladder.Web;
 
 namespace URWPGSim2D.Ladder.Tests;

@@ -1,10 +1,5 @@
-using System;
-using System.IO;
-using System.Linq;
 using System.Text.RegularExpressions;
-using System.Threading.Tasks;
 using URWPGSim2D.Server.Viewer.Tests;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 
@@ -31,17 +26,8 @@ public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
         Directory.Delete(_sources, recursive: true);
     }
 
-    private const string Still = """
-        using System;
-        using URWPGSim2D.Strategies;
-
-        public sealed class Still : IStrategy
-        {
-            public string TeamName => "still";
-
-            public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) => d.Fill(Decision.Stop);
-        }
-        """;
+    // A team whose fish do not move.
+    private static readonly string Still = URWPGSim2D.Testing.SdkStrategy.Source("Still", "still", "d.Fill(Decision.Stop);");
 
     private string Url(string path) => _host.Server.Url.TrimEnd('/') + path;
 

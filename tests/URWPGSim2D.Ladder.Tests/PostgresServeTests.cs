@@ -1,10 +1,4 @@
-using System;
-using System.IO;
-using System.Linq;
-using System.Threading.Tasks;
-using URWPGSim2D.Ladder.Storage;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 

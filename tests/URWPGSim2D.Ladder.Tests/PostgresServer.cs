@@ -1,10 +1,6 @@
-using System;
 using System.Diagnostics;
-using System.IO;
-using System.Linq;
 using System.Threading;
 using Npgsql;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 

@@ -1,10 +1,3 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-using URWPGSim2D.Ladder.Storage;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>

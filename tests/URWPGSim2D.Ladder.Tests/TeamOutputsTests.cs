@@ -1,11 +1,3 @@
-using System;
-using System.IO;
-using System.Linq;
-using System.Net.Http;
-using System.Text;
-using System.Threading.Tasks;
-using Xunit;
-
 namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>

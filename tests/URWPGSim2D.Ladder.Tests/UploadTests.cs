@@ -1,10 +1,4 @@
-using System;
-using System.IO;
 using System.IO.Compression;
-using System.Linq;
-using System.Text;
-using URWPGSim2D.Ladder.Play;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 

@@ -1,13 +1,6 @@
-using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-using System.Threading.Tasks;
 using URWPGSim2D.Engine.Items.Catalog;
 using URWPGSim2D.Hosting;
-using URWPGSim2D.Ladder.Play;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 

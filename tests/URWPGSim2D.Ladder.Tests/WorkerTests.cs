@@ -1,13 +1,6 @@
-using System;
-using System.Collections.Generic;
 using System.Diagnostics;
-using System.IO;
-using System.Linq;
 using System.Text.RegularExpressions;
-using System.Threading.Tasks;
-using URWPGSim2D.Ladder.Storage;
 using URWPGSim2D.Tournament;
-using Xunit;
 
 namespace URWPGSim2D.Ladder.Tests;
 
