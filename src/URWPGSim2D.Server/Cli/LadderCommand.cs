@@ -224,14 +224,11 @@ internal sealed class LadderCommand : ICliCommand
         var (values, positional) = Words(words, "ladder serve", Serve, usage, ServeHelp, out bool help);
         if (help)
         {
-            console.Out.Write($"Usage: {usage}\n\nRuns the ladder service until stopped (Ctrl+C). Options:\n{ServeLine.OptionTable(24)}More: docs/ladder.md.\n");
+            WriteHelp(console, usage, "Runs the ladder service until stopped (Ctrl+C).", ServeLine.OptionTable(24));
             return ExitCodes.Success;
         }
 
-        if (positional.Count > 0)
-        {
-            throw new CliUsageException($"ladder serve: unexpected argument {MessageText.Quote(positional[0])}", usage);
-        }
+        RefuseArguments("ladder serve", positional, usage);
 
         var settings = new LadderSettings();
         if (values.TryGetValue(ItemOption, out string? item))
@@ -321,7 +318,7 @@ internal sealed class LadderCommand : ICliCommand
         var (values, positional) = Words(words, "ladder team add", Add, usage, AddHelp, out bool help);
         if (help)
         {
-            console.Out.Write($"Usage: {usage}\n\nAdds a team to a running ladder and prints its token alone on the last line. Options:\n{AddLine.OptionTable(28)}More: docs/ladder.md.\n");
+            WriteHelp(console, usage, "Adds a team to a running ladder and prints its token alone on the last line.", AddLine.OptionTable(28));
             return ExitCodes.Success;
         }
 
@@ -368,8 +365,8 @@ internal sealed class LadderCommand : ICliCommand
         var (values, positional) = Words(words, "ladder submit", Submit, usage, SubmitHelp, out bool help);
         if (help)
         {
-            console.Out.Write($"Usage: {usage}\n\nUploads a team's strategy: a folder of .cs files, one .cs file or a DLL (also one built for the original).\n" +
-                $"It is compiled and checked once; the compile errors are printed as run prints them (exit 2). Options:\n{SubmitLine.OptionTable(14)}More: docs/ladder.md.\n");
+            WriteHelp(console, usage, "Uploads a team's strategy: a folder of .cs files, one .cs file or a DLL (also one built for the original).\n" +
+                "It is compiled and checked once; the compile errors are printed as run prints them (exit 2).", SubmitLine.OptionTable(14));
             return ExitCodes.Success;
         }
 
@@ -405,15 +402,12 @@ internal sealed class LadderCommand : ICliCommand
         var (values, positional) = Words(words, "ladder worker", Worker, usage, WorkerHelp, out bool help);
         if (help)
         {
-            console.Out.Write($"Usage: {usage}\n\nPlays the matches a ladder service queues in its PostgreSQL database, beside it, until stopped (Ctrl+C).\n" +
-                $"DIR must be the service's data folder (the same path on every machine). Options:\n{WorkerLine.OptionTable(24)}More: docs/ladder.md.\n");
+            WriteHelp(console, usage, "Plays the matches a ladder service queues in its PostgreSQL database, beside it, until stopped (Ctrl+C).\n" +
+                "DIR must be the service's data folder (the same path on every machine).", WorkerLine.OptionTable(24));
             return ExitCodes.Success;
         }
 
-        if (positional.Count > 0)
-        {
-            throw new CliUsageException($"ladder worker: unexpected argument {MessageText.Quote(positional[0])}", usage);
-        }
+        RefuseArguments("ladder worker", positional, usage);
 
         string database = values.GetValueOrDefault(WorkerDatabaseOption) ?? throw new CliUsageException("ladder worker: --database CONNECTION is required", usage);
         var settings = new LadderSettings { Database = database.Length > 0 ? database : throw new CliUsageException("ladder worker: --database needs a connection string, got \"\"", null) };
@@ -478,15 +472,12 @@ internal sealed class LadderCommand : ICliCommand
         var (values, positional) = Words(words, "ladder final", Final, usage, FinalHelp, out bool help);
         if (help)
         {
-            console.Out.Write($"Usage: {usage}\n\nStarts the final round: every pair of the top K teams plays N matches (sides alternate), ranked play\n" +
-                $"stops and the standings become those of the final's matches. Options:\n{FinalLine.OptionTable(20)}More: docs/ladder.md.\n");
+            WriteHelp(console, usage, "Starts the final round: every pair of the top K teams plays N matches (sides alternate), ranked play\n" +
+                "stops and the standings become those of the final's matches.", FinalLine.OptionTable(20));
             return ExitCodes.Success;
         }
 
-        if (positional.Count > 0)
-        {
-            throw new CliUsageException($"ladder final: unexpected argument {MessageText.Quote(positional[0])}", usage);
-        }
+        RefuseArguments("ladder final", positional, usage);
 
         string server = values.GetValueOrDefault(FinalServerOption) ?? throw new CliUsageException("ladder final: --server URL is required", usage);
         string admin = values.GetValueOrDefault(FinalAdminOption) ?? throw new CliUsageException("ladder final: --admin-token T is required", usage);
@@ -506,4 +497,17 @@ internal sealed class LadderCommand : ICliCommand
     private static int Number(string command, string name, string value, int low, int high) =>
         int.TryParse(value, NumberStyles.None, CultureInfo.InvariantCulture, out int n) && n >= low && n <= high ? n
         : throw new CliUsageException(string.Create(CultureInfo.InvariantCulture, $"{command}: {name} must be a whole number from {low} to {high}, got {MessageText.Quote(value)}"), null);
+
+    // A subcommand's --help: its usage, what it does, its options.
+    private static void WriteHelp(CliConsole console, string usage, string about, string options) =>
+        console.Out.Write($"Usage: {usage}\n\n{about} Options:\n{options}More: docs/ladder.md.\n");
+
+    // A subcommand that takes no argument refuses the first one given.
+    private static void RefuseArguments(string command, IReadOnlyList<string> positional, string usage)
+    {
+        if (positional.Count > 0)
+        {
+            throw new CliUsageException($"{command}: unexpected argument {MessageText.Quote(positional[0])}", usage);
+        }
+    }
 }
