@@ -87,10 +87,10 @@ internal sealed class ContactEvents
         foreach (int cluster in _clusters.ClustersByTime())
         {
             _hits.Clear();
-            for (int i = 0; i < count; i++)
+            for (int i = _clusters.FirstOf(cluster); i >= 0; i = _clusters.NextOf(i))
             {
                 int slot = _clusters.Slot[i];
-                if (_clusters.Label[i] == cluster && _table.IsCurrent(slot, _clusters.Generation[i]))
+                if (_table.IsCurrent(slot, _clusters.Generation[i]))
                 {
                     _hits.Add(slot, _clusters.Value[i]);
                 }

@@ -9,6 +9,9 @@ internal sealed class HitClusters
 {
     private int[] _order = new int[16];
     private double[] _clusterTime = new double[16];
+    private int[] _clusterOf = new int[16];
+    private int[] _first = new int[16];
+    private int[] _next = new int[16];
     private int _clusters;
     private PairTable? _table;
     private int[] _firstHitOf = [-1, -1, -1, -1, -1, -1, -1, -1];
@@ -66,6 +69,9 @@ internal sealed class HitClusters
             Label = new int[size];
             _order = new int[size];
             _clusterTime = new double[size];
+            _clusterOf = new int[size];
+            _first = new int[size];
+            _next = new int[size];
         }
     }
 
@@ -94,22 +100,31 @@ internal sealed class HitClusters
             Forget(_table!.Pair(Slot[i]));
         }
 
+        // Each cluster (by its root, in ascending order) with its earliest estimate, and its hits
+        // chained in ascending order; one pass each.
         _clusters = 0;
         for (int i = 0; i < Count; i++)
         {
-            if (Label[i] != i)
+            if (Label[i] == i)
             {
-                continue;
+                _clusterOf[i] = _clusters;
+                _first[i] = -1;
+                _order[_clusters] = i;
+                _clusterTime[_clusters++] = double.PositiveInfinity;
             }
+        }
 
-            double earliest = double.PositiveInfinity;
-            for (int k = 0; k < Count; k++)
-            {
-                earliest = Label[k] == i ? Math.Min(earliest, Estimate[k]) : earliest;
-            }
+        for (int k = 0; k < Count; k++)
+        {
+            int c = _clusterOf[Label[k]];
+            _clusterTime[c] = Math.Min(_clusterTime[c], Estimate[k]);
+        }
 
-            _order[_clusters] = i;
-            _clusterTime[_clusters++] = earliest;
+        for (int k = Count - 1; k >= 0; k--)
+        {
+            int root = Label[k];
+            _next[k] = _first[root];
+            _first[root] = k;
         }
 
         // Insertion sort by estimated time (ties: lower label first).
@@ -166,6 +181,12 @@ internal sealed class HitClusters
 
     /// <summary>The cluster labels, earliest estimated contact first.</summary>
     public ReadOnlySpan<int> ClustersByTime() => _order.AsSpan(0, _clusters);
+
+    /// <summary>The first hit (in hit order) of a cluster, by its label from <see cref="ClustersByTime"/>.</summary>
+    public int FirstOf(int cluster) => _first[cluster];
+
+    /// <summary>The next hit of the same cluster after hit <paramref name="hit"/>, or −1.</summary>
+    public int NextOf(int hit) => _next[hit];
 
     // The moving bodies of a pair (b = −1 for a static body or the walls).
     private static void Movers(in PlannedPair p, out int a, out int b) => (a, b) = (p.MoverA, p.MoverB);

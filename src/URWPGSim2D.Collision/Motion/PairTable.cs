@@ -15,10 +15,7 @@ internal sealed class PairTable
     private const int None = -1;
 
     private int[] _moverHead;
-    private int[] _edgeNext = new int[128];
-    private int[] _edgePrev = new int[128];
-    private int[] _moverA = new int[64];
-    private int[] _moverB = new int[64];
+    private Edge[] _edge = new Edge[128];
     private int[] _free = new int[64];
     private int _freeCount;
     private int _used;
@@ -38,63 +35,64 @@ internal sealed class PairTable
         Clear();
     }
 
-    private PlannedPair[] _pair = new PlannedPair[64];
-    private float[] _rate = new float[64];
-    private double[] _interval = new double[64];
-    private double[] _lastFree = new double[64];
-    private bool[] _apartAtLastFree = new bool[64];
-    private int[] _generation = new int[64];
-    private int[] _visited = new int[64];
-    private bool[] _alive = new bool[64];
+    // A slot's data together (what one sample or one re-plan of a pair reads and writes lies on
+    // one or two cache lines rather than on one line in each of eight arrays).
+    private Slot[] _slot = new Slot[64];
 
     /// <summary>The pair in a slot.</summary>
-    public ref readonly PlannedPair Pair(int slot) => ref _pair[slot];
+    public ref readonly PlannedPair Pair(int slot) => ref _slot[slot].Pair;
 
     /// <summary>Most the two bodies of a slot's pair move relative to each other over a whole step, mm.</summary>
-    public float Rate(int slot) => _rate[slot];
+    public float Rate(int slot) => _slot[slot].Rate;
 
     /// <summary>A slot's sampling interval, a fraction of the step (a power of two: 1, 1/2, … 1/<see cref="TickQueue.Ticks"/>).</summary>
-    public double Interval(int slot) => _interval[slot];
+    public double Interval(int slot) => _slot[slot].Interval;
 
     /// <summary>Last time (fraction of the step) a slot's pair was planned or sampled apart.</summary>
-    public double LastFree(int slot) => _lastFree[slot];
+    public double LastFree(int slot) => _slot[slot].LastFree;
 
     /// <summary>Whether a slot's pair was seen apart at <see cref="LastFree"/> (a pair planned while its bounds overlap was not).</summary>
-    public bool ApartAtLastFree(int slot) => _apartAtLastFree[slot];
+    public bool ApartAtLastFree(int slot) => _slot[slot].ApartAtLastFree;
 
     /// <summary>A slot's generation: it changes each time the slot is freed.</summary>
-    public int Generation(int slot) => _generation[slot];
+    public int Generation(int slot) => _slot[slot].Generation;
 
     /// <summary>Whether a slot holds a pair.</summary>
-    public bool IsAlive(int slot) => _alive[slot];
+    public bool IsAlive(int slot) => _slot[slot].Alive;
 
     /// <summary>Whether a slot still holds the pair it held at <paramref name="generation"/> (a queue entry or a held hit is not stale).</summary>
-    public bool IsCurrent(int slot, int generation) => _alive[slot] && _generation[slot] == generation;
+    public bool IsCurrent(int slot, int generation)
+    {
+        ref readonly Slot s = ref _slot[slot];
+        return s.Alive && s.Generation == generation;
+    }
 
     /// <summary>Records whether a slot's pair was apart at its last free time.</summary>
-    public void SetApartAtLastFree(int slot, bool apart) => _apartAtLastFree[slot] = apart;
+    public void SetApartAtLastFree(int slot, bool apart) => _slot[slot].ApartAtLastFree = apart;
 
     /// <summary>A slot's pair was sampled apart at <paramref name="time"/>.</summary>
     public void MarkFree(int slot, double time)
     {
-        _lastFree[slot] = time;
-        _apartAtLastFree[slot] = true;
+        ref Slot s = ref _slot[slot];
+        s.LastFree = time;
+        s.ApartAtLastFree = true;
     }
 
     /// <summary>Marks a slot visited by a pass that took <paramref name="stamp"/> from <see cref="NextStamp"/>; false when it already was.</summary>
     public bool Visit(int slot, int stamp)
     {
-        if (_visited[slot] == stamp)
+        ref int visited = ref _slot[slot].Visited;
+        if (visited == stamp)
         {
             return false;
         }
 
-        _visited[slot] = stamp;
+        visited = stamp;
         return true;
     }
 
     /// <summary>Slots the storage holds now (it grows by doubling).</summary>
-    public int Capacity => _pair.Length;
+    public int Capacity => _slot.Length;
 
     /// <summary>Slots ever used since the last <see cref="Clear"/> (alive or free).</summary>
     public int Used => _used;
@@ -104,7 +102,11 @@ internal sealed class PairTable
     {
         if (++_stamp == int.MaxValue)
         {
-            Array.Clear(_visited);
+            for (int i = 0; i < _slot.Length; i++)
+            {
+                _slot[i].Visited = 0;
+            }
+
             _stamp = 1;
         }
 
@@ -115,7 +117,11 @@ internal sealed class PairTable
     public void Clear()
     {
         Array.Fill(_moverHead, None);
-        Array.Clear(_alive, 0, _used);
+        for (int i = 0; i < _used; i++)
+        {
+            _slot[i].Alive = false;
+        }
+
         _used = 0;
         _freeCount = 0;
     }
@@ -127,13 +133,12 @@ internal sealed class PairTable
     public int Add(in PlannedPair pair, float rate, double interval, double plannedAt)
     {
         int slot = _freeCount > 0 ? _free[--_freeCount] : Grow();
-        _pair[slot] = pair;
-        _rate[slot] = rate;
-        _alive[slot] = true;
-        _interval[slot] = interval;
-        _lastFree[slot] = plannedAt;
-        _moverA[slot] = pair.MoverA;
-        _moverB[slot] = pair.MoverB;
+        ref Slot s = ref _slot[slot];
+        s.Pair = pair;
+        s.Rate = rate;
+        s.Alive = true;
+        s.Interval = interval;
+        s.LastFree = plannedAt;
         Link(2 * slot, pair.MoverA);
         if (pair.MoverB != None)
         {
@@ -147,7 +152,7 @@ internal sealed class PairTable
     public int FirstEdge(int mover) => _moverHead[mover];
 
     /// <summary>The next edge in the same mover's list, or −1.</summary>
-    public int NextEdge(int edge) => _edgeNext[edge];
+    public int NextEdge(int edge) => _edge[edge].Next;
 
     /// <summary>Frees every pair of a mover (and unlinks it from its partners' lists).</summary>
     public void RemoveAllOf(int mover)
@@ -160,14 +165,15 @@ internal sealed class PairTable
 
     private void Remove(int slot)
     {
-        Unlink(2 * slot, _moverA[slot]);
-        if (_moverB[slot] != None)
+        ref Slot s = ref _slot[slot];
+        Unlink(2 * slot, s.Pair.MoverA);
+        if (s.Pair.MoverB != None)
         {
-            Unlink((2 * slot) + 1, _moverB[slot]);
+            Unlink((2 * slot) + 1, s.Pair.MoverB);
         }
 
-        _alive[slot] = false;
-        _generation[slot]++;
+        s.Alive = false;
+        s.Generation++;
         if (_freeCount == _free.Length)
         {
             Array.Resize(ref _free, _free.Length * 2);
@@ -179,11 +185,10 @@ internal sealed class PairTable
     private void Link(int edge, int mover)
     {
         int head = _moverHead[mover];
-        _edgeNext[edge] = head;
-        _edgePrev[edge] = None;
+        _edge[edge] = new Edge(head, None);
         if (head != None)
         {
-            _edgePrev[head] = edge;
+            _edge[head].Prev = edge;
         }
 
         _moverHead[mover] = edge;
@@ -191,26 +196,26 @@ internal sealed class PairTable
 
     private void Unlink(int edge, int mover)
     {
-        int prev = _edgePrev[edge], next = _edgeNext[edge];
+        (int next, int prev) = (_edge[edge].Next, _edge[edge].Prev);
         if (prev == None)
         {
             _moverHead[mover] = next;
         }
         else
         {
-            _edgeNext[prev] = next;
+            _edge[prev].Next = next;
         }
 
         if (next != None)
         {
-            _edgePrev[next] = prev;
+            _edge[next].Prev = prev;
         }
     }
 
     /// <summary>Makes room for at least <paramref name="slots"/> pairs (so a step does not grow the storage).</summary>
     public void Reserve(int slots)
     {
-        while (_pair.Length < slots)
+        while (_slot.Length < slots)
         {
             GrowStorage();
         }
@@ -223,7 +228,7 @@ internal sealed class PairTable
 
     private int Grow()
     {
-        if (_used == _pair.Length)
+        if (_used == _slot.Length)
         {
             GrowStorage();
         }
@@ -233,24 +238,34 @@ internal sealed class PairTable
 
     private void GrowStorage()
     {
-        int size = _pair.Length * 2;
-        _pair = Resized(_pair, size);
-        _rate = Resized(_rate, size);
-        _interval = Resized(_interval, size);
-        _lastFree = Resized(_lastFree, size);
-        _apartAtLastFree = Resized(_apartAtLastFree, size);
-        _generation = Resized(_generation, size);
-        _alive = Resized(_alive, size);
-        _visited = Resized(_visited, size);
-        _moverA = Resized(_moverA, size);
-        _moverB = Resized(_moverB, size);
-        _edgeNext = Resized(_edgeNext, 2 * size);
-        _edgePrev = Resized(_edgePrev, 2 * size);
+        int size = _slot.Length * 2;
+        _slot = Resized(_slot, size);
+        _edge = Resized(_edge, 2 * size);
     }
 
     private static T[] Resized<T>(T[] array, int size)
     {
         Array.Resize(ref array, size);
         return array;
+    }
+
+    // One slot: the pair, its clock and its bookkeeping.
+    private struct Slot
+    {
+        public PlannedPair Pair;
+        public double Interval;
+        public double LastFree;
+        public float Rate;
+        public int Generation;
+        public int Visited;
+        public bool Alive;
+        public bool ApartAtLastFree;
+    }
+
+    // One end of a slot in a mover's list of pairs (edge 2·slot for mover A, 2·slot + 1 for mover B).
+    private struct Edge(int next, int prev)
+    {
+        public int Next = next;
+        public int Prev = prev;
     }
 }
