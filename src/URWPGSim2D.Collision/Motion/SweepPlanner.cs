@@ -22,11 +22,7 @@ internal sealed class SweepPlanner
     private Body[] _statics = [];
     private Body? _walls;
     private Aabb[] _boxes = [];
-    private Vector2[] _velocity = [];
-    private float[] _spin = [];
-    private float[] _rate = [];
-    private Vector2[] _center = [];
-    private float[] _radius = [];
+    private Sweep[] _sweep = [];
     private PairList _found = new(256);
     private IndexList _near = new(64);
     private bool _loaded; // the broad phase holds the current bodies' boxes
@@ -40,7 +36,7 @@ internal sealed class SweepPlanner
     public ReadOnlySpan<Body> MoverBodies => _movers;
 
     /// <summary>A mover's swept circle as last measured (its bounding circle grown by its travel to the end of the step).</summary>
-    public Disc SweptCircle(int m) => new(_center[m], _radius[m]);
+    public Disc SweptCircle(int m) => new(_sweep[m].Center, _sweep[m].Radius);
 
     /// <summary>Duration of the step being planned, s.</summary>
     public float Seconds { get; set; } = 0.1f;
@@ -54,11 +50,7 @@ internal sealed class SweepPlanner
         _loaded = false;
         int m = movers.Length;
         _boxes = new Aabb[m + statics.Length];
-        _velocity = new Vector2[m];
-        _spin = new float[m];
-        _rate = new float[m];
-        _center = new Vector2[m];
-        _radius = new float[m];
+        _sweep = new Sweep[m];
         for (int s = 0; s < statics.Length; s++)
         {
             _boxes[m + s] = statics[s].Bounds;
@@ -155,22 +147,23 @@ internal sealed class SweepPlanner
         float remaining = (float)Math.Max(0.0, 1.0 - time);
         Body body = _movers[m];
         Disc bound = body.Bound();
-        _velocity[m] = body.Velocity;
+        ref Sweep sweep = ref _sweep[m];
+        sweep.Velocity = body.Velocity;
         if (body.Kind == BodyKind.Circle)
         {
-            _spin[m] = 0f;
+            sweep.Spin = 0f;
         }
         else
         {
             float reach = Vector2.Distance(bound.Center, body.Position) + bound.Radius;
-            _spin[m] = MathF.Abs(body.AngularVelocity) * reach * dt;
+            sweep.Spin = MathF.Abs(body.AngularVelocity) * reach * dt;
         }
 
-        _rate[m] = (_velocity[m].Length() * dt) + _spin[m];
-        _center[m] = bound.Center;
-        _radius[m] = bound.Radius + (_rate[m] * remaining);
-        Vector2 half = new(_radius[m] + Margin);
-        _boxes[m] = new Aabb(_center[m] - half, _center[m] + half);
+        sweep.Rate = (sweep.Velocity.Length() * dt) + sweep.Spin;
+        sweep.Center = bound.Center;
+        sweep.Radius = bound.Radius + (sweep.Rate * remaining);
+        Vector2 half = new(sweep.Radius + Margin);
+        _boxes[m] = new Aabb(sweep.Center - half, sweep.Center + half);
     }
 
     // u is a mover; v a mover with v > u, or a static body (proxy ≥ movers). The swept circles are
@@ -184,8 +177,10 @@ internal sealed class SweepPlanner
             return;
         }
 
-        float reach = _radius[u] + _radius[v] + Margin;
-        if (Vector2.DistanceSquared(_center[u], _center[v]) >= reach * reach)
+        ref readonly Sweep su = ref _sweep[u];
+        ref readonly Sweep sv = ref _sweep[v];
+        float reach = su.Radius + sv.Radius + Margin;
+        if (Vector2.DistanceSquared(su.Center, sv.Center) >= reach * reach)
         {
             return;
         }
@@ -197,7 +192,7 @@ internal sealed class SweepPlanner
         }
 
         float limit = 0.5f * (a.Thickness + b.Thickness);
-        float rate = ((_velocity[u] - _velocity[v]).Length() * Seconds) + _spin[u] + _spin[v];
+        float rate = ((su.Velocity - sv.Velocity).Length() * Seconds) + su.Spin + sv.Spin;
         sink.Add(new PlannedPair(a.Id, b.Id, u, v, limit), rate);
     }
 
@@ -205,8 +200,8 @@ internal sealed class SweepPlanner
     private void TryStatic(int m, int s, IPairSink sink)
     {
         Aabb box = _boxes[_movers.Length + s];
-        Vector2 c = _center[m];
-        float r = _radius[m] + Margin;
+        Vector2 c = _sweep[m].Center;
+        float r = _sweep[m].Radius + Margin;
         Vector2 d = Vector2.Max(Vector2.Max(box.Min - c, c - box.Max), Vector2.Zero);
         if (d.LengthSquared() >= r * r)
         {
@@ -220,7 +215,7 @@ internal sealed class SweepPlanner
         }
 
         float limit = 0.5f * (a.Thickness + body.Thickness);
-        sink.Add(new PlannedPair(a.Id, body.Id, m, -1, limit), _rate[m]);
+        sink.Add(new PlannedPair(a.Id, body.Id, m, -1, limit), _sweep[m].Rate);
     }
 
     private void TryWall(int m, IPairSink sink)
@@ -231,13 +226,23 @@ internal sealed class SweepPlanner
         }
 
         Aabb pool = _walls.Bounds;
-        Vector2 c = _center[m];
-        float r = _radius[m] + Margin;
+        Vector2 c = _sweep[m].Center;
+        float r = _sweep[m].Radius + Margin;
         if (c.X - r > pool.Min.X && c.X + r < pool.Max.X && c.Y - r > pool.Min.Y && c.Y + r < pool.Max.Y)
         {
             return;
         }
 
-        sink.Add(new PlannedPair(_movers[m].Id, _walls.Id, m, -1, float.PositiveInfinity), _rate[m]);
+        sink.Add(new PlannedPair(_movers[m].Id, _walls.Id, m, -1, float.PositiveInfinity), _sweep[m].Rate);
+    }
+
+    // A mover's motion over the rest of the step, together (a pair test reads both movers' at once).
+    private struct Sweep
+    {
+        public Vector2 Center;   // bounding circle's centre
+        public float Radius;     // swept circle's radius
+        public Vector2 Velocity; // mm/s
+        public float Spin;       // most a point moves by turning over a whole step, mm
+        public float Rate;       // most a point moves over a whole step, mm
     }
 }

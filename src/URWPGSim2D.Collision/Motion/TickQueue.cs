@@ -20,9 +20,7 @@ internal sealed class TickQueue
     private readonly int[] _head = new int[Ticks + 1];
     private readonly int[] _tail = new int[Ticks + 1];
     private readonly ulong[] _occupied = new ulong[(Ticks + 64) / 64];
-    private int[] _slot = new int[256];
-    private int[] _generation = new int[256];
-    private int[] _next = new int[256];
+    private Node[] _node = new Node[256];
     private int _count;
     private int _freeNodes = None;
     private int _lowest = Ticks + 1;
@@ -57,11 +55,9 @@ internal sealed class TickQueue
     /// <summary>Makes room for at least <paramref name="entries"/> entries per step.</summary>
     public void Reserve(int entries)
     {
-        if (_slot.Length < entries)
+        if (_node.Length < entries)
         {
-            Array.Resize(ref _slot, entries);
-            Array.Resize(ref _generation, entries);
-            Array.Resize(ref _next, entries);
+            Array.Resize(ref _node, entries);
         }
     }
 
@@ -72,23 +68,19 @@ internal sealed class TickQueue
         int node = _freeNodes;
         if (node != None)
         {
-            _freeNodes = _next[node];
+            _freeNodes = _node[node].Next;
         }
         else
         {
-            if (_count == _slot.Length)
+            if (_count == _node.Length)
             {
-                Array.Resize(ref _slot, _count * 2);
-                Array.Resize(ref _generation, _count * 2);
-                Array.Resize(ref _next, _count * 2);
+                Array.Resize(ref _node, _count * 2);
             }
 
             node = _count++;
         }
 
-        _slot[node] = slot;
-        _generation[node] = generation;
-        _next[node] = None;
+        _node[node] = new Node(slot, generation, None);
         if (_head[tick] == None)
         {
             _head[tick] = node;
@@ -96,7 +88,7 @@ internal sealed class TickQueue
         }
         else
         {
-            _next[_tail[tick]] = node;
+            _node[_tail[tick]].Next = node;
         }
 
         _tail[tick] = node;
@@ -147,8 +139,8 @@ internal sealed class TickQueue
     {
         while (first != None)
         {
-            int next = _next[first];
-            _next[first] = _freeNodes;
+            int next = _node[first].Next;
+            _node[first].Next = _freeNodes;
             _freeNodes = first;
             first = next;
         }
@@ -165,9 +157,9 @@ internal sealed class TickQueue
             for (ulong bits = _occupied[w]; bits != 0; bits &= bits - 1)
             {
                 int tick = (w * 64) + BitOperations.TrailingZeroCount(bits);
-                for (int node = _head[tick]; node != None; node = _next[node])
+                for (int node = _head[tick]; node != None; node = _node[node].Next)
                 {
-                    into.Add(tick, _slot[node], _generation[node]);
+                    into.Add(tick, _node[node].Slot, _node[node].Generation);
                 }
             }
         }
@@ -179,11 +171,19 @@ internal sealed class TickQueue
     public void PushTick(int tick, int slot, int generation) => Push((double)tick / Ticks, slot, generation);
 
     /// <summary>The slot of a node.</summary>
-    public int SlotOf(int node) => _slot[node];
+    public int SlotOf(int node) => _node[node].Slot;
 
     /// <summary>The generation a node was scheduled with.</summary>
-    public int GenerationOf(int node) => _generation[node];
+    public int GenerationOf(int node) => _node[node].Generation;
 
     /// <summary>The node after <paramref name="node"/> in its tick, or −1.</summary>
-    public int Next(int node) => _next[node];
+    public int Next(int node) => _node[node].Next;
+
+    // One entry: the pair's slot, its generation when pushed, the next entry of the same tick (or free list).
+    private struct Node(int slot, int generation, int next)
+    {
+        public int Slot = slot;
+        public int Generation = generation;
+        public int Next = next;
+    }
 }
