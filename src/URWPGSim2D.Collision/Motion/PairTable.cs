@@ -20,6 +20,7 @@ internal sealed class PairTable
     private int _freeCount;
     private int _used;
     private int _stamp;
+    private int _life = 1; // a slot is alive while its Life is this (Clear moves it on instead of touching every slot)
 
     public PairTable(int movers)
     {
@@ -58,13 +59,13 @@ internal sealed class PairTable
     public int Generation(int slot) => _slot[slot].Generation;
 
     /// <summary>Whether a slot holds a pair.</summary>
-    public bool IsAlive(int slot) => _slot[slot].Alive;
+    public bool IsAlive(int slot) => _slot[slot].Life == _life;
 
     /// <summary>Whether a slot still holds the pair it held at <paramref name="generation"/> (a queue entry or a held hit is not stale).</summary>
     public bool IsCurrent(int slot, int generation)
     {
         ref readonly Slot s = ref _slot[slot];
-        return s.Alive && s.Generation == generation;
+        return s.Life == _life && s.Generation == generation;
     }
 
     /// <summary>Records whether a slot's pair was apart at its last free time.</summary>
@@ -117,9 +118,14 @@ internal sealed class PairTable
     public void Clear()
     {
         Array.Fill(_moverHead, None);
-        for (int i = 0; i < _used; i++)
+        if (++_life == int.MaxValue)
         {
-            _slot[i].Alive = false;
+            for (int i = 0; i < _slot.Length; i++)
+            {
+                _slot[i].Life = 0;
+            }
+
+            _life = 1;
         }
 
         _used = 0;
@@ -136,7 +142,7 @@ internal sealed class PairTable
         ref Slot s = ref _slot[slot];
         s.Pair = pair;
         s.Rate = rate;
-        s.Alive = true;
+        s.Life = _life;
         s.Interval = interval;
         s.LastFree = plannedAt;
         Link(2 * slot, pair.MoverA);
@@ -172,7 +178,7 @@ internal sealed class PairTable
             Unlink((2 * slot) + 1, s.Pair.MoverB);
         }
 
-        s.Alive = false;
+        s.Life = 0;
         s.Generation++;
         if (_freeCount == _free.Length)
         {
@@ -253,12 +259,12 @@ internal sealed class PairTable
     private struct Slot
     {
         public PlannedPair Pair;
+        public float Rate;
         public double Interval;
         public double LastFree;
-        public float Rate;
         public int Generation;
         public int Visited;
-        public bool Alive;
+        public int Life;
         public bool ApartAtLastFree;
     }
 
