@@ -14,35 +14,8 @@ dotnet build src/URWPGSim2D.Server -c Release -v q --nologo >/dev/null
 server=src/URWPGSim2D.Server/bin/Release/net10.0/URWPGSim2D.Server.dll
 work=$(mktemp -d)
 trap 'kill "${pid:-0}" 2>/dev/null || true; rm -rf "$work"' EXIT
-mkdir -p "$work/toward" "$work/still"
-cat >"$work/toward/Toward.cs" <<'CS'
-using System;
-using System.Numerics;
-using URWPGSim2D.Strategies;
-public sealed class Toward : IStrategy
-{
-    public string TeamName => "toward";
-    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-    {
-        for (int k = 0; k < fish.Length; k++)
-        {
-            FishView me = s.Fish[fish[k]];
-            Vector2 to = s.Balls[k % s.Balls.Length].Position - me.Position;
-            float error = MathF.IEEERemainder(MathF.Atan2(to.Y, to.X) - me.Heading, 2f * MathF.PI);
-            d[k] = new Decision(MathF.Abs(error) < 0.5f ? 12 : 4, 7 + (int)MathF.Round(Math.Clamp(error / 0.5f, -1f, 1f) * 7f));
-        }
-    }
-}
-CS
-cat >"$work/still/Still.cs" <<'CS'
-using System;
-using URWPGSim2D.Strategies;
-public sealed class Still : IStrategy
-{
-    public string TeamName => "still";
-    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { d.Fill(Decision.Stop); }
-}
-CS
+source benchmarks/ladder-strategies.sh
+write_strategies "$work"
 
 now() { date +%s.%N; }
 
