@@ -14,7 +14,7 @@ dotnet build src/URWPGSim2D.Server -c Release -v q --nologo >/dev/null
 server=src/URWPGSim2D.Server/bin/Release/net10.0/URWPGSim2D.Server.dll
 work=$(mktemp -d)
 trap 'kill "${pid:-0}" 2>/dev/null || true; rm -rf "$work"' EXIT
-source benchmarks/ladder-strategies.sh
+source benchmarks/ladder-common.sh
 write_strategies "$work"
 
 now() { date +%s.%N; }
@@ -25,15 +25,7 @@ dotnet "$server" tournament --item ball-grab --minutes 1 --entrant toward="$work
 tournament=$(echo "$(now) - $start" | bc)
 
 start=$(now)
-dotnet "$server" ladder serve --item ball-grab --minutes 1 --data "$work/ladder" --port 0 --admin-token bench-organiser \
-  --workers 1 >"$work/serve.out" 2>"$work/serve.err" &
-pid=$!
-until [ -s "$work/serve.out" ]; do sleep 0.05; done
-url=$(head -1 "$work/serve.out" | cut -d' ' -f4)
-for team in toward still; do
-  token=$(dotnet "$server" ladder team add "$team" --server "$url" --admin-token bench-organiser | tail -1)
-  dotnet "$server" ladder submit --server "$url" --token "$token" "$work/$team" >/dev/null
-done
+serve_ladder "$server" "$work/serve" --data "$work/ladder" --workers 1
 # Counted from the match list, twice a second (the standings' bootstrap is not computed meanwhile).
 played() { curl -s "${url}api/matches?state=done&limit=10000" | grep -o '"id":' | wc -l; }
 until [ "$(played)" -ge "$n" ]; do sleep 0.5; done

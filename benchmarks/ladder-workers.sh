@@ -35,23 +35,16 @@ trap cleanup EXIT
 as_pg "$pgbin/initdb" -D "$pg/data" -U postgres -A trust -E UTF8 --locale=C >/dev/null
 as_pg "$pgbin/pg_ctl" -D "$pg/data" -l "$pg/server.log" -w -o "-k $pg -p 5432 -c listen_addresses='' -c max_connections=200" start >/dev/null
 
-source benchmarks/ladder-strategies.sh
+source benchmarks/ladder-common.sh
 write_strategies "$work"
 now() { date +%s.%N; }
 
 for k in "${counts[@]}"; do
   as_pg "$pgbin/createdb" -h "$pg" -p 5432 -U postgres "ladder_$k"
   db="Host=$pg;Port=5432;Username=postgres;Database=ladder_$k"
-  dotnet "$server" ladder serve --item ball-grab --minutes 1 --data "$work/serve-$k" --database "$db" --port 0 \
-    --admin-token bench-organiser --workers 0 >"$work/serve-$k.out" 2>"$work/serve-$k.err" &
-  serve=$!
+  serve_ladder "$server" "$work/serve-$k" --data "$work/serve-$k" --database "$db" --workers 0
+  serve=$pid
   pids+=("$serve")
-  until [ -s "$work/serve-$k.out" ]; do sleep 0.05; done
-  url=$(head -1 "$work/serve-$k.out" | cut -d' ' -f4)
-  for team in toward still; do
-    token=$(dotnet "$server" ladder team add "$team" --server "$url" --admin-token bench-organiser | tail -1)
-    dotnet "$server" ladder submit --server "$url" --token "$token" "$work/$team" >/dev/null
-  done
 
   start=$(now)
   workers=()
