@@ -9,13 +9,19 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// </summary>
 public sealed class HitClustersTests
 {
-    [Theory]
-    [InlineData(1, 3)]
-    [InlineData(5, 4)]
-    [InlineData(12, 6)]
-    [InlineData(40, 30)]
-    [InlineData(200, 150)]
-    public void ClustersAreTheComponentsInTimeOrder(int count, int movers)
+    // (hits, movers): a single hit, a few hits on few movers (long chains), many hits.
+    private static readonly (int Count, int Movers)[] Cases = [(1, 3), (5, 4), (12, 6), (40, 30), (200, 150)];
+
+    [Fact]
+    public void ClustersAreTheComponentsInTimeOrder()
+    {
+        foreach ((int count, int movers) in Cases)
+        {
+            Check(count, movers);
+        }
+    }
+
+    private static void Check(int count, int movers)
     {
         var random = new Random((count * 31) + movers);
         var clusters = new HitClusters();
