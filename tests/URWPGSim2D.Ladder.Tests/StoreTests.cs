@@ -33,7 +33,8 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     private (SqlLadderStore Store, LadderRow Ladder, TeamRow A, TeamRow B) Two(string database)
     {
         var store = Store(database);
-        return (store, store.OpenLadder("polo-1v1", 600, 7), store.AddTeam("a", "ha", "demo")!, store.AddTeam("b", "hb", "idle")!);
+        var ladder = store.OpenLadder("polo-1v1", 600, 7);
+        return (store, ladder, store.AddTeam("a", "ha", "demo", ladder.Id)!, store.AddTeam("b", "hb", "idle", ladder.Id)!);
     }
 
     [Theory]
@@ -44,7 +45,7 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
         var store = Store(database);
         Assert.Equal(database, store.Dialect.Name);
         Assert.Equal(store.Dialect.Migrations.Count, store.SchemaVersion());
-        Assert.NotNull(store.AddTeam("alpha", "hash-a", null));
+        Assert.NotNull(store.AddTeam("alpha", "hash-a", null, 0));
         store.Migrate(); // a second start: nothing runs again, nothing is lost
         Assert.Equal(store.Dialect.Migrations.Count, store.SchemaVersion());
         Assert.Equal(["alpha"], store.Teams().Select(t => t.Name));
@@ -56,8 +57,8 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     public void ATeamNameIsTakenOnce(string database)
     {
         var store = Store(database);
-        Assert.NotNull(store.AddTeam("alpha", "hash-a", null));
-        Assert.Null(store.AddTeam("alpha", "hash-b", "demo"));
+        Assert.NotNull(store.AddTeam("alpha", "hash-a", null, 0));
+        Assert.Null(store.AddTeam("alpha", "hash-b", "demo", 0));
         Assert.Equal("hash-a", store.TeamByName("alpha")!.TokenHash);
     }
 
@@ -114,7 +115,7 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     public void GamesCountEachSideOfEveryMatch(string database)
     {
         var (store, ladder, a, b) = Two(database);
-        var c = store.AddTeam("c", "hc", "idle")!;
+        var c = store.AddTeam("c", "hc", "idle", ladder.Id)!;
         store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], false, id => (ulong)id);
         store.AddMatch(ladder.Id, [a.Id, c.Id], [0, 0], false, id => (ulong)id);
         var games = store.Games(ladder.Id);

@@ -55,6 +55,18 @@ internal sealed class SqlDialect
             // The job (Hangfire's id) a match is queued as or claimed by, when worker processes share the database.
             "ALTER TABLE matches ADD COLUMN job TEXT NULL",
         ],
+        [
+            // Several ladders: a submission is for one ladder (a strategy is item-specific), a house entrant plays in one.
+            // Rows of before: a submission's ladder is the one it played in, else the newest ladder made before it (the
+            // one the service ran then); a house entrant's likewise.
+            "ALTER TABLE submissions ADD COLUMN ladder_id BIGINT NULL REFERENCES ladders (id)",
+            "UPDATE submissions SET ladder_id = COALESCE((SELECT MIN(m.ladder_id) FROM matches m WHERE m.sub_a = submissions.id OR m.sub_b = submissions.id), "
+                + "(SELECT MAX(l.id) FROM ladders l WHERE l.created <= submissions.created), (SELECT MIN(l.id) FROM ladders l))",
+            "ALTER TABLE teams ADD COLUMN ladder_id BIGINT NULL REFERENCES ladders (id)",
+            "UPDATE teams SET ladder_id = COALESCE((SELECT MIN(m.ladder_id) FROM matches m WHERE m.team_a = teams.id OR m.team_b = teams.id), "
+                + "(SELECT MAX(l.id) FROM ladders l WHERE l.created <= teams.created), (SELECT MIN(l.id) FROM ladders l)) WHERE house IS NOT NULL",
+            "CREATE INDEX submissions_ladder ON submissions (ladder_id, team_id, id)",
+        ],
     ];
 
     /// <summary>SQLite: write-ahead log, a busy wait instead of an error when another connection writes.</summary>
