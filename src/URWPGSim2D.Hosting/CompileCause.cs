@@ -119,7 +119,7 @@ internal static class CompileCause
 
         var model = compilation.GetSemanticModel(node.SyntaxTree);
         var type = model.GetTypeInfo(receiver).Type ?? model.GetSymbolInfo(receiver).Symbol as ITypeSymbol;
-        if (type is null || type.ContainingAssembly?.Name != typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly.GetName().Name)
+        if (type is null || type.ContainingAssembly?.Name != typeof(Compat.Adapter.OriginalStrategyAdapter).Assembly.GetName().Name)
         {
             return null;
         }

@@ -160,7 +160,7 @@ internal static class StrategyCompiler
 
         list.Add(MetadataReference.CreateFromFile(typeof(IStrategy).Assembly.Location));
         list.Add(MetadataReference.CreateFromFile(typeof(Collision.Queries.ShapeQuery).Assembly.Location)); // the SDK's FieldSensor answers in its types
-        list.Add(MetadataReference.CreateFromFile(typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly.Location));
+        list.Add(MetadataReference.CreateFromFile(typeof(Compat.Adapter.OriginalStrategyAdapter).Assembly.Location));
         return list.ToImmutable();
     }
 }

@@ -31,7 +31,7 @@ internal sealed class StrategyLoadContext : AssemblyLoadContext
     /// <param name="name">Simple assembly name.</param>
     public static bool IsShared(string? name) =>
         name == typeof(IStrategy).Assembly.GetName().Name
-        || name == typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly.GetName().Name
+        || name == typeof(Compat.Adapter.OriginalStrategyAdapter).Assembly.GetName().Name
         || name == typeof(StrategyLoadContext).Assembly.GetName().Name
         || name == "URWPGSim2D.Collision";
 
@@ -47,7 +47,7 @@ internal sealed class StrategyLoadContext : AssemblyLoadContext
 
         if (Array.IndexOf(OriginalAssemblies, name) >= 0)
         {
-            return typeof(Compat.Hosting.OriginalStrategyAdapter).Assembly;
+            return typeof(Compat.Adapter.OriginalStrategyAdapter).Assembly;
         }
 
         string? path = _resolver?.ResolveAssemblyToPath(assemblyName);

@@ -2,7 +2,7 @@ using System.Collections.Concurrent;
 using System.Diagnostics.CodeAnalysis;
 using System.Reflection;
 using OriginalStrategy = global::URWPGSim2D.StrategyLoader.IStrategy;
-using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Compat.Adapter;
 using URWPGSim2D.Engine.BuiltInStrategies;
 using URWPGSim2D.Engine.Messages;
 

@@ -1,4 +1,4 @@
-using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Compat.Adapter;
 using URWPGSim2D.Engine.BuiltInStrategies;
 
 namespace URWPGSim2D.Collision.Benchmarks.Hosting;

@@ -49,6 +49,6 @@ public partial class RoboFish
         float heading = fish.BodyDirectionRad;
         var size = new FishSize(BodyLength, BodyWidth, HeadLength, TailJointLength1, TailJointLength2, TailJointLength3);
         var model = new FishModel(size, new FishPose(position, heading, TailToBodyAngle1, TailToBodyAngle2, TailToBodyAngle3));
-        URWPGSim2D.Compat.Hosting.MissionBuilder.Outline(this, position, heading, BodyLength, BodyWidth, HeadLength, model);
+        URWPGSim2D.Compat.Adapter.MissionBuilder.Outline(this, position, heading, BodyLength, BodyWidth, HeadLength, model);
     }
 }

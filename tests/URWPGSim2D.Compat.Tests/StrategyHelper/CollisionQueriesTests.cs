@@ -1,5 +1,5 @@
 using System.Numerics;
-using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Compat.Adapter;
 using URWPGSim2D.Strategies;
 using URWPGSim2D.StrategyHelper;
 using XnaVector3 = Microsoft.Xna.Framework.Vector3;

@@ -1,6 +1,6 @@
 using System.Reflection;
 using System.Runtime.Loader;
-using URWPGSim2D.Compat.Hosting;
+using URWPGSim2D.Compat.Adapter;
 using URWPGSim2D.Engine.Matches;
 
 namespace URWPGSim2D.Server.Tests.Hosting;

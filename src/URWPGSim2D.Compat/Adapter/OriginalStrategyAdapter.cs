@@ -1,6 +1,6 @@
 using URWPGSim2D.Strategies;
 
-namespace URWPGSim2D.Compat.Hosting;
+namespace URWPGSim2D.Compat.Adapter;
 
 /// <summary>
 /// Runs a strategy written against the original API (<see cref="StrategyLoader.IStrategy"/>) as an SDK

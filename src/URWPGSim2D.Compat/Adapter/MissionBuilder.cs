@@ -4,7 +4,7 @@ using URWPGSim2D.Common;
 using URWPGSim2D.Strategies;
 using Xna = Microsoft.Xna.Framework;
 
-namespace URWPGSim2D.Compat.Hosting;
+namespace URWPGSim2D.Compat.Adapter;
 
 /// <summary>
 /// Builds the original's <see cref="Mission"/> from a <see cref="MatchSnapshot"/>: a fresh deep copy
