@@ -580,17 +580,29 @@ internal sealed class LadderCommand : ICliCommand
         });
     }
 
-    private static int RunCreate(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    // The option values of a sub-command that takes no argument, or null when --help was asked (and answered).
+    private static Dictionary<Option, string>? Options(IReadOnlyList<CommandLineWord> words, CliConsole console, Command command, UsageLine line, Option<bool> helpOption, string about, out string usage)
     {
-        string usage = CliApp.ProgramName + " " + CreateUsage;
-        var (values, positional) = Words(words, "ladder create", Create, usage, CreateHelp, out bool help);
+        string name = "ladder " + command.Name;
+        usage = CliApp.ProgramName + " " + name + " " + line.Text;
+        var (values, positional) = Words(words, name, command, usage, helpOption, out bool help);
         if (help)
         {
-            WriteHelp(console, usage, "Creates a ladder in a running service: the item it plays, the length of its matches, its first seed.", CreateLine.OptionTable(22));
+            WriteHelp(console, usage, about, line.OptionTable(22));
+            return null;
+        }
+
+        RefuseArguments(name, positional, usage);
+        return values;
+    }
+
+    private static int RunCreate(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        if (Options(words, console, Create, CreateLine, CreateHelp, "Creates a ladder in a running service: the item it plays, the length of its matches, its first seed.", out string usage) is not { } values)
+        {
             return ExitCodes.Success;
         }
 
-        RefuseArguments("ladder create", positional, usage);
         string server = values.GetValueOrDefault(CreateServerOption) ?? throw new CliUsageException("ladder create: --server URL is required", usage);
         string admin = values.GetValueOrDefault(CreateAdminOption) ?? throw new CliUsageException("ladder create: --admin-token T is required", usage);
         string itemText = values.GetValueOrDefault(CreateItemOption) ?? throw new CliUsageException("ladder create: --item ITEM is required", usage);
@@ -612,15 +624,11 @@ internal sealed class LadderCommand : ICliCommand
 
     private static int RunList(IReadOnlyList<CommandLineWord> words, CliConsole console)
     {
-        string usage = CliApp.ProgramName + " " + ListUsage;
-        var (values, positional) = Words(words, "ladder list", List, usage, ListHelp, out bool help);
-        if (help)
+        if (Options(words, console, List, ListLine, ListHelp, "Lists a running service's ladders, one a line.", out string usage) is not { } values)
         {
-            WriteHelp(console, usage, "Lists a running service's ladders, one a line.", ListLine.OptionTable(16));
             return ExitCodes.Success;
         }
 
-        RefuseArguments("ladder list", positional, usage);
         string server = values.GetValueOrDefault(ListServerOption) ?? throw new CliUsageException("ladder list: --server URL is required", usage);
         return Ask("ladder list", server, string.Empty, null, console, client =>
         {
@@ -636,15 +644,12 @@ internal sealed class LadderCommand : ICliCommand
     private static int RunPause(IReadOnlyList<CommandLineWord> words, CliConsole console, bool pause)
     {
         string name = pause ? "ladder pause" : "ladder resume";
-        string usage = CliApp.ProgramName + " " + (pause ? PauseUsage : ResumeUsage);
-        var (values, positional) = Words(words, name, pause ? Pause : Resume, usage, pause ? PauseHelp : ResumeHelp, out bool help);
-        if (help)
+        if (Options(words, console, pause ? Pause : Resume, pause ? PauseLine : ResumeLine, pause ? PauseHelp : ResumeHelp,
+            pause ? "Pauses a ladder's ranked play (matches already running finish)." : "Resumes a ladder's ranked play.", out string usage) is not { } values)
         {
-            WriteHelp(console, usage, pause ? "Pauses a ladder's ranked play (matches already running finish)." : "Resumes a ladder's ranked play.", (pause ? PauseLine : ResumeLine).OptionTable(20));
             return ExitCodes.Success;
         }
 
-        RefuseArguments(name, positional, usage);
         string server = values.GetValueOrDefault(pause ? PauseServerOption : ResumeServerOption) ?? throw new CliUsageException(name + ": --server URL is required", usage);
         string admin = values.GetValueOrDefault(pause ? PauseAdminOption : ResumeAdminOption) ?? throw new CliUsageException(name + ": --admin-token T is required", usage);
         return Ask(name, server, admin, values.GetValueOrDefault(pause ? PauseLadderOption : ResumeLadderOption), console, client =>
