@@ -190,7 +190,7 @@ internal sealed class Body
     /// <summary>Whether the body's move was rejected since the current or last step began.</summary>
     public bool Rejected;
 
-    /// <summary>Deep position corrections a response reported this step (<see cref="MotionWorld.CountCorrection"/>).</summary>
+    /// <summary>Deep position corrections by the handler's separation this step (<see cref="IContactHandler.OnSeparate"/>).</summary>
     public int Corrections;
 
     /// <summary>A moving circle.</summary>

@@ -4,9 +4,11 @@ namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
 /// A body of a <see cref="MotionWorld"/>, as the <c>Add…</c> methods return it: its number in the
-/// motion world (<see cref="Index"/>), whether it is static, and which motion world made it. Every method that
-/// takes a body checks that the id is one of that motion world's bodies, so an id from another motion world,
-/// or <c>default(BodyId)</c>, is refused by name instead of naming some other body. What a body is
+/// motion world (<see cref="Index"/>), whether it is static, which motion world made it, and its
+/// generation (which bodies of that motion world, since it was last cleared). Every method that
+/// takes a body checks that the id is one of that motion world's bodies now, so an id from another
+/// motion world, a stale one (its body removed by <see cref="MotionWorld.Clear"/>) or
+/// <c>default(BodyId)</c> is refused by name instead of naming some other body. What a body is
 /// in the caller's game (a fish, a ball and its index) is its tag (<see cref="MotionWorld.SetTag"/>),
 /// not where its id falls.
 /// </summary>
@@ -39,7 +41,7 @@ public readonly struct BodyId : IEquatable<BodyId>
     /// <summary>The number of the motion world that made the id (never 0).</summary>
     internal int World => _world;
 
-    /// <summary>Which body of that index the id names (the motion world's body carries the same one).</summary>
+    /// <summary>Which bodies of the motion world the id belongs to: 1 at first, one more after each <see cref="MotionWorld.Clear"/>.</summary>
     internal int Generation => _generation;
 
     /// <summary>Whether two ids name the same body of the same motion world.</summary>

@@ -6,10 +6,29 @@ namespace URWPGSim2D.Collision.Motion;
 /// handler may change the poses (<see cref="MotionWorld.SetPose"/>, <see cref="MotionWorld.SetJoints"/>)
 /// and velocities (<see cref="MotionWorld.SetVelocity"/>) of the bodies it is given, test pairs
 /// again (<see cref="MotionWorld.Detect"/>) while it separates them, and the motion world carries on from
-/// there with the new state, planning again only the bodies that changed.
+/// there with the new state, planning again only the bodies that changed. A response in two parts
+/// moves the bodies out of the contact in <see cref="OnSeparate"/> first: the motion world counts
+/// those corrections against its wedge policy (<see cref="MotionWorld.Wedging"/>) before it calls
+/// <see cref="OnContact"/>, where <see cref="MotionWorld.WasRejected"/> tells whether one of them
+/// was the correction too many.
 /// </summary>
 public interface IContactHandler
 {
+    /// <summary>
+    /// The position correction of one contact, called just before <see cref="OnContact"/> with the
+    /// same contact (nothing by default). Each moving body this call moves or turns counts a
+    /// correction for the contact, a fish's or a polygon's (a circle, pushed by whatever presses it,
+    /// never counts): past <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> deep ones (of a
+    /// contact deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/>) in a step, a
+    /// <see cref="MotionWorld.Settle"/> after it included, the body is wedged and the motion world
+    /// rejects its move at once, as by <see cref="MotionWorld.RejectMove"/>, before <see cref="OnContact"/>.
+    /// </summary>
+    /// <param name="world">The motion world (to read and change the bodies' state).</param>
+    /// <param name="contact">The contact at its time of first contact.</param>
+    void OnSeparate(MotionWorld world, in Contact contact)
+    {
+    }
+
     /// <summary>Responds to one contact: both bodies are at <see cref="Contact.Time"/> and overlap as <paramref name="contact"/> says.</summary>
     /// <param name="world">The motion world (to read and change the bodies' state).</param>
     /// <param name="contact">The contact at its time of first contact.</param>

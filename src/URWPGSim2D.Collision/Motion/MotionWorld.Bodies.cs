@@ -14,6 +14,7 @@ public sealed partial class MotionWorld
     private readonly int _world = BodyId.NextWorld();
     private readonly LeafContacts _leaves = new();
     private BodySet _changed = new(0);
+    private int _generation = 1;
     private bool _loaded;
     private bool _stepping;
 
@@ -86,6 +87,25 @@ public sealed partial class MotionWorld
         }
 
         return Add(Body.Walls(_bodies.Count, field));
+    }
+
+    /// <summary>
+    /// Removes every body: the motion world is empty again, its settings (<see cref="Wedging"/>,
+    /// <see cref="Threads"/>) kept, and the next body added is number 0. The ids of the removed
+    /// bodies are stale: every method refuses them with an <see cref="ArgumentException"/> that
+    /// says so, even where a new body has the same number.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">A step or <see cref="Settle"/> is running.</exception>
+    public void Clear()
+    {
+        if (_stepping)
+        {
+            throw new InvalidOperationException("the motion world cannot be cleared while a step or Settle runs");
+        }
+
+        _bodies.Clear();
+        _generation++;
+        _loaded = false;
     }
 
     /// <summary>What a body is.</summary>
@@ -392,7 +412,7 @@ public sealed partial class MotionWorld
         body.BaseHeading = body.Heading;
         Remember(body);
         body.KeepStepStart();
-        body.Handle = new BodyId(body.Id, _world, 1, !body.IsMoving);
+        body.Handle = new BodyId(body.Id, _world, _generation, !body.IsMoving);
         _bodies.Add(body);
         _loaded = false;
         return body.Handle;
@@ -405,8 +425,9 @@ public sealed partial class MotionWorld
         int index = id.Index;
         if ((uint)index >= (uint)_bodies.Count || _bodies[index].Handle != id)
         {
-            throw new ArgumentException(id.IsNull
-                ? "default(BodyId) names no body: use an id an Add method returned"
+            throw new ArgumentException(
+                id.IsNull ? "default(BodyId) names no body: use an id an Add method returned"
+                : id.World == _world && id.Generation != _generation ? $"{id} is stale: its body was removed when the motion world was cleared (Clear); use the id Add returned since"
                 : $"{id} is not a body of this motion world (it has {_bodies.Count}; an id is valid only in the motion world that returned it)", name);
         }
 

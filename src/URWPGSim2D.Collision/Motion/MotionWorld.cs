@@ -152,32 +152,6 @@ public sealed partial class MotionWorld
         _settling.RejectToStepStart(b);
     }
 
-    /// <summary>
-    /// Counts a response's correction of a moving body's position for a contact, from a handler
-    /// (call it after moving the body out of <paramref name="contact"/>). A correction for a contact
-    /// deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/> counts toward the wedge
-    /// policy (<see cref="Wedging"/>): the first one past <see cref="WedgePolicy.CorrectionsBeforeRejecting"/>
-    /// in a step (a <see cref="Settle"/> after it included) finds the body wedged, and its move is
-    /// rejected as by <see cref="RejectMove"/>. The count starts again when a step begins; between
-    /// steps nothing is counted.
-    /// </summary>
-    /// <param name="body">The body the response corrected.</param>
-    /// <param name="contact">The contact it was corrected for.</param>
-    /// <returns>True when this correction rejected the body's move.</returns>
-    /// <exception cref="ArgumentException">The body does not move.</exception>
-    public bool CountCorrection(BodyId body, in Contact contact)
-    {
-        Body b = Moving(body, null, nameof(body));
-        if (!_stepping || !_settling.Wedges(b, contact.Depth))
-        {
-            return false;
-        }
-
-        Touch(b);
-        _settling.RejectToStepStart(b);
-        return true;
-    }
-
     /// <summary>When a body counts as wedged (its contacts left to the end of the step, its move rejected if still overlapping there, or rejected at once after too many deep corrections); the defaults of <see cref="WedgePolicy"/> until set.</summary>
     /// <exception cref="ArgumentNullException">The value is null.</exception>
     /// <exception cref="ArgumentException">A step is running.</exception>
@@ -260,8 +234,37 @@ public sealed partial class MotionWorld
     /// <summary>The response to one contact, from the handler, after its bodies are involved in the order the response moves them.</summary>
     internal void Report(in Contact contact)
     {
-        InvolveInOrder(Get(contact.BodyA), Get(contact.BodyB));
-        _handler!.OnContact(this, contact);
+        Body a = Get(contact.BodyA), b = Get(contact.BodyB);
+        InvolveInOrder(a, b);
+        IContactHandler handler = _handler!;
+        Vector2 positionA = a.Position, positionB = b.Position;
+        float headingA = a.Heading, headingB = b.Heading;
+        handler.OnSeparate(this, contact);
+        bool correctedA = a.Position != positionA || a.Heading != headingA;
+        bool correctedB = b.Position != positionB || b.Heading != headingB;
+        if (correctedA)
+        {
+            Corrected(a, contact.Depth);
+        }
+
+        if (correctedB)
+        {
+            Corrected(b, contact.Depth);
+        }
+
+        handler.OnContact(this, contact);
+    }
+
+    // The wedge policy counts a correction the handler's separation made: a fish's or a polygon's
+    // (a circle is pushed by whatever presses it and never counts). The first deep one past the
+    // policy's allowance in the step rejects the body's move, as RejectMove does.
+    private void Corrected(Body b, float depth)
+    {
+        if (b.IsMoving && b.Kind != BodyKind.Circle && _settling.Wedges(b, depth))
+        {
+            Touch(b);
+            _settling.RejectToStepStart(b);
+        }
     }
 
     /// <summary>The moving bodies the current response has changed or involved so far, in that order (tests).</summary>

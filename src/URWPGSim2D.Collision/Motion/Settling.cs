@@ -246,7 +246,7 @@ internal sealed class Settling
         MoveBack(b, b.StepStartPosition, b.StepStartHeading, b.StepStartJoint1, b.StepStartJoint2, b.StepStartJoint3, stamp: false);
 
     /// <summary>
-    /// Counts a response's correction of a body (<see cref="MotionWorld.CountCorrection"/>) at a
+    /// Counts a correction of a body by the handler's separation (<see cref="IContactHandler.OnSeparate"/>) at a
     /// contact's depth: true when it is a deep one past the policy's allowance for the step and
     /// the body's move is not rejected yet (the caller rejects it).
     /// </summary>

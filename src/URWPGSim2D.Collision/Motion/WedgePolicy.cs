@@ -4,9 +4,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// When the motion world counts a moving body as wedged (pushed back and forth between others without
 /// getting free), and what it does then. A wedged body's further contacts that cannot tunnel
 /// before the step ends are left to the end of the step, where settling tries to free it; a body
-/// still overlapping there has its move rejected (back where it began the step, at rest). A
-/// response that reports its position corrections (<see cref="MotionWorld.CountCorrection"/>) has the
-/// body's move rejected at once when it has had too many deep ones in the step. The defaults suit
+/// still overlapping there has its move rejected (back where it began the step, at rest). The
+/// position corrections a handler makes in <see cref="IContactHandler.OnSeparate"/> are counted by
+/// the motion world itself: a body with too many deep ones in the step has its move rejected at once. The defaults suit
 /// the match server; <see cref="MotionWorld.Wedging"/> sets another policy.
 /// </summary>
 public sealed class WedgePolicy
@@ -33,7 +33,7 @@ public sealed class WedgePolicy
 
     /// <summary>
     /// Deep position corrections (of a contact deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/>,
-    /// reported with <see cref="MotionWorld.CountCorrection"/>) a body may have in one step, a
+    /// made by <see cref="IContactHandler.OnSeparate"/>; a fish's or a polygon's) a body may have in one step, a
     /// <see cref="MotionWorld.Settle"/> after it included; the next one rejects its move (8; at least 0).
     /// </summary>
     /// <exception cref="ArgumentException">The value is negative.</exception>

@@ -5,8 +5,8 @@ namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
 /// The server's response hook for the motion world: at the time of first contact
-/// <see cref="ContactResponse"/> applies the reference's position correction and impulses to the
-/// two bodies where they are (their poses and velocities are the motion world's, changed in
+/// <see cref="ContactResponse"/> applies the reference's position correction (its fish corrections
+/// counted by the motion world's wedge policy) and then the impulses to the two bodies where they are (their poses and velocities are the motion world's, changed in
 /// place), and the contact is logged for the trace and the summary. A rejected move (the body went
 /// back to where it ended the last cycle) stops the body for the rest of the cycle.
 /// </summary>
@@ -15,10 +15,13 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
     private readonly ContactResponse _response = new(world);
 
     /// <inheritdoc/>
+    public void OnSeparate(MotionWorld motionWorld, in Contact contact) => _response.Separate(world.PairOf(contact), contact);
+
+    /// <inheritdoc/>
     public void OnContact(MotionWorld motionWorld, in Contact contact)
     {
         CandidatePair pair = world.PairOf(contact);
-        ContactKind kind = _response.Apply(pair, contact);
+        ContactKind kind = _response.Respond(pair, contact);
         log.Add(new ContactRecord(pair, Part(contact.PartA), Part(contact.PartB), contact.Mtv, contact.Normal, contact.Point, contact.Time), kind);
     }
 

@@ -26,12 +26,14 @@ namespace URWPGSim2D.Engine.Simulation;
 /// speed × −0.001; ball–obstacle: × −0.1.</item>
 /// </list>
 /// A fish's speed and angular speed (its gear approach) are never changed by a contact: each cycle
-/// it swims with its own motion again. Every position correction of a fish is counted by the motion
-/// world's wedge policy (<see cref="MotionWorld.CountCorrection"/>): a fish corrected deeper than the
-/// time-of-impact tolerance more than <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> times in
-/// one cycle is wedged and the motion world rejects its move (back where it started the cycle, at
-/// rest); for the rest of that cycle it counts as immovable (its partners take the whole
-/// correction, it neither moves nor turns).
+/// it swims with its own motion again. The response comes in two parts, as the motion world calls
+/// them: the position correction (<see cref="Separate"/>, from <see cref="IContactHandler.OnSeparate"/>),
+/// whose corrections of a fish the motion world's wedge policy counts itself (a fish corrected deeper
+/// than the time-of-impact tolerance more than <see cref="WedgePolicy.CorrectionsBeforeRejecting"/>
+/// times in one cycle is wedged and the motion world rejects its move: back where it started the
+/// cycle, at rest), then the velocities (<see cref="Respond"/>). A fish whose move was rejected
+/// counts as immovable for the rest of that cycle (its partners take the whole correction, it
+/// neither moves nor turns).
 /// </summary>
 internal sealed class ContactResponse
 {
@@ -44,6 +46,7 @@ internal sealed class ContactResponse
     private readonly int[] _partners;
     private readonly int[] _partnerCount;
     private readonly int[] _partnerCycle;
+    private float _ballShare; // the ball's share of the last fish–ball separation, for its response
 
     /// <summary>Creates the response for a world.</summary>
     public ContactResponse(World world)
@@ -56,8 +59,39 @@ internal sealed class ContactResponse
         Array.Fill(_partnerCycle, -1);
     }
 
-    /// <summary>Applies the contact and returns its summary kind.</summary>
+    /// <summary>Both parts of the response in order, with no wedge count between them (a contact outside a step); returns its summary kind.</summary>
     public ContactKind Apply(in CandidatePair pair, in Contact hit)
+    {
+        Separate(pair, hit);
+        return Respond(pair, hit);
+    }
+
+    /// <summary>The contact's position correction: the pair moved apart by the shares of its kind.</summary>
+    public void Separate(in CandidatePair pair, in Contact hit)
+    {
+        switch (pair.Kind)
+        {
+            case PairKind.FishFish:
+                FishState a = _world.Fish[pair.A], b = _world.Fish[pair.B];
+                float shareA = a.MoveRejected == b.MoveRejected ? 0.5f : a.MoveRejected ? 0f : 1f;
+                _separation.Apply(pair, hit, shareA, 1f - shareA);
+                break;
+            case PairKind.FishBall:
+                bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
+                _ballShare = _world.Fish[pair.A].MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
+                _separation.Apply(pair, hit, 1f - _ballShare, _ballShare);
+                break;
+            case PairKind.BallBall:
+                _separation.Apply(pair, hit, 0.5f, 0.5f);
+                break;
+            default:
+                _separation.Apply(pair, hit, 1f, 0f);
+                break;
+        }
+    }
+
+    /// <summary>The contact's velocities and turns, after <see cref="Separate"/>; returns its summary kind.</summary>
+    public ContactKind Respond(in CandidatePair pair, in Contact hit)
     {
         switch (pair.Kind)
         {
@@ -90,11 +124,7 @@ internal sealed class ContactResponse
     {
         FishState fish = _world.Fish[pair.A];
         BallState ball = _world.Balls[pair.B];
-        bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
-        float ballShare = fish.MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
-        _separation.Apply(pair, hit, 1f - ballShare, ballShare);
-        Count(fish, hit);
-
+        float ballShare = _ballShare;
         Vector2 n = hit.Normal;
         Vector2 lever = hit.Point - fish.Position;
         float vf = NormalSpeed(fish, lever, n);
@@ -125,11 +155,6 @@ internal sealed class ContactResponse
     {
         FishState a = _world.Fish[pair.A];
         FishState b = _world.Fish[pair.B];
-        float shareA = a.MoveRejected == b.MoveRejected ? 0.5f : a.MoveRejected ? 0f : 1f;
-        _separation.Apply(pair, hit, shareA, 1f - shareA);
-        Count(a, hit);
-        Count(b, hit);
-
         Vector2 n = hit.Normal;
         Vector2 ra = hit.Point - a.Position;
         Vector2 rb = hit.Point - b.Position;
@@ -169,8 +194,6 @@ internal sealed class ContactResponse
     {
         FishState fish = _world.Fish[pair.A];
         bool border = pair.Kind == PairKind.FishWall || _world.Statics[pair.B].IsGoalBlock;
-        _separation.Apply(pair, hit, 1f, 0f);
-        Count(fish, hit);
         Vector2 n = hit.Normal;
         Vector2 lever = hit.Point - fish.Position;
         float vn = NormalSpeed(fish, lever, n);
@@ -191,7 +214,6 @@ internal sealed class ContactResponse
     {
         BallState ball = _world.Balls[pair.A];
         bool border = pair.Kind == PairKind.BallWall || _world.Statics[pair.B].IsGoalBlock;
-        _separation.Apply(pair, hit, 1f, 0f);
         Vector2 n = hit.Normal;
         float vn = Vector2.Dot(ball.Velocity, n);
         if (vn < 0f)
@@ -207,7 +229,6 @@ internal sealed class ContactResponse
     {
         BallState a = _world.Balls[pair.A];
         BallState b = _world.Balls[pair.B];
-        _separation.Apply(pair, hit, 0.5f, 0.5f);
         Vector2 n = hit.Normal;
         float va = Vector2.Dot(a.Velocity, n);
         float vb = Vector2.Dot(b.Velocity, n);
@@ -272,8 +293,4 @@ internal sealed class ContactResponse
         _partnerCount[i] = count + 1;
         return true;
     }
-
-    // The motion world's wedge policy counts the fish's correction (a deep one past the allowance
-    // rejects its move for this cycle: FishState.MoveRejected from then on).
-    private void Count(FishState fish, in Contact hit) => _world.Motion.CountCorrection(fish.Handle, hit);
 }

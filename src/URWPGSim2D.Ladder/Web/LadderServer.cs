@@ -68,6 +68,11 @@ public sealed class LadderServer : IAsyncDisposable
             throw new LadderInputException($"--host must be an IP address or localhost, got {Engine.Messages.MessageText.Quote(settings.Host)}");
         }
 
+        if (settings.Takeover is not null && settings.Database is null)
+        {
+            throw new LadderInputException("--takeover: only with --database (PostgreSQL), where worker processes take matches over");
+        }
+
         Directory.CreateDirectory(settings.DataDir);
         var store = LadderDatabase.Open(settings);
         LadderService service;
@@ -81,6 +86,7 @@ public sealed class LadderServer : IAsyncDisposable
             throw;
         }
 
+        service.Core(service.Served).Files.Import(); // a data folder of an older version: its files into the database (every ladder's)
         service.RecheckInterrupted();
         if (settings.Database is null)
         {
@@ -118,7 +124,7 @@ public sealed class LadderServer : IAsyncDisposable
         if (settings.Database is { } database)
         {
             // PostgreSQL: matches are Hangfire jobs, played by this process's server (--workers) and by every worker process.
-            var jobs = new LadderJobs(database, LadderJobs.Invisibility);
+            var jobs = new LadderJobs(database, LadderJobs.Takeover(store, settings.Takeover));
             if (settings.Workers > 0)
             {
                 // This process's jobs play with the service's own cores (their warm hosts), every ladder's.

@@ -141,4 +141,90 @@ public sealed class BodyIdTests
             Assert.Contains(rejected, balls);
         }
     }
+
+    [Fact]
+    public void ClearMakesEveryIdStaleAndTheNewBodiesNumberFromZero()
+    {
+        var world = new MotionWorld { Wedging = new WedgePolicy { CorrectionsBeforeRejecting = 3 } };
+        BodyId old = world.AddCircle(50f, Vector2.Zero);
+        BodyId oldFish = world.AddFish(FishSize.Default, new FishPose(new Vector2(-400f, 0f), 0f, 0f, 0f, 0f));
+        world.AddCircle(50f, new Vector2(90f, 0f));
+        Assert.Equal(10f, world.Detect(old, world.IdAt(2)).Depth, 3);
+        world.Step(0.1f, new RecordingHandler());
+
+        world.Clear();
+        Assert.Equal(0, world.BodyCount);
+        Assert.Equal(3, world.Wedging.CorrectionsBeforeRejecting);
+
+        // The new body 0 is not the old one: the old id is refused as stale, by name.
+        BodyId ball = world.AddCircle(20f, Vector2.Zero);
+        Assert.Equal(old.Index, ball.Index);
+        Assert.NotEqual(old, ball);
+        (Action Call, string Id, string Parameter)[] calls =
+        [
+            (() => world.PositionOf(old), "body 0", "body"),
+            (() => world.SetTag(old, 1), "body 0", "body"),
+            (() => world.WasRejected(old), "body 0", "body"),
+            (() => world.FishPoseOf(oldFish), "body 1", "fish"),
+        ];
+        foreach (var (call, id, parameter) in calls)
+        {
+            var refused = Assert.Throws<ArgumentException>(call);
+            Assert.StartsWith(id + " is stale: its body was removed when the motion world was cleared", refused.Message, StringComparison.Ordinal);
+            Assert.Equal(parameter, refused.ParamName);
+            Assert.DoesNotContain('\n', refused.Message);
+        }
+
+        // The new bodies are what was added since: two balls of radii 20 and 30 whose centres are
+        // 40 mm apart overlap by 10 mm, whatever the old bodies at those places were.
+        BodyId other = world.AddCircle(30f, new Vector2(40f, 0f));
+        Assert.Equal(10f, world.Detect(ball, other).Depth, 3);
+        world.SetTag(ball, 41);
+        Assert.Equal(41, world.TagOf(ball));
+        Assert.Equal(0, world.TagOf(other));
+
+        // And they move: the ball thrown at the other meets it within the step, the contact names the new ids.
+        world.SetPose(ball, new Vector2(-200f, 0f), 0f);
+        world.SetVelocity(ball, new Vector2(3000f, 0f));
+        var handler = new RecordingHandler();
+        world.Step(0.1f, handler);
+        Assert.NotEmpty(handler.Contacts);
+        Assert.All(handler.Contacts, c => Assert.True((c.BodyA == ball && c.BodyB == other) || (c.BodyA == other && c.BodyB == ball), $"{c.BodyA} and {c.BodyB}"));
+        Assert.True(world.MeasureOverlap() <= 0.5f);
+    }
+
+    [Fact]
+    public void ClearIsRefusedWhileAStepRuns()
+    {
+        var world = new MotionWorld();
+        world.AddCircle(50f, Vector2.Zero);
+        world.AddCircle(50f, new Vector2(90f, 0f));
+        var handler = new ClearingHandler();
+        world.Settle(handler);
+        Assert.NotNull(handler.Refused);
+        Assert.Equal(2, world.BodyCount);
+    }
+
+    private sealed class ClearingHandler : IContactHandler
+    {
+        public InvalidOperationException? Refused { get; private set; }
+
+        public void OnContact(MotionWorld world, in Contact contact)
+        {
+            try
+            {
+                world.Clear();
+            }
+            catch (InvalidOperationException e)
+            {
+                Refused ??= e;
+            }
+
+            world.SetPose(contact.BodyA, world.PositionOf(contact.BodyA) + (XZPlane.ToPlane(contact.Result.MinimumTranslationVector) * 1.01f), 0f);
+        }
+
+        public void OnMoveRejected(MotionWorld world, BodyId body)
+        {
+        }
+    }
 }

@@ -1,26 +1,26 @@
 namespace URWPGSim2D.Collision.Tests.Motion;
 
 /// <summary>
-/// The motion world's one wedge policy (<see cref="MotionWorld.Wedging"/>): the corrections a response
-/// reports (<see cref="MotionWorld.CountCorrection"/>) are counted per body and step against the
-/// policy's allowance, the first deep one past it rejects the move; the events before a body's
-/// contacts are left to the end of the step are the policy's too.
+/// The motion world's one wedge policy (<see cref="MotionWorld.Wedging"/>): the corrections a handler
+/// makes in <see cref="IContactHandler.OnSeparate"/> are counted by the motion world itself, per body
+/// and step, against the policy's allowance; the first deep one past it rejects the move before
+/// <see cref="IContactHandler.OnContact"/>, which reads the verdict with <see cref="MotionWorld.WasRejected"/>.
+/// The events before a body's contacts are left to the end of the step are the policy's too.
 /// </summary>
 public sealed class MotionWorldWedgePolicyTests
 {
     [Fact]
     public void TheFirstDeepCorrectionPastTheAllowanceRejectsTheMoveOnce()
     {
-        // Ball a is thrown 50 mm into ball b between steps; settling reports the contact and the
-        // response counts twelve corrections of a for it.
-        var (world, a, _) = JumpedInto(overlap: 50f);
-        var handler = new CountingHandler(a, perContact: 12);
+        // Square a is thrown 50 mm into ball b between steps; settling reports their contact pass
+        // after pass, and each separation pushes a out by 1 mm only (still deep).
+        var (world, a, _) = JumpedInto(BodyKind.Polygon, overlap: 50f);
+        var handler = new PushingHandler(a, push: 1f);
         world.Settle(handler);
 
-        // Default allowance 8: the ninth rejects, the rest find it rejected already.
+        // Default allowance 8: the ninth correction rejects; back at the step's start, a meets nothing more.
         Assert.Equal(8, new WedgePolicy().CorrectionsBeforeRejecting);
-        bool[] expected = [false, false, false, false, false, false, false, false, true, false, false, false];
-        Assert.Equal(expected, handler.Verdicts.GetRange(0, 12));
+        Assert.Equal([false, false, false, false, false, false, false, false, true], handler.Verdicts);
         Assert.Equal([a], handler.Rejected);
         Assert.True(world.WasRejected(a));
 
@@ -29,15 +29,32 @@ public sealed class MotionWorldWedgePolicyTests
         Assert.Equal(Vector2.Zero, world.VelocityOf(a));
     }
 
+    [Theory]
+    [InlineData(BodyKind.Circle, true)]
+    [InlineData(BodyKind.Polygon, false)]
+    public void OnlyAFishOrPolygonMovedInTheSeparationCounts(BodyKind kind, bool inSeparation)
+    {
+        // A circle pushed in the separation, or a polygon pushed in OnContact (a handler that does
+        // not separate first), is never rejected for its corrections: only the end of the settle,
+        // which finds it (and b) still 30-odd mm inside each other, rejects its move.
+        var (world, a, _) = JumpedInto(kind, overlap: 50f);
+        var handler = new PushingHandler(a, push: 1f) { InSeparation = inSeparation };
+        world.Settle(handler);
+
+        Assert.True(handler.Verdicts.Count > 9, $"{handler.Verdicts.Count} contacts");
+        Assert.All(handler.Verdicts, v => Assert.False(v));
+        Assert.Contains(a, handler.Rejected);
+    }
+
     [Fact]
     public void ShallowCorrectionsAreNotCounted()
     {
         // 0.2 mm deep: within the time-of-impact tolerance (0.25 mm), a correction at a refined time of first contact.
-        var (world, a, _) = JumpedInto(overlap: 0.2f);
-        var handler = new CountingHandler(a, perContact: 30);
+        var (world, a, _) = JumpedInto(BodyKind.Polygon, overlap: 0.2f);
+        var handler = new PushingHandler(a, push: 0.001f);
         world.Settle(handler);
 
-        Assert.True(handler.Contacts > 0, "settling reported no contact");
+        Assert.True(handler.Verdicts.Count > 9, $"{handler.Verdicts.Count} contacts");
         Assert.All(handler.Verdicts, v => Assert.False(v));
         Assert.Empty(handler.Rejected);
         Assert.False(world.WasRejected(a));
@@ -46,38 +63,42 @@ public sealed class MotionWorldWedgePolicyTests
     [Fact]
     public void TheAllowanceIsThePolicys()
     {
-        var (world, a, _) = JumpedInto(overlap: 50f);
+        var (world, a, _) = JumpedInto(BodyKind.Polygon, overlap: 50f);
         world.Wedging = new WedgePolicy { CorrectionsBeforeRejecting = 2 };
-        var handler = new CountingHandler(a, perContact: 4);
+        var handler = new PushingHandler(a, push: 1f);
         world.Settle(handler);
-        Assert.Equal([false, false, true, false], handler.Verdicts.GetRange(0, 4));
+        Assert.Equal([false, false, true], handler.Verdicts);
 
-        var (strict, b, _) = JumpedInto(overlap: 50f);
+        var (strict, b, _) = JumpedInto(BodyKind.Polygon, overlap: 50f);
         strict.Wedging = new WedgePolicy { CorrectionsBeforeRejecting = 0 };
-        var first = new CountingHandler(b, perContact: 1);
+        var first = new PushingHandler(b, push: 1f);
         strict.Settle(first);
-        Assert.True(first.Verdicts[0]);
+        Assert.Equal([true], first.Verdicts);
     }
 
     [Fact]
     public void TheCountRunsThroughSettlesAndStartsAgainWithAStep()
     {
-        // Six corrections in one settle, six in the next: the ninth of the step rejects.
-        var (world, a, b) = JumpedInto(overlap: 50f);
-        var handler = new CountingHandler(a, perContact: 6);
+        // Six corrections in one settle (five 1 mm pushes, then one that frees a), six in the next:
+        // the ninth of the step rejects.
+        var (world, a, b) = JumpedInto(BodyKind.Polygon, overlap: 50f);
+        var handler = new PushingHandler(a, push: 1f) { FreeAfter = 6 };
         world.Settle(handler);
+        Assert.Equal(6, handler.Verdicts.Count);
         world.SetPose(a, world.PositionOf(b) - new Vector2(50f, 0f), 0f);
+        handler.FreeAfter = 12;
         world.Settle(handler);
-        Assert.Equal([false, false, false, false, false, false, false, false, true, false, false, false], handler.Verdicts.GetRange(0, 12));
+        Assert.Equal([false, false, false, false, false, false, false, false, true], handler.Verdicts);
 
         // A step between the two settles starts the count again: twelve corrections, none rejects.
-        var (other, c, d) = JumpedInto(overlap: 50f);
-        var again = new CountingHandler(c, perContact: 6);
+        var (other, c, d) = JumpedInto(BodyKind.Polygon, overlap: 50f);
+        var again = new PushingHandler(c, push: 1f) { FreeAfter = 6 };
         other.Settle(again);
         other.Step(0.1f, again);
         other.SetPose(c, other.PositionOf(d) - new Vector2(50f, 0f), 0f);
+        again.FreeAfter = 12;
         other.Settle(again);
-        Assert.True(again.Verdicts.Count >= 12, $"{again.Verdicts.Count} corrections");
+        Assert.Equal(12, again.Verdicts.Count);
         Assert.All(again.Verdicts, v => Assert.False(v));
         Assert.False(other.WasRejected(c));
     }
@@ -118,7 +139,7 @@ public sealed class MotionWorldWedgePolicyTests
     }
 
     [Fact]
-    public void BadPoliciesAndCallsAreRefusedByNameAndNothingCountsBetweenSteps()
+    public void BadPoliciesAreRefusedByNameAndThePolicyHoldsThroughAStep()
     {
         var events = Assert.Throws<ArgumentException>(() => new WedgePolicy { EventsBeforeDeferring = 0 });
         Assert.Equal("eventsBeforeDeferring", events.ParamName);
@@ -128,93 +149,94 @@ public sealed class MotionWorldWedgePolicyTests
         Assert.Equal("correctionsBeforeRejecting", corrections.ParamName);
         Assert.Contains("got -3", corrections.Message, StringComparison.Ordinal);
 
-        // A ball 10 mm into a static box: settling reports their contact to a handler that tries both.
+        // A ball 10 mm into a static box: settling reports their contact to a handler that tries to change the policy.
         var world = new MotionWorld();
-        BodyId ball = world.AddCircle(50f, Vector2.Zero);
+        world.AddCircle(50f, Vector2.Zero);
         world.AddStatic(new Aabb(new Vector2(40f, -50f), new Vector2(90f, 50f)));
         Assert.Throws<ArgumentNullException>(() => world.Wedging = null!);
-        var contact = world.Detect(ball, world.IdAt(1));
-        Assert.True(contact.Intersect);
-
-        // Between steps nothing is counted: a hundred deep corrections reject nothing.
-        for (int i = 0; i < 100; i++)
-        {
-            Assert.False(world.CountCorrection(ball, contact));
-        }
-
-        Assert.False(world.WasRejected(ball));
-        Assert.Equal(Vector2.Zero, world.PositionOf(ball));
-
         var during = new DuringStep();
         world.Settle(during);
         Assert.Equal("value", during.PolicyRefused?.ParamName);
-        Assert.Equal("body", during.StaticRefused?.ParamName);
     }
 
-    // Ball a (radius 50) starts a step at the origin and ends it there; then it is placed
-    // `overlap` mm into ball b (radius 50, at 400, 0).
-    private static (MotionWorld MotionWorld, BodyId A, BodyId B) JumpedInto(float overlap)
+    // Body a (a ball of radius 50, or a 100 mm square) starts a step at the origin and ends it
+    // there; then it is placed `overlap` mm into ball b (radius 50, at 400, 0).
+    private static (MotionWorld MotionWorld, BodyId A, BodyId B) JumpedInto(BodyKind kind, float overlap)
     {
         var world = new MotionWorld();
-        BodyId a = world.AddCircle(50f, Vector2.Zero);
+        BodyId a = kind == BodyKind.Circle
+            ? world.AddCircle(50f, Vector2.Zero)
+            : world.AddPolygon(new ConvexPolygon([new Vector2(-50f, -50f), new Vector2(50f, -50f), new Vector2(50f, 50f), new Vector2(-50f, 50f)]), Vector2.Zero, 0f);
         BodyId b = world.AddCircle(50f, new Vector2(400f, 0f));
-        world.Step(0.1f, new CountingHandler(default, 0));
+        world.Step(0.1f, new PushingHandler(default, 0f));
         world.SetPose(a, new Vector2(300f + overlap, 0f), 0f);
         return (world, a, b);
     }
 
-    // Counts `perContact` corrections of `body` for every contact it is in (records the verdicts),
-    // then pushes the pair apart along the MTV (b takes it all when a's move was rejected).
-    private sealed class CountingHandler(BodyId body, int perContact) : IContactHandler
+    // Pushes `body` out of every contact it is in by `push` mm along the contact's normal (in the
+    // separation, or in OnContact when InSeparation is false), or out of it entirely at the
+    // FreeAfter-th contact; records in OnContact whether its move was rejected by then.
+    private sealed class PushingHandler(BodyId body, float push) : IContactHandler
     {
         public List<bool> Verdicts { get; } = [];
 
         public List<BodyId> Rejected { get; } = [];
 
-        public int Contacts { get; private set; }
+        public bool InSeparation { get; init; } = true;
+
+        public int FreeAfter { get; set; } = int.MaxValue;
+
+        public void OnSeparate(MotionWorld world, in Contact contact)
+        {
+            if (InSeparation)
+            {
+                Push(world, contact);
+            }
+        }
 
         public void OnContact(MotionWorld world, in Contact contact)
         {
-            Contacts++;
-            if (contact.BodyA == body || contact.BodyB == body)
+            if (!InSeparation)
             {
-                for (int i = 0; i < perContact; i++)
-                {
-                    Verdicts.Add(world.CountCorrection(body, contact));
-                }
+                Push(world, contact);
             }
 
-            Vector2 mtv = XZPlane.ToPlane(contact.Result.MinimumTranslationVector);
-            Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis);
-            Vector2 push = mtv + (n * 0.01f);
-            if (!world.WasRejected(contact.BodyA))
+            if (contact.BodyA == body || contact.BodyB == body)
             {
-                world.SetPose(contact.BodyA, world.PositionOf(contact.BodyA) + push, 0f);
-            }
-            else if (world.KindOf(contact.BodyB) <= BodyKind.Fish)
-            {
-                world.SetPose(contact.BodyB, world.PositionOf(contact.BodyB) - push, 0f);
+                Verdicts.Add(world.WasRejected(body));
             }
         }
 
         public void OnMoveRejected(MotionWorld world, BodyId rejected) => Rejected.Add(rejected);
+
+        private void Push(MotionWorld world, in Contact contact)
+        {
+            if ((contact.BodyA != body && contact.BodyB != body) || world.WasRejected(body))
+            {
+                return;
+            }
+
+            // The normal points from B toward A: a (as A) moves along it, (as B) against it.
+            Vector2 n = XZPlane.ToPlane(contact.Result.NormalAxis) * (contact.BodyA == body ? 1f : -1f);
+            float distance = Verdicts.Count + 1 >= FreeAfter ? contact.Depth + 0.01f : push;
+            world.SetPose(body, world.PositionOf(body) + (n * distance), world.HeadingOf(body));
+        }
     }
 
-    // Tries to change the policy and to count a static body's correction from a handler.
+    // Tries to change the policy from a handler, then frees the pair.
     private sealed class DuringStep : IContactHandler
     {
         public ArgumentException? PolicyRefused { get; private set; }
 
-        public ArgumentException? StaticRefused { get; private set; }
-
         public void OnContact(MotionWorld world, in Contact contact)
         {
-            PolicyRefused ??= Record(() => world.Wedging = new WedgePolicy());
-            BodyId other = contact.BodyB;
-            Contact copy = contact;
-            if (world.KindOf(other) == BodyKind.Static)
+            try
             {
-                StaticRefused ??= Record(() => world.CountCorrection(other, copy));
+                world.Wedging = new WedgePolicy();
+            }
+            catch (ArgumentException e)
+            {
+                PolicyRefused ??= e;
             }
 
             Vector2 push = XZPlane.ToPlane(contact.Result.MinimumTranslationVector) * 1.01f;
@@ -223,19 +245,6 @@ public sealed class MotionWorldWedgePolicyTests
 
         public void OnMoveRejected(MotionWorld world, BodyId rejected)
         {
-        }
-
-        private static ArgumentException? Record(Action action)
-        {
-            try
-            {
-                action();
-                return null;
-            }
-            catch (ArgumentException e)
-            {
-                return e;
-            }
         }
     }
 }
