@@ -5,11 +5,10 @@ namespace URWPGSim2D.Ladder;
 
 /// <summary>
 /// The service's matchmaking when matches are played through Hangfire (PostgreSQL): one thread that
-/// keeps twice as many matches waiting as there are worker threads on the ladder's queue (at least
-/// two: each worker finds its next match waiting when it ends one, though the matches of other
-/// processes end unseen), hands each new match to a job, and hands to a job every queued match that
-/// has none (one made just before the service stopped, a requeued one, the final round's). It looks
-/// again when the ladder changes and every half second (workers in other processes finish matches).
+/// keeps as many matches waiting as there are worker threads on the ladder's queue (at least one),
+/// hands each new match to a job, and hands to a job every queued match that has none (one made just
+/// before the service stopped, a requeued one, the final round's). It looks again when the ladder
+/// changes and every two seconds (workers in other processes finish matches).
 /// </summary>
 internal sealed class LadderMatchmaker : IDisposable
 {
@@ -48,7 +47,7 @@ internal sealed class LadderMatchmaker : IDisposable
 
             try
             {
-                _wake.Wait(TimeSpan.FromSeconds(0.5), _stop.Token);
+                _wake.Wait(TimeSpan.FromSeconds(2), _stop.Token);
             }
             catch (OperationCanceledException)
             {
@@ -65,7 +64,7 @@ internal sealed class LadderMatchmaker : IDisposable
             store.SetJob(id, _jobs.Enqueue(id));
         }
 
-        int waiting = 2 * Math.Max(1, _jobs.Workers());
+        int waiting = Math.Max(1, _jobs.Workers());
         while (!_stop.IsCancellationRequested && _core.MakeMatch(waiting) is { } match)
         {
             store.SetJob(match.Id, _jobs.Enqueue(match.Id));
