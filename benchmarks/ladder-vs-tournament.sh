@@ -14,35 +14,8 @@ dotnet build src/URWPGSim2D.Server -c Release -v q --nologo >/dev/null
 server=src/URWPGSim2D.Server/bin/Release/net10.0/URWPGSim2D.Server.dll
 work=$(mktemp -d)
 trap 'kill "${pid:-0}" 2>/dev/null || true; rm -rf "$work"' EXIT
-mkdir -p "$work/toward" "$work/still"
-cat >"$work/toward/Toward.cs" <<'CS'
-using System;
-using System.Numerics;
-using URWPGSim2D.Strategies;
-public sealed class Toward : IStrategy
-{
-    public string TeamName => "toward";
-    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d)
-    {
-        for (int k = 0; k < fish.Length; k++)
-        {
-            FishView me = s.Fish[fish[k]];
-            Vector2 to = s.Balls[k % s.Balls.Length].Position - me.Position;
-            float error = MathF.IEEERemainder(MathF.Atan2(to.Y, to.X) - me.Heading, 2f * MathF.PI);
-            d[k] = new Decision(MathF.Abs(error) < 0.5f ? 12 : 4, 7 + (int)MathF.Round(Math.Clamp(error / 0.5f, -1f, 1f) * 7f));
-        }
-    }
-}
-CS
-cat >"$work/still/Still.cs" <<'CS'
-using System;
-using URWPGSim2D.Strategies;
-public sealed class Still : IStrategy
-{
-    public string TeamName => "still";
-    public void Decide(MatchSnapshot s, ReadOnlySpan<int> fish, Span<Decision> d) { d.Fill(Decision.Stop); }
-}
-CS
+source benchmarks/ladder-common.sh
+write_strategies "$work"
 
 now() { date +%s.%N; }
 
@@ -52,15 +25,7 @@ dotnet "$server" tournament --item ball-grab --minutes 1 --entrant toward="$work
 tournament=$(echo "$(now) - $start" | bc)
 
 start=$(now)
-dotnet "$server" ladder serve --item ball-grab --minutes 1 --data "$work/ladder" --port 0 --admin-token bench-organiser \
-  --workers 1 >"$work/serve.out" 2>"$work/serve.err" &
-pid=$!
-until [ -s "$work/serve.out" ]; do sleep 0.05; done
-url=$(head -1 "$work/serve.out" | cut -d' ' -f4)
-for team in toward still; do
-  token=$(dotnet "$server" ladder team add "$team" --server "$url" --admin-token bench-organiser | tail -1)
-  dotnet "$server" ladder submit --server "$url" --token "$token" "$work/$team" >/dev/null
-done
+serve_ladder "$server" "$work/serve" --data "$work/ladder" --workers 1
 # Counted from the match list, twice a second (the standings' bootstrap is not computed meanwhile).
 played() { curl -s "${url}api/matches?state=done&limit=10000" | grep -o '"id":' | wc -l; }
 until [ "$(played)" -ge "$n" ]; do sleep 0.5; done

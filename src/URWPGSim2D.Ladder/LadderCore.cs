@@ -42,12 +42,12 @@ internal sealed class LadderCore : IDisposable
     {
         Store = store;
         _settings = settings;
+        Files = new LadderFiles(store, settings.DataDir);
         if (player is not null)
         {
             Item = ItemRegistry.Find(player.Item) ?? throw new LadderInputException($"the ladder's item {Engine.Messages.MessageText.Quote(player.Item)} is not an item of this program");
             LadderId = player.Id;
             Directory.CreateDirectory(ReplaysFolder);
-            Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
             _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
             return;
         }
@@ -70,7 +70,6 @@ internal sealed class LadderCore : IDisposable
         LadderId = ladder.Id;
         Directory.CreateDirectory(SubmissionsFolder);
         Directory.CreateDirectory(ReplaysFolder);
-        Directory.CreateDirectory(Path.GetDirectoryName(OutputPage(1))!);
         if (settings.AdminToken is { } given)
         {
             Store.SetSetting("admin_token_hash", Secrets.HashToken(given));
@@ -89,6 +88,9 @@ internal sealed class LadderCore : IDisposable
 
     /// <summary>Where rows are kept.</summary>
     public ILadderStore Store { get; }
+
+    /// <summary>Submissions' and matches' files: in the database, copied into the data folder when used.</summary>
+    public LadderFiles Files { get; }
 
     /// <summary>The ladder's item.</summary>
     public CompetitionItem Item { get; }
@@ -111,17 +113,11 @@ internal sealed class LadderCore : IDisposable
     /// <summary>The ladder's row now.</summary>
     public LadderRow Ladder => Store.Ladder(LadderId)!;
 
-    /// <summary>Submissions' files: one folder per submission id.</summary>
-    public string SubmissionsFolder => Path.Combine(_settings.DataDir, "submissions");
+    /// <summary>Submissions' files: a copy of each submission's, in a folder of its own (<see cref="LadderFiles"/>).</summary>
+    public string SubmissionsFolder => Files.SubmissionsFolder;
 
-    /// <summary>Replay pages: match-ID.html.</summary>
+    /// <summary>Replay pages: copies of those in the database, and those being played.</summary>
     public string ReplaysFolder => Path.Combine(_settings.DataDir, "replays");
-
-    /// <summary>What the strategies of match <paramref name="id"/> printed and their slowest calls (<see cref="MatchOutputs"/>; a team sees its own log only).</summary>
-    public string OutputPage(long id) => Path.Combine(_settings.DataDir, "outputs", string.Create(CultureInfo.InvariantCulture, $"match-{id}.json"));
-
-    /// <summary>Match <paramref name="id"/>'s replay page.</summary>
-    public string ReplayPage(long id) => Path.Combine(ReplaysFolder, string.Create(CultureInfo.InvariantCulture, $"match-{id}.html"));
 
     /// <summary>Whether <paramref name="token"/> is the organiser's.</summary>
     public bool IsAdmin(string? token) =>
@@ -225,8 +221,8 @@ internal sealed class LadderCore : IDisposable
             throw new LadderInputException(e.Message);
         }
 
-        Store.SetSubmissionPath(row.Id, spec);
-        var (ok, log) = Check(team, row.Id, spec, folder);
+        spec = Files.Keep(row.Id, folder, spec);
+        var (ok, log) = Check(team, row.Id, spec, Path.GetDirectoryName(spec)!);
         Store.FinishSubmission(row.Id, ok, log);
         Touch();
         return Store.Submission(row.Id)! with { Kind = kind };
@@ -238,14 +234,14 @@ internal sealed class LadderCore : IDisposable
         foreach (var s in Store.Submissions(null).Where(s => s.State == SubmissionRow.Checking))
         {
             var team = Store.Teams().First(t => t.Id == s.TeamId);
-            string folder = Path.GetFullPath(Path.Combine(SubmissionsFolder, s.Id.ToString(CultureInfo.InvariantCulture)));
-            if (s.Path.Length == 0 || !Directory.Exists(folder))
+            string spec = s.Path.Length == 0 ? string.Empty : Files.Spec(s);
+            if (!File.Exists(spec) && !Directory.Exists(spec))
             {
                 Store.FinishSubmission(s.Id, ok: false, "the upload was interrupted; submit again");
                 continue;
             }
 
-            var (ok, log) = Check(team, s.Id, s.Path, folder);
+            var (ok, log) = Check(team, s.Id, spec, Path.GetDirectoryName(spec)!);
             Store.FinishSubmission(s.Id, ok, log);
         }
     }
@@ -385,15 +381,15 @@ internal sealed class LadderCore : IDisposable
         {
             var team = teams[match.Teams[k]];
             long sub = match.Submissions[k];
-            string spec = sub == 0 ? team.House ?? Entrant.Demo : Store.Submission(sub)!.Path;
+            string spec = sub == 0 ? team.House ?? Entrant.Demo : Files.Spec(Store.Submission(sub)!);
             sides.Add((team.Id, sub, new Entrant(team.Name, spec)));
         }
 
         var ladder = Ladder;
         var output = new StrategyOutput(sides.Count);
-        var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, ReplayPage(match.Id), output);
-        MatchOutputs.Write(OutputPage(match.Id), [.. sides.Select((s, k) => (s.Item1, output.SlowestMs(k), output.Text(k)))]);
-        bool written = Store.FinishMatch(match.Id, LadderMatchPlayer.Line(record));
+        string replay = Files.PlayingReplay(match.Id);
+        var record = _player.Play(checked((int)match.Id), match.Seed, ladder.Cycles, sides, replay, output);
+        bool written = Files.Finish(match.Id, LadderMatchPlayer.Line(record), replay, MatchOutputs.Json([.. sides.Select((s, k) => (s.Item1, output.SlowestMs(k), output.Text(k)))]));
         Interlocked.Increment(ref _changes);
         return written;
     }
@@ -508,7 +504,7 @@ internal sealed class LadderCore : IDisposable
             var ladder = Ladder;
             var header = new TournamentHeader(Item.Slug, entrants, 1, ladder.FirstSeed, ladder.Cycles, _settings.StrategyTimeoutMs, parsed.Count);
             var standings = Tournament.Standings.Compute(header, Item.TeamCount, parsed);
-            string json = StandingsJson.Format(standings, id => File.Exists(ReplayPage(id)));
+            string json = StandingsJson.Format(standings, id => Files.Has(id, LadderFiles.Replay));
             if (final is not null)
             {
                 json = "{\n  \"final\": true,\n  \"finalRound\": " + string.Create(CultureInfo.InvariantCulture,

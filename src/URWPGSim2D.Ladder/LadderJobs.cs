@@ -18,16 +18,39 @@ namespace URWPGSim2D.Ladder;
 /// on the queue <c>ladder</c>; every process with a Hangfire server on that queue (the service with
 /// <c>--workers N</c> above 0, each <c>ladder worker</c>) takes jobs and plays their matches. Hangfire
 /// gives a job to one server at a time, and to another when its server stops answering (the job's
-/// invisibility, renewed while it runs, lapses a minute after a <c>kill -9</c>). A match is claimed
-/// for its job and its record written only while it is running, so a match played twice is written once.
+/// invisibility, renewed while it runs every fifth of it, lapses the takeover time after a <c>kill -9</c>:
+/// <see cref="Takeover"/>). A match is claimed for its job and its record written only while it is running,
+/// so a match played twice is written once.
 /// </summary>
 internal sealed class LadderJobs : IDisposable
 {
     /// <summary>The Hangfire queue of the ladder's matches.</summary>
     public const string Queue = "ladder";
 
-    /// <summary>How long a match taken by a process that stopped answering (its renewals of the job stopped) waits before another process plays it.</summary>
-    public static TimeSpan Invisibility => TimeSpan.FromMinutes(1);
+    /// <summary>The takeover time unless <c>ladder serve --takeover</c> set another.</summary>
+    public static TimeSpan DefaultTakeover => TimeSpan.FromMinutes(1);
+
+    private const string TakeoverSetting = "takeover_seconds";
+
+    /// <summary>
+    /// How long a match taken by a process that stopped answering (its renewals of the job stopped) waits
+    /// before another process plays it: <paramref name="given"/> (the service's <c>--takeover</c>), kept in the
+    /// database so that every process that starts later uses the same (a process that waited less than
+    /// another renews would take its matches while it plays them); else the one kept there; else a minute.
+    /// </summary>
+    public static TimeSpan Takeover(ILadderStore store, TimeSpan? given)
+    {
+        if (given is { } set)
+        {
+            store.SetSetting(TakeoverSetting, ((int)set.TotalSeconds).ToString(System.Globalization.CultureInfo.InvariantCulture));
+            return set;
+        }
+
+        return store.Setting(TakeoverSetting) is { } kept && int.TryParse(kept, System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out int seconds)
+            && seconds is >= LadderSettings.MinTakeoverSeconds and <= LadderSettings.MaxTakeoverSeconds
+            ? TimeSpan.FromSeconds(seconds)
+            : DefaultTakeover;
+    }
 
     private readonly PostgreSqlStorage _storage;
     private readonly BackgroundJobClient _client;

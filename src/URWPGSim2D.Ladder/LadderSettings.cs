@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using URWPGSim2D.Hosting;
 using URWPGSim2D.Ladder.Play;
@@ -16,7 +17,10 @@ public sealed record LadderSettings
     /// <summary>Cycles per match of a ladder created now (600 a minute); null keeps a reopened ladder's length (10 minutes for a new one).</summary>
     public int? Cycles { get; init; }
 
-    /// <summary>The data folder: the SQLite database (unless <see cref="Database"/>), submissions and replay pages.</summary>
+    /// <summary>
+    /// The data folder: the SQLite database (unless <see cref="Database"/>) and copies of the submissions and
+    /// replay pages the database keeps (a worker's own folder, not the service's).
+    /// </summary>
     public string DataDir { get; init; } = "ladder-data";
 
     /// <summary>A PostgreSQL connection string (<c>Host=…;Database=…</c>), or null for SQLite in <see cref="DataDir"/>.</summary>
@@ -33,6 +37,19 @@ public sealed record LadderSettings
 
     /// <summary>Matches played at once by this process (0: this process plays none, another worker does).</summary>
     public int Workers { get; init; } = 1;
+
+    /// <summary>The shortest takeover time, s: a job's renewals (every fifth of it) stay seconds apart.</summary>
+    public const int MinTakeoverSeconds = 10;
+
+    /// <summary>The longest takeover time, s (a day).</summary>
+    public const int MaxTakeoverSeconds = 86_400;
+
+    /// <summary>
+    /// With PostgreSQL, how long a match taken by a worker that stopped answering waits before another plays
+    /// it (whole seconds, <see cref="MinTakeoverSeconds"/> to <see cref="MaxTakeoverSeconds"/>);
+    /// null: the one the database keeps (a minute unless set). Kept in the database for the workers.
+    /// </summary>
+    public TimeSpan? Takeover { get; init; }
 
     /// <summary>How user strategies run (strategy hosts, sandbox, memory).</summary>
     public HostSettings HostSettings { get; init; } = HostSettings.Default;

@@ -6,9 +6,10 @@ namespace URWPGSim2D.Ladder;
 /// <summary>
 /// <c>urwpgsim2d ladder worker</c>: a process that plays the ladder's matches beside the service,
 /// on this machine or another: it takes the matches the service queues in the PostgreSQL database
-/// (Hangfire jobs, <see cref="LadderSettings.Database"/>) and writes their records and replay pages;
-/// submissions are read from, and replays written to, the data folder, which must be the service's
-/// (the same path on every machine, e.g. a shared file system).
+/// (Hangfire jobs, <see cref="LadderSettings.Database"/>) and writes their records and outputs there. It
+/// needs nothing of the service's but the database: submissions come from the database and are copied into
+/// its own data folder (kept between starts, so a submission is fetched once), where it also plays replay
+/// pages before they go to the database with the match's record.
 /// </summary>
 public sealed class LadderWorker : IDisposable
 {
@@ -27,7 +28,7 @@ public sealed class LadderWorker : IDisposable
     public int Played => _job.Played;
 
     /// <summary>Starts playing: <see cref="LadderSettings.Workers"/> matches at once.</summary>
-    /// <param name="settings">The database (required), the data folder, the number of matches at once, how strategies run.</param>
+    /// <param name="settings">The database (required), the data folder (this worker's copies), the number of matches at once, how strategies run.</param>
     /// <param name="told">Told each match's id when it starts (false) and when this worker wrote its record (true).</param>
     /// <exception cref="LadderInputException">No database is given, it cannot be reached, or it has no ladder yet (the message says which).</exception>
     public static LadderWorker Start(LadderSettings settings, Action<long, bool> told)
@@ -52,7 +53,7 @@ public sealed class LadderWorker : IDisposable
         }
 
         Directory.CreateDirectory(settings.DataDir);
-        var jobs = new LadderJobs(settings.Database, LadderJobs.Invisibility);
+        var jobs = new LadderJobs(settings.Database, LadderJobs.Takeover(store, null));
         var job = MatchJob.Of(store, settings, null, told);
         jobs.Serve(settings.Workers, job);
         return new LadderWorker(store, jobs, job);

@@ -57,6 +57,9 @@ public sealed class CliTests : IDisposable
     [InlineData(new[] { "ladder", "serve", "--port", "70000" }, "ladder serve: --port must be a whole number from 0 to 65535, got \"70000\"")]
     [InlineData(new[] { "ladder", "serve", "--workers", "-1" }, "ladder serve: --workers must be a whole number from 0 to 256, got \"-1\"")]
     [InlineData(new[] { "ladder", "serve", "--admin-token", "short" }, "ladder serve: --admin-token must be at least 8 characters, got 5")]
+    [InlineData(new[] { "ladder", "serve", "--takeover", "5", "--database", "Host=x;Database=y" }, "ladder serve: --takeover must be a whole number from 10 to 86400, got \"5\"")]
+    [InlineData(new[] { "ladder", "serve", "--takeover", "1m" }, "ladder serve: --takeover must be a whole number from 10 to 86400, got \"1m\"")]
+    [InlineData(new[] { "ladder", "serve", "--takeover", "30", "--port", "0", "--data", "/nonexistent/never" }, "ladder serve: --takeover: only with --database (PostgreSQL), where worker processes take matches over")]
     [InlineData(new[] { "ladder", "team", "add", "x", "--server", "http://127.0.0.1:1/", "--admin-token", "t", "--strategy", "best" }, "ladder team add: --strategy must be demo, chase-ball or idle, got \"best\"")]
     [InlineData(new[] { "ladder", "submit", "--server", "ftp://x/", "--token", "t", "x.cs" }, "ladder submit: --server must be an http:// or https:// address, got \"ftp://x/\"")]
     [InlineData(new[] { "ladder", "submit", "--server", "http://127.0.0.1:1/", "--token", "t", "nothing.txt" }, "ladder submit: PATH must be a folder of .cs files, a .cs file or a .dll, got \"nothing.txt\"")]
@@ -82,7 +85,7 @@ public sealed class CliTests : IDisposable
     {
         var (code, output, _) = await ServeProcess.RunAsync("ladder", "--help");
         Assert.Equal(0, code);
-        Assert.Contains("urwpgsim2d ladder serve [--item ITEM] [--minutes M] [--data DIR] [--database CONNECTION] [--port P] [--host H] [--admin-token TOKEN] [--workers N]\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder serve [--item ITEM] [--minutes M] [--data DIR] [--database CONNECTION] [--port P] [--host H] [--admin-token TOKEN] [--workers N] [--takeover S]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder team add NAME --server URL --admin-token T [--strategy demo|chase-ball|idle]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder submit --server URL --token T PATH\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]\n", output, StringComparison.Ordinal);

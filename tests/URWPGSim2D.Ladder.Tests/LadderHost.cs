@@ -4,15 +4,18 @@ using URWPGSim2D.Ladder.Web;
 
 namespace URWPGSim2D.Ladder.Tests;
 
-/// <summary>A ladder service in this process on a free loopback port, over a fresh data folder; HTTP helpers; waits on conditions with generous bounds.</summary>
+/// <summary>A ladder service in this process on a free loopback port, over a fresh data folder (or a given one, kept); HTTP helpers; waits on conditions with generous bounds.</summary>
 public sealed class LadderHost : IAsyncDisposable
 {
     public const string AdminToken = "organiser-secret-token";
 
-    private LadderHost(LadderServer server, string folder)
+    private readonly bool _ownFolder;
+
+    private LadderHost(LadderServer server, string folder, bool ownFolder)
     {
         Server = server;
         Folder = folder;
+        _ownFolder = ownFolder;
         Http = new HttpClient { BaseAddress = new Uri(server.Url), Timeout = TimeSpan.FromMinutes(5) };
     }
 
@@ -22,15 +25,16 @@ public sealed class LadderHost : IAsyncDisposable
 
     public HttpClient Http { get; }
 
-    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null, URWPGSim2D.Hosting.HostSettings? hostSettings = null)
+    public static async Task<LadderHost> StartAsync(int workers, string item = "polo-1v1", LadderLimits? limits = null, URWPGSim2D.Hosting.HostSettings? hostSettings = null, string? folder = null)
     {
-        string folder = Directory.CreateTempSubdirectory("urwpg-ladder-").FullName;
+        bool own = folder is null;
+        folder ??= Directory.CreateTempSubdirectory("urwpg-ladder-").FullName;
         var settings = new LadderSettings
         {
             Item = item, Cycles = 600, DataDir = folder, Port = 0, AdminToken = AdminToken, Workers = workers, Limits = limits ?? new LadderLimits(),
             HostSettings = hostSettings ?? URWPGSim2D.Hosting.HostSettings.Default,
         };
-        return new LadderHost(await LadderServer.StartAsync(settings, _ => { }), folder);
+        return new LadderHost(await LadderServer.StartAsync(settings, _ => { }), folder, own);
     }
 
     public async Task<(int Status, JsonElement Body)> Send(HttpMethod method, string path, string? token = null, string? json = null, HttpContent? content = null, string? origin = null)
@@ -74,6 +78,11 @@ public sealed class LadderHost : IAsyncDisposable
     {
         Http.Dispose();
         await Server.DisposeAsync();
+        if (!_ownFolder)
+        {
+            return;
+        }
+
         for (int attempt = 0; ; attempt++)
         {
             try

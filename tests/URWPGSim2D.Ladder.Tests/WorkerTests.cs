@@ -6,8 +6,11 @@ namespace URWPGSim2D.Ladder.Tests;
 
 /// <summary>
 /// Two <c>ladder worker</c> processes beside a service that plays nothing itself, on a real
-/// PostgreSQL server: both play matches; one is killed with SIGKILL in the middle of a match, which
-/// the other then plays from its seed; every match is written once, by the one process that says so.
+/// PostgreSQL server, each with a data folder of its own (as on other machines): both play matches,
+/// a team's uploaded submission among them, and the service shows their results, replay pages and the
+/// team's logs; one worker is killed with SIGKILL in the middle of a match, which the other then plays
+/// from its seed once the service's takeover time has passed; every match is written once, by the one
+/// process that says so.
 /// </summary>
 [Collection(PostgresCollection.Name)]
 public sealed partial class WorkerTests(PostgresServer postgres) : IDisposable
@@ -22,18 +25,31 @@ public sealed partial class WorkerTests(PostgresServer postgres) : IDisposable
     public async Task TwoWorkersShareTheMatchesAndAKilledWorkersMatchIsPlayedOnceByTheOther()
     {
         string database = postgres.NewDatabase();
-        using var serve = await ServeProcess.StartAsync("ladder", "serve", "--item", "polo-1v1", "--minutes", "1", "--data", _folder, "--database", database,
-            "--port", "0", "--admin-token", Admin, "--workers", "0");
+        string service = Path.Combine(_folder, "service");
+        using var serve = await ServeProcess.StartAsync("ladder", "serve", "--item", "polo-1v1", "--minutes", "1", "--data", service, "--database", database,
+            "--port", "0", "--admin-token", Admin, "--workers", "0", "--takeover", "10");
+        string coder;
         using (var organiser = new LadderClient(serve.Url, Admin))
         {
             await organiser.AddTeamAsync("strong", "demo");
             await organiser.AddTeamAsync("weak", "idle");
             await organiser.AddTeamAsync("chaser", "chase-ball");
+            coder = (await organiser.AddTeamAsync("coder", null)).Token;
         }
 
+        string source = Path.Combine(_folder, "Still.cs");
+        File.WriteAllText(source, URWPGSim2D.Testing.SdkStrategy.Source("Still", "still", "d.Fill(Decision.Stop);"));
+        using (var team = new LadderClient(serve.Url, coder))
+        {
+            Assert.True((await team.SubmitAsync(source)).Ok);
+        }
+
+        // Each worker's folder is its own, none the service's.
+        int folders = 0;
+        string Folder() => Path.Combine(_folder, "worker-" + (++folders).ToString(System.Globalization.CultureInfo.InvariantCulture));
         var gone = new List<WorkerProcess>();
-        using var b = WorkerProcess.Start(database, _folder);
-        var a = WorkerProcess.Start(database, _folder);
+        using var b = WorkerProcess.Start(database, Folder());
+        var a = WorkerProcess.Start(database, Folder());
         try
         {
             // Kill a while it plays a match, once it has played one (if a kill lands after the match was written, start it again and kill again).
@@ -50,16 +66,38 @@ public sealed partial class WorkerTests(PostgresServer postgres) : IDisposable
                 }
                 else
                 {
-                    a = WorkerProcess.Start(database, _folder);
+                    a = WorkerProcess.Start(database, Folder());
                 }
             }
 
             Assert.NotEqual(0, interrupted);
 
-            // The other worker plays it, once the job's renewals from the killed one have lapsed.
+            // The other worker plays it, once the job's renewals from the killed one have lapsed (the service's --takeover).
             await LadderHost.Until(() => Task.FromResult(b.Written.Contains(interrupted)), $"worker b played match {interrupted}", minutes: 6);
             Assert.Equal(MatchRow.Done, store.Match(interrupted)!.State);
+
+            // The service shows what the workers played: every played match's replay page, and the team's own logs.
+            long coderId = store.TeamByName("coder")!.Id;
+            await LadderHost.Until(() => Task.FromResult(store.Records(1).Count(r => TeamsOf(store, r.Id).Contains(coderId)) >= 2), "the submission played twice", minutes: 6);
             b.KillHard();
+            using var http = new HttpClient { BaseAddress = new Uri(serve.Url) };
+            var done = JsonDocument.Parse(await http.GetStringAsync("/api/matches?state=done&limit=1000")).RootElement.GetProperty("matches").EnumerateArray().ToList();
+            Assert.Contains(done, m => m.GetProperty("id").GetInt64() == interrupted);
+            foreach (var m in done.Where(m => m.TryGetProperty("score", out _)))
+            {
+                string page = await http.GetStringAsync(m.GetProperty("replay").GetString());
+                Assert.Contains("<html", page, StringComparison.OrdinalIgnoreCase);
+                long id = m.GetProperty("id").GetInt64();
+                if (TeamsOf(store, id).Contains(coderId))
+                {
+                    using var log = new HttpRequestMessage(HttpMethod.Get, $"/api/teams/coder/matches/{id}/log");
+                    log.Headers.Authorization = new System.Net.Http.Headers.AuthenticationHeaderValue("Bearer", coder);
+                    using var answer = await http.SendAsync(log);
+                    Assert.Equal(System.Net.HttpStatusCode.OK, answer.StatusCode);
+                }
+            }
+
+            Assert.Contains(done, m => m.GetProperty("teams").EnumerateArray().Any(t => t.GetString() == "coder") && m.TryGetProperty("score", out _)); // played, not forfeited
             serve.KillHard();
 
             // Both played; each match written by exactly one process, which said so; nothing written twice or without its match.
@@ -88,6 +126,8 @@ public sealed partial class WorkerTests(PostgresServer postgres) : IDisposable
             }
         }
     }
+
+    private static IReadOnlyList<long> TeamsOf(SqlLadderStore store, long match) => store.Match(match)!.Teams;
 
     [Fact]
     public async Task AWorkerOfADatabaseWithoutALadderIsOneLineAndExitTwo()

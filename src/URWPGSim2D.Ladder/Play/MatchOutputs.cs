@@ -1,25 +1,22 @@
 using System.Collections.Generic;
-using System.IO;
 using System.Text.Json;
 using URWPGSim2D.Ladder.Storage;
-using URWPGSim2D.Tournament.Batch;
 
 namespace URWPGSim2D.Ladder.Play;
 
 /// <summary>
-/// A match's outputs file, <c>outputs/match-ID.json</c>: per side as played, its team's id, its
-/// slowest call (ms, null when not measured) and what its strategy printed
-/// (<c>{"sides": [{"team", "slowestMs", "log"}, …]}</c>). Written whole before the match's record,
-/// so a match played again writes it again.
+/// A match's outputs (its file <c>outputs.json</c>, kept with its record): per side as played, its
+/// team's id, its slowest call (ms, null when not measured) and what its strategy printed
+/// (<c>{"sides": [{"team", "slowestMs", "log"}, …]}</c>).
 /// </summary>
 internal static class MatchOutputs
 {
     /// <summary>One side's outputs.</summary>
     public sealed record Side(long Team, double? SlowestMs, string Log);
 
-    /// <summary>Writes the file (whole or not at all).</summary>
-    public static void Write(string path, IReadOnlyList<(long Team, double? SlowestMs, string Log)> sides) =>
-        AtomicFile.WriteAllText(path, JsonText.Of(w =>
+    /// <summary>The file's text.</summary>
+    public static string Json(IReadOnlyList<(long Team, double? SlowestMs, string Log)> sides) =>
+        JsonText.Of(w =>
         {
             w.WriteStartObject();
             w.WriteStartArray("sides");
@@ -42,17 +39,17 @@ internal static class MatchOutputs
 
             w.WriteEndArray();
             w.WriteEndObject();
-        }));
+        });
 
     /// <summary>The sides of a match's file, or null when there is none (the match is not played yet).</summary>
-    public static IReadOnlyList<Side>? Read(string path)
+    public static IReadOnlyList<Side>? Read(byte[]? file)
     {
-        if (!File.Exists(path))
+        if (file is null)
         {
             return null;
         }
 
-        using var document = JsonDocument.Parse(File.ReadAllText(path));
+        using var document = JsonDocument.Parse(file);
         var sides = new List<Side>();
         foreach (var s in document.RootElement.GetProperty("sides").EnumerateArray())
         {

@@ -64,6 +64,15 @@ internal interface ILadderStore : IDisposable
     /// <summary>Sets where a submission's files are.</summary>
     void SetSubmissionPath(long submission, string path);
 
+    /// <summary>Keeps a submission's files and where they are, in one transaction (the files replace any kept before).</summary>
+    void SetSubmissionFiles(long submission, string path, IReadOnlyList<StoredFile> files);
+
+    /// <summary>A submission's files, by name (none when it has none).</summary>
+    IReadOnlyList<StoredFile> SubmissionFiles(long submission);
+
+    /// <summary>The submissions that have a path but no files in the database (kept by an older version in its data folder).</summary>
+    IReadOnlyList<SubmissionRow> SubmissionsWithoutFiles();
+
     /// <summary>Ends a submission's check: <see cref="SubmissionRow.Ok"/> or <see cref="SubmissionRow.Error"/>, with its log.</summary>
     void FinishSubmission(long submission, bool ok, string log);
 
@@ -92,7 +101,22 @@ internal interface ILadderStore : IDisposable
     /// Writes a running match's record, once: in one transaction, and only while it is still
     /// running (a match re-played after a restart cannot be written twice). True when written.
     /// </summary>
-    bool FinishMatch(long match, string record);
+    /// <param name="match">The match.</param>
+    /// <param name="record">Its record.</param>
+    /// <param name="files">Its output files, kept in the same transaction (none: null).</param>
+    bool FinishMatch(long match, string record, IReadOnlyList<StoredFile>? files = null);
+
+    /// <summary>The names and SHA-256 of a match's files (without their bytes), by name.</summary>
+    IReadOnlyList<(string Name, string Sha256)> MatchFileHashes(long match);
+
+    /// <summary>One file of a match, or null.</summary>
+    StoredFile? MatchFile(long match, string name);
+
+    /// <summary>Keeps a finished match's files when it has none yet (read from a data folder of an older version); false when it had some or is not finished.</summary>
+    bool AddMatchFiles(long match, IReadOnlyList<StoredFile> files);
+
+    /// <summary>The finished matches without files in the database, by id.</summary>
+    IReadOnlyList<long> MatchesWithoutFiles();
 
     /// <summary>
     /// Claims a match for the job <paramref name="job"/> that plays it (another process's, through the
@@ -110,7 +134,7 @@ internal interface ILadderStore : IDisposable
     /// <summary>Puts every running match back in the queue (on start: what a stopped service was playing is played again from its seed).</summary>
     int RequeueRunning();
 
-    /// <summary>Puts a finished match back in the queue, its record removed (the organiser's requeue); false when it is not done.</summary>
+    /// <summary>Puts a finished match back in the queue, its record and files removed (the organiser's requeue); false when it is not done.</summary>
     bool Requeue(long match);
 
     /// <summary>A match by id, or null.</summary>

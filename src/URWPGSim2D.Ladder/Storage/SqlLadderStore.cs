@@ -204,6 +204,31 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
+    public void SetSubmissionFiles(long submission, string path, IReadOnlyList<StoredFile> files)
+    {
+        using var c = Open();
+        using var t = c.BeginTransaction();
+        Execute(c, t, "DELETE FROM submission_files WHERE submission_id = @id", ("id", submission));
+        InsertFiles(c, t, "submission_files", "submission_id", submission, files);
+        Execute(c, t, "UPDATE submissions SET path = @p WHERE id = @id", ("p", path), ("id", submission));
+        t.Commit();
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<StoredFile> SubmissionFiles(long submission)
+    {
+        using var c = Open();
+        return All(c, null, "SELECT name, sha256, bytes FROM submission_files WHERE submission_id = @id ORDER BY name", ReadFile, ("id", submission));
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<SubmissionRow> SubmissionsWithoutFiles()
+    {
+        using var c = Open();
+        return All(c, null, SubmissionSelect + " s WHERE path <> '' AND NOT EXISTS (SELECT 1 FROM submission_files f WHERE f.submission_id = s.id) ORDER BY id", ReadSubmission);
+    }
+
+    /// <inheritdoc/>
     public void FinishSubmission(long submission, bool ok, string log)
     {
         using var c = Open();
@@ -304,15 +329,69 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
-    public bool FinishMatch(long match, string record)
+    public bool FinishMatch(long match, string record, IReadOnlyList<StoredFile>? files = null)
     {
         using var c = Open();
         using var t = c.BeginTransaction();
         int changed = Execute(c, t, "UPDATE matches SET state = @d, finished = @t, record = @rec WHERE id = @id AND state = @r",
             ("d", MatchRow.Done), ("t", Now()), ("rec", record), ("id", match), ("r", MatchRow.Running));
+        if (changed == 1 && files is not null)
+        {
+            Execute(c, t, "DELETE FROM match_files WHERE match_id = @id", ("id", match));
+            InsertFiles(c, t, "match_files", "match_id", match, files);
+        }
+
         t.Commit();
         return changed == 1;
     }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<(string Name, string Sha256)> MatchFileHashes(long match)
+    {
+        using var c = Open();
+        return All(c, null, "SELECT name, sha256 FROM match_files WHERE match_id = @id ORDER BY name", r => (r.GetString(0), r.GetString(1)), ("id", match));
+    }
+
+    /// <inheritdoc/>
+    public StoredFile? MatchFile(long match, string name)
+    {
+        using var c = Open();
+        return One(c, null, "SELECT name, sha256, bytes FROM match_files WHERE match_id = @id AND name = @n", ReadFile, ("id", match), ("n", name));
+    }
+
+    /// <inheritdoc/>
+    public bool AddMatchFiles(long match, IReadOnlyList<StoredFile> files)
+    {
+        using var c = Open();
+        using var t = c.BeginTransaction();
+        bool add = One(c, t, "SELECT id FROM matches WHERE id = @id AND state = @d AND NOT EXISTS (SELECT 1 FROM match_files WHERE match_id = @id)",
+            r => r.GetInt64(0), ("id", match), ("d", MatchRow.Done)) == match;
+        if (add)
+        {
+            InsertFiles(c, t, "match_files", "match_id", match, files);
+        }
+
+        t.Commit();
+        return add;
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<long> MatchesWithoutFiles()
+    {
+        using var c = Open();
+        return All(c, null, "SELECT id FROM matches m WHERE state = @d AND NOT EXISTS (SELECT 1 FROM match_files f WHERE f.match_id = m.id) ORDER BY id",
+            r => r.GetInt64(0), ("d", MatchRow.Done));
+    }
+
+    private static void InsertFiles(DbConnection c, DbTransaction t, string table, string key, long id, IReadOnlyList<StoredFile> files)
+    {
+        foreach (var f in files)
+        {
+            Execute(c, t, $"INSERT INTO {table} ({key}, name, sha256, bytes) VALUES (@id, @n, @h, @b)", ("id", id), ("n", f.Name), ("h", f.Sha256), ("b", f.Packed()));
+        }
+    }
+
+    private static StoredFile ReadFile(DbDataReader r) => StoredFile.Unpacked(r.GetString(0), r.GetString(1), (byte[])r.GetValue(2));
 
     /// <inheritdoc/>
     public int RequeueRunning()
@@ -325,8 +404,16 @@ internal sealed class SqlLadderStore : ILadderStore
     public bool Requeue(long match)
     {
         using var c = Open();
-        return Execute(c, null, "UPDATE matches SET state = @q, started = NULL, finished = NULL, record = NULL, job = NULL WHERE id = @id AND state = @d",
+        using var t = c.BeginTransaction();
+        bool requeued = Execute(c, t, "UPDATE matches SET state = @q, started = NULL, finished = NULL, record = NULL, job = NULL WHERE id = @id AND state = @d",
             ("q", MatchRow.Queued), ("id", match), ("d", MatchRow.Done)) == 1;
+        if (requeued)
+        {
+            Execute(c, t, "DELETE FROM match_files WHERE match_id = @id", ("id", match));
+        }
+
+        t.Commit();
+        return requeued;
     }
 
     /// <inheritdoc/>

@@ -197,7 +197,7 @@ internal static class LadderApi
                 throw new NotFound("match of this team");
             }
 
-            var outputs = MatchOutputs.Read(core.OutputPage(m.Id)) ?? throw new NotFound("log (the match is not played yet)");
+            var outputs = MatchOutputs.Read(core.Files.Read(m.Id, LadderFiles.Outputs)) ?? throw new NotFound("log (the match is not played yet)");
             return Json(JsonText.Of(w =>
             {
                 w.WriteStartObject();
@@ -427,8 +427,7 @@ internal static class LadderApi
     private static IResult Replay(LadderCore core, string id)
     {
         long match = Id("match", id);
-        string page = core.ReplayPage(match);
-        return File.Exists(page) ? Results.Text(File.ReadAllText(page), "text/html; charset=utf-8", null, 200) : throw new NotFound("replay");
+        return core.Files.Read(match, LadderFiles.Replay) is { } page ? Results.Bytes(page, "text/html; charset=utf-8") : throw new NotFound("replay");
     }
 
     private static void WriteMatch(System.Text.Json.Utf8JsonWriter w, MatchRow m, Dictionary<long, TeamRow> teams, LadderCore core)
@@ -516,7 +515,7 @@ internal static class LadderApi
                 TournamentFile.WriteForfeits(w, r);
             }
 
-            if (MatchOutputs.Read(core.OutputPage(m.Id)) is { } outputs)
+            if (MatchOutputs.Read(core.Files.Read(m.Id, LadderFiles.Outputs)) is { } outputs)
             {
                 w.WriteStartArray("slowestMs");
                 foreach (var side in outputs)
@@ -534,7 +533,7 @@ internal static class LadderApi
                 w.WriteEndArray();
             }
 
-            if (File.Exists(core.ReplayPage(m.Id)))
+            if (core.Files.Has(m.Id, LadderFiles.Replay))
             {
                 w.WriteString("replay", string.Create(CultureInfo.InvariantCulture, $"/matches/{m.Id}/replay"));
             }

@@ -64,9 +64,15 @@ public sealed class LadderServer : IAsyncDisposable
             throw new LadderInputException($"--host must be an IP address or localhost, got {Engine.Messages.MessageText.Quote(settings.Host)}");
         }
 
+        if (settings.Takeover is not null && settings.Database is null)
+        {
+            throw new LadderInputException("--takeover: only with --database (PostgreSQL), where worker processes take matches over");
+        }
+
         Directory.CreateDirectory(settings.DataDir);
         var store = LadderDatabase.Open(settings);
         var core = new LadderCore(store, settings);
+        core.Files.Import(); // a data folder of an older version: its files into the database
         core.RecheckInterrupted();
         if (settings.Database is null)
         {
@@ -104,7 +110,7 @@ public sealed class LadderServer : IAsyncDisposable
         if (settings.Database is { } database)
         {
             // PostgreSQL: matches are Hangfire jobs, played by this process's server (--workers) and by every worker process.
-            var jobs = new LadderJobs(database, LadderJobs.Invisibility);
+            var jobs = new LadderJobs(database, LadderJobs.Takeover(store, settings.Takeover));
             if (settings.Workers > 0)
             {
                 jobs.Serve(settings.Workers, MatchJob.Of(store, settings, core, (_, _) => { }));

@@ -29,10 +29,12 @@ internal sealed class LadderCommand : ICliCommand
     private static readonly Option<string> HostOption = CliSyntax.Value("--host", "H", "the address to listen on (default 127.0.0.1, loopback only)");
     private static readonly Option<string> ServeAdminOption = CliSyntax.Value("--admin-token", "TOKEN", "the organiser's token (default: the stored one, or a new one printed on the first start)");
     private static readonly Option<string> WorkersOption = CliSyntax.Value("--workers", "N", "matches played at once (default 1; 0: none, another worker plays)");
+    private static readonly Option<string> TakeoverOption = CliSyntax.Value("--takeover", "S", "with --database: seconds before a match of a worker that stopped answering is played by another (10 to 86400; default: as kept, else 60)");
 
     private static readonly UsageLine ServeLine = new(
         UsageLine.Optional(ItemOption), UsageLine.Optional(MinutesOption), UsageLine.Optional(DataOption), UsageLine.Optional(DatabaseOption),
-        UsageLine.Optional(PortOption), UsageLine.Optional(HostOption), UsageLine.Optional(ServeAdminOption), UsageLine.Optional(WorkersOption));
+        UsageLine.Optional(PortOption), UsageLine.Optional(HostOption), UsageLine.Optional(ServeAdminOption), UsageLine.Optional(WorkersOption),
+        UsageLine.Optional(TakeoverOption));
 
     private static readonly Option<bool> AddHelp = CliSyntax.Help();
     private static readonly Option<string> AddServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
@@ -65,7 +67,7 @@ internal sealed class LadderCommand : ICliCommand
 
     private static readonly Option<bool> WorkerHelp = CliSyntax.Help();
     private static readonly Option<string> WorkerDatabaseOption = CliSyntax.Value("--database", "CONNECTION", "the service's PostgreSQL connection string");
-    private static readonly Option<string> WorkerDataOption = CliSyntax.Value("--data", "DIR", "the service's data folder: submissions are read there, replays and outputs written (default ladder-data)", CliCompletions.Paths);
+    private static readonly Option<string> WorkerDataOption = CliSyntax.Value("--data", "DIR", "this worker's folder: copies of submissions, replays being played (default ladder-data; need not be the service's)", CliCompletions.Paths);
     private static readonly Option<string> WorkerWorkersOption = CliSyntax.Value("--workers", "N", "matches played at once (default 1)");
 
     private static readonly UsageLine WorkerLine = new(WorkerDatabaseOption, UsageLine.Optional(WorkerDataOption), UsageLine.Optional(WorkerWorkersOption));
@@ -271,6 +273,11 @@ internal sealed class LadderCommand : ICliCommand
             settings = settings with { Workers = Number("--workers", workers, 0, 256) };
         }
 
+        if (values.TryGetValue(TakeoverOption, out string? takeover))
+        {
+            settings = settings with { Takeover = TimeSpan.FromSeconds(Number("--takeover", takeover, LadderSettings.MinTakeoverSeconds, LadderSettings.MaxTakeoverSeconds)) };
+        }
+
         return Serving(settings, console);
     }
 
@@ -403,7 +410,7 @@ internal sealed class LadderCommand : ICliCommand
         if (help)
         {
             WriteHelp(console, usage, "Plays the matches a ladder service queues in its PostgreSQL database, beside it, until stopped (Ctrl+C).\n" +
-                "DIR must be the service's data folder (the same path on every machine).", WorkerLine.OptionTable(24));
+                "It needs only the database: submissions and match outputs go through it; DIR keeps this worker's copies.", WorkerLine.OptionTable(24));
             return ExitCodes.Success;
         }
 
