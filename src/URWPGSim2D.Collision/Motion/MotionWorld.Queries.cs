@@ -14,18 +14,18 @@ public sealed partial class MotionWorld
     /// </summary>
     /// <param name="from">The ray's start, mm.</param>
     /// <param name="to">The ray's end, mm.</param>
-    /// <returns>The body and the entry, or a <see cref="RayHit"/> whose body is <c>default</c> (see <see cref="ShapeQuery.RayCast(in Shape, Vector2, Vector2)"/> for the rules of a single body).</returns>
+    /// <returns>The body and the entry, or body −1 (see <see cref="ShapeQuery.RayCast(in Shape, Vector2, Vector2)"/> for the rules of a single body).</returns>
     /// <exception cref="ArgumentException">A coordinate is not finite.</exception>
-    public RayHit RayCast(Vector2 from, Vector2 to)
+    public BodyRayHit RayCast(Vector2 from, Vector2 to)
     {
         ShapeQuery.CheckRay(from, to);
-        RayHit best = default;
+        BodyRayHit best = default;
         for (int i = 0; i < _bodies.Count; i++)
         {
             RayCastResult hit = RayCast(_bodies[i], from, to);
-            if (hit.Hit && (best.Body.IsNull || hit.Fraction < best.Result.Fraction))
+            if (hit.Hit && (best.Body < 0 || hit.Fraction < best.Result.Fraction))
             {
-                best = new RayHit(_bodies[i].Handle, hit);
+                best = new BodyRayHit(_bodies[i].Handle, hit);
             }
         }
 
@@ -38,7 +38,7 @@ public sealed partial class MotionWorld
     /// <param name="hits">Receives the first hits, as many as fit.</param>
     /// <returns>The number of bodies entered (may exceed the length of <paramref name="hits"/>).</returns>
     /// <exception cref="ArgumentException">A coordinate is not finite.</exception>
-    public int RayCastAll(Vector2 from, Vector2 to, Span<RayHit> hits)
+    public int RayCastAll(Vector2 from, Vector2 to, Span<BodyRayHit> hits)
     {
         ShapeQuery.CheckRay(from, to);
         int found = 0;
@@ -64,7 +64,7 @@ public sealed partial class MotionWorld
 
             if (at < hits.Length)
             {
-                hits[at] = new RayHit(_bodies[i].Handle, hit);
+                hits[at] = new BodyRayHit(_bodies[i].Handle, hit);
             }
 
             found++;
@@ -140,12 +140,12 @@ public sealed partial class MotionWorld
     /// from a point outside the pool or on its edge, else at the distance to the nearest edge.
     /// </summary>
     /// <param name="point">The point, mm.</param>
-    /// <returns>The body and the distance, or a <see cref="NearestBody"/> whose body is <c>default</c> when the motion world has no body.</returns>
+    /// <returns>The body and the distance, or body −1 when the motion world has no body.</returns>
     /// <exception cref="ArgumentException"><paramref name="point"/> is not finite.</exception>
-    public NearestBody Nearest(Vector2 point)
+    public BodyDistance Nearest(Vector2 point)
     {
         Guard.Finite(point, nameof(point));
-        NearestBody best = default;
+        BodyDistance best = default;
         float bestDistance = float.PositiveInfinity;
         for (int i = 0; i < _bodies.Count; i++)
         {
@@ -171,7 +171,7 @@ public sealed partial class MotionWorld
             if (d.Distance < bestDistance)
             {
                 bestDistance = d.Distance;
-                best = new NearestBody(b.Handle, d);
+                best = new BodyDistance(b.Handle, d);
             }
         }
 

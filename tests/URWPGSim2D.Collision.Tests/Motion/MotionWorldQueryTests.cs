@@ -10,15 +10,15 @@ public sealed class MotionWorldQueryTests
 {
     private const float Tolerance = 1e-3f;
 
+    public static TheoryData<int> Seeds => [1, 2, 3];
+
     [Theory]
-    [InlineData(1)]
-    [InlineData(2)]
-    [InlineData(3)]
+    [MemberData(nameof(Seeds))]
     public void RayCastsMatchBruteForce(int seed)
     {
         var scene = new Scene(seed);
         var random = new Random(seed * 7);
-        var hits = new RayHit[64];
+        var hits = new BodyRayHit[64];
         int entered = 0;
         for (int q = 0; q < 300; q++)
         {
@@ -33,39 +33,37 @@ public sealed class MotionWorldQueryTests
                 }
             }
 
-            RayHit first = scene.World.RayCast(from, to);
+            BodyRayHit first = scene.World.RayCast(from, to);
             int count = scene.World.RayCastAll(from, to, hits);
             Assert.Equal(expected.Count, count);
             if (expected.Count == 0)
             {
-                Assert.True(first.Body.IsNull, $"ray {q}: no body is entered, got {first}");
+                Assert.True(first.Id.IsNull, $"ray {q}: no body is entered, got {first}");
                 continue;
             }
 
             entered += count;
             float least = expected.Min(e => e.Hit.Fraction);
-            Assert.False(first.Body.IsNull, $"ray {q}: {expected.Count} bodies are entered, got none");
-            var mine = expected.Single(e => e.Index == first.Body.Index);
+            Assert.False(first.Id.IsNull, $"ray {q}: {expected.Count} bodies are entered, got none");
+            var mine = expected.Single(e => e.Index == first.Body);
             Assert.True(mine.Hit.Fraction <= least + Tolerance, $"ray {q}: {first} is not the first body entered (fraction {least})");
             Same(mine.Hit, first.Result, q);
-            Assert.Equal(expected.Select(e => e.Index).OrderBy(i => i), hits.Take(count).Select(h => h.Body.Index).OrderBy(i => i));
+            Assert.Equal(expected.Select(e => e.Index).OrderBy(i => i), hits.Take(count).Select(h => h.Body).OrderBy(i => i));
             for (int k = 0; k < count; k++)
             {
-                Same(expected.Single(e => e.Index == hits[k].Body.Index).Hit, hits[k].Result, q);
+                Same(expected.Single(e => e.Index == hits[k].Body).Hit, hits[k].Result, q);
                 Assert.True(k == 0 || hits[k - 1].Result.Fraction <= hits[k].Result.Fraction, $"ray {q}: hits out of order");
-                Assert.Equal(scene.World.IdAt(hits[k].Body.Index), hits[k].Body);
+                Assert.Equal(scene.World.IdAt(hits[k].Body), hits[k].Id);
             }
 
-            Assert.Equal(hits[0].Body, first.Body);
+            Assert.Equal(hits[0].Id, first.Id);
         }
 
         Assert.True(entered > 300, $"only {entered} entries in 300 rays: the scene does not exercise the ray casts");
     }
 
     [Theory]
-    [InlineData(1)]
-    [InlineData(2)]
-    [InlineData(3)]
+    [MemberData(nameof(Seeds))]
     public void OverlapsMatchBruteForce(int seed)
     {
         var scene = new Scene(seed);
@@ -102,9 +100,7 @@ public sealed class MotionWorldQueryTests
     }
 
     [Theory]
-    [InlineData(1)]
-    [InlineData(2)]
-    [InlineData(3)]
+    [MemberData(nameof(Seeds))]
     public void NearestMatchesBruteForce(int seed)
     {
         var scene = new Scene(seed);
@@ -115,15 +111,15 @@ public sealed class MotionWorldQueryTests
             Vector2 point = scene.RandomPoint(random, 1.1f);
             var distances = Enumerable.Range(0, scene.World.BodyCount).Select(i => scene.Distance(i, point)).ToArray();
             float least = distances.Min(d => d.Distance);
-            NearestBody nearest = scene.World.Nearest(point);
-            Assert.False(nearest.Body.IsNull);
-            DistanceResult mine = distances[nearest.Body.Index];
+            BodyDistance nearest = scene.World.Nearest(point);
+            Assert.False(nearest.Id.IsNull);
+            DistanceResult mine = distances[nearest.Body];
             Assert.True(mine.Distance <= least + Tolerance, $"point {q}: {nearest} is not the nearest body ({least} mm)");
             Assert.Equal(mine.Distance, nearest.Result.Distance, Tolerance);
             Assert.True(Vector2.Distance(mine.PointA, nearest.Result.PointA) <= Tolerance, $"point {q}: {nearest} against {mine}");
             Assert.Equal(point, nearest.Result.PointB);
             Assert.Equal(mine.PartA, nearest.Result.PartA);
-            kinds.Add(scene.World.KindOf(nearest.Body));
+            kinds.Add(scene.World.KindOf(nearest.Id));
         }
 
         Assert.True(kinds.Count >= 4, $"the nearest bodies were only {string.Join(", ", kinds)}");
@@ -133,8 +129,8 @@ public sealed class MotionWorldQueryTests
     public void AnEmptyWorldAnswersNothing()
     {
         var world = new MotionWorld();
-        Assert.True(world.Nearest(Vector2.Zero).Body.IsNull);
-        Assert.True(world.RayCast(Vector2.Zero, Vector2.One).Body.IsNull);
+        Assert.True(world.Nearest(Vector2.Zero).Id.IsNull);
+        Assert.True(world.RayCast(Vector2.Zero, Vector2.One).Id.IsNull);
         Assert.Equal(0, world.Overlap(new Aabb(-Vector2.One, Vector2.One), Span<BodyId>.Empty));
     }
 
@@ -144,11 +140,11 @@ public sealed class MotionWorldQueryTests
         var world = new MotionWorld();
         BodyId walls = world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         RayHit hit = world.RayCast(new Vector2(0f, 0f), new Vector2(3000f, 0f));
-        Assert.Equal(walls, hit.Body);
+        Assert.Equal(walls, hit.Id);
         Assert.Equal(0.5f, hit.Result.Fraction);
         Assert.Equal(new Vector2(-1f, 0f), hit.Result.Normal);
-        Assert.True(world.RayCast(new Vector2(1600f, 0f), new Vector2(0f, 0f)).Body.IsNull);
-        Assert.True(world.RayCast(new Vector2(0f, 0f), new Vector2(100f, 0f)).Body.IsNull);
+        Assert.True(world.RayCast(new Vector2(1600f, 0f), new Vector2(0f, 0f)).Id.IsNull);
+        Assert.True(world.RayCast(new Vector2(0f, 0f), new Vector2(100f, 0f)).Id.IsNull);
         Assert.Equal(100f, world.Nearest(new Vector2(1400f, 0f)).Result.Distance);
         Assert.Equal(0f, world.Nearest(new Vector2(1600f, 0f)).Result.Distance);
         Span<BodyId> found = stackalloc BodyId[1];
@@ -162,7 +158,7 @@ public sealed class MotionWorldQueryTests
         var world = new MotionWorld();
         world.AddCircle(10f, Vector2.Zero);
         Assert.Equal("from", Assert.Throws<ArgumentException>(() => world.RayCast(new Vector2(float.NaN, 0f), Vector2.Zero)).ParamName);
-        Assert.Equal("to", Assert.Throws<ArgumentException>(() => world.RayCastAll(Vector2.Zero, new Vector2(0f, float.PositiveInfinity), Span<RayHit>.Empty)).ParamName);
+        Assert.Equal("to", Assert.Throws<ArgumentException>(() => world.RayCastAll(Vector2.Zero, new Vector2(0f, float.PositiveInfinity), Span<BodyRayHit>.Empty)).ParamName);
         Assert.Equal("point", Assert.Throws<ArgumentException>(() => world.Nearest(new Vector2(float.NaN, 0f))).ParamName);
     }
 
@@ -172,7 +168,7 @@ public sealed class MotionWorldQueryTests
         MotionWorld world = MotionWorldAllocationTests.World(100);
         var handler = new RecordingHandler(0.3f) { Record = false };
         var random = new Random(5);
-        var hits = new RayHit[16];
+        var hits = new BodyRayHit[16];
         var found = new BodyId[16];
         Shape polygon = new ConvexPolygon([new Vector2(0f, 0f), new Vector2(300f, 50f), new Vector2(100f, 250f)]);
         long allocated = 0, answers = 0;
@@ -184,12 +180,12 @@ public sealed class MotionWorldQueryTests
             {
                 var from = new Vector2(random.NextSingle() * 3000f - 1500f, random.NextSingle() * 2000f - 1000f);
                 var to = new Vector2(random.NextSingle() * 3000f - 1500f, random.NextSingle() * 2000f - 1000f);
-                answers += world.RayCast(from, to).Body.IsNull ? 0 : 1;
+                answers += world.RayCast(from, to).Id.IsNull ? 0 : 1;
                 answers += world.RayCastAll(from, to, hits);
                 answers += world.Overlap(new Aabb(Vector2.Min(from, to), Vector2.Max(from, to)), found);
                 answers += world.Overlap(polygon, found);
                 answers += world.Overlap(new Circle(from, 200f), found);
-                answers += world.Nearest(to).Body.Index;
+                answers += world.Nearest(to).Body;
             }
 
             // The first round warms up (the JIT, the fish models' first rebuild).
