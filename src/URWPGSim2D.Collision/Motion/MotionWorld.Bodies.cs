@@ -373,9 +373,19 @@ public sealed partial class MotionWorld
             throw new ArgumentException($"{body} cannot be replaced {(_stepping ? "while a step runs" : "(the walls)")}", nameof(body));
         }
 
+        if (old.Kind == BodyKind.Static)
+        {
+            // In place: the broad phase takes the statics' boxes again when next loaded.
+            old.Reshape(shape);
+            Prepare(old);
+            _loaded = false;
+            return old.Handle;
+        }
+
         Body replacement = Body.Static(old.Id, shape);
         Prepare(replacement);
         replacement.Tag = old.Tag;
+        replacement.ShapeStamp = old.ShapeStamp + 1;
         _bodies[old.Id] = replacement;
         _loaded = false;
         return replacement.Handle;

@@ -8,7 +8,7 @@ namespace URWPGSim2D.Collision.Queries;
 /// questions: which body a ray enters first (or every body it enters), which bodies overlap a box
 /// or a shape, which body is nearest a point. It is a view over a <see cref="MotionWorld"/> that
 /// holds the bodies (each shape a static body, each fish a fish at the pose of the model given) and
-/// answers the queries (<see cref="MotionWorld.RayCast"/> and the others) with the exact tests of
+/// answers the queries (<see cref="MotionWorld.RayCast(Vector2, Vector2)"/> and the others) with the exact tests of
 /// <see cref="ShapeQuery"/> and <see cref="CollisionDetector"/>; a body's number is its
 /// <see cref="BodyId.Index"/> there.
 /// </summary>

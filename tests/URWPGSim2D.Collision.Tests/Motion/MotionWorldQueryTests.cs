@@ -153,6 +153,44 @@ public sealed class MotionWorldQueryTests
     }
 
     [Fact]
+    public void AStaticReplacedIsSeenByQueriesAndSteps()
+    {
+        var world = new MotionWorld();
+        BodyId obstacle = world.AddStatic(new Circle(Vector2.Zero, 50f));
+        BodyId ball = world.AddCircle(20f, new Vector2(-300f, 0f));
+        world.SetVelocity(ball, new Vector2(1000f, 0f));
+        Assert.Equal(obstacle, world.ReplaceByStatic(obstacle, new Circle(new Vector2(0f, 500f), 50f)));
+        Assert.Equal(obstacle, world.RayCast(new Vector2(0f, 0f), new Vector2(0f, 1000f)).Id);
+        var handler = new RecordingHandler(0.3f);
+        world.Step(0.5f, handler);
+        Assert.Empty(handler.Contacts);
+        Assert.Equal(200f, world.PositionOf(ball).X, 1e-3f);
+
+        world.ReplaceByStatic(obstacle, new Aabb(new Vector2(300f, -100f), new Vector2(400f, 100f)));
+        world.Step(0.5f, handler);
+        Assert.NotEmpty(handler.Contacts);
+        Assert.All(handler.Contacts, c => Assert.Equal(obstacle, c.BodyB));
+    }
+
+    [Fact]
+    public void AQueryWorldUpdatesItsShapesWithoutAllocating()
+    {
+        var world = new QueryWorld();
+        int ball = world.Add(new Circle(Vector2.Zero, 10f));
+        world.Update(ball, new Circle(Vector2.One, 10f));
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        for (int i = 0; i < 100; i++)
+        {
+            world.Update(ball, new Circle(new Vector2(i, 0f), 10f));
+        }
+
+        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        Assert.Equal(0L, allocated);
+        Assert.Equal(ball, world.Nearest(new Vector2(99f, 100f)).Body);
+        Assert.Equal(90f, world.Nearest(new Vector2(99f, 100f)).Result.Distance, 1e-3f);
+    }
+
+    [Fact]
     public void BadArgumentsAreRefusedByName()
     {
         var world = new MotionWorld();
