@@ -139,7 +139,7 @@ public sealed class MotionWorldQueryTests
     {
         var world = new MotionWorld();
         BodyId walls = world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        RayHit hit = world.RayCast(new Vector2(0f, 0f), new Vector2(3000f, 0f));
+        BodyRayHit hit = world.RayCast(new Vector2(0f, 0f), new Vector2(3000f, 0f));
         Assert.Equal(walls, hit.Id);
         Assert.Equal(0.5f, hit.Result.Fraction);
         Assert.Equal(new Vector2(-1f, 0f), hit.Result.Normal);
