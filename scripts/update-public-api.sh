@@ -10,7 +10,7 @@
 # See docs/packaging.md ("Public API").
 set -euo pipefail
 cd "$(dirname "$0")/.."
-projects=(src/URWPGSim2D.Collision src/URWPGSim2D.Strategy src/URWPGSim2D.Compat src/URWPGSim2D.Engine)
+projects=(src/URWPGSim2D.Collision src/URWPGSim2D.Strategies src/URWPGSim2D.Compat src/URWPGSim2D.Engine)
 
 count() { grep -vc '^#nullable' "$1" || true; }
 

@@ -34,7 +34,7 @@ Check($"first contact at 0.84 of the step (got {firstContact.Time})", Math.Abs(f
 var fish = new FishModel(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
 Check("the fish's bounds contain its centre", fish.Bounds.Min.X < 0f && fish.Bounds.Max.X > 0f);
 
-// URWPGSim2D.Strategy: a decision's gears.
+// URWPGSim2D.Strategies: a decision's gears.
 var decision = new Decision(12, 7);
 Check("decision gears", decision.VCode == 12 && decision.TCode == 7);
 

@@ -8,13 +8,19 @@ namespace URWPGSim2D.Hosting;
 /// The collectible AssemblyLoadContext of one team's strategy: its own dependencies resolve from its
 /// folder (its .deps.json), while the SDK, the compatibility assembly, the collision library and the
 /// server are shared with the host, so <see cref="IStrategy"/> and the original's types are the same
-/// types on both sides. Assemblies an old strategy names for the original's types
-/// (<c>URWPGSim2D.Common</c>, <c>Microsoft.Xna.Framework</c>, …) resolve to the compatibility assembly.
+/// types on both sides. The SDK's former assembly name, <c>URWPGSim2D.Strategy</c>, is shared too: the
+/// host's assembly of that name forwards every SDK type to <c>URWPGSim2D.Strategies</c>, so a strategy
+/// compiled against the former name gets the same types. Assemblies an old strategy names for the
+/// original's types (<c>URWPGSim2D.Common</c>, <c>Microsoft.Xna.Framework</c>, …) resolve to the
+/// compatibility assembly.
 /// </summary>
 internal sealed class StrategyLoadContext : AssemblyLoadContext
 {
     private static readonly string[] OriginalAssemblies =
         ["URWPGSim2D.Common", "URWPGSim2D.Core", "URWPGSim2D.StrategyLoader", "URWPGSim2D.StrategyHelper", "Microsoft.Xna.Framework"];
+
+    /// <summary>The SDK's former assembly name: type forwards to the SDK (<c>URWPGSim2D.Strategies</c>).</summary>
+    internal const string FormerSdkName = "URWPGSim2D.Strategy";
 
     private readonly AssemblyDependencyResolver? _resolver;
 
@@ -31,6 +37,7 @@ internal sealed class StrategyLoadContext : AssemblyLoadContext
     /// <param name="name">Simple assembly name.</param>
     public static bool IsShared(string? name) =>
         name == typeof(IStrategy).Assembly.GetName().Name
+        || name == FormerSdkName
         || name == typeof(Compat.Adapter.OriginalStrategyAdapter).Assembly.GetName().Name
         || name == typeof(StrategyLoadContext).Assembly.GetName().Name
         || name == "URWPGSim2D.Collision";

@@ -1,4 +1,4 @@
-// The template of a team strategy in the strategy SDK (package URWPGSim2D.Strategy): one class
+// The template of a team strategy in the strategy SDK (package URWPGSim2D.Strategies): one class
 // implementing IStrategy, asked every 100 ms cycle for one decision per fish of the team.
 // This example: every fish swims at the ball nearest to it, turning toward it.
 using System;

@@ -16,7 +16,7 @@ public sealed class InternalsVisibleToTests
     // The assemblies the server's tests run with: the server and every library it references.
     private static readonly string[] Referenced =
     [
-        "URWPGSim2D.Server", "URWPGSim2D.Collision", "URWPGSim2D.Engine", "URWPGSim2D.Strategy", "URWPGSim2D.Compat",
+        "URWPGSim2D.Server", "URWPGSim2D.Collision", "URWPGSim2D.Engine", "URWPGSim2D.Strategies", "URWPGSim2D.Strategy", "URWPGSim2D.Compat",
         "URWPGSim2D.Protocol", "URWPGSim2D.Hosting", "URWPGSim2D.Viewer", "URWPGSim2D.Tournament", "URWPGSim2D.Ladder",
     ];
 

@@ -22,7 +22,7 @@ public sealed class ToolAndTemplatesTests
     }
 
     [Theory]
-    [InlineData("StrategySdk", "urwpgsim2d-strategy", "URWPGSim2D.Strategy")]
+    [InlineData("StrategySdk", "urwpgsim2d-strategy", "URWPGSim2D.Strategies")]
     [InlineData("Strategy", "urwpgsim2d-strategy-original", "URWPGSim2D.Compat")]
     public void EachTemplateMakesAProjectOnThePackagesOfItsOwnVersion(string folder, string shortName, string package)
     {

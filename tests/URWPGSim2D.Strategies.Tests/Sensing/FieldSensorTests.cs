@@ -1,7 +1,7 @@
 using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Shapes;
 
-namespace URWPGSim2D.Strategy.Tests.Sensing;
+namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary><see cref="FieldSensor"/> on hand-made scenes with known answers, its errors, and its allocations.</summary>
 public sealed class FieldSensorTests

@@ -1,6 +1,6 @@
 using URWPGSim2D.Collision.Fish;
 
-namespace URWPGSim2D.Strategy.Tests.Sensing;
+namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary>
 /// A random snapshot (a 3000 × 2000 field, two rectangle obstacles at any heading, a round one,

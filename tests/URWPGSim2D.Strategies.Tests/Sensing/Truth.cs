@@ -1,4 +1,4 @@
-namespace URWPGSim2D.Strategy.Tests.Sensing;
+namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary>
 /// One body in double: a disc (analytic), one or more convex counter-clockwise polygons (a point is

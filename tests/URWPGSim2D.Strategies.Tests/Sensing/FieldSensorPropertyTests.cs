@@ -1,4 +1,4 @@
-namespace URWPGSim2D.Strategy.Tests.Sensing;
+namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary>
 /// <see cref="FieldSensor"/>'s answers on random scenes against the double-precision truth of
