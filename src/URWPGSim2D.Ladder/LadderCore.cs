@@ -14,16 +14,14 @@ using URWPGSim2D.Tournament;
 namespace URWPGSim2D.Ladder;
 
 /// <summary>
-/// The ladder without its web front: the organiser's and teams' actions, matchmaking, playing one
-/// match and the standings. Every change goes through the store in one transaction; a match's record
-/// is written once, keyed by its id, so a service stopped at any moment and started again plays what
-/// it was playing again from the same seed and loses or doubles nothing.
+/// One ladder without its web front: its teams' submissions, matchmaking, playing one match, the
+/// final round and the standings (<see cref="LadderService"/> keeps the service's ladders, teams and
+/// organiser). Every change goes through the store in one transaction; a match's record is written
+/// once, keyed by its id, so a service stopped at any moment and started again plays what it was
+/// playing again from the same seed and loses or doubles nothing.
 /// </summary>
-internal sealed class LadderCore : IDisposable
+internal sealed class LadderCore
 {
-    /// <summary>The built-in strategies a house entrant may play.</summary>
-    public static IReadOnlyList<string> HouseStrategies => LadderSettings.HouseStrategies;
-
     private readonly LadderSettings _settings;
     private readonly LadderMatchPlayer _player;
     private readonly object _matchmaking = new();
@@ -32,61 +30,22 @@ internal sealed class LadderCore : IDisposable
     private (Standings Standings, string Json)? _standings;
     private long _changes;
 
-    public LadderCore(ILadderStore store, LadderSettings settings)
-        : this(store, settings, null)
-    {
-    }
-
-    // With a ladder: a player of that ladder's matches only (a worker process), which creates and changes nothing else.
-    private LadderCore(ILadderStore store, LadderSettings settings, LadderRow? player)
+    private LadderCore(ILadderStore store, LadderSettings settings, LadderRow ladder)
     {
         Store = store;
         _settings = settings;
         Files = new LadderFiles(store, settings.DataDir);
-        if (player is not null)
-        {
-            Item = ItemRegistry.Find(player.Item) ?? throw new LadderInputException($"the ladder's item {Engine.Messages.MessageText.Quote(player.Item)} is not an item of this program");
-            LadderId = player.Id;
-            Directory.CreateDirectory(ReplaysFolder);
-            _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
-            return;
-        }
-
-        Store.Migrate();
-        var existing = settings.Item is null ? Store.NewestLadder() : null;
-        string slug = settings.Item ?? existing?.Item ?? "ball-grab";
-        Item = ItemRegistry.Find(slug) ?? throw new LadderInputException($"--item: unknown item {Engine.Messages.MessageText.Quote(slug)}");
-        if (Item.TeamCount != 2)
-        {
-            throw new LadderInputException($"--item: {Item.Slug} is an item of {Item.TeamCount} team(s); a ladder plays items of two teams");
-        }
-
-        var ladder = Store.OpenLadder(Item.Slug, settings.Cycles ?? 6000, 1);
-        if (settings.Cycles is { } cycles && cycles != ladder.Cycles)
-        {
-            Store.SetCycles(ladder.Id, cycles);
-        }
-
+        Item = ItemRegistry.Find(ladder.Item) ?? throw new LadderInputException($"the ladder's item {Engine.Messages.MessageText.Quote(ladder.Item)} is not an item of this program");
         LadderId = ladder.Id;
         Directory.CreateDirectory(SubmissionsFolder);
         Directory.CreateDirectory(ReplaysFolder);
-        if (settings.AdminToken is { } given)
-        {
-            Store.SetSetting("admin_token_hash", Secrets.HashToken(given));
-        }
-        else if (Store.Setting("admin_token_hash") is null)
-        {
-            NewAdminToken = Secrets.NewToken();
-            Store.SetSetting("admin_token_hash", Secrets.HashToken(NewAdminToken));
-        }
-
         _player = new LadderMatchPlayer(Item, settings.HostSettings, settings.StrategyTimeoutMs, Math.Max(4, (2 * settings.Workers) + 2));
     }
 
-    /// <summary>A core that only plays the matches of <paramref name="ladder"/> (in a worker process): it creates and changes nothing but those matches' records and replay pages.</summary>
+    /// <summary>The core of <paramref name="ladder"/> over a store whose schema is up to date (the service's, or a worker process's, which only plays its matches).</summary>
     public static LadderCore Player(ILadderStore store, LadderSettings settings, LadderRow ladder) => new(store, settings, ladder);
 
-    /// <summary>Where rows are kept.</summary>
+    /// <summary>Where rows are kept (the service's; this core does not dispose of it).</summary>
     public ILadderStore Store { get; }
 
     /// <summary>Submissions' and matches' files: in the database, copied into the data folder when used.</summary>
@@ -98,16 +57,13 @@ internal sealed class LadderCore : IDisposable
     /// <summary>The ladder's id.</summary>
     public long LadderId { get; }
 
-    /// <summary>The organiser's token made on this first start (print it once), or null.</summary>
-    public string? NewAdminToken { get; }
-
     /// <summary>Upload limits.</summary>
     public LadderLimits Limits => _settings.Limits;
 
     /// <summary>Matches this process plays at once.</summary>
     public int Workers => _settings.Workers;
 
-    /// <summary>Told whenever something may give a worker a match to play (a team, a submission, a resume, a requeue).</summary>
+    /// <summary>Told whenever something may give a worker a match of this ladder to play (a submission, a resume, a requeue, a final round).</summary>
     public event Action? Changed;
 
     /// <summary>The ladder's row now.</summary>
@@ -119,66 +75,9 @@ internal sealed class LadderCore : IDisposable
     /// <summary>Replay pages: copies of those in the database, and those being played.</summary>
     public string ReplaysFolder => Path.Combine(_settings.DataDir, "replays");
 
-    /// <summary>Whether <paramref name="token"/> is the organiser's.</summary>
-    public bool IsAdmin(string? token) =>
-        token is { Length: > 0 } && Store.Setting("admin_token_hash") is { } stored && Secrets.SameHash(Secrets.HashToken(token), stored);
-
-    /// <summary>The team whose token is <paramref name="token"/>, or null.</summary>
-    public TeamRow? TeamOf(string? token) =>
-        token is { Length: > 0 } ? Store.TeamByToken(Secrets.HashToken(token)) ?? Store.TeamBySession(Secrets.HashToken(token)) : null;
-
-    /// <summary>A new sign-in token of <paramref name="team"/> (after its password was checked), kept hashed.</summary>
-    public string NewSession(TeamRow team)
-    {
-        string token = Secrets.NewToken();
-        Store.AddSession(team.Id, Secrets.HashToken(token));
-        return token;
-    }
-
-    /// <summary>The most submissions of one team per UTC day.</summary>
-    public int SubmissionsPerDay =>
-        Store.Setting("submissions_per_day") is { } text && int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int n) ? n : _settings.Limits.SubmissionsPerDay;
-
-    /// <summary>Sets the per-day submission limit.</summary>
-    public void SetSubmissionsPerDay(int limit)
-    {
-        if (limit < 1 || limit > 10_000)
-        {
-            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"submissionsPerDay must be 1 to 10000, got {limit}"));
-        }
-
-        Store.SetSetting("submissions_per_day", limit.ToString(CultureInfo.InvariantCulture));
-    }
-
-    /// <summary>Adds a team (a house entrant when <paramref name="house"/> names a built-in strategy) and returns it with its token, shown once.</summary>
-    public (TeamRow Team, string Token) AddTeam(string name, string? house)
-    {
-        CheckName(name);
-        if (house is not null && !HouseStrategies.Contains(house))
-        {
-            throw new LadderInputException($"strategy must be {string.Join(", ", HouseStrategies)}, got {Engine.Messages.MessageText.Quote(house)}");
-        }
-
-        string token = Secrets.NewToken();
-        var team = Store.AddTeam(name, Secrets.HashToken(token), house) ?? throw new LadderInputException($"name: a team named {Engine.Messages.MessageText.Quote(name)} exists already");
-        Touch();
-        return (team, token);
-    }
-
-    /// <summary>Sets a team's password (for signing in on the page).</summary>
-    public void SetPassword(TeamRow team, string password)
-    {
-        if (password.Length < 8 || password.Length > 200)
-        {
-            throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"password must be 8 to 200 characters, got {password.Length}"));
-        }
-
-        Store.SetPassword(team.Id, Secrets.HashPassword(password));
-    }
-
-    /// <summary>The team named <paramref name="name"/> when <paramref name="password"/> is its password, else null.</summary>
-    public TeamRow? SignIn(string name, string password) =>
-        Store.TeamByName(name) is { PasswordHash: { } hash } team && Secrets.CheckPassword(password, hash) ? team : null;
+    /// <summary>The most submissions of one team to one ladder per UTC day (the organiser's setting, else the default limit).</summary>
+    public static int SubmissionsPerDay(ILadderStore store, LadderLimits limits) =>
+        store.Setting("submissions_per_day") is { } text && int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int n) ? n : limits.SubmissionsPerDay;
 
     /// <summary>
     /// Takes a team's upload: checks the limits and the names, writes its files, compiles and checks
@@ -202,13 +101,13 @@ internal sealed class LadderCore : IDisposable
         }
 
         var today = DateTime.UtcNow.Date;
-        int limit = SubmissionsPerDay;
-        if (Store.SubmissionsSince(team.Id, today) >= limit)
+        int limit = SubmissionsPerDay(Store, Limits);
+        if (Store.SubmissionsSince(team.Id, LadderId, today) >= limit)
         {
             throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"submission: the limit of {limit} submissions a day is reached; try again after 00:00 UTC"));
         }
 
-        var row = Store.AddSubmission(team.Id, "upload", DateTime.UtcNow);
+        var row = Store.AddSubmission(team.Id, LadderId, "upload", DateTime.UtcNow);
         string folder = Path.GetFullPath(Path.Combine(SubmissionsFolder, row.Id.ToString(CultureInfo.InvariantCulture)));
         string kind, spec;
         try
@@ -228,10 +127,10 @@ internal sealed class LadderCore : IDisposable
         return Store.Submission(row.Id)! with { Kind = kind };
     }
 
-    /// <summary>On start: the submissions a stopped service was checking are checked again (or refused when their files were never whole).</summary>
+    /// <summary>On start: the ladder's submissions a stopped service was checking are checked again (or refused when their files were never whole).</summary>
     public void RecheckInterrupted()
     {
-        foreach (var s in Store.Submissions(null).Where(s => s.State == SubmissionRow.Checking))
+        foreach (var s in Store.Submissions(null).Where(s => s.State == SubmissionRow.Checking && s.LadderId == LadderId))
         {
             var team = Store.Teams().First(t => t.Id == s.TeamId);
             string spec = s.Path.Length == 0 ? string.Empty : Files.Spec(s);
@@ -287,10 +186,10 @@ internal sealed class LadderCore : IDisposable
         Touch();
     }
 
-    /// <summary>Puts a finished match back in the queue: it is played again from its seed, its old record removed.</summary>
+    /// <summary>Puts a finished match of the ladder back in the queue: it is played again from its seed, its old record removed.</summary>
     public void Requeue(long match)
     {
-        if (!Store.Requeue(match))
+        if (Store.Match(match)?.LadderId != LadderId || !Store.Requeue(match))
         {
             throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"match: {match} is not a finished match"));
         }
@@ -298,7 +197,7 @@ internal sealed class LadderCore : IDisposable
         Touch();
     }
 
-    /// <summary>Per team, what plays for it now: its house strategy or its newest working submission (absent: nothing yet).</summary>
+    /// <summary>Per team, what plays for it in this ladder now: its house strategy (a house entrant of this ladder) or its newest working submission to it (absent: nothing).</summary>
     public Dictionary<long, (long Submission, string Spec)> Playing()
     {
         var playing = new Dictionary<long, (long, string)>();
@@ -306,9 +205,12 @@ internal sealed class LadderCore : IDisposable
         {
             if (team.House is { } house)
             {
-                playing[team.Id] = (0, house);
+                if (team.LadderId == LadderId)
+                {
+                    playing[team.Id] = (0, house);
+                }
             }
-            else if (Store.NewestWorking(team.Id) is { } s)
+            else if (Store.NewestWorking(team.Id, LadderId) is { } s)
             {
                 playing[team.Id] = (s.Id, s.Path);
             }
@@ -503,7 +405,8 @@ internal sealed class LadderCore : IDisposable
 
             var ladder = Ladder;
             var header = new TournamentHeader(Item.Slug, entrants, 1, ladder.FirstSeed, ladder.Cycles, _settings.StrategyTimeoutMs, parsed.Count);
-            var standings = Tournament.Standings.Compute(header, Item.TeamCount, parsed);
+            // A ladder no team plays in yet (a new one) has empty standings.
+            var standings = entrants.Count == 0 ? new Standings(header, Item.TeamCount, [], [], new (int W, int D, int L)[0, 0]) : Tournament.Standings.Compute(header, Item.TeamCount, parsed);
             string json = StandingsJson.Format(standings, id => Files.Has(id, LadderFiles.Replay));
             if (final is not null)
             {
@@ -536,15 +439,4 @@ internal sealed class LadderCore : IDisposable
         Interlocked.Increment(ref _changes);
         Changed?.Invoke();
     }
-
-    /// <summary>A team name: 1 to 40 letters, digits, spaces, '-', '_' or '.', not starting or ending with a space.</summary>
-    public static void CheckName(string name)
-    {
-        if (name.Length is 0 or > 40 || name.Trim() != name || !name.All(c => char.IsLetterOrDigit(c) || c is ' ' or '-' or '_' or '.'))
-        {
-            throw new LadderInputException($"name must be 1 to 40 letters, digits, spaces, '-', '_' or '.', got {Engine.Messages.MessageText.Quote(name)}");
-        }
-    }
-
-    public void Dispose() => Store.Dispose();
 }

@@ -5,26 +5,27 @@ namespace URWPGSim2D.Ladder;
 
 /// <summary>
 /// The service's matchmaking when matches are played through Hangfire (PostgreSQL): one thread that
-/// keeps as many matches waiting as there are worker threads on the ladder's queue (at least one),
-/// hands each new match to a job, and hands to a job every queued match that has none (one made just
-/// before the service stopped, a requeued one, the final round's). It looks again when the ladder
-/// changes and every two seconds (workers in other processes finish matches).
+/// keeps, in each ladder, as many matches waiting as there are worker threads on the ladders' queue
+/// (at least one), making them one ladder after the other so that the queue serves every ladder in
+/// turn; it hands each new match to a job, and hands to a job every queued match that has none (one
+/// made just before the service stopped, a requeued one, the final round's). It looks again when a
+/// ladder changes and every two seconds (workers in other processes finish matches).
 /// </summary>
 internal sealed class LadderMatchmaker : IDisposable
 {
-    private readonly LadderCore _core;
+    private readonly LadderService _service;
     private readonly LadderJobs _jobs;
     private readonly Action<string> _report;
     private readonly Thread _thread;
     private readonly CancellationTokenSource _stop = new();
     private readonly SemaphoreSlim _wake = new(0, int.MaxValue);
 
-    public LadderMatchmaker(LadderCore core, LadderJobs jobs, Action<string> report)
+    public LadderMatchmaker(LadderService service, LadderJobs jobs, Action<string> report)
     {
-        _core = core;
+        _service = service;
         _jobs = jobs;
         _report = report;
-        core.Changed += Wake;
+        service.Changed += Wake;
         _thread = new Thread(Loop) { IsBackground = true, Name = "ladder matchmaker" };
     }
 
@@ -58,22 +59,34 @@ internal sealed class LadderMatchmaker : IDisposable
 
     private void Schedule()
     {
-        var store = _core.Store;
-        foreach (long id in store.Unscheduled(_core.LadderId))
+        var store = _service.Store;
+        var cores = _service.Cores();
+        foreach (var core in cores)
         {
-            store.SetJob(id, _jobs.Enqueue(id));
+            foreach (long id in store.Unscheduled(core.LadderId))
+            {
+                store.SetJob(id, _jobs.Enqueue(id));
+            }
         }
 
         int waiting = Math.Max(1, _jobs.Workers());
-        while (!_stop.IsCancellationRequested && _core.MakeMatch(waiting) is { } match)
+        for (bool made = true; made && !_stop.IsCancellationRequested;)
         {
-            store.SetJob(match.Id, _jobs.Enqueue(match.Id));
+            made = false;
+            foreach (var core in cores)
+            {
+                if (core.MakeMatch(waiting) is { } match)
+                {
+                    store.SetJob(match.Id, _jobs.Enqueue(match.Id));
+                    made = true;
+                }
+            }
         }
     }
 
     public void Dispose()
     {
-        _core.Changed -= Wake;
+        _service.Changed -= Wake;
         _stop.Cancel();
         if (_thread.IsAlive)
         {

@@ -4,21 +4,21 @@ using System.Threading;
 namespace URWPGSim2D.Ladder;
 
 /// <summary>
-/// The matchmaking loop that never stops: each worker thread claims the next match (queuing one
-/// when none waits) and plays it; with nothing to play it waits until the ladder changes (a team,
+/// The matchmaking loop that never stops: each worker thread claims the next match of the next ladder
+/// in turn (queuing one when none waits) and plays it; with nothing to play it waits until the ladder changes (a team,
 /// a submission, a resume, a requeue) or a minute passes (another process may have queued one).
 /// A match that throws is the server's failure, already written as a forfeit of the side at fault;
 /// anything thrown past that is reported and the loop goes on.
 /// </summary>
 internal sealed class LadderWorkers : IDisposable
 {
-    private readonly LadderCore _core;
+    private readonly LadderService _core;
     private readonly Action<string> _report;
     private readonly Thread[] _threads;
     private readonly CancellationTokenSource _stop = new();
     private readonly SemaphoreSlim _wake = new(0, int.MaxValue);
 
-    public LadderWorkers(LadderCore core, int workers, Action<string> report)
+    public LadderWorkers(LadderService core, int workers, Action<string> report)
     {
         _core = core;
         _report = report;

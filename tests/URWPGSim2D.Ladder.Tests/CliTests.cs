@@ -52,7 +52,7 @@ public sealed class CliTests : IDisposable
     }
 
     [Theory]
-    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, team add, submit, final, worker). Usage: urwpgsim2d ladder serve|team add|submit|final|worker ...")]
+    [InlineData(new[] { "ladder" }, "ladder: a sub-command is needed (serve, create, list, pause, resume, team add, submit, final, worker). Usage: urwpgsim2d ladder serve|create|list|pause|resume|team add|submit|final|worker ...")]
     [InlineData(new[] { "ladder", "serve", "--minutes", "2" }, "ladder serve: --minutes must be 10, 5, 3 or 1, got \"2\"")]
     [InlineData(new[] { "ladder", "serve", "--port", "70000" }, "ladder serve: --port must be a whole number from 0 to 65535, got \"70000\"")]
     [InlineData(new[] { "ladder", "serve", "--workers", "-1" }, "ladder serve: --workers must be a whole number from 0 to 256, got \"-1\"")]
@@ -66,7 +66,7 @@ public sealed class CliTests : IDisposable
     [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t", "--top", "1" }, "ladder final: --top must be a whole number from 2 to 1000, got \"1\"")]
     [InlineData(new[] { "ladder", "worker", "--database", "Host=x;Database=y", "--workers", "0" }, "ladder worker: --workers must be a whole number from 1 to 256, got \"0\"")]
     [InlineData(new[] { "ladder", "worker", "--data", "x" }, "ladder worker: --database CONNECTION is required. Usage: urwpgsim2d ladder worker --database CONNECTION [--data DIR] [--workers N]")]
-    [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t" }, "ladder final: --top K is required. Usage: urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]")]
+    [InlineData(new[] { "ladder", "final", "--server", "http://127.0.0.1:1/", "--admin-token", "t" }, "ladder final: --top K is required. Usage: urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N] [--ladder L]")]
     public async Task BadArgumentsAreOneLineAndExitTwo(string[] arguments, string message)
     {
         var (code, output, error) = await ServeProcess.RunAsync(arguments);
@@ -86,9 +86,9 @@ public sealed class CliTests : IDisposable
         var (code, output, _) = await ServeProcess.RunAsync("ladder", "--help");
         Assert.Equal(0, code);
         Assert.Contains("urwpgsim2d ladder serve [--item ITEM] [--minutes M] [--data DIR] [--database CONNECTION] [--port P] [--host H] [--admin-token TOKEN] [--workers N] [--takeover S]\n", output, StringComparison.Ordinal);
-        Assert.Contains("urwpgsim2d ladder team add NAME --server URL --admin-token T [--strategy demo|chase-ball|idle]\n", output, StringComparison.Ordinal);
-        Assert.Contains("urwpgsim2d ladder submit --server URL --token T PATH\n", output, StringComparison.Ordinal);
-        Assert.Contains("urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N]\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder team add NAME --server URL --admin-token T [--strategy demo|chase-ball|idle] [--ladder L]\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder submit --server URL --token T [--ladder L] PATH\n", output, StringComparison.Ordinal);
+        Assert.Contains("urwpgsim2d ladder final --server URL --admin-token T --top K [--rounds N] [--ladder L]\n", output, StringComparison.Ordinal);
         Assert.Contains("urwpgsim2d ladder worker --database CONNECTION [--data DIR] [--workers N]\n", output, StringComparison.Ordinal);
     }
 }

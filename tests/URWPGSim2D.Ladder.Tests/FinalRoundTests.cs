@@ -11,7 +11,7 @@ public sealed class FinalRoundTests : IDisposable
 
     public void Dispose() => Directory.Delete(_folder, recursive: true);
 
-    private LadderCore Core() => new(SqlDialect.SqliteStore(Path.Combine(_folder, "ladder.db")),
+    private LadderService Service() => new(SqlDialect.SqliteStore(Path.Combine(_folder, "ladder.db")),
         new LadderSettings { Item = "polo-1v1", Cycles = 600, DataDir = _folder, AdminToken = "organiser-final", Workers = 0 });
 
     private static List<string> Names(JsonElement standings) =>
@@ -20,10 +20,11 @@ public sealed class FinalRoundTests : IDisposable
     [Fact]
     public void EveryPairOfTheTopPlaysAsOftenAndTheStandingsFreeze()
     {
-        using var core = Core();
+        using var service = Service();
+        var core = service.Core(service.Served);
         foreach (var (name, house) in new[] { ("champion", "demo"), ("chaser", "chase-ball"), ("sleeper", "idle"), ("dozer", "idle"), ("napper", "idle") })
         {
-            core.AddTeam(name, house);
+            service.AddTeam(name, house, null);
         }
 
         for (int k = 0; k < 10; k++)
@@ -52,7 +53,7 @@ public sealed class FinalRoundTests : IDisposable
 
         // Only the final's six matches played, and ranked play stays stopped: a new team changes nothing.
         Assert.Equal(6, played);
-        core.AddTeam("latecomer", "demo");
+        service.AddTeam("latecomer", "demo", null);
         Assert.False(core.PlayNext());
         Assert.Null(core.MakeMatch(10));
 

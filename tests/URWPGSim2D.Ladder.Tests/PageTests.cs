@@ -8,7 +8,9 @@ namespace URWPGSim2D.Ladder.Tests;
 /// three teams; two teams sign in and submit through their page, the third with the command line;
 /// ranked matches play; the standings page, never reloaded, fills in and puts the known strongest
 /// (the item's demo, which scores in water polo 1v1 where a fish that does not move cannot) first.
-/// Then a match's page shows the replay, and the queue names the submissions.
+/// Then a match's page shows the replay, and the queue names the submissions. And an organiser
+/// creates a second ladder on the organiser's page, chooses it, adds its house entrants, and the
+/// ladders' overview shows both ladders and the second one's matches and standings.
 /// </summary>
 public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
 {
@@ -74,8 +76,8 @@ public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
         await page.Context.CloseAsync();
     }
 
-    [Fact]
-    public async Task AnOrganiserAndThreeTeamsRunALadderInTheBrowser()
+    // The organiser's page, signed in, showing the service's one ladder.
+    private async Task<(IPage Page, List<string> Errors)> SignInAsOrganiser()
     {
         var (organiser, errors) = await _browser.NewPageAsync();
         await organiser.GotoAsync(Url("/organiser"));
@@ -83,6 +85,13 @@ public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
         await organiser.ClickAsync("#admin-signin button");
         await Assertions.Expect(organiser.Locator("#admin")).ToBeVisibleAsync(new() { Timeout = Browser.HangMs });
         await Assertions.Expect(organiser.Locator("#ladder")).ToContainTextAsync("polo-1v1, 600 cycles a match, playing", new() { Timeout = Browser.HangMs });
+        return (organiser, errors);
+    }
+
+    [Fact]
+    public async Task AnOrganiserAndThreeTeamsRunALadderInTheBrowser()
+    {
+        var (organiser, errors) = await SignInAsOrganiser();
 
         await AddTeam(organiser, "champion", "demo");
         string alpha = await AddTeam(organiser, "alpha", null);
@@ -126,5 +135,45 @@ public sealed class PageTests : IClassFixture<Browser>, IAsyncLifetime
         Assert.Empty(errors);
         Assert.Empty(standingsErrors);
         Assert.Empty(matchErrors);
+    }
+
+    [Fact]
+    public async Task AnOrganiserCreatesASecondLadderOnThePage()
+    {
+        var (organiser, errors) = await SignInAsOrganiser();
+
+        await organiser.SelectOptionAsync("#create-ladder select[name=item]", "ball-grab");
+        await organiser.SelectOptionAsync("#create-ladder select[name=minutes]", "1");
+        await organiser.FillAsync("#create-ladder input[name=firstSeed]", "40");
+        await organiser.ClickAsync("#create-ladder button");
+        await Assertions.Expect(organiser.Locator("#ladder-result")).ToHaveTextAsync("ladder 2 created: ball-grab, 600 cycles a match, first seed 40", new() { Timeout = Browser.HangMs });
+        await Assertions.Expect(organiser.Locator("#ladder")).ToHaveTextAsync("this service runs 2 ladders: choose one", new() { Timeout = Browser.HangMs });
+
+        // Chosen, the second ladder is the one the organiser's actions act on.
+        await organiser.SelectOptionAsync("#ladder-choice", "2");
+        await Assertions.Expect(organiser).ToHaveURLAsync(Url("/organiser?ladder=2"), new() { Timeout = Browser.HangMs });
+        await Assertions.Expect(organiser.Locator("#ladder")).ToContainTextAsync("ball-grab, 600 cycles a match, playing", new() { Timeout = Browser.HangMs });
+        await AddTeam(organiser, "grabber", "demo");
+        await AddTeam(organiser, "sitter", "idle");
+
+        // The standings page without a ladder named goes to the overview: both ladders, the second one playing.
+        var (overview, overviewErrors) = await _browser.NewPageAsync();
+        await overview.GotoAsync(Url("/"));
+        await Assertions.Expect(overview).ToHaveURLAsync(Url("/ladders"), new() { Timeout = Browser.HangMs });
+        await overview.WaitForFunctionAsync(
+            "() => { const rows = [...document.querySelectorAll('#ladders tbody tr')]; return rows.length === 2 && Number(rows[1].children[5].textContent) >= 1; }",
+            null, new() { Timeout = Browser.HangMs, PollingInterval = 200 });
+        Assert.Equal(["polo-1v1", "ball-grab"], await overview.Locator("#ladders tbody tr td:nth-child(2)").AllInnerTextsAsync());
+        Assert.Equal("0", await overview.InnerTextAsync("#ladders tbody tr:first-child td:nth-child(6)")); // the first ladder has no team
+
+        await overview.ClickAsync("#ladders tbody tr:nth-child(2) td:nth-child(2) a");
+        await Assertions.Expect(overview).ToHaveURLAsync(Url("/?ladder=2"), new() { Timeout = Browser.HangMs });
+        await Assertions.Expect(overview.Locator("#item")).ToHaveTextAsync("ball-grab", new() { Timeout = Browser.HangMs });
+        await overview.WaitForFunctionAsync("() => document.querySelectorAll('#standings tbody tr').length === 2", null, new() { Timeout = Browser.HangMs, PollingInterval = 200 });
+        Assert.Equal(["grabber", "sitter"], (await overview.Locator("#standings tbody tr td:nth-child(2)").AllInnerTextsAsync()).Order(StringComparer.Ordinal));
+        Assert.Equal(Url("/queue?ladder=2"), await overview.EvaluateAsync<string>("() => document.querySelector('nav a[href*=queue]').href"));
+
+        Assert.Empty(errors);
+        Assert.Empty(overviewErrors);
     }
 }

@@ -40,6 +40,43 @@ public sealed class PostgresServeTests(PostgresServer postgres) : IDisposable
     }
 
     [Fact]
+    public async Task TwoLaddersBothPlayThroughTheJobs()
+    {
+        string database = postgres.NewDatabase();
+        const string admin = "organiser-postgres-two";
+        using var serve = await ServeProcess.StartAsync("ladder", "serve", "--item", "polo-1v1", "--minutes", "1", "--data", _folder, "--database", database, "--port", "0", "--admin-token", admin);
+        using (var organiser = new LadderClient(serve.Url, admin))
+        {
+            var created = await organiser.CreateLadderAsync("ball-grab", 600, 1);
+            Assert.Equal((2L, "ball-grab", 600), (created.Id, created.Item, created.Cycles));
+        }
+
+        using (var polo = new LadderClient(serve.Url, admin, "1"))
+        {
+            await polo.AddTeamAsync("polo strong", "demo");
+            await polo.AddTeamAsync("polo weak", "idle");
+        }
+
+        using (var grab = new LadderClient(serve.Url, admin, "ball-grab"))
+        {
+            await grab.AddTeamAsync("grab strong", "demo");
+            await grab.AddTeamAsync("grab weak", "idle");
+        }
+
+        // One worker thread, two ladders: the jobs serve both, each match with its ladder's teams and item.
+        using var watch = SqlDialect.PostgreSqlStore(database);
+        await LadderHost.Until(() => Task.FromResult(watch.Records(1).Count >= 2 && watch.Records(2).Count >= 2), "two matches played in each ladder");
+        var teams = watch.Teams().ToDictionary(t => t.Id, t => t.Name);
+        foreach (var (ladder, prefix) in new[] { (1L, "polo "), (2L, "grab ") })
+        {
+            foreach (var (id, _, _) in watch.Records(ladder))
+            {
+                Assert.All(watch.Match(id)!.Teams, t => Assert.StartsWith(prefix, teams[t], StringComparison.Ordinal));
+            }
+        }
+    }
+
+    [Fact]
     public async Task AnUnreachableDatabaseIsOneLineAndExitTwo()
     {
         var (code, output, error) = await ServeProcess.RunAsync("ladder", "serve", "--data", _folder, "--database", $"Host={_folder}/none;Database=ladder;Timeout=5", "--port", "0");

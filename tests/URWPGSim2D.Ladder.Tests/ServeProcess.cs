@@ -23,7 +23,7 @@ public sealed class ServeProcess : IDisposable
     public string? TokenLine { get; }
 
     /// <summary>The address the first line names (<c>… at http://…/ (…</c>).</summary>
-    public string Url => FirstLine.Split(' ')[3];
+    public string Url => FirstLine[(FirstLine.IndexOf(" at ", StringComparison.Ordinal) + 4)..].Split(' ')[0];
 
     public static string ServerDll => Path.Combine(AppContext.BaseDirectory, "URWPGSim2D.Server.dll");
 

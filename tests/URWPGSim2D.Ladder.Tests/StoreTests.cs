@@ -36,7 +36,8 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     private (SqlLadderStore Store, LadderRow Ladder, TeamRow A, TeamRow B) Two(string database)
     {
         var store = Store(database);
-        return (store, store.OpenLadder("polo-1v1", 600, 7), store.AddTeam("a", "ha", "demo")!, store.AddTeam("b", "hb", "idle")!);
+        var ladder = store.OpenLadder("polo-1v1", 600, 7);
+        return (store, ladder, store.AddTeam("a", "ha", "demo", ladder.Id)!, store.AddTeam("b", "hb", "idle", ladder.Id)!);
     }
 
     [Theory]
@@ -47,7 +48,7 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
         var store = Store(database);
         Assert.Equal(database, store.Dialect.Name);
         Assert.Equal(store.Dialect.Migrations.Count, store.SchemaVersion());
-        Assert.NotNull(store.AddTeam("alpha", "hash-a", null));
+        Assert.NotNull(store.AddTeam("alpha", "hash-a", null, 0));
         store.Migrate(); // a second start: nothing runs again, nothing is lost
         Assert.Equal(store.Dialect.Migrations.Count, store.SchemaVersion());
         Assert.Equal(["alpha"], store.Teams().Select(t => t.Name));
@@ -59,8 +60,8 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     public void ATeamNameIsTakenOnce(string database)
     {
         var store = Store(database);
-        Assert.NotNull(store.AddTeam("alpha", "hash-a", null));
-        Assert.Null(store.AddTeam("alpha", "hash-b", "demo"));
+        Assert.NotNull(store.AddTeam("alpha", "hash-a", null, 0));
+        Assert.Null(store.AddTeam("alpha", "hash-b", "demo", 0));
         Assert.Equal("hash-a", store.TeamByName("alpha")!.TokenHash);
     }
 
@@ -117,7 +118,7 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     public void GamesCountEachSideOfEveryMatch(string database)
     {
         var (store, ladder, a, b) = Two(database);
-        var c = store.AddTeam("c", "hc", "idle")!;
+        var c = store.AddTeam("c", "hc", "idle", ladder.Id)!;
         store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], false, id => (ulong)id);
         store.AddMatch(ladder.Id, [a.Id, c.Id], [0, 0], false, id => (ulong)id);
         var games = store.Games(ladder.Id);
@@ -180,8 +181,8 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     {
         var store = Store(database);
         var ladder = store.OpenLadder("polo-1v1", 600, 7);
-        var a = store.AddTeam("a", "ha", "demo")!;
-        var b = store.AddTeam("b", "hb", "idle")!;
+        var a = store.AddTeam("a", "ha", "demo", ladder.Id)!;
+        var b = store.AddTeam("b", "hb", "idle", ladder.Id)!;
         var m = store.AddMatch(ladder.Id, [a.Id, b.Id], [0, 0], false, id => (ulong)id);
         Assert.True(store.Claim(m.Id));
 
@@ -204,8 +205,9 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
     public void ASubmissionPlaysFromAnotherDataFolderWithTheDatabaseAlone(string database)
     {
         var store = Store(database);
-        var team = store.AddTeam("coder", "hc", null)!;
-        var row = store.AddSubmission(team.Id, "upload", DateTime.UtcNow);
+        var ladder = store.OpenLadder("polo-1v1", 600, 7);
+        var team = store.AddTeam("coder", "hc", null, 0)!;
+        var row = store.AddSubmission(team.Id, ladder.Id, "upload", DateTime.UtcNow);
 
         // The service's folder: the upload kept, its folder becoming its copy.
         string service = Path.Combine(_folder, "service");
@@ -231,8 +233,7 @@ public sealed class StoreTests(PostgresServer postgres) : IDisposable
         Assert.Equal(copy, new LadderFiles(store, worker).Spec(store.Submission(row.Id)!)); // a restarted worker finds its copy
 
         // A match it plays: the replay page goes to the database with the record; the service reads it from there.
-        var ladder = store.OpenLadder("polo-1v1", 600, 7);
-        var house = store.AddTeam("house", "hh", "idle")!;
+        var house = store.AddTeam("house", "hh", "idle", ladder.Id)!;
         var m = store.AddMatch(ladder.Id, [team.Id, house.Id], [row.Id, 0], false, id => (ulong)id);
         store.Claim(m.Id);
         string played = other.PlayingReplay(m.Id);

@@ -125,6 +125,9 @@ public sealed class UpgradeTests : IDisposable
 
             Sql(c, "DROP TABLE match_files");
             Sql(c, "DROP TABLE submission_files");
+            Sql(c, "DROP INDEX submissions_ladder"); // and the ladder of each submission and house entrant (version 4)
+            Sql(c, "ALTER TABLE submissions DROP COLUMN ladder_id");
+            Sql(c, "ALTER TABLE teams DROP COLUMN ladder_id");
             Sql(c, "DELETE FROM schema_version WHERE version > 2");
         }
 

@@ -25,6 +25,12 @@ internal interface ILadderStore : IDisposable
     /// <summary>The ladder of <paramref name="item"/>, created with the given length and first seed when there is none.</summary>
     LadderRow OpenLadder(string item, int cycles, ulong firstSeed);
 
+    /// <summary>A new ladder of <paramref name="item"/> (whether or not one of that item exists).</summary>
+    LadderRow CreateLadder(string item, int cycles, ulong firstSeed);
+
+    /// <summary>Every ladder, by id.</summary>
+    IReadOnlyList<LadderRow> Ladders();
+
     /// <summary>The ladder with the highest id, or null when there is none.</summary>
     LadderRow? NewestLadder();
 
@@ -37,8 +43,8 @@ internal interface ILadderStore : IDisposable
     /// <summary>Sets a ladder's match length for the matches made from now on.</summary>
     void SetCycles(long ladder, int cycles);
 
-    /// <summary>Adds a team; null when the name is taken.</summary>
-    TeamRow? AddTeam(string name, string tokenHash, string? house);
+    /// <summary>Adds a team (a house entrant playing in <paramref name="ladder"/>; 0 for a team that submits); null when the name is taken.</summary>
+    TeamRow? AddTeam(string name, string tokenHash, string? house, long ladder);
 
     /// <summary>Sets a team's password hash.</summary>
     void SetPassword(long team, string passwordHash);
@@ -59,7 +65,7 @@ internal interface ILadderStore : IDisposable
     TeamRow? TeamBySession(string tokenHash);
 
     /// <summary>Adds a submission in state <see cref="SubmissionRow.Checking"/>; its path is filled in by <see cref="SetSubmissionPath"/>.</summary>
-    SubmissionRow AddSubmission(long team, string kind, DateTime created);
+    SubmissionRow AddSubmission(long team, long ladder, string kind, DateTime created);
 
     /// <summary>Sets where a submission's files are.</summary>
     void SetSubmissionPath(long submission, string path);
@@ -82,11 +88,11 @@ internal interface ILadderStore : IDisposable
     /// <summary>A team's submissions, newest first (every team's with <paramref name="team"/> null).</summary>
     IReadOnlyList<SubmissionRow> Submissions(long? team);
 
-    /// <summary>How many submissions a team made since <paramref name="since"/>.</summary>
-    int SubmissionsSince(long team, DateTime since);
+    /// <summary>How many submissions a team made for a ladder since <paramref name="since"/>.</summary>
+    int SubmissionsSince(long team, long ladder, DateTime since);
 
-    /// <summary>A team's newest submission that checked, or null.</summary>
-    SubmissionRow? NewestWorking(long team);
+    /// <summary>A team's newest submission for a ladder that checked, or null.</summary>
+    SubmissionRow? NewestWorking(long team, long ladder);
 
     /// <summary>Queues a match.</summary>
     MatchRow AddMatch(long ladder, IReadOnlyList<long> teams, IReadOnlyList<long> submissions, bool final, Func<long, ulong> seedOf);

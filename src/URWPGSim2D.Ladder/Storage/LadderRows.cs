@@ -6,11 +6,15 @@ namespace URWPGSim2D.Ladder.Storage;
 /// <summary>A ladder: one item, its match length and first seed, whether ranked play is paused.</summary>
 internal sealed record LadderRow(long Id, string Item, int Cycles, ulong FirstSeed, bool Paused, DateTime Created);
 
-/// <summary>A team: its unique name, the hash of its token, its password hash (or null) and, for a house entrant, its built-in strategy.</summary>
-internal sealed record TeamRow(long Id, string Name, string TokenHash, string? PasswordHash, string? House, DateTime Created);
+/// <summary>
+/// A team: its unique name, the hash of its token, its password hash (or null) and, for a house
+/// entrant, its built-in strategy and the ladder it plays in (<paramref name="LadderId"/>; 0 for a
+/// team that submits its own strategies, which plays in every ladder it has a working submission of).
+/// </summary>
+internal sealed record TeamRow(long Id, string Name, string TokenHash, string? PasswordHash, string? House, DateTime Created, long LadderId = 0);
 
-/// <summary>One upload of a team: where its files are, how it is loaded, whether it compiled and checked, and the log of that.</summary>
-internal sealed record SubmissionRow(long Id, long TeamId, DateTime Created, string Kind, string Path, string State, string Log)
+/// <summary>One upload of a team for one ladder: where its files are, how it is loaded, whether it compiled and checked, and the log of that.</summary>
+internal sealed record SubmissionRow(long Id, long TeamId, DateTime Created, string Kind, string Path, string State, string Log, long LadderId = 0)
 {
     /// <summary>Being checked.</summary>
     public const string Checking = "checking";

@@ -62,6 +62,18 @@ internal sealed class SqlDialect
             $"CREATE TABLE submission_files (submission_id BIGINT NOT NULL REFERENCES submissions (id), name TEXT NOT NULL, sha256 TEXT NOT NULL, bytes {blob} NOT NULL, PRIMARY KEY (submission_id, name))",
             $"CREATE TABLE match_files (match_id BIGINT NOT NULL REFERENCES matches (id), name TEXT NOT NULL, sha256 TEXT NOT NULL, bytes {blob} NOT NULL, PRIMARY KEY (match_id, name))",
         ],
+        [
+            // Several ladders: a submission is for one ladder (a strategy is item-specific), a house entrant plays in one.
+            // Rows of before: a submission's ladder is the one it played in, else the newest ladder made before it (the
+            // one the service ran then); a house entrant's likewise.
+            "ALTER TABLE submissions ADD COLUMN ladder_id BIGINT NULL REFERENCES ladders (id)",
+            "UPDATE submissions SET ladder_id = COALESCE((SELECT MIN(m.ladder_id) FROM matches m WHERE m.sub_a = submissions.id OR m.sub_b = submissions.id), "
+                + "(SELECT MAX(l.id) FROM ladders l WHERE l.created <= submissions.created), (SELECT MIN(l.id) FROM ladders l))",
+            "ALTER TABLE teams ADD COLUMN ladder_id BIGINT NULL REFERENCES ladders (id)",
+            "UPDATE teams SET ladder_id = COALESCE((SELECT MIN(m.ladder_id) FROM matches m WHERE m.team_a = teams.id OR m.team_b = teams.id), "
+                + "(SELECT MAX(l.id) FROM ladders l WHERE l.created <= teams.created), (SELECT MIN(l.id) FROM ladders l)) WHERE house IS NOT NULL",
+            "CREATE INDEX submissions_ladder ON submissions (ladder_id, team_id, id)",
+        ],
     ];
 
     /// <summary>SQLite: write-ahead log, a busy wait instead of an error when another connection writes.</summary>

@@ -81,12 +81,12 @@ internal sealed class SqlLadderStore : ILadderStore
     {
         using var c = Open();
         using var t = c.BeginTransaction();
-        var found = One(c, t, "SELECT id, item, cycles, first_seed, paused, created FROM ladders WHERE item = @i ORDER BY id LIMIT 1", ReadLadder, ("i", item));
+        var found = One(c, t, LadderSelect + " WHERE item = @i ORDER BY id LIMIT 1", ReadLadder, ("i", item));
         if (found is null)
         {
             Execute(c, t, "INSERT INTO ladders (item, cycles, first_seed, paused, created) VALUES (@i, @c, @s, 0, @t)",
                 ("i", item), ("c", cycles), ("s", unchecked((long)firstSeed)), ("t", Now()));
-            found = One(c, t, "SELECT id, item, cycles, first_seed, paused, created FROM ladders WHERE item = @i ORDER BY id LIMIT 1", ReadLadder, ("i", item))!;
+            found = One(c, t, LadderSelect + " WHERE item = @i ORDER BY id LIMIT 1", ReadLadder, ("i", item))!;
         }
 
         t.Commit();
@@ -94,17 +94,38 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
+    public LadderRow CreateLadder(string item, int cycles, ulong firstSeed)
+    {
+        using var c = Open();
+        using var t = c.BeginTransaction();
+        long id = Convert.ToInt64(Scalar(c, t, "INSERT INTO ladders (item, cycles, first_seed, paused, created) VALUES (@i, @c, @s, 0, @t) RETURNING id",
+            ("i", item), ("c", cycles), ("s", unchecked((long)firstSeed)), ("t", Now())), CultureInfo.InvariantCulture);
+        var row = One(c, t, LadderSelect + " WHERE id = @id", ReadLadder, ("id", id))!;
+        t.Commit();
+        return row;
+    }
+
+    /// <inheritdoc/>
+    public IReadOnlyList<LadderRow> Ladders()
+    {
+        using var c = Open();
+        return All(c, null, LadderSelect + " ORDER BY id", ReadLadder);
+    }
+
+    private const string LadderSelect = "SELECT id, item, cycles, first_seed, paused, created FROM ladders";
+
+    /// <inheritdoc/>
     public LadderRow? NewestLadder()
     {
         using var c = Open();
-        return One(c, null, "SELECT id, item, cycles, first_seed, paused, created FROM ladders ORDER BY id DESC LIMIT 1", ReadLadder);
+        return One(c, null, LadderSelect + " ORDER BY id DESC LIMIT 1", ReadLadder);
     }
 
     /// <inheritdoc/>
     public LadderRow? Ladder(long id)
     {
         using var c = Open();
-        return One(c, null, "SELECT id, item, cycles, first_seed, paused, created FROM ladders WHERE id = @id", ReadLadder, ("id", id));
+        return One(c, null, LadderSelect + " WHERE id = @id", ReadLadder, ("id", id));
     }
 
     /// <inheritdoc/>
@@ -122,7 +143,7 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
-    public TeamRow? AddTeam(string name, string tokenHash, string? house)
+    public TeamRow? AddTeam(string name, string tokenHash, string? house, long ladder)
     {
         using var c = Open();
         using var t = c.BeginTransaction();
@@ -131,8 +152,8 @@ internal sealed class SqlLadderStore : ILadderStore
             return null;
         }
 
-        Execute(c, t, "INSERT INTO teams (name, token_hash, password_hash, house, created) VALUES (@n, @h, NULL, @s, @t)",
-            ("n", name), ("h", tokenHash), ("s", house), ("t", Now()));
+        Execute(c, t, "INSERT INTO teams (name, token_hash, password_hash, house, created, ladder_id) VALUES (@n, @h, NULL, @s, @t, @l)",
+            ("n", name), ("h", tokenHash), ("s", house), ("t", Now()), ("l", ladder == 0 ? null : ladder));
         var team = One(c, t, TeamSelect + " WHERE name = @n", ReadTeam, ("n", name));
         t.Commit();
         return team;
@@ -145,7 +166,7 @@ internal sealed class SqlLadderStore : ILadderStore
         Execute(c, null, "UPDATE teams SET password_hash = @p WHERE id = @id", ("p", passwordHash), ("id", team));
     }
 
-    private const string TeamSelect = "SELECT id, name, token_hash, password_hash, house, created FROM teams";
+    private const string TeamSelect = "SELECT id, name, token_hash, password_hash, house, created, ladder_id FROM teams";
 
     /// <inheritdoc/>
     public IReadOnlyList<TeamRow> Teams()
@@ -179,18 +200,18 @@ internal sealed class SqlLadderStore : ILadderStore
     public TeamRow? TeamBySession(string tokenHash)
     {
         using var c = Open();
-        return One(c, null, "SELECT t.id, t.name, t.token_hash, t.password_hash, t.house, t.created FROM sessions s JOIN teams t ON t.id = s.team_id WHERE s.token_hash = @h", ReadTeam, ("h", tokenHash));
+        return One(c, null, "SELECT t.id, t.name, t.token_hash, t.password_hash, t.house, t.created, t.ladder_id FROM sessions s JOIN teams t ON t.id = s.team_id WHERE s.token_hash = @h", ReadTeam, ("h", tokenHash));
     }
 
-    private const string SubmissionSelect = "SELECT id, team_id, created, kind, path, state, log FROM submissions";
+    private const string SubmissionSelect = "SELECT id, team_id, created, kind, path, state, log, ladder_id FROM submissions";
 
     /// <inheritdoc/>
-    public SubmissionRow AddSubmission(long team, string kind, DateTime created)
+    public SubmissionRow AddSubmission(long team, long ladder, string kind, DateTime created)
     {
         using var c = Open();
         using var t = c.BeginTransaction();
-        long id = Convert.ToInt64(Scalar(c, t, "INSERT INTO submissions (team_id, created, kind, path, state, log) VALUES (@t, @c, @k, '', @s, '') RETURNING id",
-            ("t", team), ("c", Time(created)), ("k", kind), ("s", SubmissionRow.Checking)), CultureInfo.InvariantCulture);
+        long id = Convert.ToInt64(Scalar(c, t, "INSERT INTO submissions (team_id, ladder_id, created, kind, path, state, log) VALUES (@t, @l, @c, @k, '', @s, '') RETURNING id",
+            ("t", team), ("l", ladder), ("c", Time(created)), ("k", kind), ("s", SubmissionRow.Checking)), CultureInfo.InvariantCulture);
         var row = One(c, t, SubmissionSelect + " WHERE id = @id", ReadSubmission, ("id", id))!;
         t.Commit();
         return row;
@@ -253,17 +274,17 @@ internal sealed class SqlLadderStore : ILadderStore
     }
 
     /// <inheritdoc/>
-    public int SubmissionsSince(long team, DateTime since)
+    public int SubmissionsSince(long team, long ladder, DateTime since)
     {
         using var c = Open();
-        return Convert.ToInt32(Scalar(c, null, "SELECT COUNT(*) FROM submissions WHERE team_id = @t AND created >= @s", ("t", team), ("s", Time(since))), CultureInfo.InvariantCulture);
+        return Convert.ToInt32(Scalar(c, null, "SELECT COUNT(*) FROM submissions WHERE team_id = @t AND ladder_id = @l AND created >= @s", ("t", team), ("l", ladder), ("s", Time(since))), CultureInfo.InvariantCulture);
     }
 
     /// <inheritdoc/>
-    public SubmissionRow? NewestWorking(long team)
+    public SubmissionRow? NewestWorking(long team, long ladder)
     {
         using var c = Open();
-        return One(c, null, SubmissionSelect + " WHERE team_id = @t AND state = @s ORDER BY id DESC LIMIT 1", ReadSubmission, ("t", team), ("s", SubmissionRow.Ok));
+        return One(c, null, SubmissionSelect + " WHERE team_id = @t AND ladder_id = @l AND state = @s ORDER BY id DESC LIMIT 1", ReadSubmission, ("t", team), ("l", ladder), ("s", SubmissionRow.Ok));
     }
 
     private const string MatchSelect = "SELECT id, ladder_id, seed, team_a, team_b, sub_a, sub_b, state, created, started, finished, record, final FROM matches";
@@ -518,10 +539,10 @@ internal sealed class SqlLadderStore : ILadderStore
         new(r.GetInt64(0), r.GetString(1), Convert.ToInt32(r.GetValue(2), CultureInfo.InvariantCulture), unchecked((ulong)r.GetInt64(3)), Flag(r, 4), ParseTime(r.GetString(5)));
 
     private static TeamRow ReadTeam(DbDataReader r) =>
-        new(r.GetInt64(0), r.GetString(1), r.GetString(2), r.IsDBNull(3) ? null : r.GetString(3), r.IsDBNull(4) ? null : r.GetString(4), ParseTime(r.GetString(5)));
+        new(r.GetInt64(0), r.GetString(1), r.GetString(2), r.IsDBNull(3) ? null : r.GetString(3), r.IsDBNull(4) ? null : r.GetString(4), ParseTime(r.GetString(5)), r.IsDBNull(6) ? 0 : r.GetInt64(6));
 
     private static SubmissionRow ReadSubmission(DbDataReader r) =>
-        new(r.GetInt64(0), r.GetInt64(1), ParseTime(r.GetString(2)), r.GetString(3), r.GetString(4), r.GetString(5), r.GetString(6));
+        new(r.GetInt64(0), r.GetInt64(1), ParseTime(r.GetString(2)), r.GetString(3), r.GetString(4), r.GetString(5), r.GetString(6), r.IsDBNull(7) ? 0 : r.GetInt64(7));
 
     private static MatchRow ReadMatch(DbDataReader r) =>
         new(r.GetInt64(0), r.GetInt64(1), unchecked((ulong)r.GetInt64(2)), [r.GetInt64(3), r.GetInt64(4)], [r.GetInt64(5), r.GetInt64(6)], r.GetString(7),

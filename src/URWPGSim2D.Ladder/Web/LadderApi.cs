@@ -15,42 +15,107 @@ using URWPGSim2D.Tournament;
 namespace URWPGSim2D.Ladder.Web;
 
 /// <summary>
-/// The JSON API beside every page. Reads are public but for a team's sources and logs (its own
+/// The JSON API beside every page. A request about one ladder names it with <c>?ladder=ID</c> (its
+/// id, or its item when one ladder plays it), which may be left out when the service runs one
+/// ladder. Reads are public but for a team's sources and logs (its own
 /// token only); the organiser's actions need the organiser's token and a team's its own, each sent
 /// as <c>Authorization: Bearer TOKEN</c> (never a cookie, so a page of another site cannot act for a
 /// signed-in user). Bad input answers HTTP 400 with <c>{"error": "…"}</c>, one line naming the field.
 /// </summary>
 internal static class LadderApi
 {
-    public static void Map(IEndpointRouteBuilder app, LadderCore core)
+    public static void Map(IEndpointRouteBuilder app, LadderService service)
     {
-        app.MapGet("/api/ladder", () => Json(JsonText.Of(w =>
+        // The ladder a request names (?ladder=ID), or the only one.
+        LadderCore Chosen(HttpRequest request) => service.Choose(request.Query["ladder"].ToString());
+
+        app.MapGet("/api/ladder", (HttpRequest request) =>
         {
-            var l = core.Ladder;
-            w.WriteStartObject();
-            w.WriteString("item", l.Item);
-            w.WriteNumber("cycles", l.Cycles);
-            w.WriteBoolean("paused", l.Paused);
-            w.WriteNumber("workers", core.Workers);
-            w.WriteNumber("submissionsPerDay", core.SubmissionsPerDay);
-            w.WriteNumber("maxUploadBytes", core.Limits.MaxUploadBytes);
-            w.WriteNumber("maxFiles", core.Limits.MaxFiles);
-            if (core.Final() is { } final)
+            var core = Chosen(request);
+            return Json(JsonText.Of(w =>
             {
-                WriteFinal(w, final, core);
+                w.WriteStartObject();
+                WriteLadder(w, core);
+                w.WriteNumber("workers", service.Workers);
+                w.WriteNumber("submissionsPerDay", service.SubmissionsPerDay);
+                w.WriteNumber("maxUploadBytes", service.Limits.MaxUploadBytes);
+                w.WriteNumber("maxFiles", service.Limits.MaxFiles);
+                w.WriteEndObject();
+            }));
+        });
+
+        app.MapGet("/api/ladders", () => Json(JsonText.Of(w =>
+        {
+            w.WriteStartObject();
+            w.WriteStartArray("ladders");
+            foreach (var core in service.Cores())
+            {
+                var standings = core.Standings().Standings;
+                w.WriteStartObject();
+                WriteLadder(w, core);
+                w.WriteNumber("teams", standings.Rows.Count);
+                w.WriteNumber("matches", standings.Records.Count);
+                if (standings.Rows.Where(r => r.Rank == 1).Select(r => r.Name).FirstOrDefault() is { } leader && standings.Records.Count > 0)
+                {
+                    w.WriteString("leader", leader);
+                }
+
+                w.WriteEndObject();
             }
 
+            w.WriteEndArray();
+            w.WriteStartArray("items");
+            foreach (var item in LadderService.Items)
+            {
+                w.WriteStringValue(item.Slug);
+            }
+
+            w.WriteEndArray();
             w.WriteEndObject();
         })));
 
-        app.MapGet("/api/standings", () => Json(core.Standings().Json));
+        app.MapPost("/api/ladders", async (HttpRequest request) =>
+        {
+            Admin(service, request);
+            using var body = await Body(request);
+            string item = Text(body.RootElement, "item", required: true)!;
+            int? minutes = Whole(body.RootElement, "minutes", required: false);
+            int? cycles = Whole(body.RootElement, "cycles", required: false);
+            if (minutes is not null && cycles is not null)
+            {
+                throw new LadderInputException("minutes and cycles: give one of them, not both");
+            }
 
-        app.MapGet("/api/export/standings.json", () => Results.Text(core.Standings().Json, "application/json", null, 200));
+            if (minutes is { } m && m is not (10 or 5 or 3 or 1))
+            {
+                throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"minutes must be 10, 5, 3 or 1, got {m}"));
+            }
 
-        app.MapGet("/api/export/results.jsonl", () => Results.Text(Export(core), "application/jsonl", null, 200));
+            ulong firstSeed = 1;
+            if (body.RootElement.TryGetProperty("firstSeed", out var seed) && seed.ValueKind != JsonValueKind.Null)
+            {
+                firstSeed = seed.ValueKind == JsonValueKind.Number && seed.TryGetUInt64(out ulong s) ? s
+                    : throw new LadderInputException($"firstSeed must be a whole number from 0 to 18446744073709551615, got {seed.GetRawText()}");
+            }
+
+            var core = service.CreateLadder(item, cycles ?? (minutes ?? 10) * 600, firstSeed);
+            return Json(JsonText.Of(w =>
+            {
+                w.WriteStartObject();
+                WriteLadder(w, core);
+                w.WriteEndObject();
+            }), 201);
+        });
+
+        app.MapGet("/api/standings", (HttpRequest request) => Json(Chosen(request).Standings().Json));
+
+        app.MapGet("/api/export/standings.json", (HttpRequest request) => Results.Text(Chosen(request).Standings().Json, "application/json", null, 200));
+
+        app.MapGet("/api/export/results.jsonl", (HttpRequest request) => Results.Text(Export(Chosen(request)), "application/jsonl", null, 200));
 
         app.MapGet("/api/matches", (HttpRequest request) =>
         {
+            var core = Chosen(request);
             string[] states = request.Query["state"].ToString() is { Length: > 0 } s ? s.Split(',') : [];
             foreach (string state in states)
             {
@@ -85,23 +150,24 @@ internal static class LadderApi
 
         app.MapGet("/api/matches/{id}", (string id) =>
         {
-            var m = core.Store.Match(Id("match", id)) ?? throw new NotFound("match");
-            var teams = core.Store.Teams().ToDictionary(x => x.Id);
-            return Json(JsonText.Of(w => WriteMatch(w, m, teams, core)));
+            var m = service.Store.Match(Id("match", id)) ?? throw new NotFound("match");
+            var teams = service.Store.Teams().ToDictionary(x => x.Id);
+            return Json(JsonText.Of(w => WriteMatch(w, m, teams, service.Core(m.LadderId))));
         });
 
-        app.MapGet("/api/matches/{id}/replay", (string id) => Replay(core, id));
-        app.MapGet("/matches/{id}/replay", (string id) => Replay(core, id));
+        app.MapGet("/api/matches/{id}/replay", (string id) => Replay(service, id));
+        app.MapGet("/matches/{id}/replay", (string id) => Replay(service, id));
 
-        app.MapGet("/api/teams", () =>
+        app.MapGet("/api/teams", (HttpRequest request) =>
         {
+            var core = Chosen(request);
             var games = core.Store.Games(core.LadderId);
             var playing = core.Playing();
             return Json(JsonText.Of(w =>
             {
                 w.WriteStartObject();
                 w.WriteStartArray("teams");
-                foreach (var t in core.Store.Teams())
+                foreach (var t in core.Store.Teams().Where(t => t.House is null || t.LadderId == core.LadderId))
                 {
                     w.WriteStartObject();
                     w.WriteString("name", t.Name);
@@ -126,8 +192,8 @@ internal static class LadderApi
 
         app.MapGet("/api/teams/{name}", (string name, HttpRequest request) =>
         {
-            var team = core.Store.TeamByName(name) ?? throw new NotFound("team");
-            var me = core.TeamOf(Bearer(request));
+            var team = service.Store.TeamByName(name) ?? throw new NotFound("team");
+            var me = service.TeamOf(Bearer(request));
             bool own = me is not null && me.Id == team.Id;
             return Json(JsonText.Of(w =>
             {
@@ -136,10 +202,11 @@ internal static class LadderApi
                 if (team.House is { } house)
                 {
                     w.WriteString("house", house);
+                    w.WriteNumber("ladder", team.LadderId);
                 }
 
                 w.WriteBoolean("signedIn", own);
-                if (Faults(core, team) is { } faults)
+                if (Faults(service, team) is { } faults)
                 {
                     w.WriteStartObject("faults");
                     w.WriteNumber("exceptions", faults.Exceptions);
@@ -161,10 +228,11 @@ internal static class LadderApi
                 }
 
                 w.WriteStartArray("submissions");
-                foreach (var s in core.Store.Submissions(team.Id))
+                foreach (var s in service.Store.Submissions(team.Id))
                 {
                     w.WriteStartObject();
                     w.WriteNumber("id", s.Id);
+                    w.WriteNumber("ladder", s.LadderId);
                     w.WriteString("created", s.Created);
                     w.WriteString("state", s.State);
                     if (own)
@@ -182,14 +250,14 @@ internal static class LadderApi
 
         app.MapGet("/api/teams/{name}/matches/{id}/log", (string name, string id, HttpRequest request) =>
         {
-            var team = core.Store.TeamByName(name) ?? throw new NotFound("team");
-            var me = core.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: a team's strategy log needs its token (Authorization: Bearer TOKEN)");
+            var team = service.Store.TeamByName(name) ?? throw new NotFound("team");
+            var me = service.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: a team's strategy log needs its token (Authorization: Bearer TOKEN)");
             if (me.Id != team.Id)
             {
                 return Problem(403, "authorization: a team's strategy log is its own");
             }
 
-            var m = core.Store.Match(Id("match", id)) ?? throw new NotFound("match");
+            var m = service.Store.Match(Id("match", id)) ?? throw new NotFound("match");
             int[] order = m.Id % 2 == 0 ? [0, 1] : [1, 0];
             int side = Array.IndexOf(order.Select(k => m.Teams[k]).ToArray(), team.Id);
             if (side < 0)
@@ -197,7 +265,7 @@ internal static class LadderApi
                 throw new NotFound("match of this team");
             }
 
-            var outputs = MatchOutputs.Read(core.Files.Read(m.Id, LadderFiles.Outputs)) ?? throw new NotFound("log (the match is not played yet)");
+            var outputs = MatchOutputs.Read(service.Core(m.LadderId).Files.Read(m.Id, LadderFiles.Outputs)) ?? throw new NotFound("log (the match is not played yet)");
             return Json(JsonText.Of(w =>
             {
                 w.WriteStartObject();
@@ -216,8 +284,8 @@ internal static class LadderApi
         app.MapGet("/api/me", (HttpRequest request) =>
         {
             string? token = Bearer(request);
-            bool admin = core.IsAdmin(token);
-            var team = admin ? null : core.TeamOf(token);
+            bool admin = service.IsAdmin(token);
+            var team = admin ? null : service.TeamOf(token);
             if (!admin && team is null)
             {
                 return Problem(401, "authorization: no valid token (send Authorization: Bearer TOKEN)");
@@ -238,11 +306,11 @@ internal static class LadderApi
 
         app.MapPost("/api/teams", async (HttpRequest request) =>
         {
-            Admin(core, request);
+            Admin(service, request);
             using var body = await Body(request);
             string name = Text(body.RootElement, "name", required: true)!;
             string? strategy = Text(body.RootElement, "strategy", required: false);
-            var (team, token) = core.AddTeam(name, strategy);
+            var (team, token) = service.AddTeam(name, strategy, request.Query["ladder"].ToString());
             return Json(JsonText.Of(w =>
             {
                 w.WriteStartObject();
@@ -250,6 +318,7 @@ internal static class LadderApi
                 if (team.House is { } house)
                 {
                     w.WriteString("house", house);
+                    w.WriteNumber("ladder", team.LadderId);
                 }
 
                 w.WriteString("token", token);
@@ -262,13 +331,13 @@ internal static class LadderApi
             using var body = await Body(request);
             string name = Text(body.RootElement, "name", required: true)!;
             string password = Text(body.RootElement, "password", required: true)!;
-            var team = core.SignIn(name, password);
+            var team = service.SignIn(name, password);
             if (team is null)
             {
                 return Problem(401, "signin: wrong team name or password");
             }
 
-            string token = core.NewSession(team);
+            string token = service.NewSession(team);
             return Json(JsonText.Of(w =>
             {
                 w.WriteStartObject();
@@ -280,15 +349,16 @@ internal static class LadderApi
 
         app.MapPost("/api/password", async (HttpRequest request) =>
         {
-            var team = Team(core, request);
+            var team = Team(service, request);
             using var body = await Body(request);
-            core.SetPassword(team, Text(body.RootElement, "password", required: true)!);
+            service.SetPassword(team, Text(body.RootElement, "password", required: true)!);
             return Json("{\"ok\": true}");
         });
 
         app.MapPost("/api/submissions", async (HttpRequest request) =>
         {
-            var team = Team(core, request);
+            var team = Team(service, request);
+            var core = Chosen(request);
             if (!request.HasFormContentType)
             {
                 throw new LadderInputException("upload: send the files as multipart/form-data (field \"file\")");
@@ -298,9 +368,9 @@ internal static class LadderApi
             var files = new List<UploadedFile>();
             foreach (var f in form.Files)
             {
-                if (files.Count >= core.Limits.MaxFiles)
+                if (files.Count >= service.Limits.MaxFiles)
                 {
-                    throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"upload: more than the limit of {core.Limits.MaxFiles} files"));
+                    throw new LadderInputException(string.Create(CultureInfo.InvariantCulture, $"upload: more than the limit of {service.Limits.MaxFiles} files"));
                 }
 
                 using var stream = new MemoryStream();
@@ -313,6 +383,7 @@ internal static class LadderApi
             {
                 w.WriteStartObject();
                 w.WriteNumber("id", s.Id);
+                w.WriteNumber("ladder", s.LadderId);
                 w.WriteString("kind", s.Kind);
                 w.WriteString("state", s.State);
                 w.WriteString("log", s.Log);
@@ -322,25 +393,25 @@ internal static class LadderApi
 
         app.MapPost("/api/ladder/pause", (HttpRequest request) =>
         {
-            Admin(core, request);
-            core.SetPaused(true);
+            Admin(service, request);
+            Chosen(request).SetPaused(true);
             return Json("{\"paused\": true}");
         });
 
         app.MapPost("/api/ladder/resume", (HttpRequest request) =>
         {
-            Admin(core, request);
-            core.SetPaused(false);
+            Admin(service, request);
+            Chosen(request).SetPaused(false);
             return Json("{\"paused\": false}");
         });
 
         app.MapPost("/api/settings", async (HttpRequest request) =>
         {
-            Admin(core, request);
+            Admin(service, request);
             using var body = await Body(request);
             if (body.RootElement.TryGetProperty("submissionsPerDay", out var limit))
             {
-                core.SetSubmissionsPerDay(limit.ValueKind == JsonValueKind.Number && limit.TryGetInt32(out int n) ? n : throw new LadderInputException($"submissionsPerDay must be a whole number, got {limit.GetRawText()}"));
+                service.SetSubmissionsPerDay(limit.ValueKind == JsonValueKind.Number && limit.TryGetInt32(out int n) ? n : throw new LadderInputException($"submissionsPerDay must be a whole number, got {limit.GetRawText()}"));
             }
 
             return Json("{\"ok\": true}");
@@ -348,7 +419,8 @@ internal static class LadderApi
 
         app.MapPost("/api/final", async (HttpRequest request) =>
         {
-            Admin(core, request);
+            Admin(service, request);
+            var core = Chosen(request);
             using var body = await Body(request);
             int top = Whole(body.RootElement, "top", required: true)!.Value;
             int rounds = Whole(body.RootElement, "rounds", required: false) ?? 2;
@@ -363,8 +435,9 @@ internal static class LadderApi
 
         app.MapPost("/api/matches/{id}/requeue", (string id, HttpRequest request) =>
         {
-            Admin(core, request);
-            core.Requeue(Id("match", id));
+            Admin(service, request);
+            long match = Id("match", id);
+            (service.Store.Match(match) is { } m ? service.Core(m.LadderId) : service.Core(service.Served)).Requeue(match);
             return Json("{\"requeued\": true}");
         });
     }
@@ -385,11 +458,11 @@ internal static class LadderApi
         }
     }
 
-    // A team's runtime faults over its finished matches (the tournament's sum, per match id), or null when it had none.
-    private static EntrantFaults? Faults(LadderCore core, TeamRow team)
+    // A team's runtime faults over its finished matches of every ladder (the tournament's sum, per match id), or null when it had none.
+    private static EntrantFaults? Faults(LadderService service, TeamRow team)
     {
         EntrantFaults? sum = null;
-        foreach (var m in core.Store.Matches(core.LadderId, [MatchRow.Done], 100_000).Where(m => m.Teams.Contains(team.Id)).OrderBy(m => m.Id))
+        foreach (var m in service.Cores().SelectMany(c => c.Store.Matches(c.LadderId, [MatchRow.Done], 100_000)).Where(m => m.Teams.Contains(team.Id)).OrderBy(m => m.Id))
         {
             var r = TournamentFile.ParseRecord(m.Record!);
             int side = r.Entrants.ToList().IndexOf(team.Name);
@@ -424,16 +497,32 @@ internal static class LadderApi
         w.WriteEndObject();
     }
 
-    private static IResult Replay(LadderCore core, string id)
+    // A ladder's id, item, match length, first seed, whether paused, and once started its final round.
+    private static void WriteLadder(System.Text.Json.Utf8JsonWriter w, LadderCore core)
+    {
+        var l = core.Ladder;
+        w.WriteNumber("id", l.Id);
+        w.WriteString("item", l.Item);
+        w.WriteNumber("cycles", l.Cycles);
+        w.WriteString("firstSeed", l.FirstSeed.ToString(CultureInfo.InvariantCulture));
+        w.WriteBoolean("paused", l.Paused);
+        if (core.Final() is { } final)
+        {
+            WriteFinal(w, final, core);
+        }
+    }
+
+    private static IResult Replay(LadderService service, string id)
     {
         long match = Id("match", id);
-        return core.Files.Read(match, LadderFiles.Replay) is { } page ? Results.Bytes(page, "text/html; charset=utf-8") : throw new NotFound("replay");
+        return service.Core(service.Served).Files.Read(match, LadderFiles.Replay) is { } page ? Results.Bytes(page, "text/html; charset=utf-8") : throw new NotFound("replay");
     }
 
     private static void WriteMatch(System.Text.Json.Utf8JsonWriter w, MatchRow m, Dictionary<long, TeamRow> teams, LadderCore core)
     {
         w.WriteStartObject();
         w.WriteNumber("id", m.Id);
+        w.WriteNumber("ladder", m.LadderId);
         w.WriteString("seed", m.Seed.ToString(CultureInfo.InvariantCulture));
         w.WriteString("state", m.State);
         if (m.Final)
@@ -549,16 +638,16 @@ internal static class LadderApi
         return header.StartsWith("Bearer ", StringComparison.Ordinal) ? header["Bearer ".Length..].Trim() : null;
     }
 
-    private static void Admin(LadderCore core, HttpRequest request)
+    private static void Admin(LadderService service, HttpRequest request)
     {
-        if (!core.IsAdmin(Bearer(request)))
+        if (!service.IsAdmin(Bearer(request)))
         {
             throw new Unauthorised("authorization: this needs the organiser's token (Authorization: Bearer TOKEN)");
         }
     }
 
-    private static TeamRow Team(LadderCore core, HttpRequest request) =>
-        core.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: this needs a team's token (Authorization: Bearer TOKEN)");
+    private static TeamRow Team(LadderService service, HttpRequest request) =>
+        service.TeamOf(Bearer(request)) ?? throw new Unauthorised("authorization: this needs a team's token (Authorization: Bearer TOKEN)");
 
     private static async Task<JsonDocument> Body(HttpRequest request)
     {

@@ -7,8 +7,9 @@ using Microsoft.AspNetCore.Routing;
 namespace URWPGSim2D.Ladder.Web;
 
 /// <summary>
-/// The pages: standings (updating without reload), a team's page, a match's page with the replay
-/// viewer, the queue and the organiser's page. Each is static HTML with a script over the JSON API.
+/// The pages: the ladders' overview, a ladder's standings (updating without reload) and queue
+/// (<c>?ladder=ID</c>; without it, the only ladder), a team's page, a match's page with the replay
+/// viewer, and the organiser's page. Each is static HTML with a script over the JSON API.
 /// </summary>
 internal static class LadderPages
 {
@@ -18,6 +19,7 @@ internal static class LadderPages
         app.MapGet("/teams/{name}", () => Page("team.html"));
         app.MapGet("/matches/{id}", () => Page("match.html"));
         app.MapGet("/queue", () => Page("queue.html"));
+        app.MapGet("/ladders", () => Page("ladders.html"));
         app.MapGet("/organiser", () => Page("organiser.html"));
         app.MapGet("/ladder.js", () => Results.Text(Asset("ladder.js"), "text/javascript; charset=utf-8", null, 200));
         app.MapGet("/favicon.ico", () => Results.NoContent()); // no icon: asked by every browser, answered without an error

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Net;
@@ -26,15 +27,15 @@ namespace URWPGSim2D.Ladder.Web;
 public sealed class LadderServer : IAsyncDisposable
 {
     private readonly WebApplication _app;
-    private readonly LadderCore _core;
+    private readonly LadderService _service;
     private readonly LadderWorkers? _workers;
     private readonly LadderJobs? _jobs;
     private readonly LadderMatchmaker? _matchmaker;
 
-    private LadderServer(WebApplication app, LadderCore core, LadderWorkers? workers, LadderJobs? jobs, LadderMatchmaker? matchmaker, string url)
+    private LadderServer(WebApplication app, LadderService service, LadderWorkers? workers, LadderJobs? jobs, LadderMatchmaker? matchmaker, string url)
     {
         _app = app;
-        _core = core;
+        _service = service;
         _workers = workers;
         _jobs = jobs;
         _matchmaker = matchmaker;
@@ -46,10 +47,13 @@ public sealed class LadderServer : IAsyncDisposable
     public string Url { get; }
 
     /// <summary>The organiser's token made on this first start (to print once), or null.</summary>
-    public string? NewAdminToken => _core.NewAdminToken;
+    public string? NewAdminToken => _service.NewAdminToken;
 
-    /// <summary>The ladder's item (its slug).</summary>
-    public string Item => _core.Item.Slug;
+    /// <summary>The item (its slug) of the ladder created or reopened on start: the one <see cref="LadderSettings.Item"/> names, else the newest.</summary>
+    public string Item => _service.Core(_service.Served).Item.Slug;
+
+    /// <summary>The service's ladders: each one's id and item (its slug), by id.</summary>
+    public IReadOnlyList<(long Id, string Item)> Ladders => [.. _service.Cores().Select(c => (c.LadderId, c.Item.Slug))];
 
     /// <summary>Starts the service.</summary>
     /// <param name="settings">Its settings.</param>
@@ -71,9 +75,19 @@ public sealed class LadderServer : IAsyncDisposable
 
         Directory.CreateDirectory(settings.DataDir);
         var store = LadderDatabase.Open(settings);
-        var core = new LadderCore(store, settings);
-        core.Files.Import(); // a data folder of an older version: its files into the database
-        core.RecheckInterrupted();
+        LadderService service;
+        try
+        {
+            service = new LadderService(store, settings);
+        }
+        catch
+        {
+            store.Dispose();
+            throw;
+        }
+
+        service.Core(service.Served).Files.Import(); // a data folder of an older version: its files into the database (every ladder's)
+        service.RecheckInterrupted();
         if (settings.Database is null)
         {
             // SQLite: this process alone plays, so what was running when it stopped is played again.
@@ -103,7 +117,7 @@ public sealed class LadderServer : IAsyncDisposable
         var app = builder.Build();
         app.Use(Guard);
         app.UseRouting();
-        LadderApi.Map(app, core);
+        LadderApi.Map(app, service);
         LadderPages.Map(app);
         await app.StartAsync();
         string url = app.Services.GetRequiredService<IServer>().Features.Get<IServerAddressesFeature>()!.Addresses.First();
@@ -113,17 +127,18 @@ public sealed class LadderServer : IAsyncDisposable
             var jobs = new LadderJobs(database, LadderJobs.Takeover(store, settings.Takeover));
             if (settings.Workers > 0)
             {
-                jobs.Serve(settings.Workers, MatchJob.Of(store, settings, core, (_, _) => { }));
+                // This process's jobs play with the service's own cores (their warm hosts), every ladder's.
+                jobs.Serve(settings.Workers, new MatchJob(store, service.Core, (_, _) => { }));
             }
 
-            var matchmaker = new LadderMatchmaker(core, jobs, report);
+            var matchmaker = new LadderMatchmaker(service, jobs, report);
             matchmaker.Start();
-            return new LadderServer(app, core, null, jobs, matchmaker, url.TrimEnd('/') + "/");
+            return new LadderServer(app, service, null, jobs, matchmaker, url.TrimEnd('/') + "/");
         }
 
-        var workers = settings.Workers > 0 ? new LadderWorkers(core, settings.Workers, report) : null;
+        var workers = settings.Workers > 0 ? new LadderWorkers(service, settings.Workers, report) : null;
         workers?.Start();
-        return new LadderServer(app, core, workers, null, null, url.TrimEnd('/') + "/");
+        return new LadderServer(app, service, workers, null, null, url.TrimEnd('/') + "/");
     }
 
     /// <summary>Waits until the service is stopped (Ctrl+C, SIGTERM).</summary>
@@ -137,7 +152,7 @@ public sealed class LadderServer : IAsyncDisposable
         _jobs?.Dispose();
         await _app.StopAsync();
         await _app.DisposeAsync();
-        _core.Dispose();
+        _service.Dispose();
     }
 
     // Every request: a cross-site request that would change something is refused (its Origin is not this

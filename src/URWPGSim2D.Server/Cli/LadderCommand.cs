@@ -12,9 +12,10 @@ using URWPGSim2D.Server.Cli.Syntax;
 namespace URWPGSim2D.Server.Cli;
 
 /// <summary>
-/// <c>ladder serve | team add | submit</c>: the competition ladder (docs/ladder.md). <c>serve</c> runs
-/// the service (<see cref="LadderServer"/>) until stopped; <c>team add</c> and <c>submit</c> talk to a
-/// running one (<see cref="LadderClient"/>). Each sub-command's options are declared once, in its usage line.
+/// <c>ladder serve | create | list | pause | resume | team add | submit | final | worker</c>: the
+/// competition ladder (docs/ladder.md). <c>serve</c> runs the service (<see cref="LadderServer"/>)
+/// until stopped; <c>worker</c> plays its matches beside it; the others talk to a running one
+/// (<see cref="LadderClient"/>), naming one of its ladders with <c>--ladder</c> when it runs several. Each sub-command's options are declared once, in its usage line.
 /// </summary>
 internal sealed class LadderCommand : ICliCommand
 {
@@ -41,15 +42,19 @@ internal sealed class LadderCommand : ICliCommand
     private static readonly Option<string> AddAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
     private static readonly Option<string> StrategyOption = CliSyntax.Value("--strategy", "demo|chase-ball|idle", "a house entrant playing this built-in strategy");
 
+    private static readonly Option<string> AddLadderOption = CliSyntax.Value("--ladder", "L", "the ladder a house entrant plays in: its id, or its item (needed when the service runs several)");
+
     private static readonly UsageLine AddLine = new(
-        CliSyntax.Positional("NAME", "the team's name"), AddServerOption, AddAdminOption, UsageLine.Optional(StrategyOption));
+        CliSyntax.Positional("NAME", "the team's name"), AddServerOption, AddAdminOption, UsageLine.Optional(StrategyOption), UsageLine.Optional(AddLadderOption));
 
     private static readonly Option<bool> SubmitHelp = CliSyntax.Help();
     private static readonly Option<string> SubmitServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
     private static readonly Option<string> TokenOption = CliSyntax.Value("--token", "T", "the team's token");
 
+    private static readonly Option<string> SubmitLadderOption = CliSyntax.Value("--ladder", "L", "the ladder: its id, or its item when one ladder plays it (needed when the service runs several)");
+
     private static readonly UsageLine SubmitLine = new(
-        SubmitServerOption, TokenOption, CliSyntax.Positional("PATH", "a folder of .cs files, one .cs file or a DLL", CliCompletions.Paths));
+        SubmitServerOption, TokenOption, UsageLine.Optional(SubmitLadderOption), CliSyntax.Positional("PATH", "a folder of .cs files, one .cs file or a DLL", CliCompletions.Paths));
 
     private static readonly Option<bool> FinalHelp = CliSyntax.Help();
     private static readonly Option<string> FinalServerOption = CliSyntax.Value("--server", "URL", "the ladder's address, e.g. http://127.0.0.1:5080/");
@@ -57,13 +62,47 @@ internal sealed class LadderCommand : ICliCommand
     private static readonly Option<string> TopOption = CliSyntax.Value("--top", "K", "how many of the highest-ranked teams play the final (2 or more)");
     private static readonly Option<string> RoundsOption = CliSyntax.Value("--rounds", "N", "matches of each pair (default 2)");
 
-    private static readonly UsageLine FinalLine = new(FinalServerOption, FinalAdminOption, TopOption, UsageLine.Optional(RoundsOption));
+    private static readonly Option<string> FinalLadderOption = CliSyntax.Value("--ladder", "L", "the ladder: its id, or its item when one ladder plays it (needed when the service runs several)");
+
+    private static readonly UsageLine FinalLine = new(FinalServerOption, FinalAdminOption, TopOption, UsageLine.Optional(RoundsOption), UsageLine.Optional(FinalLadderOption));
+
+    private static readonly Option<bool> CreateHelp = CliSyntax.Help();
+    private static readonly Option<string> CreateServerOption = CliSyntax.Value("--server", "URL", "the service's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> CreateAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
+    private static readonly Option<string> CreateItemOption = CliSyntax.Value("--item", "ITEM", "the item the ladder plays (an item of two teams)", CliCompletions.TournamentItems);
+    private static readonly Option<string> CreateMinutesOption = CliSyntax.Value("--minutes", "M", "length of its matches: 10, 5, 3 or 1 minutes (default 10)");
+    private static readonly Option<string> FirstSeedOption = CliSyntax.Value("--first-seed", "S", "match N plays seed S + N (default 1)");
+
+    private static readonly UsageLine CreateLine = new(CreateServerOption, CreateAdminOption, CreateItemOption, UsageLine.Optional(CreateMinutesOption), UsageLine.Optional(FirstSeedOption));
+
+    private static readonly Option<bool> ListHelp = CliSyntax.Help();
+    private static readonly Option<string> ListServerOption = CliSyntax.Value("--server", "URL", "the service's address, e.g. http://127.0.0.1:5080/");
+
+    private static readonly UsageLine ListLine = new(ListServerOption);
+
+    private static readonly Option<bool> PauseHelp = CliSyntax.Help();
+    private static readonly Option<string> PauseServerOption = CliSyntax.Value("--server", "URL", "the service's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> PauseAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
+    private static readonly Option<string> PauseLadderOption = CliSyntax.Value("--ladder", "L", "the ladder: its id, or its item when one ladder plays it (needed when the service runs several)");
+
+    private static readonly UsageLine PauseLine = new(PauseServerOption, PauseAdminOption, UsageLine.Optional(PauseLadderOption));
+
+    private static readonly Option<bool> ResumeHelp = CliSyntax.Help();
+    private static readonly Option<string> ResumeServerOption = CliSyntax.Value("--server", "URL", "the service's address, e.g. http://127.0.0.1:5080/");
+    private static readonly Option<string> ResumeAdminOption = CliSyntax.Value("--admin-token", "T", "the organiser's token");
+    private static readonly Option<string> ResumeLadderOption = CliSyntax.Value("--ladder", "L", "the ladder: its id, or its item when one ladder plays it (needed when the service runs several)");
+
+    private static readonly UsageLine ResumeLine = new(ResumeServerOption, ResumeAdminOption, UsageLine.Optional(ResumeLadderOption));
 
     private static readonly Command Serve = CliSyntax.Command("serve", "Run the ladder service.", ServeLine, ServeHelp);
     private static readonly Command Add = CliSyntax.Command("add", "Add a team to a running ladder.", AddLine, AddHelp);
     private static readonly Command Team = TeamCommand();
     private static readonly Command Submit = CliSyntax.Command("submit", "Submit a team's strategy to a running ladder.", SubmitLine, SubmitHelp);
     private static readonly Command Final = CliSyntax.Command("final", "Start a running ladder's final round.", FinalLine, FinalHelp);
+    private static readonly Command Create = CliSyntax.Command("create", "Create a ladder in a running service.", CreateLine, CreateHelp);
+    private static readonly Command List = CliSyntax.Command("list", "List a running service's ladders.", ListLine, ListHelp);
+    private static readonly Command Pause = CliSyntax.Command("pause", "Pause a ladder's ranked play.", PauseLine, PauseHelp);
+    private static readonly Command Resume = CliSyntax.Command("resume", "Resume a ladder's ranked play.", ResumeLine, ResumeHelp);
 
     private static readonly Option<bool> WorkerHelp = CliSyntax.Help();
     private static readonly Option<string> WorkerDatabaseOption = CliSyntax.Value("--database", "CONNECTION", "the service's PostgreSQL connection string");
@@ -86,6 +125,18 @@ internal sealed class LadderCommand : ICliCommand
     /// <summary>The usage of <c>ladder final</c>.</summary>
     public static string FinalUsage => "ladder final " + FinalLine.Text;
 
+    /// <summary>The usage of <c>ladder create</c>.</summary>
+    public static string CreateUsage => "ladder create " + CreateLine.Text;
+
+    /// <summary>The usage of <c>ladder list</c>.</summary>
+    public static string ListUsage => "ladder list " + ListLine.Text;
+
+    /// <summary>The usage of <c>ladder pause</c>.</summary>
+    public static string PauseUsage => "ladder pause " + PauseLine.Text;
+
+    /// <summary>The usage of <c>ladder resume</c>.</summary>
+    public static string ResumeUsage => "ladder resume " + ResumeLine.Text;
+
     /// <summary>The usage of <c>ladder worker</c>.</summary>
     public static string WorkerUsage => "ladder worker " + WorkerLine.Text;
 
@@ -93,7 +144,7 @@ internal sealed class LadderCommand : ICliCommand
     public string Name => "ladder";
 
     /// <inheritdoc/>
-    public string Synopsis => "ladder serve|team add|submit|final|worker ...";
+    public string Synopsis => "ladder serve|create|list|pause|resume|team add|submit|final|worker ...";
 
     /// <inheritdoc/>
     public string Summary => "Run a competition ladder: teams upload strategies, ranked matches play without end, standings update live.";
@@ -112,6 +163,10 @@ internal sealed class LadderCommand : ICliCommand
     {
         var ladder = CliSyntax.Command("ladder", "Run a competition ladder.", HelpOption);
         ladder.Subcommands.Add(Serve);
+        ladder.Subcommands.Add(Create);
+        ladder.Subcommands.Add(List);
+        ladder.Subcommands.Add(Pause);
+        ladder.Subcommands.Add(Resume);
         ladder.Subcommands.Add(Team);
         ladder.Subcommands.Add(Submit);
         ladder.Subcommands.Add(Final);
@@ -130,6 +185,10 @@ internal sealed class LadderCommand : ICliCommand
             ["submit", ..] => Submit,
             ["final", ..] => Final,
             ["worker", ..] => Worker,
+            ["create", ..] => Create,
+            ["list", ..] => List,
+            ["pause", ..] => Pause,
+            ["resume", ..] => Resume,
             _ => null,
         };
     }
@@ -152,7 +211,7 @@ internal sealed class LadderCommand : ICliCommand
                 throw CliUsageException.UnknownOption("ladder", rest[0].Text, Syntax, CliApp.ProgramName + " " + Synopsis);
             }
 
-            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, team add, submit, final, worker)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
+            throw new CliUsageException(rest.Count == 0 ? "ladder: a sub-command is needed (serve, create, list, pause, resume, team add, submit, final, worker)" : $"ladder: unknown sub-command {MessageText.Quote(rest[0].Text)}", CliApp.ProgramName + " " + Synopsis);
         }
 
         if (chosen == Serve)
@@ -170,20 +229,41 @@ internal sealed class LadderCommand : ICliCommand
             return RunWorker(rest, console);
         }
 
+        if (chosen == Create)
+        {
+            return RunCreate(rest, console);
+        }
+
+        if (chosen == List)
+        {
+            return RunList(rest, console);
+        }
+
+        if (chosen == Pause || chosen == Resume)
+        {
+            return RunPause(rest, console, chosen == Pause);
+        }
+
         return chosen == Add ? RunAdd(rest, console) : RunSubmit(rest, console);
     }
 
     private static string Help() =>
-        $"Usage: {CliApp.ProgramName} ladder serve|team add|submit|final|worker ...\n" +
+        $"Usage: {CliApp.ProgramName} ladder serve|create|list|pause|resume|team add|submit|final|worker ...\n" +
         $"  {CliApp.ProgramName} {ServeUsage}\n" +
+        $"  {CliApp.ProgramName} {CreateUsage}\n" +
+        $"  {CliApp.ProgramName} {ListUsage}\n" +
+        $"  {CliApp.ProgramName} {PauseUsage}\n" +
+        $"  {CliApp.ProgramName} {ResumeUsage}\n" +
         $"  {CliApp.ProgramName} {AddUsage}\n" +
         $"  {CliApp.ProgramName} {SubmitUsage}\n" +
         $"  {CliApp.ProgramName} {FinalUsage}\n" +
         $"  {CliApp.ProgramName} {WorkerUsage}\n\n" +
         "serve runs the ladder service until stopped (Ctrl+C): pages and JSON API, and workers that play ranked\n" +
-        "matches without end. team add adds a team and prints its token alone on the last line. submit uploads a\n" +
-        "team's strategy, which is compiled and checked once; its newest working submission plays. final starts the\n" +
-        "final round: every pair of the top K plays N matches, ranked play stops, the standings become the final's.\n" +
+        "matches without end. create adds a ladder (one item) to a running service; list shows its ladders; pause and\n" +
+        "resume stop and restart a ladder's ranked play. team add adds a team and prints its token alone on the last\n" +
+        "line. submit uploads a team's strategy for a ladder, which is compiled and checked once; its newest working\n" +
+        "submission plays. final starts a ladder's final round: every pair of the top K plays N matches, ranked play\n" +
+        "stops, the standings become the final's. With several ladders, --ladder names the one meant.\n" +
         "worker plays matches of a service whose database is PostgreSQL, beside it, until stopped (Ctrl+C).\n" +
         "More: docs/ladder.md.\n";
 
@@ -240,7 +320,7 @@ internal sealed class LadderCommand : ICliCommand
 
         if (values.TryGetValue(MinutesOption, out string? minutes))
         {
-            settings = settings with { Cycles = minutes switch { "10" => 6000, "5" => 3000, "3" => 1800, "1" => 600, _ => throw new CliUsageException($"ladder serve: --minutes must be 10, 5, 3 or 1, got {MessageText.Quote(minutes)}", null) } };
+            settings = settings with { Cycles = Cycles("ladder serve", minutes) };
         }
 
         if (values.TryGetValue(DataOption, out string? data))
@@ -301,7 +381,9 @@ internal sealed class LadderCommand : ICliCommand
 
         try
         {
-            console.Out.WriteLine($"ladder: {server.Item} at {server.Url} (data: {settings.DataDir}, {(settings.Database is null ? "SQLite" : "PostgreSQL")}); Ctrl+C stops it");
+            var ladders = server.Ladders;
+            string items = ladders.Count == 1 ? "ladder: " + ladders[0].Item : "ladders: " + string.Join(", ", ladders.Select(l => string.Create(CultureInfo.InvariantCulture, $"{l.Id} {l.Item}")));
+            console.Out.WriteLine($"{items} at {server.Url} (data: {settings.DataDir}, {(settings.Database is null ? "SQLite" : "PostgreSQL")}); Ctrl+C stops it");
             if (server.NewAdminToken is { } token)
             {
                 console.Out.WriteLine("organiser token (shown once; keep it):");
@@ -342,7 +424,13 @@ internal sealed class LadderCommand : ICliCommand
             throw new CliUsageException($"ladder team add: --strategy must be demo, chase-ball or idle, got {MessageText.Quote(strategy)}", null);
         }
 
-        return Ask("ladder team add", server, admin, console, client =>
+        string? ladder = values.GetValueOrDefault(AddLadderOption);
+        if (ladder is not null && strategy is null)
+        {
+            throw new CliUsageException("ladder team add: --ladder names the ladder of a house entrant (--strategy); a team that submits plays in every ladder it submits to", null);
+        }
+
+        return Ask("ladder team add", server, admin, ladder, console, client =>
         {
             var (name, token) = client.AddTeamAsync(positional[0], strategy).GetAwaiter().GetResult();
             console.Out.WriteLine(strategy is null ? $"team {name} added; its token (shown once):" : $"team {name} added, a house entrant playing {strategy}; its token (shown once):");
@@ -352,11 +440,11 @@ internal sealed class LadderCommand : ICliCommand
     }
 
     // One request to a running ladder: its refusal (or an unreachable service) is one line on standard error and exit 2.
-    private static int Ask(string command, string server, string token, CliConsole console, Func<LadderClient, int> ask)
+    private static int Ask(string command, string server, string token, string? ladder, CliConsole console, Func<LadderClient, int> ask)
     {
         try
         {
-            using var client = new LadderClient(server, token);
+            using var client = new LadderClient(server, token, ladder);
             return ask(client);
         }
         catch (LadderInputException e)
@@ -384,7 +472,7 @@ internal sealed class LadderCommand : ICliCommand
 
         string server = values.GetValueOrDefault(SubmitServerOption) ?? throw new CliUsageException("ladder submit: --server URL is required", usage);
         string token = values.GetValueOrDefault(TokenOption) ?? throw new CliUsageException("ladder submit: --token T is required", usage);
-        return Ask("ladder submit", server, token, console, client =>
+        return Ask("ladder submit", server, token, values.GetValueOrDefault(SubmitLadderOption), console, client =>
         {
             var (id, ok, log) = client.SubmitAsync(positional[0]).GetAwaiter().GetResult();
             if (!ok)
@@ -491,13 +579,106 @@ internal sealed class LadderCommand : ICliCommand
         string top = values.GetValueOrDefault(TopOption) ?? throw new CliUsageException("ladder final: --top K is required", usage);
         int k = Number("ladder final", "--top", top, 2, 1000);
         int rounds = values.TryGetValue(RoundsOption, out string? r) ? Number("ladder final", "--rounds", r, 1, 100) : 2;
-        return Ask("ladder final", server, admin, console, client =>
+        return Ask("ladder final", server, admin, values.GetValueOrDefault(FinalLadderOption), console, client =>
         {
             var (teams, matches) = client.StartFinalAsync(k, rounds).GetAwaiter().GetResult();
             console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"final round started: {string.Join(", ", teams)}; each pair plays {rounds} {(rounds == 1 ? "match" : "matches")}, {matches} in all"));
             return ExitCodes.Success;
         });
     }
+
+    // The option values of a sub-command that takes no argument, or null when --help was asked (and answered).
+    private static Dictionary<Option, string>? Options(IReadOnlyList<CommandLineWord> words, CliConsole console, Command command, UsageLine line, Option<bool> helpOption, string about, out string usage)
+    {
+        string name = "ladder " + command.Name;
+        usage = CliApp.ProgramName + " " + name + " " + line.Text;
+        var (values, positional) = Words(words, name, command, usage, helpOption, out bool help);
+        if (help)
+        {
+            WriteHelp(console, usage, about, line.OptionTable(22));
+            return null;
+        }
+
+        RefuseArguments(name, positional, usage);
+        return values;
+    }
+
+    private static int RunCreate(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        if (Options(words, console, Create, CreateLine, CreateHelp, "Creates a ladder in a running service: the item it plays, the length of its matches, its first seed.", out string usage) is not { } values)
+        {
+            return ExitCodes.Success;
+        }
+
+        string server = values.GetValueOrDefault(CreateServerOption) ?? throw new CliUsageException("ladder create: --server URL is required", usage);
+        string admin = values.GetValueOrDefault(CreateAdminOption) ?? throw new CliUsageException("ladder create: --admin-token T is required", usage);
+        string itemText = values.GetValueOrDefault(CreateItemOption) ?? throw new CliUsageException("ladder create: --item ITEM is required", usage);
+        string item = ItemRegistry.Find(itemText)?.Slug ?? throw ItemList.Unknown("ladder create", itemText, withDefault: false);
+        int cycles = values.TryGetValue(CreateMinutesOption, out string? minutes) ? Cycles("ladder create", minutes) : 6000;
+        ulong firstSeed = 1;
+        if (values.TryGetValue(FirstSeedOption, out string? seed) && !ulong.TryParse(seed, NumberStyles.None, CultureInfo.InvariantCulture, out firstSeed))
+        {
+            throw new CliUsageException($"ladder create: --first-seed must be a whole number from 0 to {ulong.MaxValue}, got {MessageText.Quote(seed)}", null);
+        }
+
+        return Ask("ladder create", server, admin, null, console, client =>
+        {
+            var l = client.CreateLadderAsync(item, cycles, firstSeed).GetAwaiter().GetResult();
+            console.Out.WriteLine(string.Create(CultureInfo.InvariantCulture, $"ladder {l.Id} created: {l.Item}, {l.Cycles} cycles a match, first seed {l.FirstSeed}"));
+            return ExitCodes.Success;
+        });
+    }
+
+    private static int RunList(IReadOnlyList<CommandLineWord> words, CliConsole console)
+    {
+        if (Options(words, console, List, ListLine, ListHelp, "Lists a running service's ladders, one a line.", out string usage) is not { } values)
+        {
+            return ExitCodes.Success;
+        }
+
+        string server = values.GetValueOrDefault(ListServerOption) ?? throw new CliUsageException("ladder list: --server URL is required", usage);
+        return Ask("ladder list", server, string.Empty, null, console, client =>
+        {
+            foreach (var l in client.LaddersAsync().GetAwaiter().GetResult())
+            {
+                console.Out.WriteLine(Line(l) + string.Create(CultureInfo.InvariantCulture, $"; {l.Teams} {(l.Teams == 1 ? "team" : "teams")}, {l.Matches} {(l.Matches == 1 ? "match" : "matches")}") + (l.Leader is { } leader ? ", first " + leader : string.Empty));
+            }
+
+            return ExitCodes.Success;
+        });
+    }
+
+    private static int RunPause(IReadOnlyList<CommandLineWord> words, CliConsole console, bool pause)
+    {
+        string name = pause ? "ladder pause" : "ladder resume";
+        if (Options(words, console, pause ? Pause : Resume, pause ? PauseLine : ResumeLine, pause ? PauseHelp : ResumeHelp,
+            pause ? "Pauses a ladder's ranked play (matches already running finish)." : "Resumes a ladder's ranked play.", out string usage) is not { } values)
+        {
+            return ExitCodes.Success;
+        }
+
+        string server = values.GetValueOrDefault(pause ? PauseServerOption : ResumeServerOption) ?? throw new CliUsageException(name + ": --server URL is required", usage);
+        string admin = values.GetValueOrDefault(pause ? PauseAdminOption : ResumeAdminOption) ?? throw new CliUsageException(name + ": --admin-token T is required", usage);
+        return Ask(name, server, admin, values.GetValueOrDefault(pause ? PauseLadderOption : ResumeLadderOption), console, client =>
+        {
+            console.Out.WriteLine(Line(client.SetPausedAsync(pause).GetAwaiter().GetResult()));
+            return ExitCodes.Success;
+        });
+    }
+
+    // "ladder 2: polo-1v1, 600 cycles a match, playing" (paused, or final round).
+    private static string Line(LadderSummary l) =>
+        string.Create(CultureInfo.InvariantCulture, $"ladder {l.Id}: {l.Item}, {l.Cycles} cycles a match, {(l.Final ? "final round" : l.Paused ? "paused" : "playing")}");
+
+    // --minutes: 10, 5, 3 or 1; its cycles.
+    private static int Cycles(string command, string minutes) => minutes switch
+    {
+        "10" => 6000,
+        "5" => 3000,
+        "3" => 1800,
+        "1" => 600,
+        _ => throw new CliUsageException($"{command}: --minutes must be 10, 5, 3 or 1, got {MessageText.Quote(minutes)}", null),
+    };
 
     private static int Number(string name, string value, int low, int high) => Number("ladder serve", name, value, low, high);
 

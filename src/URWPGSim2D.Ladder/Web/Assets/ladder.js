@@ -13,13 +13,25 @@ async function api(path, options = {}, kind = "team") {
   if (!response.ok && response.status !== 422) throw new Error(body.error || response.statusText);
   return body;
 }
+// The ladder this page is about (?ladder=ID), kept in the links between pages; none: the service's only ladder.
+const chosen = new URLSearchParams(location.search).get("ladder");
+const lq = path => chosen ? path + (path.includes("?") ? "&" : "?") + "ladder=" + encodeURIComponent(chosen) : path;
+for (const a of document.querySelectorAll("nav a")) if (a.getAttribute("href") !== "/ladders") a.href = lq(a.getAttribute("href"));
+const ladderList = () => api("/api/ladders");
+// Several ladders and none chosen: the overview lets the reader choose (true when it went there).
+async function toOverview() {
+  if (chosen || (await ladderList()).ladders.length < 2) return false;
+  location.replace("/ladders");
+  return true;
+}
 const teamLink = n => `<a href="/teams/${encodeURIComponent(n)}">${esc(n)}</a>`;
 const matchLink = id => `<a href="/matches/${id}">${id}</a>`;
 const score = m => m.score ? m.score.join(":") : m.forfeits ? "forfeit" : "";
 const subs = m => (m.submissions || []).map(s => s === null ? "house" : "#" + s).join(" vs ");
 
 async function standings() {
-  const s = await api("/api/standings");
+  if (await toOverview()) return;
+  const s = await api(lq("/api/standings"));
   document.getElementById("item").textContent = s.item;
   document.getElementById("summary").textContent = s.final
     ? `final round: top ${s.finalRound.top}, each pair ${s.finalRound.rounds} times; ${s.finalRound.played} of ${s.finalRound.matches} matches played (ranked play has stopped)`
@@ -35,11 +47,21 @@ async function team() {
   document.getElementById("name").textContent = t.name;
   document.getElementById("who").textContent = t.house ? "house entrant: " + t.house : t.signedIn ? "signed in: you see your compile logs and your strategy's logs" : "";
   document.getElementById("upload").hidden = !t.signedIn;
+  const l = await ladderList();
+  const item = id => { const x = l.ladders.find(y => y.id === id); return x ? `${x.item} (${x.id})` : String(id); };
+  const choice = document.querySelector("#submit select[name=ladder]");
+  if (choice.options.length !== l.ladders.length) {
+    choice.innerHTML = l.ladders.map(x => `<option value="${x.id}">${esc(item(x.id))}</option>`).join("");
+    if (chosen) choice.value = chosen;
+  }
+  document.getElementById("submit-ladder").hidden = l.ladders.length < 2;
   document.querySelector("#submissions tbody").innerHTML = t.submissions.map(s =>
-    `<tr><td class="num">${s.id}</td><td>${esc(s.created)}</td><td>${esc(s.state)}</td><td><pre>${esc(s.log ?? "")}</pre></td></tr>`).join("");
+    `<tr><td class="num">${s.id}</td><td>${esc(item(s.ladder))}</td><td>${esc(s.created)}</td><td>${esc(s.state)}</td><td><pre>${esc(s.log ?? "")}</pre></td></tr>`).join("");
   document.getElementById("faults").textContent = t.faults
     ? `faults: ${t.faults.counts}; first in match ${t.faults.first.match}${t.faults.first.cycle ? ", cycle " + t.faults.first.cycle : ""}: ${t.faults.first.text}` : "no faults";
-  const m = await api("/api/matches?team=" + encodeURIComponent(name) + "&limit=100");
+  const ids = chosen ? [chosen] : l.ladders.map(x => x.id);
+  const m = { matches: (await Promise.all(ids.map(id => api(`/api/matches?team=${encodeURIComponent(name)}&limit=100&ladder=${encodeURIComponent(id)}`))))
+    .flatMap(x => x.matches).sort((a, b) => b.id - a.id).slice(0, 100) };
   const side = x => x.teams.indexOf(t.name);
   const faults = x => { const f = (x.sideFaults || [])[side(x)]; return f ? [[f.exceptions, "exceptions"], [f.timeouts, "timeouts"], [f.badAnswers, "bad answers"], [f.hostEnds, "host ends"]].filter(p => p[0]).map(p => p.join(" ")).join(", ") : ""; };
   const slowest = x => { const ms = (x.slowestMs || [])[side(x)]; return ms === undefined || ms === null ? "" : ms + " ms"; };
@@ -59,25 +81,44 @@ async function match() {
   const id = location.pathname.split("/")[2];
   const m = await api("/api/matches/" + encodeURIComponent(id));
   document.getElementById("title").textContent = `Match ${m.id}: ${m.teams.join(" vs ")}`;
-  document.getElementById("details").innerHTML = `${esc(m.state)} · seed ${esc(m.seed)} · submissions ${subs(m)}` +
+  document.getElementById("details").innerHTML = `${esc(m.state)} · ladder ${m.ladder} · seed ${esc(m.seed)} · submissions ${subs(m)}` +
     (m.score ? ` · score ${score(m)}` : "") + (m.reasons ? ` · <span class="error">${m.reasons.map(esc).join("; ")}</span>` : "");
   const frame = document.getElementById("replay");
   if (m.replay && frame.hidden) { frame.src = m.replay; frame.hidden = false; }
 }
 
 async function queue() {
-  const w = await api("/api/matches?state=running,queued&limit=200");
+  if (await toOverview()) return;
+  const w = await api(lq("/api/matches?state=running,queued&limit=200"));
   document.querySelector("#waiting tbody").innerHTML = w.matches.map(x =>
     `<tr><td class="num">${matchLink(x.id)}</td><td>${esc(x.state)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${subs(x)}</td><td>${esc(x.created)}</td></tr>`).join("");
-  const d = await api("/api/matches?state=done&limit=50");
+  const d = await api(lq("/api/matches?state=done&limit=50"));
   document.querySelector("#done tbody").innerHTML = d.matches.map(x =>
     `<tr><td class="num">${matchLink(x.id)}</td><td>${x.teams.map(teamLink).join(" vs ")}</td><td>${score(x)}</td><td>${subs(x)}</td><td>${esc(x.finished)}</td></tr>`).join("");
 }
 
+async function ladders() {
+  const l = await ladderList();
+  const state = x => x.final ? "final round" : x.paused ? "paused" : "playing";
+  document.querySelector("#ladders tbody").innerHTML = l.ladders.map(x =>
+    `<tr><td class="num"><a href="/?ladder=${x.id}">${x.id}</a></td><td><a href="/?ladder=${x.id}">${esc(x.item)}</a></td><td class="num">${x.cycles}</td><td>${state(x)}</td>` +
+    `<td class="num">${x.teams}</td><td class="num">${x.matches}</td><td>${x.leader ? teamLink(x.leader) : ""}</td><td><a href="/queue?ladder=${x.id}">queue</a></td></tr>`).join("");
+}
+
 async function organiser() {
-  const l = await api("/api/ladder");
-  document.getElementById("ladder").textContent = `${l.item}, ${l.cycles} cycles a match, ${l.paused ? "paused" : "playing"}, ${l.submissionsPerDay} submissions a day`;
+  const all = await ladderList();
+  const choice = document.getElementById("ladder-choice");
+  choice.innerHTML = (chosen || all.ladders.length === 1 ? "" : `<option value="">choose a ladder</option>`) +
+    all.ladders.map(x => `<option value="${x.id}">${x.id}: ${esc(x.item)}</option>`).join("");
+  if (chosen) choice.value = chosen;
+  const items = document.querySelector("#create-ladder select[name=item]");
+  if (items.options.length === 0) items.innerHTML = all.items.map(i => `<option>${esc(i)}</option>`).join("");
+  document.getElementById("export-results").href = lq("/api/export/results.jsonl");
+  document.getElementById("export-standings").href = lq("/api/export/standings.json");
   document.getElementById("admin").hidden = !token("admin");
+  if (!chosen && all.ladders.length > 1) { document.getElementById("ladder").textContent = `this service runs ${all.ladders.length} ladders: choose one`; return; }
+  const l = await api(lq("/api/ladder"));
+  document.getElementById("ladder").textContent = `${l.item}, ${l.cycles} cycles a match, ${l.paused ? "paused" : "playing"}, ${l.submissionsPerDay} submissions a day`;
   document.getElementById("final-state").textContent = l.final
     ? `final round started: ${l.final.teams.join(", ")}, each pair ${l.final.rounds} times; ${l.final.played} of ${l.final.matches} played` : "";
 }
@@ -101,7 +142,8 @@ form("signin-password", async d => {
 form("submit", async d => {
   const body = new FormData();
   for (const f of document.querySelector("#submit input[type=file]").files) body.append("file", f, f.name);
-  try { const s = await api("/api/submissions", { method: "POST", body }); show("submit-log", `submission ${s.id}: ${s.state}\n${s.log}`, s.state !== "ok"); refresh(); }
+  const ladder = d.get("ladder");
+  try { const s = await api("/api/submissions" + (ladder ? "?ladder=" + encodeURIComponent(ladder) : ""), { method: "POST", body }); show("submit-log", `submission ${s.id}: ${s.state}\n${s.log}`, s.state !== "ok"); refresh(); }
   catch (e) { show("submit-log", e.message, true); }
 });
 form("admin-signin", async d => {
@@ -110,21 +152,29 @@ form("admin-signin", async d => {
   catch (e) { sessionStorage.removeItem("admin-token"); show("admin-result", e.message, true); document.getElementById("admin").hidden = true; }
 });
 form("add-team", async d => {
-  try { const t = await post("/api/teams", { name: d.get("name"), strategy: d.get("strategy") || null }, "admin"); show("team-token", `team ${t.name} added; its token (shown once): ${t.token}`); }
+  try { const t = await post(d.get("strategy") ? lq("/api/teams") : "/api/teams", { name: d.get("name"), strategy: d.get("strategy") || null }, "admin"); show("team-token", `team ${t.name} added; its token (shown once): ${t.token}`); }
   catch (e) { show("team-token", e.message, true); }
 });
 form("requeue", async d => { try { await post(`/api/matches/${encodeURIComponent(d.get("id"))}/requeue`, {}, "admin"); show("admin-result", "requeued"); } catch (e) { show("admin-result", e.message, true); } });
 form("final", async d => {
-  try { const f = await post("/api/final", { top: Number(d.get("top")), rounds: Number(d.get("rounds")) }, "admin"); show("admin-result", `final round started: ${f.final.matches} matches`); refresh(); }
+  try { const f = await post(lq("/api/final"), { top: Number(d.get("top")), rounds: Number(d.get("rounds")) }, "admin"); show("admin-result", `final round started: ${f.final.matches} matches`); refresh(); }
   catch (e) { show("admin-result", e.message, true); }
 });
 form("limit", async d => { try { await post("/api/settings", { submissionsPerDay: Number(d.get("n")) }, "admin"); show("admin-result", "set"); refresh(); } catch (e) { show("admin-result", e.message, true); } });
+form("create-ladder", async d => {
+  try {
+    const l = await post("/api/ladders", { item: d.get("item"), minutes: Number(d.get("minutes")), firstSeed: Number(d.get("firstSeed")) }, "admin");
+    show("ladder-result", `ladder ${l.id} created: ${l.item}, ${l.cycles} cycles a match, first seed ${l.firstSeed}`); refresh();
+  } catch (e) { show("ladder-result", e.message, true); }
+});
+const choice = document.getElementById("ladder-choice");
+if (choice) choice.addEventListener("change", () => { if (choice.value) location.search = "?ladder=" + encodeURIComponent(choice.value); });
 for (const [id, path] of [["pause", "/api/ladder/pause"], ["resume", "/api/ladder/resume"]]) {
   const b = document.getElementById(id);
-  if (b) b.addEventListener("click", async () => { try { await post(path, {}, "admin"); refresh(); } catch (e) { show("admin-result", e.message, true); } });
+  if (b) b.addEventListener("click", async () => { try { await post(lq(path), {}, "admin"); refresh(); } catch (e) { show("admin-result", e.message, true); } });
 }
 
-const pages = { standings, team, match, queue, organiser };
+const pages = { ladders, standings, team, match, queue, organiser };
 async function refresh() { try { await pages[page](); } catch (e) { console.error(e); } }
 refresh();
 if (page !== "organiser") setInterval(refresh, 2000);
