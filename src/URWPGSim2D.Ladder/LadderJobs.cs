@@ -8,6 +8,7 @@ using Hangfire.PostgreSql;
 using Hangfire.PostgreSql.Factories;
 using Hangfire.Server;
 using Hangfire.States;
+using Npgsql;
 using URWPGSim2D.Ladder.Storage;
 
 namespace URWPGSim2D.Ladder;
@@ -54,6 +55,8 @@ internal sealed class LadderJobs : IDisposable
 
     private readonly PostgreSqlStorage _storage;
     private readonly BackgroundJobClient _client;
+    private readonly string _connection;
+    private readonly TimeSpan _invisibility;
     private BackgroundJobServer? _server;
 
     /// <summary>Hangfire's storage in the database <paramref name="connection"/> names (its tables made on first use).</summary>
@@ -69,6 +72,26 @@ internal sealed class LadderJobs : IDisposable
         };
         _storage = new PostgreSqlStorage(new NpgsqlConnectionFactory(connection, options), options);
         _client = new BackgroundJobClient(_storage);
+        _connection = connection;
+        _invisibility = invisibility;
+    }
+
+    /// <summary>
+    /// Whether a job on the ladder's queue waits to be taken over: its process took it and then stopped
+    /// renewing it longer than the takeover time ago. Hangfire hands out the jobs nobody took before such
+    /// a job, so it is played again only once the queue holds no untaken job: the matchmaker makes no
+    /// new match while this is true.
+    /// </summary>
+    public bool TakeoverWaiting()
+    {
+        using var connection = new NpgsqlConnection(_connection);
+        connection.Open();
+        using var command = new NpgsqlCommand(
+            "SELECT EXISTS (SELECT 1 FROM ladder_jobs.jobqueue WHERE queue = @queue AND fetchedat < NOW() - make_interval(secs => @seconds))",
+            connection);
+        command.Parameters.AddWithValue("queue", Queue);
+        command.Parameters.AddWithValue("seconds", _invisibility.TotalSeconds);
+        return command.ExecuteScalar() is true;
     }
 
     /// <summary>Queues the job that plays match <paramref name="match"/>; its id.</summary>

@@ -5,11 +5,14 @@ namespace URWPGSim2D.Ladder;
 
 /// <summary>
 /// The service's matchmaking when matches are played through Hangfire (PostgreSQL): one thread that
-/// keeps, in each ladder, as many matches waiting as there are worker threads on the ladders' queue
-/// (at least one), making them one ladder after the other so that the queue serves every ladder in
-/// turn; it hands each new match to a job, and hands to a job every queued match that has none (one
-/// made just before the service stopped, a requeued one, the final round's). It looks again when a
-/// ladder changes and every two seconds (workers in other processes finish matches).
+/// keeps, in each ladder, twice as many matches waiting as there are worker threads on the ladders'
+/// queue (at least two: a worker finds its next match waiting when it ends one, though the matches of
+/// other processes end unseen), making them one ladder after the other so that the queue serves every
+/// ladder in turn; it hands each new match to a job, and hands to a job every queued match that has
+/// none (one made just before the service stopped, a requeued one, the final round's). While a dead
+/// worker's job waits to be taken over it makes no new match, so that the queue empties down to that
+/// job (<see cref="LadderJobs.TakeoverWaiting"/>). It looks again when a ladder changes and every half
+/// second (workers in other processes finish matches).
 /// </summary>
 internal sealed class LadderMatchmaker : IDisposable
 {
@@ -48,7 +51,7 @@ internal sealed class LadderMatchmaker : IDisposable
 
             try
             {
-                _wake.Wait(TimeSpan.FromSeconds(2), _stop.Token);
+                _wake.Wait(TimeSpan.FromSeconds(0.5), _stop.Token);
             }
             catch (OperationCanceledException)
             {
@@ -69,7 +72,12 @@ internal sealed class LadderMatchmaker : IDisposable
             }
         }
 
-        int waiting = Math.Max(1, _jobs.Workers());
+        if (_jobs.TakeoverWaiting())
+        {
+            return;
+        }
+
+        int waiting = 2 * Math.Max(1, _jobs.Workers());
         for (bool made = true; made && !_stop.IsCancellationRequested;)
         {
             made = false;

@@ -77,16 +77,16 @@ internal sealed class Body
     public float Radius { get; private init; }
 
     /// <summary>A static body's shape.</summary>
-    public Shape Shape { get; private init; }
+    public Shape Shape { get; private set; }
 
     /// <summary>Whether the body is a static circle (its bounds test is <see cref="StaticDisc"/> rather than <see cref="Bounds"/>).</summary>
-    public bool RoundStatic { get; private init; }
+    public bool RoundStatic { get; private set; }
 
     /// <summary>A static body's bounding circle (kept so that bounds tests need not read <see cref="Shape"/>).</summary>
-    public Disc StaticDisc { get; private init; }
+    public Disc StaticDisc { get; private set; }
 
     /// <summary>A static body's bounds, or the walls' pool bounds.</summary>
-    public Aabb Bounds { get; private init; }
+    public Aabb Bounds { get; private set; }
 
     /// <summary>The pool whose walls this body is.</summary>
     public Field? Field { get; private init; }
@@ -110,7 +110,7 @@ internal sealed class Body
     public FishModel? Model { get; }
 
     /// <summary>Thinnest width, mm (a ball's diameter, the end of a fish's tail, a polygon's narrowest width; walls: infinite).</summary>
-    public float Thickness { get; private init; }
+    public float Thickness { get; private set; }
 
     /// <summary>Position now, mm.</summary>
     public Vector2 Position;
@@ -231,6 +231,14 @@ internal sealed class Body
     /// <summary>A static shape.</summary>
     public static Body Static(int id, in Shape shape)
     {
+        var body = new Body(BodyKind.Static, id);
+        body.Reshape(shape);
+        return body;
+    }
+
+    /// <summary>Gives a static body another shape (its shape stamp changes, so no remembered test is reused).</summary>
+    public void Reshape(in Shape shape)
+    {
         Circle c = shape.BoundingCircle;
         Aabb bounds = shape.Kind switch
         {
@@ -240,7 +248,7 @@ internal sealed class Body
             ShapeKind.KDop8 => BoxOf(shape.AsKDop8().Vertices),
             _ => BoxOf(shape.AsPolygon().Vertices),
         };
-        float thickness = shape.Kind switch
+        Thickness = shape.Kind switch
         {
             ShapeKind.Circle => 2f * c.Radius,
             ShapeKind.Aabb => MathF.Min(bounds.Max.X - bounds.Min.X, bounds.Max.Y - bounds.Min.Y),
@@ -248,15 +256,13 @@ internal sealed class Body
             ShapeKind.KDop8 => KDopWidth(shape.AsKDop8()),
             _ => Width(shape.AsPolygon().Vertices, shape.AsPolygon().Normals),
         };
-        return new Body(BodyKind.Static, id)
-        {
-            Shape = shape,
-            Bounds = bounds,
-            Thickness = thickness,
-            Position = c.Center,
-            RoundStatic = shape.Kind == ShapeKind.Circle,
-            StaticDisc = new Disc(c.Center, c.Radius),
-        };
+        Shape = shape;
+        Bounds = bounds;
+        Position = c.Center;
+        BasePosition = c.Center;
+        RoundStatic = shape.Kind == ShapeKind.Circle;
+        StaticDisc = new Disc(c.Center, c.Radius);
+        ShapeStamp++;
     }
 
     /// <summary>The walls of a pool.</summary>

@@ -354,6 +354,50 @@ public sealed partial class MotionWorld
         return _leaves.Detect(a, b, contacts);
     }
 
+    /// <summary>
+    /// Replaces a body (a fish or a static body; not while a step runs) by a static shape at the
+    /// same number and with the same tag: the view <see cref="Queries.QueryWorld"/> keeps over a
+    /// motion world replaces its bodies so.
+    /// </summary>
+    /// <returns>The new body's id (a fish's old id no longer names a body; a static body's stays).</returns>
+    internal BodyId ReplaceByStatic(BodyId body, in Shape shape)
+    {
+        Body old = Existing(body, nameof(body));
+        if (shape.Kind == ShapeKind.Polygon && shape.AsPolygon().Vertices.Length == 0)
+        {
+            throw new ArgumentException("polygon is default(ConvexPolygon) and has no vertices", nameof(shape));
+        }
+
+        if (_stepping || old.Kind == BodyKind.Walls)
+        {
+            throw new ArgumentException($"{body} cannot be replaced {(_stepping ? "while a step runs" : "(the walls)")}", nameof(body));
+        }
+
+        if (old.Kind == BodyKind.Static)
+        {
+            // In place: the broad phase takes the statics' boxes again when next loaded.
+            old.Reshape(shape);
+            Prepare(old);
+            _loaded = false;
+            return old.Handle;
+        }
+
+        Body replacement = Body.Static(old.Id, shape);
+        Prepare(replacement);
+        replacement.Tag = old.Tag;
+        replacement.ShapeStamp = old.ShapeStamp + 1;
+        _bodies[old.Id] = replacement;
+        _loaded = false;
+        return replacement.Handle;
+    }
+
+    /// <summary>The shape of a static body.</summary>
+    internal Shape StaticShapeOf(BodyId body)
+    {
+        Body b = Existing(body, nameof(body));
+        return b.Kind == BodyKind.Static ? b.Shape : throw new ArgumentException($"{body} is a {b.Kind} body, not a static one", nameof(body));
+    }
+
     internal Body BodyAt(int id) => _bodies[id];
 
     /// <summary>The id of the body added <paramref name="index"/>-th (tests that walk every body).</summary>
@@ -408,14 +452,20 @@ public sealed partial class MotionWorld
             throw new ArgumentException("bodies cannot be added while a step runs", nameof(body));
         }
 
+        Prepare(body);
+        _bodies.Add(body);
+        _loaded = false;
+        return body.Handle;
+    }
+
+    // A new body's motion starts where it is, and it gets its id.
+    private void Prepare(Body body)
+    {
         body.BasePosition = body.Position;
         body.BaseHeading = body.Heading;
         Remember(body);
         body.KeepStepStart();
         body.Handle = new BodyId(body.Id, _world, _generation, !body.IsMoving);
-        _bodies.Add(body);
-        _loaded = false;
-        return body.Handle;
     }
 
     private Body Get(BodyId body) => Existing(body, nameof(body));

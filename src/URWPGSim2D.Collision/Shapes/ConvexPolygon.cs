@@ -92,6 +92,19 @@ public readonly struct ConvexPolygon
         BoundingCircle = Circle.Bounding(c, MathF.Sqrt(r2));
     }
 
+    /// <summary>
+    /// A polygon over vertex and normal arrays that are already counter-clockwise, convex and
+    /// normalised (a moving body's outline posed in place), without checking or copying them:
+    /// the arrays are the caller's and the polygon sees whatever they hold.
+    /// </summary>
+    internal ConvexPolygon(Vector2[] vertices, Vector2[] normals, in Circle boundingCircle)
+    {
+        _vertices = vertices;
+        _normals = normals;
+        _lanes = null;
+        BoundingCircle = boundingCircle;
+    }
+
     /// <summary>The vertices, counter-clockwise in x–z coordinates, mm.</summary>
     public ReadOnlySpan<Vector2> Vertices => _vertices;
 
