@@ -5,18 +5,35 @@ using Mono.Cecil.Cil;
 namespace URWPGSim2D.Server.Tests;
 
 /// <summary>
-/// The folders of the match engine and of the server depend on each other one way: no folder uses
-/// a folder that uses it back, directly or round a longer loop. A folder is its namespace (checked on
-/// every source file), and what a folder uses is read from the compiled assembly: every type named
-/// in a signature, field, local, base type, or instruction of a type declared there.
+/// The folders of every product project depend on each other one way: no folder uses a folder that
+/// uses it back, directly or round a longer loop. A type belongs to the folder its source file is in,
+/// and a folder's namespace is its path (checked on every source file, save the folders whose
+/// namespace is a contract: the original's in the compatibility layer, the SDK's sensing in the
+/// SDK's namespace). What a folder uses is read from the compiled assembly: every type named in a
+/// signature, field, local, base type, or instruction of a type declared there.
 /// </summary>
 public sealed partial class FolderCycleTests
 {
-    // Public types users know by their project's root namespace whose source files are in a folder:
-    // the type belongs to that folder. The collision detector is the narrow phase's public face.
+    // Public types users know by a namespace other than their folder's: the type belongs to the folder
+    // its source file is in. The collision detector is the narrow phase's public face; the query world
+    // and its answers are a view of the motion world, which itself answers queries with shape queries.
     private static readonly Dictionary<string, string> FiledElsewhere = new(StringComparer.Ordinal)
     {
         ["URWPGSim2D.Collision.CollisionDetector"] = "NarrowPhase",
+        ["URWPGSim2D.Collision.Queries.QueryWorld"] = "Motion",
+        ["URWPGSim2D.Collision.Queries.BodyRayHit"] = "Motion",
+        ["URWPGSim2D.Collision.Queries.BodyDistance"] = "Motion",
+    };
+
+    // Folders whose namespace is not their path because users' code names it: project and folder → namespace.
+    private static readonly Dictionary<(string Project, string Folder), string> ContractNamespaces = new()
+    {
+        [("URWPGSim2D.Strategies", "Sensing")] = "URWPGSim2D.Strategies",
+        [("URWPGSim2D.Compat", "Common")] = "URWPGSim2D.Common",
+        [("URWPGSim2D.Compat", "Core")] = "URWPGSim2D.Core",
+        [("URWPGSim2D.Compat", "StrategyHelper")] = "URWPGSim2D.StrategyHelper",
+        [("URWPGSim2D.Compat", "StrategyLoader")] = "URWPGSim2D.StrategyLoader",
+        [("URWPGSim2D.Compat", "Xna")] = "Microsoft.Xna.Framework",
     };
 
     [Theory]
@@ -27,6 +44,10 @@ public sealed partial class FolderCycleTests
     [InlineData("URWPGSim2D.Server", 80)]
     [InlineData("URWPGSim2D.Collision", 100)]
     [InlineData("URWPGSim2D.Ladder", 15)]
+    [InlineData("URWPGSim2D.Strategies", 20)]
+    [InlineData("URWPGSim2D.Compat", 40)]
+    [InlineData("URWPGSim2D.Protocol", 10)]
+    [InlineData("URWPGSim2D.Learning", 1)]
     public void EveryFilesNamespaceIsItsFolder(string project, int atLeast)
     {
         string server = Repository.PathOf("src/" + project);
@@ -48,7 +69,8 @@ public sealed partial class FolderCycleTests
             }
 
             string folder = Path.GetDirectoryName(relative) ?? string.Empty;
-            string expected = folder.Length == 0 ? project : project + "." + folder.Replace(Path.DirectorySeparatorChar, '.');
+            string expected = ContractNamespaces.TryGetValue((project, folder), out string? contract) ? contract
+                : folder.Length == 0 ? project : project + "." + folder.Replace(Path.DirectorySeparatorChar, '.');
             string? actual = Namespace().Match(text) is { Success: true } m ? m.Groups[1].Value : null;
             if (FiledElsewhere.Any(kv => kv.Key == actual + "." + Path.GetFileName(file).Split('.')[0] && kv.Value == folder))
             {
@@ -71,9 +93,11 @@ public sealed partial class FolderCycleTests
     [InlineData("URWPGSim2D.Server", "Cli", "Json")]
     [InlineData("URWPGSim2D.Collision", "Motion", "Shapes")]
     [InlineData("URWPGSim2D.Ladder", "", "Storage")]
+    [InlineData("URWPGSim2D.Strategies", "Sensing", "")]
+    [InlineData("URWPGSim2D.Compat", "Adapter", "Common")]
     public void NoFolderDependsOnItselfRoundALoop(string project, string user, string used)
     {
-        var uses = FolderUses(System.Reflection.Assembly.Load(project).Location, project);
+        var uses = FolderUses(System.Reflection.Assembly.Load(project).Location, SourceFolders(project));
         Assert.Contains(used, uses[user]); // the scan sees uses
         var loops = Loops(uses.ToDictionary(kv => kv.Key, kv => (IReadOnlyCollection<string>)kv.Value.Keys));
         Assert.True(loops.Count == 0, "folder loops:\n" + string.Join("\n", loops.Select(loop =>
@@ -95,7 +119,7 @@ public sealed partial class FolderCycleTests
     }
 
     // For each folder (namespace below the root, "" for the root), the folders its types use, each with one type pair as evidence.
-    private static Dictionary<string, Dictionary<string, string>> FolderUses(string assemblyPath, string root)
+    private static Dictionary<string, Dictionary<string, string>> FolderUses(string assemblyPath, IReadOnlyDictionary<string, string> root)
     {
         using var assembly = AssemblyDefinition.ReadAssembly(assemblyPath);
         var uses = new Dictionary<string, Dictionary<string, string>>(StringComparer.Ordinal);
@@ -214,15 +238,40 @@ public sealed partial class FolderCycleTests
         return t;
     }
 
-    private static string? Folder(TypeReference t, string root)
+    // The folder of a type of the project: where the source file that declares it is (null for a type from elsewhere or made by the compiler).
+    private static string? Folder(TypeReference t, IReadOnlyDictionary<string, string> root)
     {
-        if (FiledElsewhere.TryGetValue(Outer(t).FullName, out string? folder))
+        string name = Outer(t).FullName;
+        int arity = name.IndexOf('`', StringComparison.Ordinal);
+        return root.TryGetValue(arity < 0 ? name : name[..arity], out string? folder) ? folder : null;
+    }
+
+    // Every top-level type the project's sources declare (namespace and name) and the folder of its file.
+    private static Dictionary<string, string> SourceFolders(string project)
+    {
+        string source = Repository.PathOf("src/" + project);
+        var folders = new Dictionary<string, string>(StringComparer.Ordinal);
+        foreach (string file in Directory.EnumerateFiles(source, "*.cs", SearchOption.AllDirectories))
         {
-            return folder;
+            string relative = Path.GetRelativePath(source, file);
+            if (relative.StartsWith("obj" + Path.DirectorySeparatorChar, StringComparison.Ordinal) || relative.StartsWith("bin" + Path.DirectorySeparatorChar, StringComparison.Ordinal))
+            {
+                continue;
+            }
+
+            string text = File.ReadAllText(file);
+            string ns = Namespace().Match(text) is { Success: true } m ? m.Groups[1].Value + "." : string.Empty;
+            string folder = (Path.GetDirectoryName(relative) ?? string.Empty).Replace(Path.DirectorySeparatorChar, '.');
+            foreach (Match declared in TopLevelTypeName().Matches(text))
+            {
+                string name = ns + declared.Groups[1].Value;
+                Assert.True(!folders.TryGetValue(name, out string? other) || other == folder, $"{name} is declared in two folders: {other} and {folder}");
+                folders[name] = FiledElsewhere.TryGetValue(name, out string? filed) ? filed : folder;
+            }
         }
 
-        string ns = Outer(t).Namespace;
-        return ns == root ? string.Empty : ns.StartsWith(root + ".", StringComparison.Ordinal) ? ns[(root.Length + 1)..] : null;
+        Assert.NotEmpty(folders);
+        return folders;
     }
 
     // The strongly connected sets of more than one folder, or of one that uses itself (Tarjan).
@@ -281,6 +330,10 @@ public sealed partial class FolderCycleTests
 
         return loops;
     }
+
+    // A type declared at the top of a file-scoped namespace (not indented), its name.
+    [GeneratedRegex(@"^(?:(?:public|internal|static|sealed|abstract|readonly|partial|ref|unsafe|file)\s+)*(?:class|struct|record struct|record class|record|interface|enum|delegate\s+[\w.<>\[\],?]+)\s+(\w+)", RegexOptions.Multiline)]
+    private static partial Regex TopLevelTypeName();
 
     [GeneratedRegex(@"^namespace ([\w.]+);", RegexOptions.Multiline)]
     private static partial Regex Namespace();

@@ -163,69 +163,7 @@ internal sealed class MissionBuilder
             model.SetPose(pose);
         }
 
-        Outline(fish, f.Position, f.Heading, f.BodyLength, f.Width, f.HeadLength, model);
+        fish.Outline(f.Position, f.Heading, f.BodyLength, f.Width, f.HeadLength, model);
         return fish;
-    }
-
-    // Fills the vertex lists from the fish model (posed at position, heading): the body in the original's order, the
-    // other leaves as the model holds them. Also RoboFish.CalculateFishPostion's outline.
-    internal static void Outline(RoboFish fish, Vector2 position, float heading, float bodyLength, float width, float headLength, FishModel model)
-    {
-        var (sin, cos) = MathF.SinCos(heading);
-        Vector2 u = new(cos, sin), left = new(sin, -cos);
-        float hl = 0.5f * bodyLength, hw = 0.5f * width;
-        Vector2 p = position;
-        Vector2 headLeft = p + (u * hl) + (left * hw), headRight = p + (u * hl) - (left * hw);
-        Vector2 tip = p + (u * (hl + headLength));
-        fish.BodyPolygonVertices[0] = Xna.Vector3.FromXZ(headLeft);
-        fish.BodyPolygonVertices[1] = Xna.Vector3.FromXZ(tip);
-        fish.BodyPolygonVertices[2] = Xna.Vector3.FromXZ(headRight);
-        fish.BodyPolygonVertices[3] = Xna.Vector3.FromXZ(p - (u * hl) - (left * hw));
-        fish.BodyPolygonVertices[4] = Xna.Vector3.FromXZ(p - (u * hl) + (left * hw));
-        Leaf(fish.LeftPectoralPolygonVertices, model.GetLeaf(FishPart.LeftPectoral));
-        Leaf(fish.RightPectoralPolygonVertices, model.GetLeaf(FishPart.RightPectoral));
-        Leaf(fish.Tail1PolygonVertices, model.GetLeaf(FishPart.Tail1));
-        Leaf(fish.Tail2PolygonVertices, model.GetLeaf(FishPart.Tail2));
-        Leaf(fish.Tail3PolygonVertices, model.GetLeaf(FishPart.Tail3));
-        Leaf(fish.LeftCaudalFinVertices, model.GetLeaf(FishPart.LeftCaudal));
-        Leaf(fish.RightCaudalFinVertices, model.GetLeaf(FishPart.RightCaudal));
-
-        fish.PolygonVertices[0] = Xna.Vector3.FromXZ(tip);
-        fish.PolygonVertices[1] = Xna.Vector3.FromXZ(headLeft);
-        fish.PolygonVertices[2] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftPectoral), p));
-        fish.PolygonVertices[3] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftCaudal), p));
-        fish.PolygonVertices[4] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightCaudal), p));
-        fish.PolygonVertices[5] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightPectoral), p));
-        fish.PolygonVertices[6] = Xna.Vector3.FromXZ(headRight);
-
-        fish.CollisionModelCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * fish.CollisionModelRadiusMm)));
-        fish.CollisionModelBodyCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * fish.CollisionModelBodyRadiusMm)));
-        fish.CollisionModelTailCenterPositionMm = Xna.Vector3.FromXZ(model.TailGroup.Center);
-    }
-
-    private static void Leaf(List<Xna.Vector3> into, ReadOnlySpan<Vector2> points)
-    {
-        into.Clear();
-        foreach (var q in points)
-        {
-            into.Add(Xna.Vector3.FromXZ(q));
-        }
-    }
-
-    private static Vector2 Farthest(ReadOnlySpan<Vector2> points, Vector2 from)
-    {
-        Vector2 best = points[0];
-        float bestD = -1f;
-        foreach (var q in points)
-        {
-            float d = Vector2.DistanceSquared(q, from);
-            if (d > bestD)
-            {
-                bestD = d;
-                best = q;
-            }
-        }
-
-        return best;
     }
 }

@@ -49,6 +49,68 @@ public partial class RoboFish
         float heading = fish.BodyDirectionRad;
         var size = new FishSize(BodyLength, BodyWidth, HeadLength, TailJointLength1, TailJointLength2, TailJointLength3);
         var model = new FishModel(size, new FishPose(position, heading, TailToBodyAngle1, TailToBodyAngle2, TailToBodyAngle3));
-        URWPGSim2D.Compat.Adapter.MissionBuilder.Outline(this, position, heading, BodyLength, BodyWidth, HeadLength, model);
+        Outline(position, heading, BodyLength, BodyWidth, HeadLength, model);
+    }
+
+    // Fills the vertex lists from the fish model (posed at position, heading): the body in the original's order, the
+    // other leaves as the model holds them (a mission's fish, and CalculateFishPostion).
+    internal void Outline(Vector2 position, float heading, float bodyLength, float width, float headLength, FishModel model)
+    {
+        var (sin, cos) = MathF.SinCos(heading);
+        Vector2 u = new(cos, sin), left = new(sin, -cos);
+        float hl = 0.5f * bodyLength, hw = 0.5f * width;
+        Vector2 p = position;
+        Vector2 headLeft = p + (u * hl) + (left * hw), headRight = p + (u * hl) - (left * hw);
+        Vector2 tip = p + (u * (hl + headLength));
+        BodyPolygonVertices[0] = Xna.Vector3.FromXZ(headLeft);
+        BodyPolygonVertices[1] = Xna.Vector3.FromXZ(tip);
+        BodyPolygonVertices[2] = Xna.Vector3.FromXZ(headRight);
+        BodyPolygonVertices[3] = Xna.Vector3.FromXZ(p - (u * hl) - (left * hw));
+        BodyPolygonVertices[4] = Xna.Vector3.FromXZ(p - (u * hl) + (left * hw));
+        Leaf(LeftPectoralPolygonVertices, model.GetLeaf(FishPart.LeftPectoral));
+        Leaf(RightPectoralPolygonVertices, model.GetLeaf(FishPart.RightPectoral));
+        Leaf(Tail1PolygonVertices, model.GetLeaf(FishPart.Tail1));
+        Leaf(Tail2PolygonVertices, model.GetLeaf(FishPart.Tail2));
+        Leaf(Tail3PolygonVertices, model.GetLeaf(FishPart.Tail3));
+        Leaf(LeftCaudalFinVertices, model.GetLeaf(FishPart.LeftCaudal));
+        Leaf(RightCaudalFinVertices, model.GetLeaf(FishPart.RightCaudal));
+
+        PolygonVertices[0] = Xna.Vector3.FromXZ(tip);
+        PolygonVertices[1] = Xna.Vector3.FromXZ(headLeft);
+        PolygonVertices[2] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftPectoral), p));
+        PolygonVertices[3] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.LeftCaudal), p));
+        PolygonVertices[4] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightCaudal), p));
+        PolygonVertices[5] = Xna.Vector3.FromXZ(Farthest(model.GetLeaf(FishPart.RightPectoral), p));
+        PolygonVertices[6] = Xna.Vector3.FromXZ(headRight);
+
+        CollisionModelCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * CollisionModelRadiusMm)));
+        CollisionModelBodyCenterPositionMm = Xna.Vector3.FromXZ(tip - (u * (2f * CollisionModelBodyRadiusMm)));
+        CollisionModelTailCenterPositionMm = Xna.Vector3.FromXZ(model.TailGroup.Center);
+    }
+
+    private static void Leaf(List<Xna.Vector3> into, ReadOnlySpan<Vector2> points)
+    {
+        into.Clear();
+        foreach (var q in points)
+        {
+            into.Add(Xna.Vector3.FromXZ(q));
+        }
+    }
+
+    private static Vector2 Farthest(ReadOnlySpan<Vector2> points, Vector2 from)
+    {
+        Vector2 best = points[0];
+        float bestD = -1f;
+        foreach (var q in points)
+        {
+            float d = Vector2.DistanceSquared(q, from);
+            if (d > bestD)
+            {
+                bestD = d;
+                best = q;
+            }
+        }
+
+        return best;
     }
 }
