@@ -50,19 +50,11 @@ public sealed partial class FolderCycleTests
     [InlineData("URWPGSim2D.Learning", 1)]
     public void EveryFilesNamespaceIsItsFolder(string project, int atLeast)
     {
-        string server = Repository.PathOf("src/" + project);
         var wrong = new List<string>();
         int files = 0;
-        foreach (string file in Directory.EnumerateFiles(server, "*.cs", SearchOption.AllDirectories))
+        foreach (var (relative, text) in SourceFiles(project))
         {
-            string relative = Path.GetRelativePath(server, file);
-            if (relative.StartsWith("obj" + Path.DirectorySeparatorChar, StringComparison.Ordinal) || relative.StartsWith("bin" + Path.DirectorySeparatorChar, StringComparison.Ordinal))
-            {
-                continue;
-            }
-
             files++;
-            string text = File.ReadAllText(file);
             if (!TypeDeclaration().IsMatch(text))
             {
                 continue; // assembly attributes only
@@ -72,7 +64,7 @@ public sealed partial class FolderCycleTests
             string expected = ContractNamespaces.TryGetValue((project, folder), out string? contract) ? contract
                 : folder.Length == 0 ? project : project + "." + folder.Replace(Path.DirectorySeparatorChar, '.');
             string? actual = Namespace().Match(text) is { Success: true } m ? m.Groups[1].Value : null;
-            if (FiledElsewhere.Any(kv => kv.Key == actual + "." + Path.GetFileName(file).Split('.')[0] && kv.Value == folder))
+            if (FiledElsewhere.Any(kv => kv.Key == actual + "." + Path.GetFileName(relative).Split('.')[0] && kv.Value == folder))
             {
                 continue;
             }
@@ -246,20 +238,26 @@ public sealed partial class FolderCycleTests
         return root.TryGetValue(arity < 0 ? name : name[..arity], out string? folder) ? folder : null;
     }
 
-    // Every top-level type the project's sources declare (namespace and name) and the folder of its file.
-    private static Dictionary<string, string> SourceFolders(string project)
+    // The project's C# sources (not the build's outputs under obj/ and bin/): each path below the project and its text.
+    private static IEnumerable<(string Relative, string Text)> SourceFiles(string project)
     {
         string source = Repository.PathOf("src/" + project);
-        var folders = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (string file in Directory.EnumerateFiles(source, "*.cs", SearchOption.AllDirectories))
         {
             string relative = Path.GetRelativePath(source, file);
-            if (relative.StartsWith("obj" + Path.DirectorySeparatorChar, StringComparison.Ordinal) || relative.StartsWith("bin" + Path.DirectorySeparatorChar, StringComparison.Ordinal))
+            if (!relative.StartsWith("obj" + Path.DirectorySeparatorChar, StringComparison.Ordinal) && !relative.StartsWith("bin" + Path.DirectorySeparatorChar, StringComparison.Ordinal))
             {
-                continue;
+                yield return (relative, File.ReadAllText(file));
             }
+        }
+    }
 
-            string text = File.ReadAllText(file);
+    // Every top-level type the project's sources declare (namespace and name) and the folder of its file.
+    private static Dictionary<string, string> SourceFolders(string project)
+    {
+        var folders = new Dictionary<string, string>(StringComparer.Ordinal);
+        foreach (var (relative, text) in SourceFiles(project))
+        {
             string ns = Namespace().Match(text) is { Success: true } m ? m.Groups[1].Value + "." : string.Empty;
             string folder = (Path.GetDirectoryName(relative) ?? string.Empty).Replace(Path.DirectorySeparatorChar, '.');
             foreach (Match declared in TopLevelTypeName().Matches(text))
