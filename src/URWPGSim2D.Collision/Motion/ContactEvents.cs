@@ -19,6 +19,7 @@ internal sealed class ContactEvents
     private readonly PairTable _table;
     private readonly PairSampler _sampler;
     private readonly Settling _settling;
+    private readonly ContactCache _contacts;
     private readonly List<Body> _bodies;
     private readonly FirstContactSearch _search;
     private readonly Replanner _replanner;
@@ -29,9 +30,13 @@ internal sealed class ContactEvents
     private int[] _pending = new int[16];
     private int _pendingCount;
 
-    /// <summary>Creates the stage over the world, its pair schedule and its settling stage (where the bodies an event touched are settled).</summary>
-    public ContactEvents(MotionWorld world, PairSchedule schedule, Settling settling, List<Body> bodies)
+    // A pair answered within this many of its sampling intervals is pressing.
+    private const double PressingWindow = 2.0;
+
+    /// <summary>Creates the stage over the world, its pair schedule, its settling stage (where the bodies an event touched are settled) and its contacts that persist (which pairs are pressing).</summary>
+    public ContactEvents(MotionWorld world, PairSchedule schedule, Settling settling, ContactCache contacts, List<Body> bodies)
     {
+        _contacts = contacts;
         _world = world;
         _schedule = schedule;
         _table = schedule.Table;
@@ -42,8 +47,11 @@ internal sealed class ContactEvents
         _replanner = new Replanner(this);
     }
 
-    /// <summary>Contact events (times of first contact) of the current or last step.</summary>
+    /// <summary>Contact events of the current or last step.</summary>
     public int Count { get; private set; }
+
+    /// <summary>Pressing events (answered where found) of the current or last step.</summary>
+    public int PressingCount { get; private set; }
 
     /// <summary>Sizes the storage for a world of <paramref name="movers"/> movers.</summary>
     public void Load(int movers)
@@ -59,6 +67,7 @@ internal sealed class ContactEvents
     public void BeginStep()
     {
         Count = 0;
+        PressingCount = 0;
         _replanner.Settling = false;
     }
 
@@ -135,6 +144,12 @@ internal sealed class ContactEvents
             refine &= body.Events < MotionTolerances.MaximumEventsPerBody;
         }
 
+        if (refine && _world.PressingContacts && AllPressing(found))
+        {
+            refine = false;
+            PressingCount++;
+        }
+
         double contact = refine && lo < found ? _search.Search(lo, found, apartAtLo, _involved) : found;
         MoveInvolved(contact);
         _world.Time = contact;
@@ -155,6 +170,22 @@ internal sealed class ContactEvents
         }
 
         Relax();
+    }
+
+    // Every hit of the event is a pair answered at one of its last two samples: the bodies are in
+    // contact already, and the event is answered where it was found.
+    private bool AllPressing(double found)
+    {
+        foreach (int slot in _hits.Slot)
+        {
+            ref readonly PlannedPair pair = ref _table.Pair(slot);
+            if (!_contacts.IsPressing(pair.A, pair.B, found, PressingWindow * _table.Interval(slot)))
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     // The handler's response to one pair, if it still overlaps.

@@ -35,6 +35,30 @@ public interface IContactHandler
     void OnContact(MotionWorld world, in Contact contact);
 
     /// <summary>
+    /// Reports that two bodies begin to touch: the motion world is about to ask for the first answer
+    /// to a contact of theirs (called just before <see cref="OnSeparate"/>), and they were not
+    /// touching (no answer in this step or the one before). Nothing by default.
+    /// </summary>
+    /// <param name="world">The motion world.</param>
+    /// <param name="bodyA">The contact's first body (a moving one).</param>
+    /// <param name="bodyB">The contact's second body.</param>
+    void OnTouchBegan(MotionWorld world, BodyId bodyA, BodyId bodyB)
+    {
+    }
+
+    /// <summary>
+    /// Reports that two bodies no longer touch: a whole step passed without an answer to a contact
+    /// of theirs. Called at the end of that step, after its last contact and its rejected moves,
+    /// with the bodies in the order <see cref="OnTouchBegan"/> gave them. Nothing by default.
+    /// </summary>
+    /// <param name="world">The motion world.</param>
+    /// <param name="bodyA">The first body of the contact that began the touch.</param>
+    /// <param name="bodyB">Its second body.</param>
+    void OnTouchEnded(MotionWorld world, BodyId bodyA, BodyId bodyB)
+    {
+    }
+
+    /// <summary>
     /// Reports that the motion world rejected a body's move at the end of a step: its response left it
     /// inside another body, so it went back to its pose (and joints) at the end of the previous
     /// step and its velocity became zero. Called after the step's last contact.

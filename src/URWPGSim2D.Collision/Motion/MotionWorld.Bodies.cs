@@ -104,6 +104,7 @@ public sealed partial class MotionWorld
         }
 
         _bodies.Clear();
+        _contacts.Clear();
         _generation++;
         _loaded = false;
     }
@@ -536,6 +537,7 @@ public sealed partial class MotionWorld
         _schedule.Load([.. movers], [.. statics], walls);
         _islands.Load(m, PairSchedule.ReservedPairs(m));
         _events.Load(m);
+        _contacts.Reserve(m);
         _settling.Load(m);
         _changed = new BodySet(m);
         _leaves.Load(_schedule.Planner.MoverBodies);

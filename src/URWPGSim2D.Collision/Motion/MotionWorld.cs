@@ -25,7 +25,9 @@ public sealed partial class MotionWorld
     private readonly IslandSampling _islands;
     private readonly ContactEvents _events;
     private readonly Settling _settling;
+    private readonly ContactCache _contacts = new();
     private IContactHandler? _handler;
+    private bool _pressingContacts = true;
 
     /// <summary>Creates an empty motion world.</summary>
     /// <param name="broadPhase">The broad phase over the bodies' swept boxes; every kind gives the same contacts.</param>
@@ -42,7 +44,7 @@ public sealed partial class MotionWorld
         ArgumentNullException.ThrowIfNull(broadPhase);
         _schedule = new PairSchedule(broadPhase, _bodies);
         _settling = new Settling(this, _schedule, _bodies);
-        _events = new ContactEvents(this, _schedule, _settling, _bodies);
+        _events = new ContactEvents(this, _schedule, _settling, _contacts, _bodies);
         _islands = new IslandSampling(_schedule, _bodies);
     }
 
@@ -52,8 +54,53 @@ public sealed partial class MotionWorld
     /// <summary>Distinct sample times of the last step.</summary>
     public int SubSteps => _schedule.Sampler.SubSteps;
 
-    /// <summary>Contact events (times of first contact) of the last step.</summary>
+    /// <summary>Contact events of the last step: those found at their time of first contact and the pressing ones (<see cref="PressingEvents"/>).</summary>
     public int Events => _events.Count;
+
+    /// <summary>Contact events of the last step that were pressing: answered where a sample found them, without a search for the time of first contact (see <see cref="PressingContacts"/>).</summary>
+    public int PressingEvents => _events.PressingCount;
+
+    /// <summary>Pairs of bodies touching now: answered by the handler in the current or last step (see <see cref="IContactHandler.OnTouchBegan"/>).</summary>
+    public int TouchingPairs => _contacts.Count;
+
+    /// <summary>
+    /// Whether a pair that is already touching is answered where a sample finds it overlapping,
+    /// without a search for its time of first contact (true by default). A pair is pressing when
+    /// every pair of its event was answered at one of its last two samples (a fish pushing a ball
+    /// along, a ball held against a wall): the bodies are already in contact, so the search would
+    /// only find a time a sample interval earlier, and the response is the same one, where the
+    /// bodies are. A first contact is always found at its time of first contact. False answers
+    /// every contact at its time of first contact.
+    /// </summary>
+    /// <exception cref="ArgumentException">A step is running.</exception>
+    public bool PressingContacts
+    {
+        get => _pressingContacts;
+        set
+        {
+            if (_stepping)
+            {
+                throw new ArgumentException("pressing contacts cannot be switched while a step runs", nameof(value));
+            }
+
+            _pressingContacts = value;
+        }
+    }
+
+    /// <summary>
+    /// Whether two bodies are touching now: the handler answered a contact of theirs in the current
+    /// or last step. A touch begins with its first answer (<see cref="IContactHandler.OnTouchBegan"/>)
+    /// and ends after a whole step without one (<see cref="IContactHandler.OnTouchEnded"/>).
+    /// </summary>
+    /// <param name="a">One body's id.</param>
+    /// <param name="b">The other body's id.</param>
+    /// <returns>True when they touch.</returns>
+    /// <exception cref="ArgumentException">An id is not one of this motion world's bodies now.</exception>
+    public bool IsTouching(BodyId a, BodyId b)
+    {
+        Body first = Existing(a, nameof(a)), second = Existing(b, nameof(b));
+        return _contacts.IsTouching(first.Id, second.Id);
+    }
 
     /// <summary>Bodies whose move was rejected in the last step (see <see cref="IContactHandler.OnMoveRejected"/>).</summary>
     public int RejectedMoves => _settling.RejectedMoves;
@@ -237,6 +284,11 @@ public sealed partial class MotionWorld
         Body a = Get(contact.BodyA), b = Get(contact.BodyB);
         InvolveInOrder(a, b);
         IContactHandler handler = _handler!;
+        if (_contacts.Touch(a.Id, b.Id, Time))
+        {
+            handler.OnTouchBegan(this, contact.BodyA, contact.BodyB);
+        }
+
         Vector2 positionA = a.Position, positionB = b.Position;
         float headingA = a.Heading, headingB = b.Heading;
         handler.OnSeparate(this, contact);
@@ -328,6 +380,7 @@ public sealed partial class MotionWorld
         _handler = handler;
         _events.BeginStep();
         _settling.BeginStep();
+        _contacts.BeginStep();
         Time = 0.0;
         _stepping = true;
         foreach (Body body in _schedule.Planner.MoverBodies)
@@ -357,9 +410,12 @@ public sealed partial class MotionWorld
         Time = time;
     }
 
-    // The step's end state becomes the state a rejected move of the next step goes back to.
+    // The step's end state becomes the state a rejected move of the next step goes back to; the
+    // touches without an answer this step end, reported in the contact cache's order.
     private void End()
     {
+        var ended = new EndedTouches(this, _handler!);
+        _contacts.EndStep(ref ended);
         _stepping = false;
         Time = 0.0;
         foreach (Body body in _schedule.Planner.MoverBodies)
@@ -369,5 +425,11 @@ public sealed partial class MotionWorld
         }
 
         _handler = null;
+    }
+
+    // Reports each touch that ended to the handler.
+    private readonly struct EndedTouches(MotionWorld world, IContactHandler handler) : ContactCache.IEndedSink
+    {
+        public void Ended(int a, int b) => handler.OnTouchEnded(world, world._bodies[a].Handle, world._bodies[b].Handle);
     }
 }

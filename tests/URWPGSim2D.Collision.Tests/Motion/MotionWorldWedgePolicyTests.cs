@@ -106,9 +106,10 @@ public sealed class MotionWorldWedgePolicyTests
     [Fact]
     public void TheEventsThatMakeABarWedgedAreThePolicys()
     {
-        int Most(WedgePolicy? policy)
+        int Most(WedgePolicy? policy, bool pressing = false)
         {
             var world = MotionWorldWedgeTests.BarInSlot(out BodyId body);
+            world.PressingContacts = pressing;
             if (policy is not null)
             {
                 world.Wedging = policy;
@@ -127,8 +128,9 @@ public sealed class MotionWorldWedgePolicyTests
             return most;
         }
 
-        // The bar is found wedged by its events in a row at one time (2 by default); with that rule
-        // off (a large count) it takes many events a step, and the events-per-step rule bounds them.
+        // Every contact answered at its time of first contact: the bar is found wedged by its events
+        // in a row at one time (2 by default); with that rule off (a large count) it takes many
+        // events a step, and the events-per-step rule bounds them.
         int usual = Most(null);
         int many = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000 });
         int strict = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000, EventsBeforeDeferring = 4 });
@@ -136,6 +138,13 @@ public sealed class MotionWorldWedgePolicyTests
         Assert.True(many <= 16 + 2, $"in place off {many} events in one step");
         Assert.True(strict <= 4 + 2, $"{strict} events in one step");
         Assert.True(strict < many, $"16 events before deferring: {many}, 4: {strict}");
+
+        // With pressing contacts (the default) the bar's contacts after the first are answered
+        // where they are found: no more events than the policy's, even with its rules off.
+        int pressing = Most(null, pressing: true);
+        int pressingUnbounded = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000 }, pressing: true);
+        Assert.True(pressing <= usual, $"pressing {pressing} events, at times of first contact {usual}");
+        Assert.True(pressingUnbounded <= usual, $"pressing with the in-place rule off {pressingUnbounded} events, at times of first contact {usual}");
     }
 
     [Fact]
