@@ -3,8 +3,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>One contact the <see cref="MotionWorld"/> reports: two bodies overlapping at a time of the step.</summary>
 public readonly struct Contact
 {
-    internal Contact(Body bodyA, Body bodyB, in Hit hit, double time)
+    internal Contact(Body bodyA, Body bodyB, in Hit hit, double time, bool pressing = false)
     {
+        Pressing = pressing;
         BodyA = bodyA.Handle;
         BodyB = bodyB.Handle;
         Result = hit.Result;
@@ -32,7 +33,16 @@ public readonly struct Contact
     /// <summary>The leaf of B in contact when B is a fish, else null.</summary>
     public FishPart? PartB { get; }
 
-    /// <summary>When in the step, as a fraction 0 … 1 of its duration (the time of first contact).</summary>
+    /// <summary>
+    /// Whether this is a pressing contact: the pair was already touching (answered at one of its
+    /// last two samples, see <see cref="MotionWorld.PressingContacts"/>) and is answered where a
+    /// sample found it, not at a time of first contact, so <see cref="Depth"/> is how far the
+    /// bodies moved into each other since then. The wedge policy does not count the correction of
+    /// a pressing contact (<see cref="WedgePolicy.CorrectionsBeforeRejecting"/>).
+    /// </summary>
+    public bool Pressing { get; }
+
+    /// <summary>When in the step, as a fraction 0 … 1 of its duration (the time of first contact, or of the sample that found a pressing contact).</summary>
     public double Time { get; }
 
     /// <summary>Whether the bodies overlap (false for "no contact").</summary>

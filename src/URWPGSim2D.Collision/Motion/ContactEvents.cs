@@ -135,6 +135,7 @@ internal sealed class ContactEvents
         }
 
         bool refine = deepest > MotionTolerances.TimeOfImpactTolerance;
+        bool pressing = false;
         ReadOnlySpan<Body> movers = _schedule.Planner.MoverBodies;
         foreach (int m in _involved.Items)
         {
@@ -147,6 +148,7 @@ internal sealed class ContactEvents
         if (refine && _world.PressingContacts && AllPressing(found))
         {
             refine = false;
+            pressing = true;
             PressingCount++;
         }
 
@@ -166,7 +168,7 @@ internal sealed class ContactEvents
         _world.ClearChanged();
         foreach (int slot in _hits.Slot)
         {
-            Respond(_table.Pair(slot));
+            Respond(_table.Pair(slot), pressing);
         }
 
         Relax();
@@ -189,13 +191,13 @@ internal sealed class ContactEvents
     }
 
     // The handler's response to one pair, if it still overlaps.
-    private void Respond(in PlannedPair pair)
+    private void Respond(in PlannedPair pair, bool pressing)
     {
         Body a = _bodies[pair.A], b = _bodies[pair.B];
         Hit hit = _sampler.Memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
-            _world.Report(new Contact(a, b, hit, _world.Time));
+            _world.Report(new Contact(a, b, hit, _world.Time, pressing));
         }
     }
 
@@ -318,9 +320,14 @@ internal sealed class ContactEvents
             _involved.AddPair(_table.Pair(_pending[i]));
         }
 
+        // A pair that overlaps right away is pressing when it was touching already.
+        double time = _world.Time;
+        bool pressingContacts = _world.PressingContacts;
         for (int i = 0; i < _pendingCount; i++)
         {
-            Respond(_table.Pair(_pending[i]));
+            int slot = _pending[i];
+            ref readonly PlannedPair pair = ref _table.Pair(slot);
+            Respond(pair, pressingContacts && _contacts.IsPressing(pair.A, pair.B, time, PressingWindow * _table.Interval(slot)));
         }
 
         _pendingCount = 0;

@@ -292,8 +292,9 @@ public sealed partial class MotionWorld
         Vector2 positionA = a.Position, positionB = b.Position;
         float headingA = a.Heading, headingB = b.Heading;
         handler.OnSeparate(this, contact);
-        bool correctedA = a.Position != positionA || a.Heading != headingA;
-        bool correctedB = b.Position != positionB || b.Heading != headingB;
+        bool counts = !contact.Pressing;
+        bool correctedA = counts && (a.Position != positionA || a.Heading != headingA);
+        bool correctedB = counts && (b.Position != positionB || b.Heading != headingB);
         if (correctedA)
         {
             Corrected(a, contact.Depth);
