@@ -23,10 +23,10 @@ internal sealed class ContactCache
     /// <summary>Pairs touching now.</summary>
     public int Count { get; private set; }
 
-    /// <summary>Makes room for the touches of a world of <paramref name="movers"/> movers (at most half full).</summary>
-    public void Reserve(int movers)
+    /// <summary>Makes room for <paramref name="touches"/> pairs touching at once (the table at most half full).</summary>
+    public void Reserve(int touches)
     {
-        int size = (int)Math.Max(SmallestSize, BitOperations.RoundUpToPowerOf2((uint)Math.Max(1, 2 * movers)));
+        int size = (int)Math.Max(SmallestSize, BitOperations.RoundUpToPowerOf2((uint)Math.Max(1, 2 * touches)));
         if (size > _entries.Length)
         {
             Rehash(size);

@@ -18,7 +18,7 @@ public interface IContactHandler
     /// The position correction of one contact, called just before <see cref="OnContact"/> with the
     /// same contact (nothing by default). Each moving body this call moves or turns counts a
     /// correction for the contact, a fish's or a polygon's (a circle, pushed by whatever presses it,
-    /// never counts): past <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> deep ones (of a
+    /// never counts, nor does a pressing contact, <see cref="Contact.Pressing"/>): past <see cref="WedgePolicy.CorrectionsBeforeRejecting"/> deep ones (of a
     /// contact deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/>) in a step, a
     /// <see cref="MotionWorld.Settle"/> after it included, the body is wedged and the motion world
     /// rejects its move at once, as by <see cref="MotionWorld.RejectMove"/>, before <see cref="OnContact"/>.

@@ -537,7 +537,7 @@ public sealed partial class MotionWorld
         _schedule.Load([.. movers], [.. statics], walls);
         _islands.Load(m, PairSchedule.ReservedPairs(m));
         _events.Load(m);
-        _contacts.Reserve(m);
+        _contacts.Reserve(2 * m);
         _settling.Load(m);
         _changed = new BodySet(m);
         _leaves.Load(_schedule.Planner.MoverBodies);

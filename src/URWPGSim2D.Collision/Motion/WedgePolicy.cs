@@ -33,7 +33,8 @@ public sealed class WedgePolicy
 
     /// <summary>
     /// Deep position corrections (of a contact deeper than <see cref="MotionTolerances.TimeOfImpactTolerance"/>,
-    /// made by <see cref="IContactHandler.OnSeparate"/>; a fish's or a polygon's) a body may have in one step, a
+    /// made by <see cref="IContactHandler.OnSeparate"/>; a fish's or a polygon's; a pressing contact's,
+    /// <see cref="Contact.Pressing"/>, never counts) a body may have in one step, a
     /// <see cref="MotionWorld.Settle"/> after it included; the next one rejects its move (8; at least 0).
     /// </summary>
     /// <exception cref="ArgumentException">The value is negative.</exception>

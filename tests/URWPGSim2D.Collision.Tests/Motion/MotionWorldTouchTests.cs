@@ -3,9 +3,10 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// <summary>
 /// Contacts that persist: a pair touches from its first answer until a whole step passes without
 /// one (<see cref="IContactHandler.OnTouchBegan"/>, <see cref="IContactHandler.OnTouchEnded"/>,
-/// <see cref="MotionWorld.IsTouching"/>), and a pair that touches is pressing: its contacts after
-/// the first are answered where a sample finds them, on the sampling grid, rather than at a time of
-/// first contact searched between two samples.
+/// <see cref="MotionWorld.IsTouching"/>), and, with <see cref="MotionWorld.PressingContacts"/>
+/// on, a pair that touches is pressing: its contacts after the first are answered where a sample
+/// finds them, on the sampling grid, rather than at a time of first contact searched between two
+/// samples.
 /// </summary>
 public sealed class MotionWorldTouchTests
 {
@@ -13,6 +14,7 @@ public sealed class MotionWorldTouchTests
     public void ABallPressedAgainstAWallTouchesOnceAndItsLaterContactsArePressing()
     {
         var (world, ball, walls) = BallBesideTheRightWall();
+        world.PressingContacts = true;
         var handler = new TouchRecorder();
         for (int step = 0; step < 6; step++)
         {
@@ -33,7 +35,7 @@ public sealed class MotionWorldTouchTests
             {
                 // Every later contact is pressing: answered where a sample found it.
                 Assert.Equal(world.Events, world.PressingEvents);
-                Assert.All(handler.Contacts, c => Assert.True(OnSampleGrid(c.Time), $"step {step}: pressing contact at {c.Time}"));
+                Assert.All(handler.Contacts, c => Assert.True(c.Pressing && OnSampleGrid(c.Time), $"step {step}: pressing {c.Pressing} contact at {c.Time}"));
             }
 
             Assert.True(world.MeasureOverlap() <= 1f, $"step {step}: {world.MeasureOverlap()} mm left");
@@ -57,7 +59,7 @@ public sealed class MotionWorldTouchTests
     public void WithPressingContactsOffEveryContactIsFoundAtItsTimeOfFirstContact()
     {
         var (world, ball, walls) = BallBesideTheRightWall();
-        world.PressingContacts = false;
+        Assert.False(world.PressingContacts); // the default
         var handler = new TouchRecorder();
         for (int step = 0; step < 6; step++)
         {
@@ -66,7 +68,7 @@ public sealed class MotionWorldTouchTests
             world.Step(0.1f, handler);
             Assert.True(world.Events > 0);
             Assert.Equal(0, world.PressingEvents);
-            Assert.All(handler.Contacts, c => Assert.True(c.Depth <= MotionTolerances.TimeOfImpactTolerance, $"step {step}: contact {c.Depth} mm deep"));
+            Assert.All(handler.Contacts, c => Assert.True(!c.Pressing && c.Depth <= MotionTolerances.TimeOfImpactTolerance, $"step {step}: contact {c.Depth} mm deep"));
             Assert.True(world.IsTouching(ball, walls));
         }
 
@@ -82,6 +84,7 @@ public sealed class MotionWorldTouchTests
         world.AddWalls(new Field(4000f, 2000f, goalBlocks: false));
         BodyId fish = world.AddFish(FishSize.Default, new FishPose(new Vector2(-1200f, 0f), 0f, 0f, 0f, 0f));
         BodyId ball = world.AddCircle(58f, new Vector2(-850f, 0f));
+        world.PressingContacts = true;
         var handler = new PushingHandler();
         int pressing = 0;
         for (int step = 0; step < 20; step++)
@@ -126,7 +129,7 @@ public sealed class MotionWorldTouchTests
         world.Step(0.1f, handler);
         Assert.NotNull(handler.Refused);
         Assert.Equal("value", handler.Refused!.ParamName);
-        Assert.True(world.PressingContacts);
+        Assert.False(world.PressingContacts);
     }
 
     private static bool OnSampleGrid(double time)
@@ -215,7 +218,7 @@ public sealed class MotionWorldTouchTests
         {
             try
             {
-                world.PressingContacts = false;
+                world.PressingContacts = true;
             }
             catch (ArgumentException e)
             {

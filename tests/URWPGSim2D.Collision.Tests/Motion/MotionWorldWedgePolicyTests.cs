@@ -128,9 +128,9 @@ public sealed class MotionWorldWedgePolicyTests
             return most;
         }
 
-        // Every contact answered at its time of first contact: the bar is found wedged by its events
-        // in a row at one time (2 by default); with that rule off (a large count) it takes many
-        // events a step, and the events-per-step rule bounds them.
+        // Every contact answered at its time of first contact (the default): the bar is found wedged
+        // by its events in a row at one time (2 by default); with that rule off (a large count) it
+        // takes many events a step, and the events-per-step rule bounds them.
         int usual = Most(null);
         int many = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000 });
         int strict = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000, EventsBeforeDeferring = 4 });
@@ -139,8 +139,8 @@ public sealed class MotionWorldWedgePolicyTests
         Assert.True(strict <= 4 + 2, $"{strict} events in one step");
         Assert.True(strict < many, $"16 events before deferring: {many}, 4: {strict}");
 
-        // With pressing contacts (the default) the bar's contacts after the first are answered
-        // where they are found: no more events than the policy's, even with its rules off.
+        // With pressing contacts on, the bar's contacts after the first are answered where they are
+        // found: no more events than the policy allows at times of first contact, even with its rules off.
         int pressing = Most(null, pressing: true);
         int pressingUnbounded = Most(new WedgePolicy { EventsInPlaceBeforeDeferring = 1000 }, pressing: true);
         Assert.True(pressing <= usual, $"pressing {pressing} events, at times of first contact {usual}");
