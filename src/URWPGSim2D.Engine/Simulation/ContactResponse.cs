@@ -79,11 +79,7 @@ internal sealed class ContactResponse
             case PairKind.FishBall:
                 bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
                 _ballShare = _world.Fish[pair.A].MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
-
-                // A pressing contact is answered where a sample found it, deeper than at its time of
-                // first contact: the ball alone yields the depth the fish pushed into it since.
-                float moved = hit.Pressing ? 1f : _ballShare;
-                _separation.Apply(pair, hit, 1f - moved, moved);
+                _separation.Apply(pair, hit, 1f - _ballShare, _ballShare);
                 break;
             case PairKind.BallBall:
                 _separation.Apply(pair, hit, 0.5f, 0.5f);
