@@ -26,11 +26,18 @@ public sealed class HostProcess : IStrategyLink
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
+    private long _armedAt; // Environment.TickCount64 when the wait began
+    private long _cpuRead, _stalledRead; // ticks: the sandbox's CPU time and CPU wait when last read (CpuTime, WaitingTime)
+    private long _cpuAtWait, _stalledAtWait; // the same when the wait began
+    private const long NotMeasured = -1;
     private bool _remembered;
+    private int _cpuSeconds;
 
-    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting)
+    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting, int cpuSeconds)
     {
         _process = process;
+        _cpuSeconds = cpuSeconds;
+        (_cpuRead, _stalledRead) = cgroup is null ? (NotMeasured, NotMeasured) : (0, 0); // a new group counts from 0
         Waiting = waiting;
         _cgroup = cgroup;
         Scratch = scratch;
@@ -53,10 +60,10 @@ public sealed class HostProcess : IStrategyLink
     public bool CutByWait => _killedByWatchdog;
 
     /// <inheritdoc/>
-    public TimeSpan? CpuTime() => _cgroup?.CpuTime();
+    public TimeSpan? CpuTime() => Remember(_cgroup?.CpuTime(), ref _cpuRead);
 
     /// <inheritdoc/>
-    public TimeSpan? WaitingTime() => _cgroup?.WaitingTime();
+    public TimeSpan? WaitingTime() => Remember(_cgroup?.WaitingTime(), ref _stalledRead);
 
     /// <inheritdoc/>
     public long? PeakMemoryBytes() => _cgroup?.PeakMemoryBytes();
@@ -92,7 +99,7 @@ public sealed class HostProcess : IStrategyLink
     /// False when the host has gone meanwhile (the caller then starts a fresh one).
     /// </summary>
     /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
-    /// <param name="cpuSeconds">CPU time limit of the whole host for its match, s.</param>
+    /// <param name="cpuSeconds">CPU time limit of the whole host for its match, s (at most <see cref="WaitingCpuSeconds"/>, the limit it was started with).</param>
     public bool HandOver(string loadSpec, int cpuSeconds)
     {
         if (!Waiting || _process.HasExited)
@@ -104,6 +111,7 @@ public sealed class HostProcess : IStrategyLink
         {
             ToClient.Write(Encoding.UTF8.GetBytes(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{cpuSeconds} {loadSpec}\n")));
             ToClient.Flush();
+            _cpuSeconds = Math.Min(cpuSeconds, WaitingCpuSeconds); // a process cannot raise its own limit past the one it was started with
             return true;
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException)
@@ -137,7 +145,7 @@ public sealed class HostProcess : IStrategyLink
         Process process;
         try
         {
-            process = Process.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
+            process = SandboxedProcess.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
         }
         catch
         {
@@ -146,14 +154,24 @@ public sealed class HostProcess : IStrategyLink
             throw;
         }
 
-        return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec);
+        return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec, cpuSeconds);
     }
 
-    /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
+    /// <summary>
+    /// Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within
+    /// <paramref name="limit"/> of its own time: wall time less the time its sandbox waited for a
+    /// CPU, or its sandbox's CPU time (<see cref="HostWatchdog.Overdue"/>). The time its sandbox had
+    /// used and waited when last read (<see cref="CpuTime"/>, <see cref="WaitingTime"/>; the caller
+    /// reads them after each answer) is where the wait's count starts: no reading here.
+    /// </summary>
     public void BeginWait(TimeSpan limit)
     {
         _armed = limit;
-        Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
+        long now = Environment.TickCount64;
+        _armedAt = now;
+        _cpuAtWait = Volatile.Read(ref _cpuRead);
+        _stalledAtWait = Volatile.Read(ref _stalledRead);
+        Volatile.Write(ref _deadline, now + (long)limit.TotalMilliseconds);
     }
 
     /// <summary>Stops the watchdog. The first time (the host has answered, so its sandbox is up) its control group notes the sandbox's processes (<see cref="SandboxCgroup.Remember"/>).</summary>
@@ -167,8 +185,37 @@ public sealed class HostProcess : IStrategyLink
         }
     }
 
-    /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
-    public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
+    /// <summary>
+    /// Whether the host is armed, its deadline has passed at <paramref name="now"/>
+    /// (<see cref="Environment.TickCount64"/>) and it is <see cref="HostWatchdog.Overdue"/> (read from
+    /// its sandbox's control group only then).
+    /// </summary>
+    public bool IsLate(long now)
+    {
+        if (now <= Volatile.Read(ref _deadline))
+        {
+            return false;
+        }
+
+        var wall = TimeSpan.FromMilliseconds(now - _armedAt);
+        TimeSpan? stalled = Since(_stalledAtWait, _cgroup?.WaitingTime());
+        TimeSpan? cpu = Since(_cpuAtWait, _cgroup?.CpuTime());
+        return HostWatchdog.Overdue(wall, _armed, stalled, cpu);
+    }
+
+    // What a reading of the sandbox's time has grown since the wait began, or null where it is not measured.
+    private static TimeSpan? Since(long atWait, TimeSpan? now) => atWait != NotMeasured && now is { } t ? t - TimeSpan.FromTicks(atWait) : null;
+
+    // Keeps a reading of the sandbox's time for the next wait's start, and returns it.
+    private static TimeSpan? Remember(TimeSpan? reading, ref long read)
+    {
+        if (reading is { } t)
+        {
+            Volatile.Write(ref read, t.Ticks);
+        }
+
+        return reading;
+    }
 
     /// <summary>Whether the host's process has ended.</summary>
     public bool HasExited => _process.HasExited;
@@ -179,7 +226,11 @@ public sealed class HostProcess : IStrategyLink
     /// <summary>Kills the host and everything it started.</summary>
     public void Abort() => Kill();
 
-    /// <summary>How the host ended, for the fault report: killed by the watchdog, or the exit code or signal and its last lines of standard error.</summary>
+    /// <summary>
+    /// How the host ended, for the fault report, naming the limit that ended it where one did: the
+    /// watchdog's wait, its sandbox's memory, its CPU time for the match (<c>SIGXCPU</c> at the
+    /// <c>prlimit</c>); otherwise the exit code or signal; then its last lines of standard error.
+    /// </summary>
     public string Ending()
     {
         if (_killedByWatchdog)
@@ -200,7 +251,9 @@ public sealed class HostProcess : IStrategyLink
         else
         {
             int code = _process.ExitCode;
-            how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+            how = code == 128 + CpuLimitSignal && !OperatingSystem.IsWindows()
+                ? $"out of CPU time: it reached its limit of {_cpuSeconds} s of CPU time for the match (SIGXCPU), killed"
+                : code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
         }
 
         _ = _cgroup?.KillAll(); // whatever the host left running in its sandbox
@@ -214,6 +267,9 @@ public sealed class HostProcess : IStrategyLink
 
         return tail.Length == 0 ? how : $"{how}: {tail}";
     }
+
+    /// <summary>The signal the kernel sends a process at its CPU-time limit (<c>SIGXCPU</c>).</summary>
+    public const int CpuLimitSignal = 24;
 
     /// <summary>Kills the host and everything it started.</summary>
     public void Kill(bool byWatchdog = false)
