@@ -60,7 +60,6 @@ public sealed partial class MotionWorld
             _queryWalls = -1;
             _queryMoved.Clear();
             _queryAllMoved = false;
-            _queryMoversMoved = false;
             _queryGeneration = _generation;
         }
 
@@ -72,9 +71,8 @@ public sealed partial class MotionWorld
             }
 
             _queryAllMoved = false;
-            _queryMoversMoved = _stepping;
         }
-        else if (_queryMoversMoved)
+        else if (_queryMoversMoved || _stepping)
         {
             if (_loaded)
             {
@@ -96,9 +94,10 @@ public sealed partial class MotionWorld
                     }
                 }
             }
-
-            _queryMoversMoved = _stepping;
         }
+
+        // During a step every moving body may be anywhere along its path at the next query.
+        _queryMoversMoved = _stepping;
 
         foreach (int i in _queryMoved.Items)
         {
