@@ -107,6 +107,7 @@ public sealed class MotionWorldQueryTests
     {
         var scene = new Scene(6, 1000);
         var random = new Random(29);
+        Assert.InRange(scene.World.QueryTree.Height, 10, 2 * 10);
         CheckRays(scene, random, 60, 1.2f);
         CheckOverlaps(scene, random, 60);
         CheckNearest(scene, random, 60);
@@ -115,6 +116,7 @@ public sealed class MotionWorldQueryTests
             scene.PlaceRandomMover(random, far: false);
         }
 
+        Assert.InRange(scene.World.QueryTree.Height, 10, 2 * 10);
         CheckRays(scene, random, 60, 1.2f);
         CheckOverlaps(scene, random, 60);
         CheckNearest(scene, random, 60);
