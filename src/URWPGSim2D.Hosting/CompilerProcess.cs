@@ -92,7 +92,7 @@ public static class CompilerProcess
         // Without a control group the address space bounds the compiler's memory instead.
         long addressSpace = cgroup is null ? ((long)settings.MemoryMb + AddressSpaceMb) * 1024 * 1024 : 0;
         var start = SandboxCommand.Create(cgroup, bubblewrap, timeLimitSeconds, addressSpace, program, scratch, HostProcess.ChildEnvironment(scratch, settings.MemoryMb));
-        using var process = Process.Start(start) ?? throw new StrategyLoadException("the compiler did not start");
+        using var process = SandboxedProcess.Start(start) ?? throw new StrategyLoadException("the compiler did not start");
         started?.Invoke(process.Id);
         process.StandardInput.Close();
         int timedOut = 0;

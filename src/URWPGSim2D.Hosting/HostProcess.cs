@@ -27,10 +27,12 @@ public sealed class HostProcess : IStrategyLink
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
     private bool _remembered;
+    private int _cpuSeconds;
 
-    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting)
+    private HostProcess(Process process, SandboxCgroup? cgroup, string scratch, bool sandboxed, bool waiting, int cpuSeconds)
     {
         _process = process;
+        _cpuSeconds = cpuSeconds;
         Waiting = waiting;
         _cgroup = cgroup;
         Scratch = scratch;
@@ -104,6 +106,7 @@ public sealed class HostProcess : IStrategyLink
         {
             ToClient.Write(Encoding.UTF8.GetBytes(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{cpuSeconds} {loadSpec}\n")));
             ToClient.Flush();
+            _cpuSeconds = cpuSeconds;
             return true;
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException)
@@ -137,7 +140,7 @@ public sealed class HostProcess : IStrategyLink
         Process process;
         try
         {
-            process = Process.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
+            process = SandboxedProcess.Start(start) ?? throw new InvalidOperationException("the strategy host did not start");
         }
         catch
         {
@@ -146,7 +149,7 @@ public sealed class HostProcess : IStrategyLink
             throw;
         }
 
-        return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec);
+        return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec, cpuSeconds);
     }
 
     /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
@@ -179,7 +182,11 @@ public sealed class HostProcess : IStrategyLink
     /// <summary>Kills the host and everything it started.</summary>
     public void Abort() => Kill();
 
-    /// <summary>How the host ended, for the fault report: killed by the watchdog, or the exit code or signal and its last lines of standard error.</summary>
+    /// <summary>
+    /// How the host ended, for the fault report, naming the limit that ended it where one did: the
+    /// watchdog's wait, its sandbox's memory, its CPU time for the match (<c>SIGXCPU</c> at the
+    /// <c>prlimit</c>); otherwise the exit code or signal; then its last lines of standard error.
+    /// </summary>
     public string Ending()
     {
         if (_killedByWatchdog)
@@ -200,7 +207,9 @@ public sealed class HostProcess : IStrategyLink
         else
         {
             int code = _process.ExitCode;
-            how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+            how = code == 128 + CpuLimitSignal && !OperatingSystem.IsWindows()
+                ? $"out of CPU time: it reached its limit of {_cpuSeconds} s of CPU time for the match (SIGXCPU), killed"
+                : code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
         }
 
         _ = _cgroup?.KillAll(); // whatever the host left running in its sandbox
@@ -214,6 +223,9 @@ public sealed class HostProcess : IStrategyLink
 
         return tail.Length == 0 ? how : $"{how}: {tail}";
     }
+
+    /// <summary>The signal the kernel sends a process at its CPU-time limit (<c>SIGXCPU</c>).</summary>
+    public const int CpuLimitSignal = 24;
 
     /// <summary>Kills the host and everything it started.</summary>
     public void Kill(bool byWatchdog = false)

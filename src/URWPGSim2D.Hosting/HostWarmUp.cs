@@ -59,7 +59,7 @@ public static partial class HostWarmUp
         }
     }
 
-    /// <summary>Reads the line <c>CPU-SECONDS SPEC</c> from <paramref name="fromServer"/> (byte by byte: the protocol reads the rest) and limits this process's CPU time to it.</summary>
+    /// <summary>Reads the line <c>CPU-SECONDS SPEC</c> from <paramref name="fromServer"/> (byte by byte: the protocol reads the rest) and limits this process's CPU time to it (SIGXCPU then; SIGKILL a second later).</summary>
     /// <returns>The SPEC, or null when the server closed the stream or sent something else.</returns>
     public static string? ReadStrategy(Stream fromServer)
     {
@@ -84,7 +84,9 @@ public static partial class HostWarmUp
 
         if (OperatingSystem.IsLinux())
         {
-            var limit = new Limit { Current = (ulong)cpuSeconds, Maximum = (ulong)cpuSeconds };
+            // As prlimit sets a host's (SandboxCommand.Limits): SIGXCPU at the limit, which ends the host
+            // and says why; SIGKILL a second later only where the strategy holds SIGXCPU off.
+            var limit = new Limit { Current = (ulong)cpuSeconds, Maximum = (ulong)cpuSeconds + 1 };
             _ = SetLimit(CpuTime, ref limit); // lowering a limit is always allowed
         }
 

@@ -80,7 +80,7 @@ public sealed class StrategiesDocCoversEveryAttackTests
     {
         var tables = Tables();
         Assert.Equal(["faults", "platforms", "sandbox"], tables.Keys.Order(StringComparer.Ordinal));
-        Assert.Contains("its host ends: stack overflow, `Environment.Exit`, `Environment.FailFast`, a native crash, the host killed, the CPU-time limit, a constructor or static constructor of the strategy class that throws (the host cannot create it), its sandbox out of memory (heap, native memory and its RAM-backed files together past the sandbox's limit: `strategy host ended: out of memory: its sandbox reached its limit of N MiB, killed`)", tables["faults"]);
+        Assert.Contains("its host ends: stack overflow, `Environment.Exit`, `Environment.FailFast`, a native crash, the host killed, the CPU-time limit below (`strategy host ended: out of CPU time: it reached its limit of N s of CPU time for the match (SIGXCPU), killed`), a constructor or static constructor of the strategy class that throws (the host cannot create it), its sandbox out of memory (heap, native memory and its RAM-backed files together past the sandbox's limit: `strategy host ended: out of memory: its sandbox reached its limit of N MiB, killed`)", tables["faults"]);
         Assert.Equal(["files", "disk", "network", "processes", "user", "environment", "memory", "CPU", "core dumps"], tables["sandbox"]);
         Assert.Equal(6, tables["platforms"].Count);
     }
