@@ -65,16 +65,11 @@ internal sealed partial class DynamicAabbTree
             if (node.IsLeaf)
             {
                 bound = MathF.Min(bound, visitor.Visit(node.Proxy));
-                continue;
             }
-
-            if (top + 2 > _stack.Length)
+            else
             {
-                Array.Resize(ref _stack, _stack.Length * 2);
+                Push(ref top, node.Child1, node.Child2);
             }
-
-            _stack[top++] = node.Child1;
-            _stack[top++] = node.Child2;
         }
     }
 
@@ -109,17 +104,23 @@ internal sealed partial class DynamicAabbTree
                 continue;
             }
 
-            if (top + 2 > _stack.Length)
-            {
-                Array.Resize(ref _stack, _stack.Length * 2);
-            }
-
             // The nearer child goes on top, to be walked first and tighten the bound sooner.
             int c1 = node.Child1, c2 = node.Child2;
             bool firstNearer = Distance(point, _nodes[c1].Min, _nodes[c1].Max) <= Distance(point, _nodes[c2].Min, _nodes[c2].Max);
-            _stack[top++] = firstNearer ? c2 : c1;
-            _stack[top++] = firstNearer ? c1 : c2;
+            Push(ref top, firstNearer ? c2 : c1, firstNearer ? c1 : c2);
         }
+    }
+
+    // Pushes two nodes on the walk's stack (the second on top), growing it when needed.
+    private void Push(ref int top, int first, int second)
+    {
+        if (top + 2 > _stack.Length)
+        {
+            Array.Resize(ref _stack, _stack.Length * 2);
+        }
+
+        _stack[top++] = first;
+        _stack[top++] = second;
     }
 
     private static float Distance(Vector2 point, Vector2 min, Vector2 max) => Vector2.Distance(point, Vector2.Clamp(point, min, max));
