@@ -26,6 +26,10 @@ public sealed class HostProcess : IStrategyLink
     private long _deadline = long.MaxValue; // Environment.TickCount64 by which the armed host must answer
     private volatile bool _killedByWatchdog;
     private TimeSpan _armed;
+    private long _armedAt; // Environment.TickCount64 when the wait began
+    private long _cpuRead, _stalledRead; // ticks: the sandbox's CPU time and CPU wait when last read (CpuTime, WaitingTime)
+    private long _cpuAtWait, _stalledAtWait; // the same when the wait began
+    private const long NotMeasured = -1;
     private bool _remembered;
     private int _cpuSeconds;
 
@@ -33,6 +37,7 @@ public sealed class HostProcess : IStrategyLink
     {
         _process = process;
         _cpuSeconds = cpuSeconds;
+        (_cpuRead, _stalledRead) = cgroup is null ? (NotMeasured, NotMeasured) : (0, 0); // a new group counts from 0
         Waiting = waiting;
         _cgroup = cgroup;
         Scratch = scratch;
@@ -55,10 +60,10 @@ public sealed class HostProcess : IStrategyLink
     public bool CutByWait => _killedByWatchdog;
 
     /// <inheritdoc/>
-    public TimeSpan? CpuTime() => _cgroup?.CpuTime();
+    public TimeSpan? CpuTime() => Remember(_cgroup?.CpuTime(), ref _cpuRead);
 
     /// <inheritdoc/>
-    public TimeSpan? WaitingTime() => _cgroup?.WaitingTime();
+    public TimeSpan? WaitingTime() => Remember(_cgroup?.WaitingTime(), ref _stalledRead);
 
     /// <inheritdoc/>
     public long? PeakMemoryBytes() => _cgroup?.PeakMemoryBytes();
@@ -152,11 +157,21 @@ public sealed class HostProcess : IStrategyLink
         return new HostProcess(process, cgroup, scratch, sandbox, loadSpec == WaitingSpec, cpuSeconds);
     }
 
-    /// <summary>Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within <paramref name="limit"/>.</summary>
+    /// <summary>
+    /// Kills the host (<see cref="HostWatchdog"/>) if no <see cref="EndWait"/> comes within
+    /// <paramref name="limit"/> of its own time: wall time less the time its sandbox waited for a
+    /// CPU, or its sandbox's CPU time (<see cref="HostWatchdog.Overdue"/>). The time its sandbox had
+    /// used and waited when last read (<see cref="CpuTime"/>, <see cref="WaitingTime"/>; the caller
+    /// reads them after each answer) is where the wait's count starts: no reading here.
+    /// </summary>
     public void BeginWait(TimeSpan limit)
     {
         _armed = limit;
-        Volatile.Write(ref _deadline, Environment.TickCount64 + (long)limit.TotalMilliseconds);
+        long now = Environment.TickCount64;
+        _armedAt = now;
+        _cpuAtWait = Volatile.Read(ref _cpuRead);
+        _stalledAtWait = Volatile.Read(ref _stalledRead);
+        Volatile.Write(ref _deadline, now + (long)limit.TotalMilliseconds);
     }
 
     /// <summary>Stops the watchdog. The first time (the host has answered, so its sandbox is up) its control group notes the sandbox's processes (<see cref="SandboxCgroup.Remember"/>).</summary>
@@ -170,8 +185,37 @@ public sealed class HostProcess : IStrategyLink
         }
     }
 
-    /// <summary>Whether the host is armed and its deadline has passed at <paramref name="now"/> (<see cref="Environment.TickCount64"/>).</summary>
-    public bool IsLate(long now) => now > Volatile.Read(ref _deadline);
+    /// <summary>
+    /// Whether the host is armed, its deadline has passed at <paramref name="now"/>
+    /// (<see cref="Environment.TickCount64"/>) and it is <see cref="HostWatchdog.Overdue"/> (read from
+    /// its sandbox's control group only then).
+    /// </summary>
+    public bool IsLate(long now)
+    {
+        if (now <= Volatile.Read(ref _deadline))
+        {
+            return false;
+        }
+
+        var wall = TimeSpan.FromMilliseconds(now - _armedAt);
+        TimeSpan? stalled = Since(_stalledAtWait, _cgroup?.WaitingTime());
+        TimeSpan? cpu = Since(_cpuAtWait, _cgroup?.CpuTime());
+        return HostWatchdog.Overdue(wall, _armed, stalled, cpu);
+    }
+
+    // What a reading of the sandbox's time has grown since the wait began, or null where it is not measured.
+    private static TimeSpan? Since(long atWait, TimeSpan? now) => atWait != NotMeasured && now is { } t ? t - TimeSpan.FromTicks(atWait) : null;
+
+    // Keeps a reading of the sandbox's time for the next wait's start, and returns it.
+    private static TimeSpan? Remember(TimeSpan? reading, ref long read)
+    {
+        if (reading is { } t)
+        {
+            Volatile.Write(ref read, t.Ticks);
+        }
+
+        return reading;
+    }
 
     /// <summary>Whether the host's process has ended.</summary>
     public bool HasExited => _process.HasExited;

@@ -66,7 +66,7 @@ public sealed class TimeBank
     public static TimeSpan DefaultFor(int cycles, int deadlineMs) =>
         TimeSpan.FromMilliseconds(Math.Max(5_000.0, (double)Math.Max(cycles, 0) * deadlineMs / 10));
 
-    /// <summary>The wall time after which a call is given up however much bank is left: a hundred deadlines, at least 10 s.</summary>
+    /// <summary>The wall time after which a call is given up however much bank is left: a hundred deadlines, at least 10 s (a host's own time: <see cref="HostWatchdog.Overdue"/>).</summary>
     /// <param name="deadline">The deadline of one call.</param>
     public static TimeSpan CallLimitFor(TimeSpan deadline) => TimeSpan.FromTicks(Math.Max(TimeSpan.TicksPerSecond * 10, deadline.Ticks * 100));
 

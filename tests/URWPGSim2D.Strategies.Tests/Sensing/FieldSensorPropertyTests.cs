@@ -2,8 +2,9 @@ namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary>
 /// <see cref="FieldSensor"/>'s answers on random scenes against the double-precision truth of
-/// <see cref="Truth"/>: brute force over boundary samples 0.25 mm apart for polygons (obstacles and
-/// the fish's leaves), analytic for discs and borders.
+/// <see cref="Truth"/>: a point's distance to a polygon (obstacles and the fish's leaves) by brute force
+/// over boundary samples 0.25 mm apart, the gap between two bodies exact (edge against edge, centre
+/// against edge for a disc), analytic for discs and borders.
 /// </summary>
 public sealed class FieldSensorPropertyTests
 {
@@ -92,11 +93,11 @@ public sealed class FieldSensorPropertyTests
     }
 
     [Fact]
-    public void DistanceBetweenBodiesMatchesBruteForce()
+    public void DistanceBetweenBodiesMatchesTheExactGap()
     {
         var rng = new Random(2703);
         var sensor = new FieldSensor();
-        for (int scene = 0; scene < 6; scene++)
+        for (int scene = 0; scene < 24; scene++)
         {
             var s = SensedScene.Random(rng, fishCount: 3, ballCount: 2);
             sensor.Observe(s.Snapshot);
@@ -107,7 +108,7 @@ public sealed class FieldSensorPropertyTests
                 {
                     var d = sensor.Distance(bodies[i].Body, bodies[j].Body);
                     double truth = bodies[i].IsDisc && bodies[j].IsDisc ? AnalyticDiscGap(s, bodies[i].Body, bodies[j].Body) : Truth.Gap(bodies[i], bodies[j]);
-                    Assert.True(Math.Abs(d.Distance - truth) <= 2 * Tolerance, $"scene {scene}: {bodies[i].Body} to {bodies[j].Body}: {d}, brute force {truth:R}");
+                    Assert.True(Math.Abs(d.Distance - truth) <= 2 * Tolerance, $"scene {scene}: {bodies[i].Body} to {bodies[j].Body}: {d}, exact {truth:R}");
                     var swapped = sensor.Distance(bodies[j].Body, bodies[i].Body);
                     Assert.True(Math.Abs(swapped.Distance - d.Distance) <= 1e-3, $"{bodies[i].Body}, {bodies[j].Body}: not symmetric: {d} and {swapped}");
                     if (d.Distance > 0)
@@ -120,6 +121,51 @@ public sealed class FieldSensorPropertyTests
                     Assert.Equal(bodies[j].Body.Kind == SensedKind.Fish, d.PartB is not null);
                 }
             }
+        }
+    }
+
+    [Fact]
+    public void DistanceBetweenRectanglesAndDiscsIsTheHandComputedGap()
+    {
+        var snapshot = FieldSensorTests.Scene(
+            balls:
+            [
+                new BallView(0, new Vector2(0f, 200f), Vector2.Zero, 30f),
+                new BallView(1, new Vector2(300f, 200f), Vector2.Zero, 30f),
+                new BallView(2, new Vector2(90f, 40f), Vector2.Zero, 20f),
+                new BallView(3, new Vector2(0f, 0f), Vector2.Zero, 10f),
+            ],
+            obstacles:
+            [
+                new ObstacleView(0, ObstacleKind.Rectangle, Vector2.Zero, 200f, 100f, 0f, 0f),                  // x in ±100, y in ±50
+                new ObstacleView(1, ObstacleKind.Rectangle, new Vector2(300f, 0f), 100f, 100f, MathF.PI / 4, 0f), // a diamond, corners 50√2 from (300, 0)
+                new ObstacleView(2, ObstacleKind.Round, new Vector2(-400f, 0f), 0f, 0f, 0f, 50f),
+                new ObstacleView(3, ObstacleKind.Rectangle, Vector2.Zero, 40f, 20f, 0.3f, 0f),                  // inside obstacle 0
+                new ObstacleView(4, ObstacleKind.Rectangle, Vector2.Zero, 40f, 400f, 0f, 0f),                   // crosses obstacle 0, no corner inside it
+                new ObstacleView(5, ObstacleKind.Rectangle, new Vector2(400f, -300f), 100f, 100f, 0f, 0f),      // corner (350, −250) facing obstacle 0's (100, −50)
+            ]);
+        var sensor = new FieldSensor();
+        sensor.Observe(snapshot);
+        var truth = SensedScene.TruthOf(snapshot);
+        (SensedBody A, SensedBody B, double Gap)[] cases =
+        [
+            (SensedBody.Obstacle(0), SensedBody.Obstacle(1), 200 - (50 * Math.Sqrt(2))),
+            (SensedBody.Obstacle(0), SensedBody.Obstacle(2), 250),
+            (SensedBody.Obstacle(0), SensedBody.Ball(0), 120),
+            (SensedBody.Obstacle(1), SensedBody.Ball(1), 170 - (50 * Math.Sqrt(2))),
+            (SensedBody.Obstacle(0), SensedBody.Obstacle(5), Math.Sqrt((250 * 250) + (200 * 200))),
+            (SensedBody.Obstacle(2), SensedBody.Ball(0), Math.Sqrt((400 * 400) + (200 * 200)) - 80),
+            (SensedBody.Obstacle(0), SensedBody.Ball(2), 0),
+            (SensedBody.Obstacle(0), SensedBody.Ball(3), 0),
+            (SensedBody.Obstacle(0), SensedBody.Obstacle(3), 0),
+            (SensedBody.Obstacle(0), SensedBody.Obstacle(4), 0),
+        ];
+        foreach (var (a, b, gap) in cases)
+        {
+            // The reference the random scenes use, and the sensor, both against the hand-computed gap.
+            double reference = Truth.Gap(truth.Single(t => t.Body == a), truth.Single(t => t.Body == b));
+            Assert.True(Math.Abs(reference - gap) <= 1e-3, $"{a} to {b}: the reference says {reference:R}, by hand {gap:R}");
+            Assert.True(Math.Abs(sensor.Distance(a, b).Distance - gap) <= 2 * Tolerance, $"{a} to {b}: {sensor.Distance(a, b)}, by hand {gap:R}");
         }
     }
 

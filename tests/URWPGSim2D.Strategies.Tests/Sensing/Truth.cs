@@ -2,9 +2,10 @@ namespace URWPGSim2D.Strategies.Tests.Sensing;
 
 /// <summary>
 /// One body in double: a disc (analytic), one or more convex counter-clockwise polygons (a point is
-/// inside when strictly left of every edge; distances by brute force over boundary samples
-/// <see cref="SensedScene.SamplesPerMm"/> per mm), or a border (the half-plane beyond one side of
-/// the field; the distance of a point of the field is its gap to that side's line).
+/// inside when strictly left of every edge; a point's distance by brute force over boundary samples
+/// <see cref="SensedScene.SamplesPerMm"/> per mm, the gap between two bodies exact, edge against
+/// edge), or a border (the half-plane beyond one side of the field; the distance of a point of the
+/// field is its gap to that side's line).
 /// </summary>
 internal sealed class Truth
 {
@@ -116,22 +117,31 @@ internal sealed class Truth
         return Samples.SelectMany(s => s).Min(q => Hypot(p.X - q.X, p.Y - q.Y));
     }
 
-    /// <summary>The smallest distance between two polygon or disc bodies by brute force over both boundaries (0 when one contains a sample of the other).</summary>
+    /// <summary>
+    /// The smallest distance between two polygon or disc bodies, exact in double (no sampling): the
+    /// least gap between a convex piece of one and a convex piece of the other. Two convex polygons are
+    /// 0 apart when a vertex of one is strictly inside the other or two edges meet, else the least
+    /// distance from an edge's end to an edge of the other; a disc is its centre's distance less its radius.
+    /// </summary>
     public static double Gap(Truth a, Truth b)
     {
-        var sa = a.BoundaryPoints();
-        var sb = b.BoundaryPoints();
-        if (sa.Any(b.Inside) || sb.Any(a.Inside))
+        if (a.IsDisc && b.IsDisc)
         {
-            return 0;
+            return Math.Max(0, Hypot(a._center.X - b._center.X, a._center.Y - b._center.Y) - a._radius - b._radius);
+        }
+
+        if (a.IsDisc || b.IsDisc)
+        {
+            var (disc, polygon) = a.IsDisc ? (a, b) : (b, a);
+            return Math.Max(0, polygon.ExactDistance(disc._center) - disc._radius);
         }
 
         double best = double.PositiveInfinity;
-        foreach (var p in sa)
+        foreach (var pa in a.Polygons)
         {
-            foreach (var q in sb)
+            foreach (var pb in b.Polygons)
             {
-                best = Math.Min(best, Hypot(p.X - q.X, p.Y - q.Y));
+                best = Math.Min(best, PolygonGap(pa, pb));
             }
         }
 
@@ -140,15 +150,66 @@ internal sealed class Truth
 
     public static double Hypot(double x, double y) => Math.Sqrt((x * x) + (y * y));
 
-    private List<(double X, double Y)> BoundaryPoints()
+    // The exact distance from a point to the polygons (0 inside one).
+    private double ExactDistance((double X, double Y) p)
     {
-        if (!IsDisc)
+        if (Inside(p))
         {
-            return Samples.SelectMany(s => s).ToList();
+            return 0;
         }
 
-        int n = (int)Math.Ceiling(2 * Math.PI * _radius * SensedScene.SamplesPerMm);
-        return Enumerable.Range(0, n).Select(k => (_center.X + (_radius * Math.Cos(2 * Math.PI * k / n)), _center.Y + (_radius * Math.Sin(2 * Math.PI * k / n)))).ToList();
+        double best = double.PositiveInfinity;
+        foreach (var poly in Polygons)
+        {
+            for (int i = 0; i < poly.Length; i++)
+            {
+                best = Math.Min(best, SegmentDistance(p, poly[i], poly[(i + 1) % poly.Length]));
+            }
+        }
+
+        return best;
+    }
+
+    private static double PolygonGap((double X, double Y)[] pa, (double X, double Y)[] pb)
+    {
+        if (pa.Any(v => InsidePolygon(pb, v)) || pb.Any(v => InsidePolygon(pa, v)))
+        {
+            return 0;
+        }
+
+        double best = double.PositiveInfinity;
+        for (int i = 0; i < pa.Length; i++)
+        {
+            var a0 = pa[i];
+            var a1 = pa[(i + 1) % pa.Length];
+            for (int j = 0; j < pb.Length; j++)
+            {
+                var b0 = pb[j];
+                var b1 = pb[(j + 1) % pb.Length];
+                if (Cross(a0, a1, b0) * Cross(a0, a1, b1) < 0 && Cross(b0, b1, a0) * Cross(b0, b1, a1) < 0)
+                {
+                    return 0; // the edges cross (edges that only touch are 0 apart below)
+                }
+
+                best = Math.Min(best, Math.Min(
+                    Math.Min(SegmentDistance(a0, b0, b1), SegmentDistance(a1, b0, b1)),
+                    Math.Min(SegmentDistance(b0, a0, a1), SegmentDistance(b1, a0, a1))));
+            }
+        }
+
+        return best;
+    }
+
+    // Twice the signed area of the triangle a, b, p: positive when p is left of a→b.
+    private static double Cross((double X, double Y) a, (double X, double Y) b, (double X, double Y) p) =>
+        ((b.X - a.X) * (p.Y - a.Y)) - ((b.Y - a.Y) * (p.X - a.X));
+
+    // The distance from p to the segment a–b.
+    private static double SegmentDistance((double X, double Y) p, (double X, double Y) a, (double X, double Y) b)
+    {
+        double dx = b.X - a.X, dy = b.Y - a.Y, squared = (dx * dx) + (dy * dy);
+        double t = squared > 0 ? Math.Clamp((((p.X - a.X) * dx) + ((p.Y - a.Y) * dy)) / squared, 0, 1) : 0;
+        return Hypot(p.X - (a.X + (t * dx)), p.Y - (a.Y + (t * dy)));
     }
 
     private static bool InsidePolygon((double X, double Y)[] poly, (double X, double Y) p)
