@@ -95,27 +95,18 @@ public static class CompilerProcess
         using var process = SandboxedProcess.Start(start) ?? throw new StrategyLoadException("the compiler did not start");
         started?.Invoke(process.Id);
         process.StandardInput.Close();
-        int timedOut = 0;
-        using var timer = new Timer(
-            _ =>
-            {
-                Interlocked.Exchange(ref timedOut, 1);
-                End(process, cgroup);
-            },
-            null,
-            TimeSpan.FromSeconds(timeLimitSeconds),
-            Timeout.InfiniteTimeSpan);
+        using var timeLimit = new TimeLimit(TimeSpan.FromSeconds(timeLimitSeconds), cgroup, () => End(process, cgroup));
         var tail = new List<string>();
         var errors = new Thread(() => ReadLines(process.StandardError.BaseStream, tail, TailLines, keepLast: true)) { IsBackground = true, Name = "compiler stderr" };
         errors.Start();
         var answer = new List<string>();
         ReadLines(process.StandardOutput.BaseStream, answer, AnswerLines, keepLast: false);
         process.WaitForExit();
-        timer.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
+        timeLimit.Stop();
         errors.Join(2000);
         int code = process.ExitCode;
 
-        if (Volatile.Read(ref timedOut) == 1 || code == 128 + 24)
+        if (timeLimit.Passed || code == 128 + HostProcess.CpuLimitSignal)
         {
             throw new StrategyLoadException(string.Create(CultureInfo.InvariantCulture, $"the compiler took longer than its time limit of {timeLimitSeconds} s, stopped"));
         }
@@ -166,6 +157,66 @@ public static class CompilerProcess
     }
 
     private static void End(Process process, SandboxCgroup? cgroup) => SandboxedProcess.Kill(process, cgroup);
+
+    // The compiler's wall-time limit, counted as a host's waits are (HostWatchdog.Overdue): its own
+    // wall time (the time its sandbox waited for a CPU taken off) or its sandbox's CPU time, and at
+    // most five times the limit in wall time; looked at when the limit is reached, and again every
+    // Recheck while a busy machine has kept it waiting.
+    private sealed class TimeLimit : IDisposable
+    {
+        private static readonly TimeSpan Recheck = TimeSpan.FromMilliseconds(250);
+        private readonly Stopwatch _wall = Stopwatch.StartNew();
+        private readonly TimeSpan _limit;
+        private readonly SandboxCgroup? _cgroup;
+        private readonly Action _end;
+        private readonly Timer _timer;
+        private int _passed;
+        private int _stopped;
+
+        public TimeLimit(TimeSpan limit, SandboxCgroup? cgroup, Action end)
+        {
+            _limit = limit;
+            _cgroup = cgroup;
+            _end = end;
+            _timer = new Timer(Check, null, limit, Timeout.InfiniteTimeSpan);
+        }
+
+        // Whether the compiler was stopped at its limit.
+        public bool Passed => Volatile.Read(ref _passed) == 1;
+
+        // The compilation is over: no more looks.
+        public void Stop()
+        {
+            Volatile.Write(ref _stopped, 1);
+            _timer.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
+        }
+
+        public void Dispose() => _timer.Dispose();
+
+        private void Check(object? state)
+        {
+            if (Volatile.Read(ref _stopped) == 1)
+            {
+                return;
+            }
+
+            if (HostWatchdog.Overdue(_wall.Elapsed, _limit, _cgroup?.WaitingTime(), _cgroup?.CpuTime()))
+            {
+                Volatile.Write(ref _passed, 1);
+                _end();
+                return;
+            }
+
+            try
+            {
+                _timer.Change(Recheck, Timeout.InfiniteTimeSpan);
+            }
+            catch (ObjectDisposedException)
+            {
+                // the compilation is over
+            }
+        }
+    }
 
     // Reads the stream to its end as UTF-8 lines, each cut to LineLimit characters; keeps the first
     // (or the last) `most` lines and drops the rest, so whatever the child writes, this holds little.

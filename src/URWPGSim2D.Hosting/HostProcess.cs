@@ -99,7 +99,7 @@ public sealed class HostProcess : IStrategyLink
     /// False when the host has gone meanwhile (the caller then starts a fresh one).
     /// </summary>
     /// <param name="loadSpec">What the host loads (a .dll, optionally #Type).</param>
-    /// <param name="cpuSeconds">CPU time limit of the whole host for its match, s.</param>
+    /// <param name="cpuSeconds">CPU time limit of the whole host for its match, s (at most <see cref="WaitingCpuSeconds"/>, the limit it was started with).</param>
     public bool HandOver(string loadSpec, int cpuSeconds)
     {
         if (!Waiting || _process.HasExited)
@@ -111,7 +111,7 @@ public sealed class HostProcess : IStrategyLink
         {
             ToClient.Write(Encoding.UTF8.GetBytes(string.Create(System.Globalization.CultureInfo.InvariantCulture, $"{cpuSeconds} {loadSpec}\n")));
             ToClient.Flush();
-            _cpuSeconds = cpuSeconds;
+            _cpuSeconds = Math.Min(cpuSeconds, WaitingCpuSeconds); // a process cannot raise its own limit past the one it was started with
             return true;
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException)
