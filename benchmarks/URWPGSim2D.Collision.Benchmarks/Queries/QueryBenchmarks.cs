@@ -6,18 +6,24 @@ namespace URWPGSim2D.Collision.Benchmarks.Queries;
 /// <summary>
 /// The cost of each query over a fixed random set (512 cases, seed 27), reported per query:
 /// distance, ray cast and shape cast between convex polygons of 4 to 8 vertices that are apart,
-/// the same with a circle and with a fish, and the world queries over 60 bodies.
+/// the same with a circle and with a fish, and the world queries over 60 bodies and over 10,000
+/// (small polygons spread over 20 m × 20 m, each ray up to 1.5 m long, each box 200 mm).
 /// </summary>
 [MemoryDiagnoser]
 public class QueryBenchmarks
 {
     private const int Cases = 512;
+    private const int LargeWorld = 10_000;
     private ConvexPolygon[] _a = [], _b = [];
     private Shape[] _sa = [], _sb = [];
     private Circle[] _circles = [];
     private Vector2[] _from = [], _to = [], _move = [];
     private FishModel _fish = null!;
     private QueryWorld _world = null!;
+    private QueryWorld _large = null!;
+    private Vector2[] _largeFrom = [], _largeTo = [];
+    private readonly BodyRayHit[] _hits = new BodyRayHit[64];
+    private readonly int[] _found = new int[64];
 
     /// <summary>Builds the cases.</summary>
     [GlobalSetup]
@@ -55,6 +61,20 @@ public class QueryBenchmarks
         for (int i = 0; i < 60; i++)
         {
             _world.Add(_sb[i]);
+        }
+
+        _large = new QueryWorld(BroadPhaseKind.DynamicAabbTree);
+        for (int i = 0; i < LargeWorld; i++)
+        {
+            _large.Add(Polygon(rng, Point(rng, 10000f), Range(rng, 30f, 120f)));
+        }
+
+        _largeFrom = new Vector2[Cases];
+        _largeTo = new Vector2[Cases];
+        for (int i = 0; i < Cases; i++)
+        {
+            _largeFrom[i] = Point(rng, 10000f);
+            _largeTo[i] = _largeFrom[i] + Point(rng, 1500f / MathF.Sqrt(2f));
         }
     }
 
@@ -157,6 +177,84 @@ public class QueryBenchmarks
         for (int i = 0; i < Cases; i++)
         {
             s += _world.Nearest(_from[i]).Body;
+        }
+
+        return s;
+    }
+
+    /// <summary>Every ray hit over a world of 60 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int WorldRayCastAll()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _world.RayCastAll(_from[i], _to[i], _hits);
+        }
+
+        return s;
+    }
+
+    /// <summary>The bodies overlapping a box in a world of 60 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int WorldOverlap()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _world.Overlap(new Aabb(_from[i] - new Vector2(100f), _from[i] + new Vector2(100f)), _found);
+        }
+
+        return s;
+    }
+
+    /// <summary>Closest ray hit over a world of 10,000 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int LargeWorldRayCast()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _large.RayCast(_largeFrom[i], _largeTo[i]).Body;
+        }
+
+        return s;
+    }
+
+    /// <summary>Every ray hit over a world of 10,000 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int LargeWorldRayCastAll()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _large.RayCastAll(_largeFrom[i], _largeTo[i], _hits);
+        }
+
+        return s;
+    }
+
+    /// <summary>The bodies overlapping a box in a world of 10,000 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int LargeWorldOverlap()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _large.Overlap(new Aabb(_largeFrom[i] - new Vector2(100f), _largeFrom[i] + new Vector2(100f)), _found);
+        }
+
+        return s;
+    }
+
+    /// <summary>The body nearest a point in a world of 10,000 polygons (per query).</summary>
+    [Benchmark(OperationsPerInvoke = Cases)]
+    public int LargeWorldNearest()
+    {
+        int s = 0;
+        for (int i = 0; i < Cases; i++)
+        {
+            s += _large.Nearest(_largeFrom[i]).Body;
         }
 
         return s;

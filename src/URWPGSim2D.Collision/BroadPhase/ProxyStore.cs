@@ -35,6 +35,21 @@ internal sealed class ProxyStore
         MovingCount = movingCount;
     }
 
+    /// <summary>Adds a static proxy after the others, growing the arrays when needed.</summary>
+    /// <returns>Its index.</returns>
+    public int Append(in Aabb box)
+    {
+        if (Count == Min.Length)
+        {
+            Array.Resize(ref Min, Count * 2);
+            Array.Resize(ref Max, Count * 2);
+        }
+
+        Min[Count] = box.Min;
+        Max[Count] = box.Max;
+        return Count++;
+    }
+
     /// <summary>Stores a proxy's new box.</summary>
     public void Move(int proxy, in Aabb box)
     {

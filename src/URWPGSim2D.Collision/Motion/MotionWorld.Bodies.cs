@@ -179,6 +179,7 @@ public sealed partial class MotionWorld
         b.Heading = b.Kind == BodyKind.Circle ? 0f : Angle.Wrap(heading);
         b.Invalidate();
         Commit(b);
+        QueryMoved(b);
         if (!_stepping)
         {
             b.StartPosition = b.Position;
@@ -205,6 +206,7 @@ public sealed partial class MotionWorld
         b.ShapeStamp++;
         b.Invalidate();
         Commit(b);
+        QueryMoved(b);
     }
 
     /// <summary>Sets a moving body's own velocity; it moves with this plus its drift (<see cref="SetDrift"/>). For the rest of the step when called from a handler.</summary>
@@ -380,6 +382,7 @@ public sealed partial class MotionWorld
             old.Reshape(shape);
             Prepare(old);
             _loaded = false;
+            QueryMoved(old);
             return old.Handle;
         }
 
@@ -389,6 +392,7 @@ public sealed partial class MotionWorld
         replacement.ShapeStamp = old.ShapeStamp + 1;
         _bodies[old.Id] = replacement;
         _loaded = false;
+        QueryMoved(replacement);
         return replacement.Handle;
     }
 

@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Collision.Queries;
 
 namespace URWPGSim2D.Collision.Motion;
@@ -19,17 +20,15 @@ public sealed partial class MotionWorld
     public BodyRayHit RayCast(Vector2 from, Vector2 to)
     {
         ShapeQuery.CheckRay(from, to);
-        BodyRayHit best = default;
-        for (int i = 0; i < _bodies.Count; i++)
+        SyncQueryTree();
+        var first = new FirstHit(this, from, to);
+        if (_queryWalls >= 0)
         {
-            RayCastResult hit = RayCast(_bodies[i], from, to);
-            if (hit.Hit && (best.Body < 0 || hit.Fraction < best.Result.Fraction))
-            {
-                best = new BodyRayHit(_bodies[i].Handle, hit);
-            }
+            first.Take(_bodies[_queryWalls], WallsRay(_bodies[_queryWalls].Bounds, from, to));
         }
 
-        return best;
+        _queryTree.Segment(from, to, first.Bound, ref first);
+        return first.Best;
     }
 
     /// <summary>Every body the ray enters, at the bodies' poses now, nearest first (equal fractions by <see cref="BodyId.Index"/>); the rules of <see cref="RayCast(Vector2, Vector2)"/>.</summary>
@@ -41,36 +40,15 @@ public sealed partial class MotionWorld
     public int RayCastAll(Vector2 from, Vector2 to, Span<BodyRayHit> hits)
     {
         ShapeQuery.CheckRay(from, to);
-        int found = 0;
-        for (int i = 0; i < _bodies.Count; i++)
+        SyncQueryTree();
+        var all = new AllHits(this, from, to, hits);
+        if (_queryWalls >= 0)
         {
-            RayCastResult hit = RayCast(_bodies[i], from, to);
-            if (!hit.Hit)
-            {
-                continue;
-            }
-
-            // Insertion into the sorted prefix; hits past the span's end are counted, not kept.
-            int at = Math.Min(found, hits.Length);
-            while (at > 0 && hits[at - 1].Result.Fraction > hit.Fraction)
-            {
-                if (at < hits.Length)
-                {
-                    hits[at] = hits[at - 1];
-                }
-
-                at--;
-            }
-
-            if (at < hits.Length)
-            {
-                hits[at] = new BodyRayHit(_bodies[i].Handle, hit);
-            }
-
-            found++;
+            all.Take(_bodies[_queryWalls], WallsRay(_bodies[_queryWalls].Bounds, from, to));
         }
 
-        return found;
+        _queryTree.Segment(from, to, 1f, ref all);
+        return all.Found;
     }
 
     /// <summary>The bodies whose interiors overlap a box at their poses now (touching does not count), by ascending <see cref="BodyId.Index"/>; the rules of <see cref="Overlap(in Shape, Span{BodyId})"/>.</summary>
@@ -96,42 +74,61 @@ public sealed partial class MotionWorld
     {
         Aabb box = QueryWorld.BoxOf(shape);
         var query = new QueryBody(in shape);
-        int found = 0;
-        for (int i = 0; i < _bodies.Count; i++)
+        SyncQueryTree();
+        _queryTree.Query(box, _queryFound);
+        bool walls = false;
+        if (_queryWalls >= 0)
         {
+            Aabb pool = _bodies[_queryWalls].Bounds;
+            walls = box.Min.X < pool.Min.X || box.Min.Y < pool.Min.Y || box.Max.X > pool.Max.X || box.Max.Y > pool.Max.Y;
+        }
+
+        int found = 0;
+        foreach (int i in _queryFound.Items)
+        {
+            if (walls && _queryWalls < i)
+            {
+                Found(_bodies[_queryWalls], bodies, ref found);
+                walls = false;
+            }
+
             Body b = _bodies[i];
-            bool overlaps;
             if (b.Kind == BodyKind.Walls)
             {
-                Aabb pool = b.Bounds;
-                overlaps = box.Min.X < pool.Min.X || box.Min.Y < pool.Min.Y || box.Max.X > pool.Max.X || box.Max.Y > pool.Max.Y;
-            }
-            else
-            {
-                // Touching does not count, so a body whose bounding circle is apart from the shape's box is out.
-                QueryBound(b, out Vector2 center, out float radius);
-                Vector2 nearest = Vector2.Clamp(center, box.Min, box.Max);
-                if (Vector2.DistanceSquared(center, nearest) > radius * radius)
-                {
-                    continue;
-                }
-
-                Shape scratch = default;
-                overlaps = QueryBody.Contact(query, QueryOf(b, ref scratch)).Intersect;
+                continue;
             }
 
-            if (overlaps)
+            // Touching does not count, so a body whose bounding circle is apart from the shape's box is out.
+            QueryBound(b, out Vector2 center, out float radius);
+            Vector2 nearest = Vector2.Clamp(center, box.Min, box.Max);
+            if (Vector2.DistanceSquared(center, nearest) > radius * radius)
             {
-                if (found < bodies.Length)
-                {
-                    bodies[found] = b.Handle;
-                }
+                continue;
+            }
 
-                found++;
+            Shape scratch = default;
+            if (QueryBody.Contact(query, QueryOf(b, ref scratch)).Intersect)
+            {
+                Found(b, bodies, ref found);
             }
         }
 
+        if (walls)
+        {
+            Found(_bodies[_queryWalls], bodies, ref found);
+        }
+
         return found;
+
+        static void Found(Body b, Span<BodyId> bodies, ref int found)
+        {
+            if (found < bodies.Length)
+            {
+                bodies[found] = b.Handle;
+            }
+
+            found++;
+        }
     }
 
     /// <summary>
@@ -145,37 +142,15 @@ public sealed partial class MotionWorld
     public BodyDistance Nearest(Vector2 point)
     {
         Guard.Finite(point, nameof(point));
-        BodyDistance best = default;
-        float bestDistance = float.PositiveInfinity;
-        for (int i = 0; i < _bodies.Count; i++)
+        SyncQueryTree();
+        var nearest = new NearestBody(this, point);
+        if (_queryWalls >= 0)
         {
-            Body b = _bodies[i];
-            DistanceResult d;
-            if (b.Kind == BodyKind.Walls)
-            {
-                d = WallsToPoint(b.Bounds, point);
-            }
-            else
-            {
-                // A body farther than the best so far by its bounding circle cannot be nearer.
-                QueryBound(b, out Vector2 center, out float radius);
-                if (Vector2.Distance(center, point) - radius > bestDistance)
-                {
-                    continue;
-                }
-
-                Shape scratch = default;
-                d = ShapeQuery.ToPoint(QueryOf(b, ref scratch), point);
-            }
-
-            if (d.Distance < bestDistance)
-            {
-                bestDistance = d.Distance;
-                best = new BodyDistance(b.Handle, d);
-            }
+            nearest.Take(_bodies[_queryWalls], WallsToPoint(_bodies[_queryWalls].Bounds, point));
         }
 
-        return best;
+        _queryTree.Near(point, nearest.Distance, ref nearest);
+        return nearest.Best;
     }
 
     // One body's ray entry: the walls in closed form, any other body through its bounding circle
@@ -280,5 +255,116 @@ public sealed partial class MotionWorld
             : least == bottom ? new Vector2(point.X, pool.Min.Y)
             : new Vector2(point.X, pool.Max.Y);
         return new DistanceResult(least, on, point);
+    }
+
+    // The first body a ray enters: the least fraction, equal fractions to the lower number (bodies
+    // come in any order). The tree's walk stops past the best so far.
+    private struct FirstHit(MotionWorld world, Vector2 from, Vector2 to) : IProxyVisitor
+    {
+        public BodyRayHit Best;
+
+        public readonly float Bound => Best.Body < 0 ? 1f : Best.Result.Fraction;
+
+        public float Visit(int proxy)
+        {
+            Body b = world._bodies[proxy];
+            if (b.Kind != BodyKind.Walls)
+            {
+                Take(b, RayCast(b, from, to));
+            }
+
+            return Bound;
+        }
+
+        public void Take(Body b, in RayCastResult hit)
+        {
+            if (hit.Hit && (Best.Body < 0 || hit.Fraction < Best.Result.Fraction || (hit.Fraction == Best.Result.Fraction && b.Id < Best.Body)))
+            {
+                Best = new BodyRayHit(b.Handle, hit);
+            }
+        }
+    }
+
+    // Every body a ray enters, inserted into the sorted prefix of the span by fraction, then by
+    // number (bodies come in any order); hits past the span's end are counted, not kept.
+    private ref struct AllHits(MotionWorld world, Vector2 from, Vector2 to, Span<BodyRayHit> hits) : IProxyVisitor
+    {
+        private readonly Span<BodyRayHit> _hits = hits;
+
+        public int Found;
+
+        public float Visit(int proxy)
+        {
+            Body b = world._bodies[proxy];
+            if (b.Kind != BodyKind.Walls)
+            {
+                Take(b, RayCast(b, from, to));
+            }
+
+            return 1f;
+        }
+
+        public void Take(Body b, in RayCastResult hit)
+        {
+            if (!hit.Hit)
+            {
+                return;
+            }
+
+            int at = Math.Min(Found, _hits.Length);
+            while (at > 0 && (_hits[at - 1].Result.Fraction > hit.Fraction || (_hits[at - 1].Result.Fraction == hit.Fraction && _hits[at - 1].Body > b.Id)))
+            {
+                if (at < _hits.Length)
+                {
+                    _hits[at] = _hits[at - 1];
+                }
+
+                at--;
+            }
+
+            if (at < _hits.Length)
+            {
+                _hits[at] = new BodyRayHit(b.Handle, hit);
+            }
+
+            Found++;
+        }
+    }
+
+    // The nearest body: the least distance, equal distances to the lower number (bodies come in
+    // any order). The tree's walk stops past the best so far.
+    private struct NearestBody(MotionWorld world, Vector2 point) : IProxyVisitor
+    {
+        public BodyDistance Best;
+
+        public float Distance = float.PositiveInfinity;
+
+        public float Visit(int proxy)
+        {
+            Body b = world._bodies[proxy];
+            if (b.Kind == BodyKind.Walls)
+            {
+                return Distance;
+            }
+
+            // A body farther than the best so far by its bounding circle cannot be nearer.
+            QueryBound(b, out Vector2 center, out float radius);
+            if (Vector2.Distance(center, point) - radius <= Distance)
+            {
+                Shape scratch = default;
+                Take(b, ShapeQuery.ToPoint(QueryOf(b, ref scratch), point));
+            }
+
+            return Distance;
+        }
+
+        public void Take(Body b, in DistanceResult d)
+        {
+            if (d.Distance < Distance || (d.Distance == Distance && b.Id < Best.Body))
+            {
+                Distance = d.Distance;
+                Best = new BodyDistance(b.Handle, d);
+            }
+        }
     }
 }

@@ -163,6 +163,7 @@ public sealed partial class MotionWorld
         EnsureLoaded();
         _handler = handler;
         _stepping = true;
+        _queryMoversMoved = true;
         Time = 0.0;
         _settling.SettleAll();
         _stepping = false;
@@ -389,6 +390,7 @@ public sealed partial class MotionWorld
         _contacts.BeginStep();
         Time = 0.0;
         _stepping = true;
+        _queryMoversMoved = true;
         foreach (Body body in _schedule.Planner.MoverBodies)
         {
             body.Rebase(0.0);

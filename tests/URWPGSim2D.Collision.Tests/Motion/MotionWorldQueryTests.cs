@@ -17,12 +17,209 @@ public sealed class MotionWorldQueryTests
     public void RayCastsMatchBruteForce(int seed)
     {
         var scene = new Scene(seed);
-        var random = new Random(seed * 7);
-        var hits = new BodyRayHit[64];
+        int entered = CheckRays(scene, new Random(seed * 7), 300, 1.2f);
+        Assert.True(entered > 300, $"only {entered} entries in 300 rays: the scene does not exercise the ray casts");
+    }
+
+    [Theory]
+    [MemberData(nameof(Seeds))]
+    public void OverlapsMatchBruteForce(int seed)
+    {
+        var scene = new Scene(seed);
+        var kinds = CheckOverlaps(scene, new Random(seed * 11), 300);
+        Assert.Equal(Enum.GetValues<BodyKind>().Length, kinds.Count);
+    }
+
+    [Theory]
+    [MemberData(nameof(Seeds))]
+    public void NearestMatchesBruteForce(int seed)
+    {
+        var scene = new Scene(seed);
+        var kinds = CheckNearest(scene, new Random(seed * 13), 300);
+        Assert.True(kinds.Count >= 4, $"the nearest bodies were only {string.Join(", ", kinds)}");
+    }
+
+    [Theory]
+    [MemberData(nameof(Seeds))]
+    public void QueriesFollowBodiesPlacedAndReplacedBetweenThem(int seed)
+    {
+        var scene = new Scene(seed);
+        var random = new Random(seed * 17);
         int entered = 0;
+        for (int round = 0; round < 12; round++)
+        {
+            // A few bodies placed, or (every third round) many more placements than bodies, some far away.
+            int moves = round % 3 == 2 ? 3 * scene.World.BodyCount : 1 + random.Next(4);
+            for (int k = 0; k < moves; k++)
+            {
+                scene.PlaceRandomMover(random, far: random.Next(4) == 0);
+            }
+
+            if (round % 4 == 1)
+            {
+                scene.ReplaceRandomBody(random);
+            }
+
+            entered += CheckRays(scene, random, 40, 1.2f);
+            CheckOverlaps(scene, random, 40);
+            CheckNearest(scene, random, 40);
+        }
+
+        Assert.True(entered > 100, $"only {entered} entries: the rays miss the scene");
+    }
+
+    [Theory]
+    [MemberData(nameof(Seeds))]
+    public void QueriesFollowTheBodiesThroughAStepAndFromItsHandler(int seed)
+    {
+        var scene = new Scene(seed);
+        var random = new Random(seed * 19);
+        scene.GiveMoversVelocities(random, 2000f);
+        var handler = new QueryingHandler(scene, random);
+        for (int step = 0; step < 4; step++)
+        {
+            scene.World.Step(0.1f, handler);
+            CheckRays(scene, random, 40, 1.2f);
+            CheckOverlaps(scene, random, 40);
+            CheckNearest(scene, random, 40);
+        }
+
+        Assert.True(handler.Calls > 10, $"only {handler.Calls} contacts queried from");
+    }
+
+    [Fact]
+    public void QueriesFollowAWorldClearedAndFilledAgain()
+    {
+        var scene = new Scene(4);
+        var random = new Random(23);
+        CheckNearest(scene, random, 50);
+        var again = new Scene(5, 25, scene.World);
+        CheckRays(again, random, 100, 1.2f);
+        CheckOverlaps(again, random, 100);
+        CheckNearest(again, random, 100);
+        scene.World.Clear();
+        Assert.True(scene.World.Nearest(Vector2.Zero).Id.IsNull);
+        Assert.Equal(0, scene.World.RayCastAll(new Vector2(-2000f, 0f), new Vector2(2000f, 0f), Span<BodyRayHit>.Empty));
+    }
+
+    [Fact]
+    public void ManyBodiesMatchBruteForce()
+    {
+        var scene = new Scene(6, 1000);
+        var random = new Random(29);
+        Assert.InRange(scene.World.QueryTree.Height, 10, 2 * 10);
+        CheckRays(scene, random, 60, 1.2f);
+        CheckOverlaps(scene, random, 60);
+        CheckNearest(scene, random, 60);
+        for (int k = 0; k < 300; k++)
+        {
+            scene.PlaceRandomMover(random, far: false);
+        }
+
+        Assert.InRange(scene.World.QueryTree.Height, 10, 2 * 10);
+        CheckRays(scene, random, 60, 1.2f);
+        CheckOverlaps(scene, random, 60);
+        CheckNearest(scene, random, 60);
+    }
+
+    [Fact]
+    public void RaysThatMissEverythingFindNothing()
+    {
+        var scene = new Scene(7);
+        var random = new Random(31);
+        var hits = new BodyRayHit[4];
+        for (int q = 0; q < 200; q++)
+        {
+            // Outside the pool (the walls are entered only from inside), or between two far points on one side of it.
+            Vector2 from = new(3000f + (random.NextSingle() * 5000f), (random.NextSingle() - 0.5f) * 8000f);
+            Vector2 to = q % 2 == 0 ? from + new Vector2(random.NextSingle() * 2000f, (random.NextSingle() - 0.5f) * 2000f) : from;
+            Assert.True(scene.World.RayCast(from, to).Id.IsNull, $"ray {q} from {from} to {to} hit something");
+            Assert.Equal(0, scene.World.RayCastAll(from, to, hits));
+        }
+
+        // Inside the pool, the walls alone: a ray along an empty strip just inside the long side.
+        var world = new MotionWorld();
+        BodyId walls = world.AddWalls(new Field());
+        world.AddStatic(new Circle(Vector2.Zero, 100f));
+        Assert.True(world.RayCast(new Vector2(-500f, 900f), new Vector2(500f, 900f)).Id.IsNull);
+        Assert.Equal(walls, world.RayCast(new Vector2(-500f, 900f), new Vector2(-500f, 1100f)).Id);
+        CheckRays(scene, random, 100, 3f);
+    }
+
+    [Fact]
+    public void TiesGoToTheLowerNumber()
+    {
+        // Every shape three times (numbers k, k + 40, k + 80): equal answers, bit for bit, wherever the tree keeps them.
+        var world = new MotionWorld();
+        var random = new Random(37);
+        var shapes = new Shape[40];
+        for (int i = 0; i < shapes.Length; i++)
+        {
+            shapes[i] = RandomShape(random, new Vector2((random.NextSingle() - 0.5f) * 3000f, (random.NextSingle() - 0.5f) * 2000f));
+        }
+
+        for (int copy = 0; copy < 3; copy++)
+        {
+            foreach (Shape shape in shapes)
+            {
+                world.AddStatic(shape);
+            }
+        }
+
+        var hits = new BodyRayHit[120];
+        var found = new BodyId[120];
+        int ties = 0;
         for (int q = 0; q < 300; q++)
         {
-            Vector2 from = scene.RandomPoint(random, 1.2f), to = scene.RandomPoint(random, 1.2f);
+            Vector2 a = new((random.NextSingle() - 0.5f) * 3000f, (random.NextSingle() - 0.5f) * 2000f);
+            Vector2 b = new((random.NextSingle() - 0.5f) * 3000f, (random.NextSingle() - 0.5f) * 2000f);
+            BodyDistance nearest = world.Nearest(a);
+            Assert.True(nearest.Body < 40, $"point {q}: {nearest} is a later copy");
+            BodyRayHit first = world.RayCast(a, b);
+            int count = world.RayCastAll(a, b, hits);
+            Assert.Equal(0, count % 3);
+            if (count == 0)
+            {
+                Assert.True(first.Id.IsNull);
+                continue;
+            }
+
+            Assert.True(first.Body < 40, $"ray {q}: {first} is a later copy");
+            Assert.Equal(first.Id, hits[0].Id);
+            InOrder(hits.AsSpan(0, count), q);
+            for (int k = 0; k < count; k++)
+            {
+                int copies = 0;
+                for (int j = 0; j < count; j++)
+                {
+                    copies += hits[j].Body % 40 == hits[k].Body % 40 ? 1 : 0;
+                }
+
+                Assert.Equal(3, copies);
+            }
+
+            ties += count / 3;
+            int overlapping = world.Overlap(new Circle(a, 150f), found);
+            Assert.Equal(0, overlapping % 3);
+            for (int k = 1; k < overlapping; k++)
+            {
+                Assert.True(found[k - 1].Index < found[k].Index);
+            }
+        }
+
+        Assert.True(ties > 100, $"only {ties} tied entries");
+    }
+
+    // Rays between random points against brute force: the first body, every body in order (equal
+    // fractions by number), a short span given the first ones. Returns the entries.
+    private static int CheckRays(Scene scene, Random random, int rays, float spread)
+    {
+        var hits = new BodyRayHit[scene.World.BodyCount];
+        var few = new BodyRayHit[3];
+        int entered = 0;
+        for (int q = 0; q < rays; q++)
+        {
+            Vector2 from = scene.RandomPoint(random, spread), to = scene.RandomPoint(random, spread);
             var expected = new List<(int Index, RayCastResult Hit)>();
             for (int i = 0; i < scene.World.BodyCount; i++)
             {
@@ -35,7 +232,9 @@ public sealed class MotionWorldQueryTests
 
             BodyRayHit first = scene.World.RayCast(from, to);
             int count = scene.World.RayCastAll(from, to, hits);
-            Assert.Equal(expected.Count, count);
+            var missing = expected.Select(e => e.Index).Except(hits.Take(count).Select(h => h.Body));
+            var extra = hits.Take(count).Select(h => h.Body).Except(expected.Select(e => e.Index));
+            Assert.True(expected.Count == count, $"ray {q} from {from} to {to}: {count} bodies entered, brute force {expected.Count}; missing {string.Join(", ", missing.Select(i => $"{i} ({scene.World.KindOf(scene.World.IdAt(i))})"))}; extra {string.Join(", ", extra)}");
             if (expected.Count == 0)
             {
                 Assert.True(first.Id.IsNull, $"ray {q}: no body is entered, got {first}");
@@ -52,26 +251,25 @@ public sealed class MotionWorldQueryTests
             for (int k = 0; k < count; k++)
             {
                 Same(expected.Single(e => e.Index == hits[k].Body).Hit, hits[k].Result, q);
-                Assert.True(k == 0 || hits[k - 1].Result.Fraction <= hits[k].Result.Fraction, $"ray {q}: hits out of order");
                 Assert.Equal(scene.World.IdAt(hits[k].Body), hits[k].Id);
             }
 
+            InOrder(hits.AsSpan(0, count), q);
             Assert.Equal(hits[0].Id, first.Id);
+            Assert.Equal(count, scene.World.RayCastAll(from, to, few));
+            Assert.Equal(hits.Take(Math.Min(count, few.Length)), few.Take(Math.Min(count, few.Length)));
         }
 
-        Assert.True(entered > 300, $"only {entered} entries in 300 rays: the scene does not exercise the ray casts");
+        return entered;
     }
 
-    [Theory]
-    [MemberData(nameof(Seeds))]
-    public void OverlapsMatchBruteForce(int seed)
+    // Random shapes against brute force: the ids by ascending number, a short span given the first ones.
+    private static HashSet<BodyKind> CheckOverlaps(Scene scene, Random random, int shapes)
     {
-        var scene = new Scene(seed);
-        var random = new Random(seed * 11);
-        var found = new BodyId[64];
+        var found = new BodyId[scene.World.BodyCount];
         var kinds = new HashSet<BodyKind>();
         var two = new BodyId[2];
-        for (int q = 0; q < 300; q++)
+        for (int q = 0; q < shapes; q++)
         {
             Shape shape = RandomShape(random, scene.RandomPoint(random, 1.1f));
             var expected = new List<int>();
@@ -96,17 +294,14 @@ public sealed class MotionWorldQueryTests
             }
         }
 
-        Assert.Equal(Enum.GetValues<BodyKind>().Length, kinds.Count);
+        return kinds;
     }
 
-    [Theory]
-    [MemberData(nameof(Seeds))]
-    public void NearestMatchesBruteForce(int seed)
+    // Random points against brute force: the nearest body and its distance.
+    private static HashSet<BodyKind> CheckNearest(Scene scene, Random random, int points)
     {
-        var scene = new Scene(seed);
-        var random = new Random(seed * 13);
         var kinds = new HashSet<BodyKind>();
-        for (int q = 0; q < 300; q++)
+        for (int q = 0; q < points; q++)
         {
             Vector2 point = scene.RandomPoint(random, 1.1f);
             var distances = Enumerable.Range(0, scene.World.BodyCount).Select(i => scene.Distance(i, point)).ToArray();
@@ -119,10 +314,21 @@ public sealed class MotionWorldQueryTests
             Assert.True(Vector2.Distance(mine.PointA, nearest.Result.PointA) <= Tolerance, $"point {q}: {nearest} against {mine}");
             Assert.Equal(point, nearest.Result.PointB);
             Assert.Equal(mine.PartA, nearest.Result.PartA);
+            Assert.Equal(scene.World.IdAt(nearest.Body), nearest.Id);
             kinds.Add(scene.World.KindOf(nearest.Id));
         }
 
-        Assert.True(kinds.Count >= 4, $"the nearest bodies were only {string.Join(", ", kinds)}");
+        return kinds;
+    }
+
+    // Nearest first, equal fractions by ascending number.
+    private static void InOrder(ReadOnlySpan<BodyRayHit> hits, int ray)
+    {
+        for (int k = 1; k < hits.Length; k++)
+        {
+            float a = hits[k - 1].Result.Fraction, b = hits[k].Result.Fraction;
+            Assert.True(a < b || (a == b && hits[k - 1].Body < hits[k].Body), $"ray {ray}: hits {k - 1} and {k} out of order ({hits[k - 1]}, {hits[k]})");
+        }
     }
 
     [Fact]
@@ -264,6 +470,28 @@ public sealed class MotionWorldQueryTests
         }
     }
 
+    // The recording handler's response, and a few queries against brute force at every contact,
+    // where the bodies are at that moment.
+    private sealed class QueryingHandler(Scene scene, Random random) : IContactHandler
+    {
+        private readonly RecordingHandler _response = new(0.3f) { Record = false };
+
+        public int Calls { get; private set; }
+
+        public void OnContact(MotionWorld world, in Contact contact)
+        {
+            _response.OnContact(world, contact);
+            if (Calls++ % 3 == 0)
+            {
+                CheckRays(scene, random, 2, 1.2f);
+                CheckOverlaps(scene, random, 2);
+                CheckNearest(scene, random, 2);
+            }
+        }
+
+        public void OnMoveRejected(MotionWorld world, BodyId body) => _response.OnMoveRejected(world, body);
+    }
+
     // A random scene and, for each body, its shape rebuilt from the public state.
     private sealed class Scene
     {
@@ -271,18 +499,19 @@ public sealed class MotionWorldQueryTests
         private readonly Dictionary<int, float> _radii = [];
         private readonly Dictionary<int, ConvexPolygon> _polygons = [];
 
-        public Scene(int seed)
+        public Scene(int seed, int bodies = 40, MotionWorld? world = null)
         {
             var random = new Random(seed);
             Field = new Field();
-            World = new MotionWorld();
+            World = world ?? new MotionWorld();
+            World.Clear();
             World.AddWalls(Field);
             foreach (Aabb block in Field.GoalBlocks)
             {
                 _statics[World.AddStatic(block).Index] = block;
             }
 
-            for (int i = 0; i < 40; i++)
+            for (int i = 0; i < bodies; i++)
             {
                 Vector2 at = RandomPoint(random, 0.95f);
                 float heading = (random.NextSingle() * 7f) - 3.5f;
@@ -318,6 +547,41 @@ public sealed class MotionWorldQueryTests
         public Field Field { get; }
 
         public MotionWorld World { get; }
+
+        // Places a random moving body somewhere in the pool (or far outside it), a fish with new joints too.
+        public void PlaceRandomMover(Random random, bool far)
+        {
+            var movers = Enumerable.Range(0, World.BodyCount).Where(i => World.KindOf(World.IdAt(i)) <= BodyKind.Fish).ToArray();
+            BodyId id = World.IdAt(movers[random.Next(movers.Length)]);
+            Vector2 at = far ? RandomPoint(random, 1f) + new Vector2(5000f, 0f) : RandomPoint(random, 0.95f);
+            World.SetPose(id, at, (random.NextSingle() * 7f) - 3.5f);
+            if (World.KindOf(id) == BodyKind.Fish)
+            {
+                World.SetJoints(id, random.NextSingle() - 0.5f, random.NextSingle() - 0.5f, random.NextSingle() - 0.5f);
+            }
+        }
+
+        // Replaces a random body (a fish or a static one) by a new static shape.
+        public void ReplaceRandomBody(Random random)
+        {
+            var candidates = Enumerable.Range(0, World.BodyCount).Where(i => World.KindOf(World.IdAt(i)) is BodyKind.Fish or BodyKind.Static).ToArray();
+            int index = candidates[random.Next(candidates.Length)];
+            Shape shape = RandomShape(random, RandomPoint(random, 0.95f));
+            World.ReplaceByStatic(World.IdAt(index), shape);
+            _statics[index] = shape;
+        }
+
+        public void GiveMoversVelocities(Random random, float speed)
+        {
+            for (int i = 0; i < World.BodyCount; i++)
+            {
+                BodyId id = World.IdAt(i);
+                if (World.KindOf(id) <= BodyKind.Fish)
+                {
+                    World.SetVelocity(id, new Vector2(random.NextSingle() - 0.5f, random.NextSingle() - 0.5f) * speed, random.NextSingle() - 0.5f);
+                }
+            }
+        }
 
         public Vector2 RandomPoint(Random random, float spread) =>
             new((random.NextSingle() - 0.5f) * Field.Length * spread, (random.NextSingle() - 0.5f) * Field.Width * spread);
