@@ -140,7 +140,7 @@ public static class CompilerProcess
             throw new StrategyLoadException(answer[1], answer.GetRange(2, answer.Count - 2));
         }
 
-        string how = code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+        string how = SandboxedProcess.DescribeExit(code);
         throw new StrategyLoadException(stderr.Length == 0 ? $"the compiler ended unexpectedly ({how})" : $"the compiler ended unexpectedly ({how}): {stderr}");
     }
 

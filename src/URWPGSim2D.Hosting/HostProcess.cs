@@ -253,7 +253,7 @@ public sealed class HostProcess : IStrategyLink
             int code = _process.ExitCode;
             how = code == 128 + CpuLimitSignal && !OperatingSystem.IsWindows()
                 ? $"out of CPU time: it reached its limit of {_cpuSeconds} s of CPU time for the match (SIGXCPU), killed"
-                : code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+                : SandboxedProcess.DescribeExit(code);
         }
 
         _ = _cgroup?.KillAll(); // whatever the host left running in its sandbox

@@ -40,6 +40,10 @@ internal static class SandboxedProcess
         return launch.Started.Task.GetAwaiter().GetResult();
     }
 
+    /// <summary>How a child's exit code reads in a report: the signal that ended it (Unix), or the code.</summary>
+    public static string DescribeExit(int code) =>
+        code > 128 && code < 160 && !OperatingSystem.IsWindows() ? $"killed by signal {code - 128}" : $"exit code {code}";
+
     /// <summary>
     /// Ends <paramref name="process"/> and everything it started: with a control group, every
     /// process of the group at once (bubblewrap included), waiting until they have ended (the PID

@@ -109,7 +109,7 @@ internal sealed class ContactCache
         where TSink : struct, IEndedSink
     {
         int count = 0;
-        for (int i = 0; i < _entries.Length;)
+        for (int i = 0; Count > 0 && i < _entries.Length;)
         {
             ref Entry e = ref _entries[i];
             if (e.Used && Step - e.LastStep >= 1)

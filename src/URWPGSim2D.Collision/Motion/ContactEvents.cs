@@ -180,14 +180,20 @@ internal sealed class ContactEvents
     {
         foreach (int slot in _hits.Slot)
         {
-            ref readonly PlannedPair pair = ref _table.Pair(slot);
-            if (!_contacts.IsPressing(pair.A, pair.B, found, PressingWindow * _table.Interval(slot)))
+            if (!IsPressing(slot, found))
             {
                 return false;
             }
         }
 
         return true;
+    }
+
+    // Whether a pair was answered within its last PressingWindow sampling intervals before the time.
+    private bool IsPressing(int slot, double time)
+    {
+        ref readonly PlannedPair pair = ref _table.Pair(slot);
+        return _contacts.IsPressing(pair.A, pair.B, time, PressingWindow * _table.Interval(slot));
     }
 
     // The handler's response to one pair, if it still overlaps.
@@ -326,8 +332,7 @@ internal sealed class ContactEvents
         for (int i = 0; i < _pendingCount; i++)
         {
             int slot = _pending[i];
-            ref readonly PlannedPair pair = ref _table.Pair(slot);
-            Respond(pair, pressingContacts && _contacts.IsPressing(pair.A, pair.B, time, PressingWindow * _table.Interval(slot)));
+            Respond(_table.Pair(slot), pressingContacts && IsPressing(slot, time));
         }
 
         _pendingCount = 0;
