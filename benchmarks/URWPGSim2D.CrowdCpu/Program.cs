@@ -1,8 +1,7 @@
 using System;
 using System.Diagnostics;
 using System.Globalization;
-using System.Runtime.InteropServices;
-using System.Threading;
+using System.Runtime;
 using URWPGSim2D.Collision.BroadPhase;
 using URWPGSim2D.Engine.Matches;
 using URWPGSim2D.Engine.Scenario;
@@ -12,15 +11,14 @@ namespace URWPGSim2D.CrowdCpu;
 
 /// <summary>
 /// One whole cycle of the crowd scene (<c>run --crowd N</c>: <see cref="CrowdScenario"/> through
-/// <see cref="MatchBuilder"/>, the uniform grid, one thread) timed by the thread's CPU clock, so that
-/// other work on the machine hardly moves it:
+/// <see cref="MatchBuilder"/>, the uniform grid, one thread) timed by the thread's CPU clock (the
+/// clock of strategies' deadlines, <see cref="ThreadTimeClock"/>), so that other work on the machine
+/// hardly moves it:
 /// <c>URWPGSim2D.CrowdCpu N[,N...] WARM MEASURE</c> plays WARM cycles of each scene, then times
 /// MEASURE cycles one by one, and prints <c>crowd N CPU_MS WALL_MS</c> per scene (the medians, ms).
 /// </summary>
-internal static partial class Program
+internal static class Program
 {
-    private const int ThreadCpuClock = 3; // CLOCK_THREAD_CPUTIME_ID (Linux)
-
     private static int Main(string[] args)
     {
         if (args.Length != 3 || !TryCounts(args[0], out int[] counts)
@@ -46,15 +44,16 @@ internal static partial class Program
                 match.Step();
             }
 
+            var clock = new ThreadTimeClock();
             var cpu = new double[measure];
             var wall = new double[measure];
             for (int i = 0; i < measure; i++)
             {
-                long w0 = Stopwatch.GetTimestamp();
-                long c0 = CpuNs();
+                clock.CallStarting();
                 match.Step();
-                cpu[i] = (CpuNs() - c0) * 1e-6;
-                wall[i] = Stopwatch.GetElapsedTime(w0).TotalMilliseconds;
+                (TimeSpan c, TimeSpan w) = clock.CallEnded();
+                cpu[i] = c.TotalMilliseconds;
+                wall[i] = w.TotalMilliseconds;
             }
 
             Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"crowd {n} {Median(cpu):F4} {Median(wall):F4}"));
@@ -81,18 +80,24 @@ internal static partial class Program
     private static Match Build(int n) =>
         MatchBuilder.Build(CrowdScenario.Create(n, 1UL, 3000), null, null, null, MatchBuilder.DefaultStrategyTimeoutMs, BroadPhaseKind.UniformGrid, null);
 
-    // Two seconds of a throwaway 1,000-body match, so that the timed cycles run tier-1 code, then a
-    // pause for the compiler's background thread to finish.
+    // A throwaway 1,000-body match played until the JIT has compiled nothing new for a second (at
+    // least 2 s, at most 30 s), so that the timed cycles run the final tier-1 code even when the
+    // machine is loaded and the background compilations are slow.
     private static void WarmUp()
     {
         Match match = Build(1000);
         var clock = Stopwatch.StartNew();
-        while (clock.Elapsed.TotalSeconds < 2)
+        long compiled = JitInfo.GetCompiledMethodCount();
+        TimeSpan still = TimeSpan.Zero;
+        while (clock.Elapsed < TimeSpan.FromSeconds(30) && (clock.Elapsed < TimeSpan.FromSeconds(2) || clock.Elapsed - still < TimeSpan.FromSeconds(1)))
         {
             match.Step();
+            if (JitInfo.GetCompiledMethodCount() != compiled)
+            {
+                compiled = JitInfo.GetCompiledMethodCount();
+                still = clock.Elapsed;
+            }
         }
-
-        Thread.Sleep(500);
     }
 
     private static double Median(double[] values)
@@ -100,25 +105,5 @@ internal static partial class Program
         Array.Sort(values);
         int m = values.Length / 2;
         return values.Length % 2 == 1 ? values[m] : 0.5 * (values[m - 1] + values[m]);
-    }
-
-    private static long CpuNs()
-    {
-        if (ClockGetTime(ThreadCpuClock, out Timespec t) != 0)
-        {
-            throw new InvalidOperationException("clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
-        }
-
-        return (t.Seconds * 1_000_000_000L) + t.Nanoseconds;
-    }
-
-    [LibraryImport("libc", EntryPoint = "clock_gettime")]
-    private static partial int ClockGetTime(int clockId, out Timespec time);
-
-    [StructLayout(LayoutKind.Sequential)]
-    private struct Timespec
-    {
-        public long Seconds;
-        public long Nanoseconds;
     }
 }
