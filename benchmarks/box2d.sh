@@ -4,7 +4,7 @@
 # ../shared/peers/box2d: its run.sh, C and C# sources and Box2D's source), then the crowd again
 # by each thread's CPU time. From the project's root:
 #
-#   bash benchmarks/box2d.sh                              # about 10 minutes on 2 cores
+#   bash benchmarks/box2d.sh                              # about 6 minutes on 2 cores
 #   ROUNDS=3 SCALE_ROUNDS=3 CPU_ROUNDS=3 bash benchmarks/box2d.sh   # quicker, noisier
 #   HARNESS_RUN=0 bash benchmarks/box2d.sh                # only the thread-CPU crowd, reusing $BUILD
 #
