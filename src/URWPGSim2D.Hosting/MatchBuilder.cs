@@ -26,7 +26,7 @@ public static class MatchBuilder
     /// <param name="broadPhase">The motion world's broad phase (every kind gives the same match).</param>
     /// <param name="cycles">Cycles the match will last (an item's halves depend on it), or null for the scenario's.</param>
     /// <remarks>
-    /// The Box2D side-by-side harness (<c>../shared/peers/box2d</c>) finds this method by name and
+    /// The Box2D side-by-side harness (<c>benchmarks/box2d.sh</c>) finds this method by name and
     /// calls it with these seven arguments: keep it the only <c>Build</c>, with this signature.
     /// </remarks>
     public static Match Build(ScenarioDefinition scenario, TeamStrategy?[]? teamStrategies = null, ulong? seed = null, bool? noise = null, int strategyTimeoutMs = DefaultStrategyTimeoutMs, BroadPhaseKind broadPhase = BroadPhaseKind.UniformGrid, int? cycles = null) =>

@@ -5,9 +5,10 @@ using URWPGSim2D.Collision.BroadPhase;
 namespace URWPGSim2D.Server.Tests.Scenario;
 
 /// <summary>
-/// The Box2D side-by-side harness (<c>../shared/peers/box2d/cs</c>) builds the crowd scene and its
-/// match by reflection, by these names and argument lists. Renaming or overloading them breaks the
-/// harness only at run time, so the lookups it makes are made here.
+/// The Box2D side-by-side harness (<c>../shared/peers/box2d/cs</c>, run by <c>benchmarks/box2d.sh</c>,
+/// which points its copy at these names) builds the crowd scene and its match by reflection, by these
+/// names and argument lists. Renaming or overloading them breaks the harness only at run time, so the
+/// lookups it makes are made here.
 /// </summary>
 public sealed class PeerHarnessContractTests
 {
