@@ -2,11 +2,12 @@ namespace URWPGSim2D.Collision.Fish;
 
 /// <summary>
 /// A fish model carried by a rigid motion x ↦ R·x + t into another frame (another fish's model
-/// frame), without rebuilding it: its circles are moved at once, and the leaves of a group
-/// (vertices, normals, 8-DOP slabs) are moved into caller buffers only when a descent reaches
-/// that group. A fish–fish test then costs the circles and the one or two leaf groups that come
-/// near, not a whole rebuild of the second fish. The circles are grown by 0.01 mm against the
-/// round-off of the move; the slabs are those of the moved vertices, padded like a model's.
+/// frame), without rebuilding it: its circles are moved at once, the leaves of a group (vertices
+/// and 8-DOP slabs) are moved into caller buffers only when a descent reaches that group, and a
+/// leaf's edge normals only when an exact test first takes that leaf. A fish–fish test then costs
+/// the circles and the one or two leaf groups that come near, not a whole rebuild of the second
+/// fish. The circles are grown by 0.01 mm against the round-off of the move; the slabs are those
+/// of the moved vertices, padded like a model's.
 /// </summary>
 internal ref struct FishInFrame : IFishLeaves
 {
@@ -21,6 +22,7 @@ internal ref struct FishInFrame : IFishLeaves
     private readonly Span<Vector4> _max;
     private bool _bodyPlaced;
     private bool _tailPlaced;
+    private int _turned;
 
     /// <summary>The model moved by the rotation (cos, sin) = <paramref name="rotation"/> and then <paramref name="translation"/>; the buffers hold the moved leaves.</summary>
     public FishInFrame(FishModel model, Vector2 rotation, Vector2 translation, Span<Vector2> vertices, Span<Vector2> normals, Span<Vector4> min, Span<Vector4> max)
@@ -59,13 +61,8 @@ internal ref struct FishInFrame : IFishLeaves
         int start = FishLeafLayout.Offset(firstLeaf);
         int end = group == 0 ? FishLeafLayout.TailGroupFirstVertex : FishLeafLayout.VertexCount;
         // Four points per vector instruction; the same products and sums as RigidTransform.Rotate, so the same bits.
-        RigidTransform.PlaceAndTurn(
-            _model.Vertices[start..end],
-            _model.Normals[start..end],
-            _vertices[start..end],
-            _normals[start..end],
-            _translation,
-            _rotation);
+        // The normals wait for an exact test of their leaf (see LeafView).
+        RigidTransform.Place(_model.Vertices[start..end], _vertices[start..end], _translation, _rotation);
 
         for (int leaf = firstLeaf; leaf < endLeaf; leaf++)
         {
@@ -91,9 +88,15 @@ internal ref struct FishInFrame : IFishLeaves
     public readonly Vector4 LeafMax(int leaf) => _max[leaf];
 
     /// <inheritdoc/>
-    public readonly ConvexView LeafView(int leaf)
+    public ConvexView LeafView(int leaf)
     {
         int at = FishLeafLayout.Offset(leaf), count = FishLeafLayout.Count(leaf);
+        if ((_turned & (1 << leaf)) == 0)
+        {
+            RigidTransform.Turn(_model.Normals.Slice(at, count), _normals.Slice(at, count), _rotation);
+            _turned |= 1 << leaf;
+        }
+
         return new ConvexView(_vertices.Slice(at, count), _normals.Slice(at, count));
     }
 

@@ -68,10 +68,17 @@ internal static class FishTree
             for (int gb = 0; gb < 2; gb++)
             {
                 Circle circleB = gb == 0 ? b.BodyGroup : b.TailGroup;
-                if (Slabs.MayOverlap(circleA, circleB))
+                if (!Slabs.MayOverlap(circleA, circleB))
+                {
+                    continue;
+                }
+
+                // B's group is placed only when some leaf of A's group reaches its circle.
+                int nearA = LeavesNear(a, ga, circleB);
+                if (nearA != 0)
                 {
                     b.Prepare(gb);
-                    count = LeafPairs(a, ref b, ga, gb, circleB, candidates, count, sink.TakesDepths);
+                    count = LeafPairs(a, ref b, nearA, gb, candidates, count, sink.TakesDepths);
                 }
             }
         }
@@ -162,23 +169,34 @@ internal static class FishTree
         }
     }
 
-    // The leaf pairs of groups (groupA, groupB) whose 8-DOPs overlap, appended at `count` (with depth bounds if asked).
-    private static int LeafPairs<TFish>(FishModel a, scoped ref TFish b, int groupA, int groupB, in Circle circleB, scoped Span<LeafPair> candidates, int count, bool bounds)
+    // The leaves of a's group whose 8-DOPs may overlap the circle, as a bit set (bit i: leaf i).
+    private static int LeavesNear(FishModel a, int group, in Circle circle)
+    {
+        Slabs.OfCircle(circle, out var circleMin, out var circleMax);
+        int end = group == 0 ? FishLeafLayout.BodyGroupEnd : FishLeafLayout.LeafCount;
+        int near = 0;
+        for (int leaf = group == 0 ? 0 : FishLeafLayout.BodyGroupEnd; leaf < end; leaf++)
+        {
+            if (Slabs.MayOverlap(a.LeafMin(leaf), a.LeafMax(leaf), circleMin, circleMax))
+            {
+                near |= 1 << leaf;
+            }
+        }
+
+        return near;
+    }
+
+    // The leaf pairs of a's leaves in nearA (a bit set) and b's group groupB whose 8-DOPs overlap, appended at `count` (with depth bounds if asked).
+    private static int LeafPairs<TFish>(FishModel a, scoped ref TFish b, int nearA, int groupB, scoped Span<LeafPair> candidates, int count, bool bounds)
         where TFish : IFishLeaves, allows ref struct
     {
-        Slabs.OfCircle(circleB, out var circleMin, out var circleMax);
         int firstB = groupB == 0 ? 0 : FishLeafLayout.BodyGroupEnd;
         int endB = groupB == 0 ? FishLeafLayout.BodyGroupEnd : FishLeafLayout.LeafCount;
-        int endA = groupA == 0 ? FishLeafLayout.BodyGroupEnd : FishLeafLayout.LeafCount;
-        for (int la = groupA == 0 ? 0 : FishLeafLayout.BodyGroupEnd; la < endA; la++)
+        for (int rest = nearA; rest != 0; rest &= rest - 1)
         {
+            int la = BitOperations.TrailingZeroCount(rest);
             var minA = a.LeafMin(la);
             var maxA = a.LeafMax(la);
-            if (!Slabs.MayOverlap(minA, maxA, circleMin, circleMax))
-            {
-                continue;
-            }
-
             for (int lb = firstB; lb < endB; lb++)
             {
                 if (Slabs.MayOverlap(minA, maxA, b.LeafMin(lb), b.LeafMax(lb)))

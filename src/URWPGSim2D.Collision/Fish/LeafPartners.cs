@@ -89,11 +89,11 @@ internal readonly ref struct ConvexPartner : ILeafPartner
 {
     private readonly ConvexView _view;
 
-    /// <summary>A partner whose slabs are computed from its vertices.</summary>
+    /// <summary>A partner whose slabs are computed from its vertices (float slabs, padded outward: they only prune).</summary>
     public ConvexPartner(in ConvexView view)
     {
         _view = view;
-        KDop8.Slabs(view.Vertices, out Vector4 min, out Vector4 max);
+        FloatSlabs.Of(view.Vertices, out Vector4 min, out Vector4 max);
         Min = min;
         Max = max;
     }

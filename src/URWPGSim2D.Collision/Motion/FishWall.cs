@@ -10,8 +10,6 @@ namespace URWPGSim2D.Collision.Motion;
 /// </summary>
 internal static class FishWall
 {
-    private const int MaxVertices = 64;
-
     /// <summary>The wall contact of the fish now (MTV moves the fish back inside), or no contact.</summary>
     public static Hit Detect(Field field, Body fish)
     {
@@ -33,20 +31,10 @@ internal static class FishWall
             return Hit.From(CollisionDetectionResult.None);
         }
 
-        Span<Vector2> points = stackalloc Vector2[MaxVertices];
-        Span<int> ends = stackalloc int[FishCollision.MaxContactsWithShape];
-        int count = 0;
-        for (int part = 0; part < ends.Length; part++)
-        {
-            foreach (Vector2 v in model.GetLeaf((FishPart)part))
-            {
-                points[count++] = frame.ToWorld(v);
-            }
-
-            ends[part] = count;
-        }
-
-        CollisionDetectionResult result = field.Contain(points[..count]);
+        // Every leaf vertex carried onto the fish (leaf after leaf, as the model packs them).
+        Span<Vector2> points = stackalloc Vector2[FishLeafLayout.VertexCount];
+        frame.ToWorld(model.Vertices, points);
+        CollisionDetectionResult result = field.Contain(points);
         if (!result.Intersect)
         {
             return Hit.From(result);
@@ -55,11 +43,11 @@ internal static class FishWall
         Vector2 inward = XZPlane.ToPlane(result.NormalAxis);
         int deepest = 0;
         float best = float.NegativeInfinity;
-        for (int part = 0, start = 0; part < ends.Length; start = ends[part], part++)
+        for (int part = 0; part < FishLeafLayout.LeafCount; part++)
         {
-            for (int i = start; i < ends[part]; i++)
+            foreach (Vector2 point in points.Slice(FishLeafLayout.Offset(part), FishLeafLayout.Count(part)))
             {
-                float reach = -Vector2.Dot(points[i], inward);
+                float reach = -Vector2.Dot(point, inward);
                 if (reach > best)
                 {
                     best = reach;

@@ -1,3 +1,5 @@
+using System.Runtime.InteropServices;
+
 namespace URWPGSim2D.Collision.Pool;
 
 /// <content>
@@ -41,17 +43,17 @@ public sealed partial class Field
             throw new ArgumentException("needs at least one point, got none", nameof(points));
         }
 
-        Vector2 min = points[0], max = points[0];
-        for (int i = 0; i < points.Length; i++)
+        if (!Extremes(points, out Vector2 min, out Vector2 max))
         {
-            Vector2 p = points[i];
-            if (!float.IsFinite(p.X) || !float.IsFinite(p.Y))
+            // Name the first point that is not finite.
+            for (int i = 0; i < points.Length; i++)
             {
-                throw new ArgumentException($"points[{i}] must have finite coordinates, got [{p.X}, {p.Y}]", nameof(points));
+                Vector2 p = points[i];
+                if (!float.IsFinite(p.X) || !float.IsFinite(p.Y))
+                {
+                    throw new ArgumentException($"points[{i}] must have finite coordinates, got [{p.X}, {p.Y}]", nameof(points));
+                }
             }
-
-            min = Vector2.Min(min, p);
-            max = Vector2.Max(max, p);
         }
 
         if (!Correction(min, max, out Vector2 mtv))
@@ -107,6 +109,58 @@ public sealed partial class Field
             : c.X + r <= -line ? -1
             : 0;
         return side != 0;
+    }
+
+    // The least and greatest coordinates of the points (at least one), four points per 256-bit
+    // vector where the hardware has them (a minimum or maximum is one of its inputs, and -0 counts
+    // below +0 on every path, so the order of the points changes no bit); false when a coordinate
+    // is not finite.
+    private static bool Extremes(ReadOnlySpan<Vector2> points, out Vector2 min, out Vector2 max)
+    {
+        if (Vector256.IsHardwareAccelerated && points.Length >= 4)
+        {
+            ref float first = ref Unsafe.As<Vector2, float>(ref MemoryMarshal.GetReference(points));
+            var low = Vector256.LoadUnsafe(ref first);
+            var high = low;
+            var finite = Vector256<float>.AllBitsSet;
+
+            // The last block overlaps the one before (a repeat changes no minimum or maximum).
+            for (int at = 0; ; at += 4)
+            {
+                at = Math.Min(at, points.Length - 4);
+                var p = Vector256.LoadUnsafe(ref first, (nuint)(2 * at));
+                low = Vector256.Min(low, p);
+                high = Vector256.Max(high, p);
+                finite &= Vector256.Equals(p - p, Vector256<float>.Zero); // inf − inf and NaN − NaN are NaN
+                if (at == points.Length - 4)
+                {
+                    break;
+                }
+            }
+
+            var lo = Vector128.Min(low.GetLower(), low.GetUpper());
+            var hi = Vector128.Max(high.GetLower(), high.GetUpper());
+            lo = Vector128.Min(lo, Vector128.Shuffle(lo, Vector128.Create(2, 3, 0, 1)));
+            hi = Vector128.Max(hi, Vector128.Shuffle(hi, Vector128.Create(2, 3, 0, 1)));
+            min = new Vector2(lo.GetElement(0), lo.GetElement(1));
+            max = new Vector2(hi.GetElement(0), hi.GetElement(1));
+            return finite == Vector256<float>.AllBitsSet;
+        }
+
+        min = points[0];
+        max = points[0];
+        foreach (Vector2 p in points)
+        {
+            if (!float.IsFinite(p.X) || !float.IsFinite(p.Y))
+            {
+                return false;
+            }
+
+            min = Vector2.Min(min, p);
+            max = Vector2.Max(max, p);
+        }
+
+        return true;
     }
 
     // The per-axis translation that brings the box [min, max] inside the field; false when none is needed.

@@ -1,3 +1,4 @@
+using URWPGSim2D.Collision.Fish;
 using URWPGSim2D.Collision.Motion;
 using URWPGSim2D.Engine.Items;
 using URWPGSim2D.Engine.Items.PlainScene;
@@ -172,8 +173,9 @@ public sealed class Match
         for (int i = 0; i < fish.Length; i++)
         {
             var f = World.Fish[i];
-            Vector2 position = f.Position;
-            float heading = f.Heading;
+            FishPose pose = f.Pose;
+            Vector2 position = pose.Position;
+            float heading = pose.Heading;
             if (_viewNoise is not null)
             {
                 position += new Vector2(_viewNoise.NextSigned(), _viewNoise.NextSigned()) * 30f;
@@ -182,7 +184,7 @@ public sealed class Match
 
             fish[i] = new FishView(i, f.Team, position, heading, f.Speed.Value, f.Turn.Value, f.Size.Length, f.Size.Head, f.Decision)
             {
-                Width = f.Size.Width, Joint1 = f.Joint1, Joint2 = f.Joint2, Joint3 = f.Joint3,
+                Width = f.Size.Width, Joint1 = pose.Joint1, Joint2 = pose.Joint2, Joint3 = pose.Joint3,
                 TailLength1 = f.Size.Joint1, TailLength2 = f.Size.Joint2, TailLength3 = f.Size.Joint3,
             };
         }

@@ -159,6 +159,17 @@ public sealed class FishState
     /// <summary>Distance along the axis from the centre to the head tip, mm.</summary>
     public float HeadReach => (Size.Length * 0.5f) + Size.Head;
 
+    /// <summary>
+    /// Sets the cycle's motion at once: <see cref="Velocity"/>, <see cref="AngularVelocity"/>,
+    /// <see cref="NoiseVelocity"/> and <see cref="NoiseAngularVelocity"/> (what setting the four
+    /// properties one after another leaves).
+    /// </summary>
+    internal void SetMotion(Vector2 velocity, float angularVelocity, Vector2 noiseVelocity, float noiseAngularVelocity)
+    {
+        _motion.SetVelocity(Handle, velocity, angularVelocity);
+        _motion.SetDrift(Handle, noiseVelocity, noiseAngularVelocity);
+    }
+
     /// <summary>Sets the joint angles for the cycle (the body's shape changes only when they differ).</summary>
     public void SetJoints(float joint1, float joint2, float joint3)
     {

@@ -38,26 +38,24 @@ internal static class Locomotion
                 TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase),
                 TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase),
                 TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase));
-            f.Velocity = f.Speed.Value * f.Forward;
-            f.AngularVelocity = f.Turn.Value;
-            f.NoiseVelocity = Vector2.Zero;
-            f.NoiseAngularVelocity = 0f;
+            Vector2 drift = Vector2.Zero;
+            float angularDrift = 0f;
             if (noise is not null)
             {
                 float v = f.Speed.Value;
-                f.NoiseAngularVelocity = noise.NextSigned() * (v * v / 500000f) / dt;
+                angularDrift = noise.NextSigned() * (v * v / 500000f) / dt;
                 float reach = 30f * MathF.Abs(f.Turn.Value);
-                f.NoiseVelocity = new Vector2(noise.NextSigned() * reach, noise.NextSigned() * reach) / dt;
+                drift = new Vector2(noise.NextSigned() * reach, noise.NextSigned() * reach) / dt;
             }
+
+            f.SetMotion(f.Speed.Value * f.Forward, f.Turn.Value, drift, angularDrift);
         }
 
         foreach (var b in world.Balls)
         {
-            b.NoiseVelocity = Vector2.Zero;
-            if (noise is not null && b.Velocity != Vector2.Zero)
-            {
-                b.NoiseVelocity = new Vector2(noise.NextSigned(), noise.NextSigned()) / dt;
-            }
+            b.NoiseVelocity = noise is not null && b.Velocity != Vector2.Zero
+                ? new Vector2(noise.NextSigned(), noise.NextSigned()) / dt
+                : Vector2.Zero;
         }
     }
 
@@ -66,10 +64,7 @@ internal static class Locomotion
     {
         f.Speed.Reset(0f, SpeedTable.Speeds);
         f.Turn.Reset(0f, TurnTable.Rates);
-        f.Velocity = Vector2.Zero;
-        f.AngularVelocity = 0f;
-        f.NoiseVelocity = Vector2.Zero;
-        f.NoiseAngularVelocity = 0f;
+        f.SetMotion(Vector2.Zero, 0f, Vector2.Zero, 0f);
     }
 
     /// <summary>

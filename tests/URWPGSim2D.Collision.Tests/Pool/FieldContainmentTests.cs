@@ -160,6 +160,53 @@ public class FieldContainmentTests
     }
 
     [Fact]
+    public void PointSetContainmentTakesTheExactExtremesWhateverTheCountAndOrder()
+    {
+        // The extremes are found four points per vector: every count from 1 to 40 (the overlapping
+        // last block), signed zeros, points outside on every side; the result must be the one the
+        // extremes taken point by point give, to the bit, and the first point that is not finite is
+        // named wherever it sits.
+        var rng = new Random(53);
+        float[] coordinates = [0f, -0f, 1500f, -1500f, 1000f, -1000f, 1600f, -1100f];
+        for (int trial = 0; trial < 4000; trial++)
+        {
+            try
+            {
+                int n = 1 + (trial % 40);
+                var points = new Vector2[n];
+                for (int i = 0; i < n; i++)
+                {
+                    points[i] = rng.Next(3) == 0
+                        ? new Vector2(coordinates[rng.Next(coordinates.Length)], coordinates[rng.Next(coordinates.Length)])
+                        : new Vector2(FishTestKit.Range(rng, -1700f, 1700f), FishTestKit.Range(rng, -1200f, 1200f));
+                }
+
+                Vector2 min = points[0], max = points[0];
+                foreach (var p in points)
+                {
+                    min = new Vector2(MathF.Min(min.X, p.X), MathF.Min(min.Y, p.Y));
+                    max = new Vector2(MathF.Max(max.X, p.X), MathF.Max(max.Y, p.Y));
+                }
+
+                var expected = _field.Contain([min, max]); // two points: taken one by one
+                var actual = _field.Contain(points);
+                Assert.Equal(expected.Intersect, actual.Intersect);
+                Assert.Equal(expected.MinimumTranslationVector, actual.MinimumTranslationVector);
+                Assert.Equal(expected.NormalAxis, actual.NormalAxis);
+
+                int bad = rng.Next(n);
+                points[bad] = rng.Next(2) == 0 ? new Vector2(float.NaN, 0f) : new Vector2(0f, float.NegativeInfinity);
+                var e = Assert.Throws<ArgumentException>(() => _field.Contain(points));
+                Assert.StartsWith($"points[{bad}] must have finite coordinates", e.Message);
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(53, trial, e);
+            }
+        }
+    }
+
+    [Fact]
     public void BallWhollyInsideAGoalScores()
     {
         Assert.True(_field.IsInGoal(new Circle(new Vector2(1420f, 0f), 58f), out int side));
