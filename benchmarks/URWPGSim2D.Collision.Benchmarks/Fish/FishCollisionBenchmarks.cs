@@ -23,6 +23,16 @@ namespace URWPGSim2D.Collision.Benchmarks.Fish;
 [MedianColumn]
 public class FishCollisionBenchmarks
 {
+    // What each benchmark computes is kept here (a void benchmark's result must stay alive, and
+    // BenchmarkDotNet's generated project cannot name a type that the library and the frozen
+    // baseline both define).
+    private FishContact _contact;
+    private FrozenFish.FishContact _frozenContact;
+    private FrozenResult _frozenResult;
+    private FrozenShapes.Circle _frozenRoot;
+    private CollisionDetectionResult _result;
+    private Circle _root;
+
     private readonly FishPose[] _poses = new FishPose[16];
     private readonly FishPose[] _swim = new FishPose[64];
     private readonly FishPose[] _bracket = new FishPose[64];
@@ -107,74 +117,74 @@ public class FishCollisionBenchmarks
     }
 
     [Benchmark(Baseline = true)]
-    public CollisionDetectionResult CircleCircleMiss() => CollisionDetector.Detect(_ballA, _ballApart);
+    public void CircleCircleMiss() => _result = CollisionDetector.Detect(_ballA, _ballApart);
 
     [Benchmark]
-    public CollisionDetectionResult CircleCircleHit() => CollisionDetector.Detect(_ballA, _ballOverlapping);
+    public void CircleCircleHit() => _result = CollisionDetector.Detect(_ballA, _ballOverlapping);
 
     [Benchmark]
-    public CollisionDetectionResult LeafVsLeafSat() => ConvexSat.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
+    public void LeafVsLeafSat() => _result = ConvexSat.Detect(_fish.LeafView((int)FishPart.Body), _crossing.LeafView((int)FishPart.Body));
 
     [Benchmark]
-    public FrozenResult LeafVsLeafSatBaseline() => FrozenSat.Detect(_frozenFish.LeafView((int)FrozenFish.FishPart.Body), _frozenCrossing.LeafView((int)FrozenFish.FishPart.Body));
+    public void LeafVsLeafSatBaseline() => _frozenResult = FrozenSat.Detect(_frozenFish.LeafView((int)FrozenFish.FishPart.Body), _frozenCrossing.LeafView((int)FrozenFish.FishPart.Body));
 
     [Benchmark]
-    public FishContact FishVsBallRootMiss() => FishCollision.Detect(_fish, _ballFar);
+    public void FishVsBallRootMiss() => _contact = FishCollision.Detect(_fish, _ballFar);
 
     [Benchmark]
-    public FishContact FishVsBallLeafHit() => FishCollision.Detect(_fish, _ballAtTail);
+    public void FishVsBallLeafHit() => _contact = FishCollision.Detect(_fish, _ballAtTail);
 
     [Benchmark]
-    public FishContact FishVsFishNearMiss() => FishCollision.Detect(_fish, _nearMiss);
+    public void FishVsFishNearMiss() => _contact = FishCollision.Detect(_fish, _nearMiss);
 
     [Benchmark]
-    public FishContact FishVsFishDeepOverlap() => FishCollision.Detect(_fish, _crossing);
+    public void FishVsFishDeepOverlap() => _contact = FishCollision.Detect(_fish, _crossing);
 
     [Benchmark]
-    public Circle PoseUpdateRandom()
+    public void PoseUpdateRandom()
     {
         _updated.SetPose(_poses[_next++ & 15]);
-        return _updated.Root;
+        _root = _updated.Root;
     }
 
     [Benchmark]
-    public Circle PoseUpdateSwimming()
+    public void PoseUpdateSwimming()
     {
         _updated.SetPose(_swim[_next++ & 63]);
-        return _updated.Root;
+        _root = _updated.Root;
     }
 
     [Benchmark]
-    public Circle PoseUpdateSameJoints()
+    public void PoseUpdateSameJoints()
     {
         _updated.SetPose(_bracket[_next++ & 63]);
-        return _updated.Root;
+        _root = _updated.Root;
     }
 
     [Benchmark]
-    public FrozenShapes.Circle PoseUpdateSameJointsBaseline()
+    public void PoseUpdateSameJointsBaseline()
     {
         _frozenUpdated.SetPose(_frozenBracket[_next++ & 63]);
-        return _frozenUpdated.Root;
+        _frozenRoot = _frozenUpdated.Root;
     }
 
     [Benchmark]
-    public FrozenShapes.Circle PoseUpdateRandomBaseline()
+    public void PoseUpdateRandomBaseline()
     {
         _frozenUpdated.SetPose(_frozenPoses[_next++ & 15]);
-        return _frozenUpdated.Root;
+        _frozenRoot = _frozenUpdated.Root;
     }
 
     [Benchmark]
-    public FrozenShapes.Circle PoseUpdateSwimmingBaseline()
+    public void PoseUpdateSwimmingBaseline()
     {
         _frozenUpdated.SetPose(_frozenSwim[_next++ & 63]);
-        return _frozenUpdated.Root;
+        _frozenRoot = _frozenUpdated.Root;
     }
 
     /// <summary>The deepest fish–fish contact in the frozen baseline.</summary>
     [Benchmark]
-    public FrozenFish.FishContact FishVsFishDeepOverlapBaseline() => FrozenFish.FishCollision.Detect(_frozenFish, _frozenCrossing);
+    public void FishVsFishDeepOverlapBaseline() => _frozenContact = FrozenFish.FishCollision.Detect(_frozenFish, _frozenCrossing);
 
     private static FrozenFish.FishPose Frozen(in FishPose p) => new(p.Position, p.Heading, p.Joint1, p.Joint2, p.Joint3);
 

@@ -18,6 +18,12 @@ namespace URWPGSim2D.Collision.Benchmarks.NarrowPhase;
 [Config(typeof(BaselineConfig))]
 public class PairBenchmarks
 {
+    // What each benchmark computes is kept here (a void benchmark's result must stay alive, and
+    // BenchmarkDotNet's generated project cannot name a type that the library and the frozen
+    // baseline both define).
+    private FrozenResult _frozenResult;
+    private CollisionDetectionResult _result;
+
     private const int SetSize = 1_000;
     private Circle _circleA, _circleB;
     private ConvexPolygon _boxA, _boxB, _octA, _octB, _polygon;
@@ -65,17 +71,17 @@ public class PairBenchmarks
     /// <summary>Circle against circle (no baseline: unchanged kernel, for scale).</summary>
     [Benchmark]
     [BenchmarkCategory("circle-circle")]
-    public CollisionDetectionResult CircleCircle() => CollisionDetector.Detect(_circleA, _circleB);
+    public void CircleCircle() => _result = CollisionDetector.Detect(_circleA, _circleB);
 
     /// <summary>Two rotated boxes (4-gons), full SAT with MTV and action point.</summary>
     [Benchmark]
     [BenchmarkCategory("box-box")]
-    public CollisionDetectionResult BoxBox() => CollisionDetector.Detect(_boxA, _boxB);
+    public void BoxBox() => _result = CollisionDetector.Detect(_boxA, _boxB);
 
     /// <summary>The same two boxes through the frozen SAT.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("box-box")]
-    public FrozenResult BoxBoxBaseline() => FrozenDetector.Detect(_frozenBoxA, _frozenBoxB);
+    public void BoxBoxBaseline() => _frozenResult = FrozenDetector.Detect(_frozenBoxA, _frozenBoxB);
 
     /// <summary>Textbook allocating SAT on the same two boxes (MTV only, no action point).</summary>
     [Benchmark]
@@ -85,12 +91,12 @@ public class PairBenchmarks
     /// <summary>Two regular octagons as general polygons.</summary>
     [Benchmark]
     [BenchmarkCategory("octagon-octagon")]
-    public CollisionDetectionResult OctagonOctagon() => CollisionDetector.Detect(_octA, _octB);
+    public void OctagonOctagon() => _result = CollisionDetector.Detect(_octA, _octB);
 
     /// <summary>The same two octagons through the frozen SAT.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("octagon-octagon")]
-    public FrozenResult OctagonOctagonBaseline() => FrozenDetector.Detect(_frozenOctA, _frozenOctB);
+    public void OctagonOctagonBaseline() => _frozenResult = FrozenDetector.Detect(_frozenOctA, _frozenOctB);
 
     /// <summary>Textbook allocating SAT on the same two octagons.</summary>
     [Benchmark]
@@ -100,12 +106,12 @@ public class PairBenchmarks
     /// <summary>Circle against hexagon by Voronoi regions.</summary>
     [Benchmark]
     [BenchmarkCategory("circle-hexagon")]
-    public CollisionDetectionResult CirclePolygon() => CollisionDetector.Detect(_circleA, _polygon);
+    public void CirclePolygon() => _result = CollisionDetector.Detect(_circleA, _polygon);
 
     /// <summary>The same circle and hexagon through the frozen kernel.</summary>
     [Benchmark(Baseline = true)]
     [BenchmarkCategory("circle-hexagon")]
-    public FrozenResult CirclePolygonBaseline() => FrozenDetector.Detect(_frozenCircleA, _frozenPolygon);
+    public void CirclePolygonBaseline() => _frozenResult = FrozenDetector.Detect(_frozenCircleA, _frozenPolygon);
 
     /// <summary>1,000 random overlapping convex polygon pairs (3–8 vertices), per pair.</summary>
     [Benchmark(OperationsPerInvoke = SetSize)]
@@ -194,12 +200,12 @@ public class PairBenchmarks
     /// <summary>8-DOP against 8-DOP by the fixed-axis slab test (unchanged kernel, for scale).</summary>
     [Benchmark]
     [BenchmarkCategory("other kinds")]
-    public CollisionDetectionResult KDop8KDop8() => CollisionDetector.Detect(_kdopA, _kdopB);
+    public void KDop8KDop8() => _result = CollisionDetector.Detect(_kdopA, _kdopB);
 
     /// <summary>Axis-aligned box against box (unchanged kernel, for scale).</summary>
     [Benchmark]
     [BenchmarkCategory("other kinds")]
-    public CollisionDetectionResult AabbAabb() => CollisionDetector.Detect(_aabbA, _aabbB);
+    public void AabbAabb() => _result = CollisionDetector.Detect(_aabbA, _aabbB);
 
     private static FrozenShapes.ConvexPolygon Frozen(ConvexPolygon polygon) => new(polygon.Vertices);
 
