@@ -1,5 +1,3 @@
-using System.Runtime.InteropServices;
-
 namespace URWPGSim2D.Collision.Motion;
 
 /// <summary>
@@ -62,40 +60,8 @@ internal readonly struct RigidFrame
     /// (four points per 256-bit vector where the hardware has them, each lane doing the same
     /// products and sums). <paramref name="world"/> must not overlap <paramref name="model"/>.
     /// </summary>
-    public void ToWorld(ReadOnlySpan<Vector2> model, Span<Vector2> world)
-    {
-        if (world.Length < model.Length)
-        {
-            throw new ArgumentException($"destination holds {world.Length} points, {model.Length} needed", nameof(world));
-        }
-
-        if (Vector256.IsHardwareAccelerated && model.Length >= 4)
-        {
-            ref float src = ref Unsafe.As<Vector2, float>(ref MemoryMarshal.GetReference(model));
-            ref float dst = ref Unsafe.As<Vector2, float>(ref MemoryMarshal.GetReference(world));
-            var from = Vector256.Create(_from.X, _from.Y, _from.X, _from.Y, _from.X, _from.Y, _from.X, _from.Y);
-            var to = Vector256.Create(_to.X, _to.Y, _to.X, _to.Y, _to.X, _to.Y, _to.X, _to.Y);
-            var cos = Vector256.Create(_cos);
-            var sin = Vector256.Create(-_sin, _sin, -_sin, _sin, -_sin, _sin, -_sin, _sin);
-
-            // The last block overlaps the one before (the same values written twice).
-            for (int at = 0; ; at += 4)
-            {
-                at = Math.Min(at, model.Length - 4);
-                var d = Vector256.LoadUnsafe(ref src, (nuint)(2 * at)) - from;
-                (to + ((d * cos) + (Vector256.Shuffle(d, Vector256.Create(1, 0, 3, 2, 5, 4, 7, 6)) * sin))).StoreUnsafe(ref dst, (nuint)(2 * at));
-                if (at == model.Length - 4)
-                {
-                    return;
-                }
-            }
-        }
-
-        for (int i = 0; i < model.Length; i++)
-        {
-            world[i] = ToWorld(model[i]);
-        }
-    }
+    public void ToWorld(ReadOnlySpan<Vector2> model, Span<Vector2> world) =>
+        RigidTransform.PlaceAbout(model, world, _from, _to, new Vector2(_cos, _sin));
 
     /// <summary>A world point in the model's frame.</summary>
     public Vector2 ToModel(Vector2 world) => _from + RotateBack(world - _to);
