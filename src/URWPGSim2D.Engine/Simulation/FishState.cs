@@ -185,8 +185,7 @@ public sealed class FishState
     {
         _motion.SetPose(Handle, position, Angle.Wrap(heading));
         _motion.SetJoints(Handle, 0f, 0f, 0f);
-        _motion.SetVelocity(Handle, Vector2.Zero, 0f);
-        _motion.SetDrift(Handle, Vector2.Zero, 0f);
+        SetMotion(Vector2.Zero, 0f, Vector2.Zero, 0f);
         OutOfPlay = false;
         Decision = Decision.Stop;
         Turn.Reset(0f, TurnTable.Rates);
