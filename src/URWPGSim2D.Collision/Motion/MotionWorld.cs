@@ -60,6 +60,17 @@ public sealed partial class MotionWorld
     /// <summary>Contact events of the last step that were pressing: answered where a sample found them, without a search for the time of first contact (see <see cref="PressingContacts"/>).</summary>
     public int PressingEvents => _events.PressingCount;
 
+    /// <summary>
+    /// Exact pair tests since the last step began: the narrow-phase tests of two bodies that its
+    /// samples, searches for times of first contact, responses (<see cref="Detect"/>) and settling
+    /// ran, not counting a test answered from memory (the same pair with both bodies exactly where
+    /// they were); a <see cref="Detect"/> or <see cref="Settle"/> between steps counts with the last
+    /// step. A measure of a step's work that does not depend on the machine it runs on. The same
+    /// world, steps and handler give the same count; on several <see cref="Threads"/> the count can
+    /// differ from one thread's (each thread remembers its own tests), the contacts never do.
+    /// </summary>
+    public int ExactTests => _schedule.Sampler.Memo.Tests;
+
     /// <summary>Pairs of bodies touching now: answered by the handler in the current or last step (see <see cref="IContactHandler.OnTouchBegan"/>).</summary>
     public int TouchingPairs => _contacts.Count;
 
@@ -388,6 +399,7 @@ public sealed partial class MotionWorld
         _events.BeginStep();
         _settling.BeginStep();
         _contacts.BeginStep();
+        _schedule.Sampler.Memo.ResetTests();
         Time = 0.0;
         _stepping = true;
         _queryMoversMoved = true;

@@ -216,9 +216,10 @@ internal sealed class PairSampler
         _sampled[tick >> 6] |= 1UL << (tick & 63);
     }
 
-    /// <summary>Adds another sampler's sampled ticks and deepest end overlap to this one's.</summary>
+    /// <summary>Adds another sampler's sampled ticks, deepest end overlap and exact tests to this one's.</summary>
     public void Absorb(PairSampler other)
     {
+        Memo.TakeTests(other.Memo);
         for (int w = 0; w < _sampled.Length; w++)
         {
             _sampled[w] |= other._sampled[w];

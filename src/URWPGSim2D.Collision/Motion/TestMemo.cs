@@ -18,6 +18,19 @@ internal sealed class TestMemo
     private Entry[] _entries = new Entry[SmallestSize];
     private int _shift = 32 - BitOperations.Log2(SmallestSize);
 
+    /// <summary>Exact tests run (not answered from memory) since the count was last reset.</summary>
+    public int Tests { get; private set; }
+
+    /// <summary>Starts the count of exact tests again from 0.</summary>
+    public void ResetTests() => Tests = 0;
+
+    /// <summary>Adds another memo's count of exact tests to this one's and resets that one (an island worker's, merged into the event loop's).</summary>
+    public void TakeTests(TestMemo other)
+    {
+        Tests += other.Tests;
+        other.Tests = 0;
+    }
+
     /// <summary>Forgets every test (the bodies were replaced).</summary>
     public void Clear() => System.Array.Clear(_entries);
 
@@ -47,6 +60,7 @@ internal sealed class TestMemo
         }
 
         Hit hit = PairTest.Detect(a, b);
+        Tests++;
         e.Valid = true;
         e.A = a.Id;
         e.B = b.Id;

@@ -80,6 +80,32 @@ public sealed class TestMemoTests
         Assert.True(overlapping > 500, $"only {overlapping} overlapping pairs were tested");
     }
 
+    [Fact]
+    public void ItCountsTheTestsItRunsAndHandsTheCountOn()
+    {
+        var field = new Field();
+        Body ball = Body.Circle(0, 58f, new Vector2(100f, 0f));
+        Body post = Body.Static(1, new Circle(Vector2.Zero, 50f));
+        Body walls = Body.Walls(2, field);
+        var memo = new TestMemo();
+        memo.Detect(ball, post);
+        memo.Detect(ball, post); // remembered
+        memo.Detect(ball, walls);
+        Assert.Equal(2, memo.Tests);
+
+        // A worker's count joins the event loop's and starts again from 0.
+        var worker = new TestMemo();
+        worker.Detect(ball, post); // its own memory: tested
+        memo.TakeTests(worker);
+        Assert.Equal(3, memo.Tests);
+        Assert.Equal(0, worker.Tests);
+
+        memo.ResetTests();
+        Assert.Equal(0, memo.Tests);
+        memo.Detect(ball, post); // still remembered: the count is of tests run, the memory stays
+        Assert.Equal(0, memo.Tests);
+    }
+
     private static void Same(in Hit expected, in Hit actual)
     {
         Assert.Equal(expected.Intersect, actual.Intersect);
