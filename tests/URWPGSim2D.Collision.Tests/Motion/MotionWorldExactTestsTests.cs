@@ -74,8 +74,8 @@ public sealed class MotionWorldExactTestsTests
     [InlineData(2)]
     public void TheSameStepsGiveTheSameCount(int threads)
     {
-        var (first, firstBalls) = Crowd();
-        var (second, secondBalls) = Crowd();
+        // The crowd of every body kind the allocation and island tests step (fish, polygons, balls).
+        MotionWorld first = MotionWorldAllocationTests.World(200), second = MotionWorldAllocationTests.World(200);
         second.Threads = threads;
         second.MinimumMoversForThreads = 1;
         var handler = new RecordingHandler { Record = false };
@@ -85,9 +85,9 @@ public sealed class MotionWorldExactTestsTests
             first.Step(0.1f, handler);
             second.Step(0.1f, handler);
             Assert.Equal(first.Events, second.Events);
-            for (int i = 0; i < firstBalls.Length; i++)
+            for (int id = 0; id < first.BodyCount; id++)
             {
-                Assert.Equal(first.PositionOf(firstBalls[i]), second.PositionOf(secondBalls[i]));
+                Assert.Equal(first.PositionOf(first.IdAt(id)), second.PositionOf(second.IdAt(id)));
             }
 
             // On one thread the count is the same; on two, the islands' first samples count too
@@ -141,22 +141,5 @@ public sealed class MotionWorldExactTestsTests
         }
 
         return world;
-    }
-
-    // Forty balls in a small pool, in random directions at up to 1 m/s (seeded).
-    private static (MotionWorld World, BodyId[] Balls) Crowd()
-    {
-        var random = new Random(5);
-        var world = new MotionWorld();
-        world.AddWalls(new Field(1200f, 800f, goalBlocks: false));
-        var balls = new BodyId[40];
-        for (int i = 0; i < balls.Length; i++)
-        {
-            balls[i] = world.AddCircle(30f, new Vector2(-500f + ((i % 8) * 140f), -300f + ((i / 8) * 140f)));
-            float angle = (float)(random.NextDouble() * 2.0 * Math.PI);
-            world.SetVelocity(balls[i], new Vector2(MathF.Cos(angle), MathF.Sin(angle)) * (float)(random.NextDouble() * 1000.0));
-        }
-
-        return (world, balls);
     }
 }
