@@ -276,6 +276,22 @@ internal sealed class Body
         AngularVelocity = Kind == BodyKind.Circle ? 0f : OwnAngularVelocity + AngularDrift;
     }
 
+    /// <summary>
+    /// The body starts a step where it is: its motion measured from time 0, its start pose kept as
+    /// the step's (<see cref="KeepStepStart"/>), and the last step's counts of events, corrections
+    /// and rejection cleared.
+    /// </summary>
+    public void StartStep()
+    {
+        Rebase(0.0);
+        KeepStepStart();
+        Events = 0;
+        EventsInPlace = 0;
+        LastEventTime = -1.0;
+        Rejected = false;
+        Corrections = 0;
+    }
+
     /// <summary>The start pose becomes where this step begins from (see <see cref="StepStartPosition"/>).</summary>
     public void KeepStepStart()
     {

@@ -403,18 +403,18 @@ public sealed partial class MotionWorld
         Time = 0.0;
         _stepping = true;
         _queryMoversMoved = true;
-        foreach (Body body in _schedule.Planner.MoverBodies)
+        _schedule.Begin(seconds);
+
+        // One pass over the movers: each starts the step and is measured for the first plan.
+        SweepPlanner planner = _schedule.Planner;
+        ReadOnlySpan<Body> movers = planner.MoverBodies;
+        for (int m = 0; m < movers.Length; m++)
         {
-            body.Rebase(0.0);
-            body.KeepStepStart();
-            body.Events = 0;
-            body.EventsInPlace = 0;
-            body.LastEventTime = -1.0;
-            body.Rejected = false;
-            body.Corrections = 0;
+            movers[m].StartStep();
+            planner.Measure(m, 0.0);
         }
 
-        _schedule.Begin(seconds);
+        _schedule.PlanStepStart();
     }
 
     // Every mover moved to a time of the step and committed there.

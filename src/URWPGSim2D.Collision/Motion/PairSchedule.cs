@@ -50,14 +50,16 @@ internal sealed class PairSchedule
         Sampler.Reserve(movers.Length);
     }
 
-    /// <summary>Starts a step: no pairs, no queue entries; every pair planned from time 0 with its sampling interval (not yet scheduled).</summary>
+    /// <summary>Starts a step of <paramref name="seconds"/>: no pairs, no queue entries. The movers are then measured from time 0 (<see cref="SweepPlanner.Measure"/>) and planned (<see cref="PlanStepStart"/>).</summary>
     public void Begin(float seconds)
     {
         Planner.Seconds = seconds;
         Table.Clear();
         Sampler.BeginStep();
-        Planner.PlanAll(0.0, _recorder);
     }
+
+    /// <summary>Every pair planned from time 0, the movers as measured there, with its sampling interval (not yet scheduled).</summary>
+    public void PlanStepStart() => Planner.PlanMeasured(_recorder);
 
     /// <summary>Places both bodies of a pair at a step time (a static partner stays).</summary>
     public void MovePair(in PlannedPair p, double time) => PairSampler.MovePair(_bodies, p, time, Planner.Seconds);

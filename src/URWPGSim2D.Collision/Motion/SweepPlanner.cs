@@ -68,8 +68,23 @@ internal sealed class SweepPlanner
     /// </summary>
     public void PlanAll(double time, IPairSink sink)
     {
-        LoadAll(time);
+        for (int m = 0; m < _movers.Length; m++)
+        {
+            Measure(m, time);
+        }
+
+        PlanMeasured(sink);
+    }
+
+    /// <summary>
+    /// Every candidate pair for the movers as each was last measured (<see cref="Measure"/>, all
+    /// from the same time), in the order of <see cref="PlanAll"/>.
+    /// </summary>
+    public void PlanMeasured(IPairSink sink)
+    {
         int movers = _movers.Length;
+        _broad.Reset(_boxes, movers);
+        _loaded = true;
         _broad.FindPairs(_found);
         var found = _found.Items;
         int k = 0;
@@ -84,19 +99,6 @@ internal sealed class SweepPlanner
         }
     }
 
-    // Every mover measured from the time and the broad phase rebuilt over all boxes.
-    private void LoadAll(double time)
-    {
-        int movers = _movers.Length;
-        for (int m = 0; m < movers; m++)
-        {
-            Measure(m, time);
-        }
-
-        _broad.Reset(_boxes, movers);
-        _loaded = true;
-    }
-
     /// <summary>
     /// Measures the given movers again from <paramref name="time"/> (their poses or velocities
     /// changed) and reports every candidate pair they are part of. Pairs between two of them are
@@ -106,7 +108,14 @@ internal sealed class SweepPlanner
     {
         if (!_loaded)
         {
-            LoadAll(time); // nothing planned yet (settling before the first step)
+            // Nothing planned yet (settling before the first step): every mover measured, the broad phase built.
+            for (int m = 0; m < _movers.Length; m++)
+            {
+                Measure(m, time);
+            }
+
+            _broad.Reset(_boxes, _movers.Length);
+            _loaded = true;
         }
 
         foreach (int m in movers)
@@ -140,8 +149,11 @@ internal sealed class SweepPlanner
         }
     }
 
-    // A mover's motion from `time` to the end of the step and its swept box.
-    private void Measure(int m, double time)
+    /// <summary>
+    /// Measures mover <paramref name="m"/>'s motion from step time <paramref name="time"/> to the
+    /// end of the step and its swept box (the broad phase is not told until the movers are planned).
+    /// </summary>
+    public void Measure(int m, double time)
     {
         float dt = Seconds;
         float remaining = (float)Math.Max(0.0, 1.0 - time);
@@ -160,6 +172,9 @@ internal sealed class SweepPlanner
         }
 
         sweep.Rate = (sweep.Velocity.Length() * dt) + sweep.Spin;
+        sweep.Thickness = body.Thickness;
+        sweep.Id = body.Id;
+        sweep.Collides = body.Collides;
         sweep.Center = bound.Center;
         sweep.Radius = bound.Radius + (sweep.Rate * remaining);
         Vector2 half = new(sweep.Radius + Margin);
@@ -185,15 +200,14 @@ internal sealed class SweepPlanner
             return;
         }
 
-        Body a = _movers[u], b = _movers[v];
-        if (!a.Collides || !b.Collides)
+        if (!su.Collides || !sv.Collides)
         {
             return;
         }
 
-        float limit = 0.5f * (a.Thickness + b.Thickness);
+        float limit = 0.5f * (su.Thickness + sv.Thickness);
         float rate = ((su.Velocity - sv.Velocity).Length() * Seconds) + su.Spin + sv.Spin;
-        sink.Add(new PlannedPair(a.Id, b.Id, u, v, limit), rate);
+        sink.Add(new PlannedPair(su.Id, sv.Id, u, v, limit), rate);
     }
 
     // A static body's box is the one the broad phase holds (its bounds, never moved).
@@ -208,19 +222,20 @@ internal sealed class SweepPlanner
             return;
         }
 
-        Body a = _movers[m], body = _statics[s];
-        if (!a.Collides)
+        ref readonly Sweep sm = ref _sweep[m];
+        if (!sm.Collides)
         {
             return;
         }
 
-        float limit = 0.5f * (a.Thickness + body.Thickness);
-        sink.Add(new PlannedPair(a.Id, body.Id, m, -1, limit), _sweep[m].Rate);
+        Body body = _statics[s];
+        float limit = 0.5f * (sm.Thickness + body.Thickness);
+        sink.Add(new PlannedPair(sm.Id, body.Id, m, -1, limit), sm.Rate);
     }
 
     private void TryWall(int m, IPairSink sink)
     {
-        if (_walls is null || !_movers[m].Collides)
+        if (_walls is null || !_sweep[m].Collides)
         {
             return;
         }
@@ -233,7 +248,7 @@ internal sealed class SweepPlanner
             return;
         }
 
-        sink.Add(new PlannedPair(_movers[m].Id, _walls.Id, m, -1, float.PositiveInfinity), _sweep[m].Rate);
+        sink.Add(new PlannedPair(_sweep[m].Id, _walls.Id, m, -1, float.PositiveInfinity), _sweep[m].Rate);
     }
 
     // A mover's motion over the rest of the step, together (a pair test reads both movers' at once).
@@ -244,5 +259,8 @@ internal sealed class SweepPlanner
         public Vector2 Velocity; // mm/s
         public float Spin;       // most a point moves by turning over a whole step, mm
         public float Rate;       // most a point moves over a whole step, mm
+        public float Thickness;  // the body's thinnest width, mm
+        public int Id;           // the body's id
+        public bool Collides;    // whether the body collides at all
     }
 }
