@@ -8,9 +8,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// last sample saw. Direct-mapped by the pair's ids (a newer test replaces an older one of another
 /// pair in the same entry): 128 entries for a small world, one per mover up to 16,384 for a
 /// crowd (whose many events at once otherwise evict each other's tests: a 1,000-body crowd
-/// repeats 5 % fewer tests with 1,024 entries than with 128, and the end of a 10,000-body crowd's
-/// step a quarter fewer with 16,384 than with 1,024), at most about 1.5 megabytes whatever the
-/// world's size. Nothing allocates per test.
+/// repeats 5 % fewer tests with 1,024 entries than with 128; the end of a 10,000-body crowd's step
+/// takes a quarter less time with 16,384 than with 1,024), at most about 1.3 megabytes whatever
+/// the world's size. Nothing allocates per test.
 /// </summary>
 internal sealed class TestMemo
 {
