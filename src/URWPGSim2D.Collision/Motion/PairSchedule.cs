@@ -17,6 +17,7 @@ internal sealed class PairSchedule
 
     private readonly List<Body> _bodies;
     private readonly Recorder _recorder;
+    private readonly IndexList _partners = new(64);
 
     /// <summary>Creates the stage over a broad phase and the world's bodies (by id).</summary>
     public PairSchedule(IBroadPhase broadPhase, List<Body> bodies)
@@ -60,6 +61,45 @@ internal sealed class PairSchedule
 
     /// <summary>Every pair planned from time 0, the movers as measured there, with its sampling interval (not yet scheduled).</summary>
     public void PlanStepStart() => Planner.PlanMeasured(_recorder);
+
+    /// <summary>
+    /// The candidate pairs of the given movers at the end of the step, the same pairs in the same
+    /// order as <see cref="SweepPlanner.PlanFor"/> at time 1 reports them, taken from each mover's
+    /// planned pairs instead of the broad phase: every pair whose swept circles meet is planned
+    /// (each re-plan planned its body's pairs again), and a mover's circle at the end of the step
+    /// lies within its swept circle. Valid while no body has left its planned motion (before the
+    /// end of the step answers any contact); the broad phase keeps the movers' boxes of the step,
+    /// which still hold them.
+    /// </summary>
+    public void PlanAtEnd(ReadOnlySpan<int> movers, ReadOnlySpan<bool> isListed, IPairSink sink)
+    {
+        foreach (int m in movers)
+        {
+            Planner.Measure(m, 1.0);
+        }
+
+        int count = Planner.Movers;
+        foreach (int m in movers)
+        {
+            _partners.Clear();
+            for (int edge = Table.FirstEdge(m); edge >= 0; edge = Table.NextEdge(edge))
+            {
+                ref readonly PlannedPair pair = ref Table.Pair(edge >> 1);
+                int other = pair.MoverA == m ? pair.MoverB : pair.MoverA;
+                if (other >= 0)
+                {
+                    _partners.Add(other);
+                }
+                else if (_bodies[pair.B] is { Kind: BodyKind.Static } body)
+                {
+                    _partners.Add(count + body.Slot); // the walls are offered by the planner itself
+                }
+            }
+
+            _partners.SortFrom(0);
+            Planner.Offer(m, _partners.Items, isListed, sink);
+        }
+    }
 
     /// <summary>Places both bodies of a pair at a step time (a static partner stays).</summary>
     public void MovePair(in PlannedPair p, double time) => PairSampler.MovePair(_bodies, p, time, Planner.Seconds);

@@ -79,7 +79,7 @@ internal sealed class Settling
             _touched.Add(m);
         }
 
-        LeftoverOverlap = RejectOverlapping(SettleTouched());
+        LeftoverOverlap = RejectOverlapping(SettleTouched(fromPlan: false));
     }
 
     /// <summary>Deepest overlap among all pairs of bodies now (no motion), mm.</summary>
@@ -95,16 +95,18 @@ internal sealed class Settling
     /// left inside others rejected. <paramref name="deepestAtEnd"/> is the deepest overlap the event
     /// loop found at the end of the step; the deepest left is <see cref="LeftoverOverlap"/>.
     /// </summary>
-    public void EndStep(float deepestAtEnd) => LeftoverOverlap = RejectOverlapping(MathF.Max(deepestAtEnd, SettleTouched()));
+    public void EndStep(float deepestAtEnd) => LeftoverOverlap = RejectOverlapping(MathF.Max(deepestAtEnd, SettleTouched(fromPlan: true)));
 
     /// <summary>
     /// Up to <see cref="MotionTolerances.SettlePasses"/> passes over the pairs of the bodies that
     /// took part in contacts this step: overlaps go to the handler and the bodies that moved are
     /// checked again; returns the deepest overlap left among them. When the first pass finds
     /// nothing to resolve (the usual case: the events left every pair apart), nothing moved and its
-    /// depths are the answer: the pairs are not tested a second time.
+    /// depths are the answer: the pairs are not tested a second time. At the end of a step
+    /// (<paramref name="fromPlan"/>) the first pass takes the pairs from the step's plan
+    /// (<see cref="PairSchedule.PlanAtEnd"/>): the same pairs, without asking the broad phase again.
     /// </summary>
-    private float SettleTouched()
+    private float SettleTouched(bool fromPlan)
     {
         BodySet current = _touched;
         BodySet next = _spare;
@@ -113,7 +115,17 @@ internal sealed class Settling
         {
             next.Clear();
             _world.ClearChanged();
-            CollectPairsOf(current);
+            if (pass == 0 && fromPlan)
+            {
+                // Nothing answered yet: the pairs planned this step hold every candidate.
+                _collector.Clear();
+                _schedule.PlanAtEnd(current.Items, current.Marks, _collector);
+            }
+            else
+            {
+                CollectPairsOf(current);
+            }
+
             float quiet = 0f;
             foreach (ref readonly var pair in _collector.Pairs)
             {

@@ -124,29 +124,41 @@ internal sealed class SweepPlanner
             _broad.Move(m, _boxes[m]);
         }
 
-        int count = _movers.Length;
         foreach (int m in movers)
         {
             _broad.Query(_boxes[m], _near);
-            foreach (int b in _near.Items)
-            {
-                if (b == m || (b < count && isListed[b] && b < m))
-                {
-                    continue;
-                }
+            Offer(m, _near.Items, isListed, sink);
+        }
+    }
 
-                if (b < count && b < m)
-                {
-                    TryPair(b, m, sink);
-                }
-                else
-                {
-                    TryPair(m, b, sink);
-                }
+    /// <summary>
+    /// Mover <paramref name="m"/>'s candidate pairs among the proxies <paramref name="near"/> (in
+    /// ascending order: movers by slot, then static bodies after them), then with the walls: a
+    /// pair of two listed movers is reported once, from the one with the smaller slot, and a pair
+    /// of two movers names the smaller slot first. <see cref="PlanFor"/> offers what the broad
+    /// phase answers; the end of a step offers a mover's planned partners.
+    /// </summary>
+    public void Offer(int m, ReadOnlySpan<int> near, ReadOnlySpan<bool> isListed, IPairSink sink)
+    {
+        int count = _movers.Length;
+        foreach (int b in near)
+        {
+            if (b == m || (b < count && isListed[b] && b < m))
+            {
+                continue;
             }
 
-            TryWall(m, sink);
+            if (b < count && b < m)
+            {
+                TryPair(b, m, sink);
+            }
+            else
+            {
+                TryPair(m, b, sink);
+            }
         }
+
+        TryWall(m, sink);
     }
 
     /// <summary>
