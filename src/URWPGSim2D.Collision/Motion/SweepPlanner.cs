@@ -68,11 +68,7 @@ internal sealed class SweepPlanner
     /// </summary>
     public void PlanAll(double time, IPairSink sink)
     {
-        for (int m = 0; m < _movers.Length; m++)
-        {
-            Measure(m, time);
-        }
-
+        MeasureAll(time);
         PlanMeasured(sink);
     }
 
@@ -83,8 +79,7 @@ internal sealed class SweepPlanner
     public void PlanMeasured(IPairSink sink)
     {
         int movers = _movers.Length;
-        _broad.Reset(_boxes, movers);
-        _loaded = true;
+        BuildBroadPhase();
         _broad.FindPairs(_found);
         var found = _found.Items;
         int k = 0;
@@ -108,14 +103,9 @@ internal sealed class SweepPlanner
     {
         if (!_loaded)
         {
-            // Nothing planned yet (settling before the first step): every mover measured, the broad phase built.
-            for (int m = 0; m < _movers.Length; m++)
-            {
-                Measure(m, time);
-            }
-
-            _broad.Reset(_boxes, _movers.Length);
-            _loaded = true;
+            // Nothing planned yet (settling before the first step).
+            MeasureAll(time);
+            BuildBroadPhase();
         }
 
         foreach (int m in movers)
@@ -159,6 +149,22 @@ internal sealed class SweepPlanner
         }
 
         TryWall(m, sink);
+    }
+
+    // Every mover measured from the time.
+    private void MeasureAll(double time)
+    {
+        for (int m = 0; m < _movers.Length; m++)
+        {
+            Measure(m, time);
+        }
+    }
+
+    // The broad phase rebuilt over the movers' boxes as last measured and the static bodies' boxes.
+    private void BuildBroadPhase()
+    {
+        _broad.Reset(_boxes, _movers.Length);
+        _loaded = true;
     }
 
     /// <summary>
