@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.Pool;
 
 namespace URWPGSim2D.Collision.Motion;
@@ -18,17 +19,14 @@ internal sealed class Body
     private const float TailStartHalfWidth2 = 0.231336f;
     private const float CaudalReach = 50f;
 
-    private readonly Vector2 _bodyGroupLocal;
-    private readonly float _bodyGroupRadius;
-    private RigidFrame _frame;
+    // Every body without a shape of its own shares this one (never written).
+    private static readonly StrongBox<Shape> NoShape = new(default);
+
+    private readonly FishBounds? _fish;
+    private StrongBox<Shape> _shape = NoShape;
     private bool _frameValid;
-    private Disc _bodyDisc;
-    private Disc _tailDisc;
     private bool _groupsValid;
     private bool _outlineValid;
-    private Vector3 _tailJoints;
-    private Vector2 _tailLocal;
-    private float _tailRadius;
 
     private Body(BodyKind kind, int id)
     {
@@ -51,8 +49,11 @@ internal sealed class Body
         Circle group = model.BodyGroup;
         var (sin, cos) = MathF.SinCos(pose.Heading);
         Vector2 offset = group.Center - pose.Position;
-        _bodyGroupLocal = new Vector2((offset.X * cos) + (offset.Y * sin), (-offset.X * sin) + (offset.Y * cos));
-        _bodyGroupRadius = group.Radius;
+        _fish = new FishBounds
+        {
+            BodyGroupLocal = new Vector2((offset.X * cos) + (offset.Y * sin), (-offset.X * sin) + (offset.Y * cos)),
+            BodyGroupRadius = group.Radius,
+        };
         FishSize size = model.Size;
         Thickness = MathF.Min(2f * 0.089964f * size.Joint3, size.Width);
         Invalidate();
@@ -76,8 +77,13 @@ internal sealed class Body
     /// <summary>A moving circle's radius, mm.</summary>
     public float Radius { get; private init; }
 
-    /// <summary>A static body's shape.</summary>
-    public Shape Shape { get; private set; }
+    /// <summary>A static body's shape (<c>default</c> for any other body).</summary>
+    /// <remarks>
+    /// Kept in its own small object, made when the body first gets a shape: a <see cref="Collision.Shapes.Shape"/> is
+    /// 256 bytes, more than a moving body's whole state, and every pass over the movers would
+    /// otherwise step over it.
+    /// </remarks>
+    public ref readonly Shape Shape => ref _shape.Value;
 
     /// <summary>Whether the body is a static circle (its bounds test is <see cref="StaticDisc"/> rather than <see cref="Bounds"/>).</summary>
     public bool RoundStatic { get; private set; }
@@ -256,7 +262,15 @@ internal sealed class Body
             ShapeKind.KDop8 => KDopWidth(shape.AsKDop8()),
             _ => Width(shape.AsPolygon().Vertices, shape.AsPolygon().Normals),
         };
-        Shape = shape;
+        if (ReferenceEquals(_shape, NoShape))
+        {
+            _shape = new StrongBox<Shape>(shape);
+        }
+        else
+        {
+            _shape.Value = shape;
+        }
+
         Bounds = bounds;
         Position = c.Center;
         BasePosition = c.Center;
@@ -398,11 +412,11 @@ internal sealed class Body
             if (!_frameValid)
             {
                 FishPose posed = Model!.Pose;
-                _frame = new RigidFrame(posed.Position, posed.Heading, Position, Heading);
+                _fish!.Frame = new RigidFrame(posed.Position, posed.Heading, Position, Heading);
                 _frameValid = true;
             }
 
-            return _frame;
+            return _fish!.Frame;
         }
     }
 
@@ -442,12 +456,12 @@ internal sealed class Body
 
         if (!_groupsValid)
         {
-            ComputeGroups(out _bodyDisc, out _tailDisc);
+            ComputeGroups(out _fish!.BodyDisc, out _fish.TailDisc);
             _groupsValid = true;
         }
 
-        first = _bodyDisc;
-        second = _tailDisc;
+        first = _fish!.BodyDisc;
+        second = _fish.TailDisc;
     }
 
     /// <summary>A circle enclosing the moving body now.</summary>
@@ -492,7 +506,8 @@ internal sealed class Body
     // angles, then carried with the body (its 0.01 mm slack covers the rounding of either way).
     private Disc TailSkeleton(float sin, float cos)
     {
-        if (_tailJoints != new Vector3(Joint1, Joint2, Joint3) || _tailRadius == 0f)
+        FishBounds fish = _fish!;
+        if (fish.TailJoints != new Vector3(Joint1, Joint2, Joint3) || fish.TailRadius == 0f)
         {
             FishSize size = Model!.Size;
             Vector2 s1 = new(-0.5f * size.Length, 0f);
@@ -504,13 +519,13 @@ internal sealed class Body
             float r = MathF.Max(
                 MathF.Max(Vector2.Distance(s1, c) + h1, Vector2.Distance(e1, c) + MathF.Max(h1, h2)),
                 MathF.Max(Vector2.Distance(e2, c) + MathF.Max(h2, CaudalReach), Vector2.Distance(a, c) + CaudalReach));
-            _tailLocal = c;
-            _tailRadius = r + 0.01f;
-            _tailJoints = new Vector3(Joint1, Joint2, Joint3);
+            fish.TailLocal = c;
+            fish.TailRadius = r + 0.01f;
+            fish.TailJoints = new Vector3(Joint1, Joint2, Joint3);
         }
 
-        Vector2 l = _tailLocal;
-        return new Disc(Position + new Vector2((l.X * cos) - (l.Y * sin), (l.X * sin) + (l.Y * cos)), _tailRadius);
+        Vector2 l = fish.TailLocal;
+        return new Disc(Position + new Vector2((l.X * cos) - (l.Y * sin), (l.X * sin) + (l.Y * cos)), fish.TailRadius);
     }
 
     private void ComputeGroups(out Disc body, out Disc tail)
@@ -518,8 +533,9 @@ internal sealed class Body
         if (!JointsCurrent)
         {
             var (sin, cos) = MathF.SinCos(Heading);
-            Vector2 local = _bodyGroupLocal;
-            body = new Disc(Position + new Vector2((local.X * cos) - (local.Y * sin), (local.X * sin) + (local.Y * cos)), _bodyGroupRadius);
+            FishBounds fish = _fish!;
+            Vector2 local = fish.BodyGroupLocal;
+            body = new Disc(Position + new Vector2((local.X * cos) - (local.Y * sin), (local.X * sin) + (local.Y * cos)), fish.BodyGroupRadius);
             tail = TailSkeleton(sin, cos);
             return;
         }
@@ -603,5 +619,20 @@ internal sealed class Body
         }
 
         return width;
+    }
+
+    // A fish's bounds that follow from its pose, kept apart from the body so that a ball's or a
+    // polygon's state stays small: what the body group is in the body frame, and the last frame,
+    // group circles and tail circle computed (valid while the body's flags say so).
+    private sealed class FishBounds
+    {
+        public Vector2 BodyGroupLocal;
+        public float BodyGroupRadius;
+        public RigidFrame Frame;
+        public Disc BodyDisc;
+        public Disc TailDisc;
+        public Vector3 TailJoints;
+        public Vector2 TailLocal;
+        public float TailRadius;
     }
 }
