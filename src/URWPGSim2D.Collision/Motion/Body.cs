@@ -1,4 +1,3 @@
-using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.Pool;
 
 namespace URWPGSim2D.Collision.Motion;
@@ -19,11 +18,13 @@ internal sealed class Body
     private const float TailStartHalfWidth2 = 0.231336f;
     private const float CaudalReach = 50f;
 
-    // Every body without a shape of its own shares this one (never written).
-    private static readonly StrongBox<Shape> NoShape = new(default);
+    // Every moving body shares these (never written).
+    private static readonly StaticPart NoStatic = new();
+    private static readonly PolygonPart NoPolygon = new([], [], 0f);
 
     private readonly FishBounds? _fish;
-    private StrongBox<Shape> _shape = NoShape;
+    private readonly PolygonPart _polygon = NoPolygon;
+    private StaticPart _static = NoStatic;
     private bool _frameValid;
     private bool _groupsValid;
     private bool _outlineValid;
@@ -32,6 +33,12 @@ internal sealed class Body
     {
         Kind = kind;
         Id = id;
+    }
+
+    private Body(int id, PolygonPart polygon)
+        : this(BodyKind.Polygon, id)
+    {
+        _polygon = polygon;
     }
 
     private Body(int id, FishModel model)
@@ -77,40 +84,39 @@ internal sealed class Body
     /// <summary>A moving circle's radius, mm.</summary>
     public float Radius { get; private init; }
 
+    // What only a static body, the walls, a polygon or a fish has lives in a small object of its own
+    // (a shape alone is 256 bytes), so that a ball's state stays small: every pass over the movers
+    // and every test reads it.
+
     /// <summary>A static body's shape (<c>default</c> for any other body).</summary>
-    /// <remarks>
-    /// Kept in its own small object, made when the body first gets a shape: a <see cref="Collision.Shapes.Shape"/> is
-    /// 256 bytes, more than a moving body's whole state, and every pass over the movers would
-    /// otherwise step over it.
-    /// </remarks>
-    public ref readonly Shape Shape => ref _shape.Value;
+    public ref readonly Shape Shape => ref _static.Shape;
 
     /// <summary>Whether the body is a static circle (its bounds test is <see cref="StaticDisc"/> rather than <see cref="Bounds"/>).</summary>
-    public bool RoundStatic { get; private set; }
+    public bool RoundStatic => _static.Round;
 
     /// <summary>A static body's bounding circle (kept so that bounds tests need not read <see cref="Shape"/>).</summary>
-    public Disc StaticDisc { get; private set; }
+    public Disc StaticDisc => _static.Disc;
 
     /// <summary>A static body's bounds, or the walls' pool bounds.</summary>
-    public Aabb Bounds { get; private set; }
+    public Aabb Bounds => _static.Bounds;
 
     /// <summary>The pool whose walls this body is.</summary>
-    public Field? Field { get; private init; }
+    public Field? Field => _static.Field;
 
-    /// <summary>A moving polygon's vertices and normals about its origin, and its reach from the origin.</summary>
-    public Vector2[] LocalVertices { get; private init; } = [];
+    /// <summary>A moving polygon's vertices about its origin.</summary>
+    public Vector2[] LocalVertices => _polygon.LocalVertices;
 
     /// <summary>Outward edge normals of <see cref="LocalVertices"/>.</summary>
-    public Vector2[] LocalNormals { get; private init; } = [];
+    public Vector2[] LocalNormals => _polygon.LocalNormals;
 
     /// <summary>A moving polygon's outline at its current pose (valid after <see cref="Outline"/>).</summary>
-    public Vector2[] WorldVertices { get; private init; } = [];
+    public Vector2[] WorldVertices => _polygon.WorldVertices;
 
     /// <summary>Outward edge normals of <see cref="WorldVertices"/>.</summary>
-    public Vector2[] WorldNormals { get; private init; } = [];
+    public Vector2[] WorldNormals => _polygon.WorldNormals;
 
     /// <summary>Farthest point of a polygon from its origin, mm.</summary>
-    public float Reach { get; private set; }
+    public float Reach => _polygon.Reach;
 
     /// <summary>A fish's collision model (at the pose it was last built for).</summary>
     public FishModel? Model { get; }
@@ -214,18 +220,12 @@ internal sealed class Body
             reach = MathF.Max(reach, p.Length());
         }
 
-        var body = new Body(BodyKind.Polygon, id)
+        return new Body(id, new PolygonPart(v, n, reach))
         {
-            LocalVertices = v,
-            LocalNormals = n,
-            WorldVertices = new Vector2[v.Length],
-            WorldNormals = new Vector2[v.Length],
             Position = position,
             Heading = Angle.Wrap(heading),
             Thickness = Width(v, n),
         };
-        body.Reach = reach;
-        return body;
     }
 
     /// <summary>A moving fish.</summary>
@@ -262,26 +262,23 @@ internal sealed class Body
             ShapeKind.KDop8 => KDopWidth(shape.AsKDop8()),
             _ => Width(shape.AsPolygon().Vertices, shape.AsPolygon().Normals),
         };
-        if (ReferenceEquals(_shape, NoShape))
+        if (ReferenceEquals(_static, NoStatic))
         {
-            _shape = new StrongBox<Shape>(shape);
-        }
-        else
-        {
-            _shape.Value = shape;
+            _static = new StaticPart();
         }
 
-        Bounds = bounds;
+        _static.Shape = shape;
+        _static.Bounds = bounds;
+        _static.Round = shape.Kind == ShapeKind.Circle;
+        _static.Disc = new Disc(c.Center, c.Radius);
         Position = c.Center;
         BasePosition = c.Center;
-        RoundStatic = shape.Kind == ShapeKind.Circle;
-        StaticDisc = new Disc(c.Center, c.Radius);
         ShapeStamp++;
     }
 
     /// <summary>The walls of a pool.</summary>
     public static Body Walls(int id, Field field) =>
-        new(BodyKind.Walls, id) { Field = field, Bounds = field.Bounds, Thickness = float.PositiveInfinity };
+        new(BodyKind.Walls, id) { _static = new StaticPart { Field = field, Bounds = field.Bounds }, Thickness = float.PositiveInfinity };
 
     /// <summary>The motion from the body's own velocities and its drifts (a circle does not turn).</summary>
     public void SetMotion()
@@ -634,5 +631,25 @@ internal sealed class Body
         public Vector3 TailJoints;
         public Vector2 TailLocal;
         public float TailRadius;
+    }
+
+    // A static body's shape, bounding circle and bounds (the walls: their pool and its bounds).
+    private sealed class StaticPart
+    {
+        public Shape Shape;
+        public Disc Disc;
+        public Aabb Bounds;
+        public bool Round;
+        public Field? Field;
+    }
+
+    // A moving polygon's outline about its origin, its outline at the current pose, and its reach.
+    private sealed class PolygonPart(Vector2[] local, Vector2[] normals, float reach)
+    {
+        public readonly Vector2[] LocalVertices = local;
+        public readonly Vector2[] LocalNormals = normals;
+        public readonly Vector2[] WorldVertices = new Vector2[local.Length];
+        public readonly Vector2[] WorldNormals = new Vector2[local.Length];
+        public readonly float Reach = reach;
     }
 }
