@@ -15,6 +15,7 @@ internal sealed class ContactCache
     private const int SmallestSize = 64;
 
     private Entry[] _entries = new Entry[SmallestSize];
+    private ulong[] _used = new ulong[SmallestSize / 64]; // one bit a slot: the slot holds an entry
     private int _mask = SmallestSize - 1;
 
     /// <summary>Steps begun since the motion world was made (a touch's time is this plus the time within the step).</summary>
@@ -37,6 +38,7 @@ internal sealed class ContactCache
     public void Clear()
     {
         Array.Clear(_entries);
+        Array.Clear(_used);
         Count = 0;
     }
 
@@ -60,6 +62,7 @@ internal sealed class ContactCache
             }
 
             i = FreeSlot(lo, hi);
+            Mark(i);
             ref Entry fresh = ref _entries[i];
             fresh.Used = true;
             fresh.Low = lo;
@@ -108,11 +111,12 @@ internal sealed class ContactCache
     public int EndStep<TSink>(ref TSink ended)
         where TSink : struct, IEndedSink
     {
+        // The used slots in slot order, found from the bitmap: in a crowd the table is mostly empty.
         int count = 0;
-        for (int i = 0; Count > 0 && i < _entries.Length;)
+        for (int i = 0; Count > 0 && (i = NextUsed(i)) >= 0;)
         {
             ref Entry e = ref _entries[i];
-            if (e.Used && Step - e.LastStep >= 1)
+            if (Step - e.LastStep >= 1)
             {
                 ended.Ended(e.LowFirst ? e.Low : e.High, e.LowFirst ? e.High : e.Low);
                 Remove(i);
@@ -173,11 +177,13 @@ internal sealed class ContactCache
             if (movable)
             {
                 _entries[hole] = e;
+                Mark(hole);
                 hole = i;
             }
         }
 
         _entries[hole] = default;
+        _used[hole >> 6] &= ~(1UL << hole);
         Count--;
     }
 
@@ -185,14 +191,42 @@ internal sealed class ContactCache
     {
         Entry[] old = _entries;
         _entries = new Entry[size];
+        _used = new ulong[Math.Max(1, size / 64)];
         _mask = size - 1;
         foreach (ref readonly Entry e in old.AsSpan())
         {
             if (e.Used)
             {
-                _entries[FreeSlot(e.Low, e.High)] = e;
+                int i = FreeSlot(e.Low, e.High);
+                _entries[i] = e;
+                Mark(i);
             }
         }
+    }
+
+    private void Mark(int slot) => _used[slot >> 6] |= 1UL << slot;
+
+    // The first used slot at or after `from`, or −1.
+    private int NextUsed(int from)
+    {
+        int word = from >> 6;
+        if (word >= _used.Length)
+        {
+            return -1;
+        }
+
+        ulong bits = _used[word] & (ulong.MaxValue << from);
+        while (bits == 0)
+        {
+            if (++word == _used.Length)
+            {
+                return -1;
+            }
+
+            bits = _used[word];
+        }
+
+        return (word << 6) + BitOperations.TrailingZeroCount(bits);
     }
 
     private int Home(int lo, int hi) => (int)((((uint)lo * 0x9E3779B1u) ^ ((uint)hi * 0x85EBCA6Bu)) >> 7) & _mask;
