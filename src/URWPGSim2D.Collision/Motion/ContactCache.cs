@@ -7,7 +7,9 @@ namespace URWPGSim2D.Collision.Motion;
 /// answered. The contact events stage
 /// asks whether a pair is <em>pressing</em> (answered at one of its last two samples), and the
 /// motion world reports touches that begin and end to the handler. An open-addressing table
-/// (linear probing, deletion by backward shift) that grows by doubling and never shrinks; after
+/// (linear probing, deletion by backward shift; a bitmap of the used slots ends probes and lets
+/// the end of a step visit only the touches, since the table is sized for the worst case and is
+/// mostly empty) that grows by doubling and never shrinks; after
 /// warm-up nothing allocates. Written only by the event loop's thread.
 /// </summary>
 internal sealed class ContactCache
@@ -64,7 +66,6 @@ internal sealed class ContactCache
             i = FreeSlot(lo, hi);
             Mark(i);
             ref Entry fresh = ref _entries[i];
-            fresh.Used = true;
             fresh.Low = lo;
             fresh.High = hi;
             fresh.LowFirst = a == lo;
@@ -135,12 +136,13 @@ internal sealed class ContactCache
     {
         for (int i = Home(lo, hi); ; i = (i + 1) & _mask)
         {
-            ref readonly Entry e = ref _entries[i];
-            if (!e.Used)
+            // The bitmap ends a probe without reading the (mostly empty, large) table.
+            if (!IsUsed(i))
             {
                 return -1;
             }
 
+            ref readonly Entry e = ref _entries[i];
             if (e.Low == lo && e.High == hi)
             {
                 return i;
@@ -151,7 +153,7 @@ internal sealed class ContactCache
     private int FreeSlot(int lo, int hi)
     {
         int i = Home(lo, hi);
-        while (_entries[i].Used)
+        while (IsUsed(i))
         {
             i = (i + 1) & _mask;
         }
@@ -166,11 +168,12 @@ internal sealed class ContactCache
         while (true)
         {
             i = (i + 1) & _mask;
-            ref Entry e = ref _entries[i];
-            if (!e.Used)
+            if (!IsUsed(i))
             {
                 break;
             }
+
+            ref Entry e = ref _entries[i];
 
             int home = Home(e.Low, e.High);
             bool movable = hole <= i ? (home <= hole || home > i) : (home <= hole && home > i);
@@ -190,19 +193,23 @@ internal sealed class ContactCache
     private void Rehash(int size)
     {
         Entry[] old = _entries;
+        ulong[] oldUsed = _used;
         _entries = new Entry[size];
         _used = new ulong[Math.Max(1, size / 64)];
         _mask = size - 1;
-        foreach (ref readonly Entry e in old.AsSpan())
+        for (int j = 0; j < old.Length; j++)
         {
-            if (e.Used)
+            if ((oldUsed[j >> 6] & (1UL << j)) != 0)
             {
+                ref readonly Entry e = ref old[j];
                 int i = FreeSlot(e.Low, e.High);
                 _entries[i] = e;
                 Mark(i);
             }
         }
     }
+
+    private bool IsUsed(int slot) => (_used[slot >> 6] & (1UL << slot)) != 0;
 
     private void Mark(int slot) => _used[slot >> 6] |= 1UL << slot;
 
@@ -242,7 +249,6 @@ internal sealed class ContactCache
 
     private struct Entry
     {
-        public bool Used;
         public int Low;
         public int High;
         public bool LowFirst;

@@ -3,20 +3,23 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// <summary>
 /// The contact cache against a plain dictionary of the same touches: random answers over a few
 /// bodies (so that many pairs share a probe run of the open-addressing table and it wraps and
-/// grows), random step ends: the same pairs touch, the same ones end at each step's end (each
+/// grows, or reserved far larger than the touches), random step ends: the same pairs touch, the same ones end at each step's end (each
 /// once, in the order of the answer that began the touch), the same ones are pressing.
 /// </summary>
 public sealed class ContactCacheTests
 {
     [Theory]
-    [InlineData(1)]
-    [InlineData(2)]
-    [InlineData(3)]
-    [InlineData(4)]
-    public void TouchesBeginPressAndEndAsAPlainDictionarySays(int seed)
+    [InlineData(1, 0)]
+    [InlineData(2, 0)]
+    [InlineData(3, 0)]
+    [InlineData(4, 0)]
+    [InlineData(5, 3000)] // a table reserved far larger than the touches (as a crowd's is): mostly empty words of the used-slot bitmap
+    [InlineData(6, 100)]
+    public void TouchesBeginPressAndEndAsAPlainDictionarySays(int seed, int reserve)
     {
         var random = new Random(seed);
         var cache = new ContactCache();
+        cache.Reserve(reserve);
         var model = new Dictionary<(int, int), (long Step, double Time)>();
         var began = new Dictionary<(int, int), (int, int)>();
         long step = 0;
