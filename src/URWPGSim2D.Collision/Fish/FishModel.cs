@@ -42,7 +42,7 @@ public sealed partial class FishModel
             throw new ArgumentException($"must be a validated fish size, got default ({size})", nameof(size));
         }
 
-        _template = new FishTemplate(size);
+        _template = FishTemplates.Shared.For(size);
         _shape = new FishShapeCircles(_template);
         SetPose(pose);
     }
