@@ -475,10 +475,13 @@ public sealed partial class MotionWorld
 
     private Body Get(BodyId body) => Existing(body, nameof(body));
 
+    // Ids are made only by Add, numbered in the order the bodies were added: an id of this motion
+    // world since its last Clear names the body at its index, so the body itself need not be read
+    // to check it (a pass over many bodies then reads only what it needs of each).
     private Body Existing(BodyId id, string name)
     {
         int index = id.Index;
-        if ((uint)index >= (uint)_bodies.Count || _bodies[index].Handle != id)
+        if (id.World != _world || id.Generation != _generation || (uint)index >= (uint)_bodies.Count)
         {
             throw new ArgumentException(
                 id.IsNull ? "default(BodyId) names no body: use an id an Add method returned"
