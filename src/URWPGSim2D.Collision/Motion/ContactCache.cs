@@ -17,7 +17,7 @@ internal sealed class ContactCache
     private const int SmallestSize = 64;
 
     private Entry[] _entries = new Entry[SmallestSize];
-    private ulong[] _used = new ulong[SmallestSize / 64]; // one bit a slot: the slot holds an entry
+    private ulong[] _used = new ulong[SmallestSize / 64]; // one bit a slot: the slot holds an entry (a slot without it is never read)
     private int _mask = SmallestSize - 1;
 
     /// <summary>Steps begun since the motion world was made (a touch's time is this plus the time within the step).</summary>
@@ -39,7 +39,6 @@ internal sealed class ContactCache
     /// <summary>Forgets every touch (the bodies were removed); ends no touch.</summary>
     public void Clear()
     {
-        Array.Clear(_entries);
         Array.Clear(_used);
         Count = 0;
     }
@@ -185,7 +184,6 @@ internal sealed class ContactCache
             }
         }
 
-        _entries[hole] = default;
         _used[hole >> 6] &= ~(1UL << hole);
         Count--;
     }
@@ -199,7 +197,7 @@ internal sealed class ContactCache
         _mask = size - 1;
         for (int j = 0; j < old.Length; j++)
         {
-            if ((oldUsed[j >> 6] & (1UL << j)) != 0)
+            if (IsUsed(oldUsed, j))
             {
                 ref readonly Entry e = ref old[j];
                 int i = FreeSlot(e.Low, e.High);
@@ -209,7 +207,9 @@ internal sealed class ContactCache
         }
     }
 
-    private bool IsUsed(int slot) => (_used[slot >> 6] & (1UL << slot)) != 0;
+    private bool IsUsed(int slot) => IsUsed(_used, slot);
+
+    private static bool IsUsed(ulong[] used, int slot) => (used[slot >> 6] & (1UL << slot)) != 0;
 
     private void Mark(int slot) => _used[slot >> 6] |= 1UL << slot;
 
