@@ -23,6 +23,7 @@ internal sealed class Body
     private static readonly PolygonPart NoPolygon = new([], [], 0f);
 
     private readonly FishBounds? _fish;
+    private readonly JointTurn? _turn;
     private readonly PolygonPart _polygon = NoPolygon;
     private StaticPart _static = NoStatic;
     private bool _frameValid;
@@ -56,6 +57,7 @@ internal sealed class Body
         Circle group = model.BodyGroup;
         var (sin, cos) = MathF.SinCos(pose.Heading);
         Vector2 offset = group.Center - pose.Position;
+        _turn = new JointTurn();
         _fish = new FishBounds
         {
             BodyGroupLocal = new Vector2((offset.X * cos) + (offset.Y * sin), (-offset.X * sin) + (offset.Y * cos)),
@@ -130,7 +132,7 @@ internal sealed class Body
     /// <summary>Heading now, rad, wrapped to [−π, π).</summary>
     public float Heading;
 
-    /// <summary>A fish's joint angles, rad (fixed within a step).</summary>
+    /// <summary>A fish's joint angles now, rad (fixed within a step unless they turn over it: <see cref="AimJoints"/>).</summary>
     public float Joint1, Joint2, Joint3;
 
     /// <summary>The velocity the body moves with, mm/s: its own plus its drift (<see cref="SetMotion"/>).</summary>
@@ -294,6 +296,11 @@ internal sealed class Body
     /// </summary>
     public void StartStep()
     {
+        if (_turn is { Pending: true } turn)
+        {
+            StartJointTurn(turn);
+        }
+
         Rebase(0.0);
         KeepStepStart();
         Events = 0;
@@ -301,6 +308,45 @@ internal sealed class Body
         LastEventTime = -1.0;
         Rejected = false;
         Corrections = 0;
+    }
+
+    /// <summary>A fish's joints turn to these angles over the next step (from its joints when the step starts).</summary>
+    public void AimJoints(float joint1, float joint2, float joint3)
+    {
+        JointTurn turn = _turn!;
+        turn.To = new Vector3(joint1, joint2, joint3);
+        turn.Pending = true;
+    }
+
+    /// <summary>A fish's joints hold their angles from now on: a turn set for the next step, or running in this one, stops.</summary>
+    public void HoldJoints()
+    {
+        if (_turn is { } turn)
+        {
+            turn.Pending = false;
+            turn.Active = false;
+        }
+    }
+
+    /// <summary>Whether a fish's joints are set to turn over the next step (tests).</summary>
+    public bool JointsAimed => _turn is { Pending: true };
+
+    /// <summary>Most a point of the body moves over a whole step by its joints' turning, mm (0 while they hold).</summary>
+    public float JointSwing => _turn is { Active: true } turn ? turn.Swing : 0f;
+
+    /// <summary>
+    /// The most a point of a fish of <paramref name="size"/> moves while its joints turn by the
+    /// given angles, mm: each joint angle is the direction of its own segment in the body frame, so
+    /// turning joint k turns its segment about the segment's start (a point of segment 1 lies
+    /// within L1 + h1 of it, of segment 2 within L2 + h2, of segment 3 and the caudal fin within
+    /// 2·L3 + 50 mm) and carries the later segments along by at most as much; the turns add up.
+    /// </summary>
+    public static float Swing(FishSize size, Vector3 turned)
+    {
+        Vector3 t = Vector3.Abs(turned);
+        return (t.X * size.Joint1 * (1f + TailStartHalfWidth1))
+            + (t.Y * size.Joint2 * (1f + TailStartHalfWidth2))
+            + (t.Z * ((2f * size.Joint3) + CaudalReach));
     }
 
     /// <summary>The start pose becomes where this step begins from (see <see cref="StepStartPosition"/>).</summary>
@@ -321,6 +367,11 @@ internal sealed class Body
     /// <summary>Places the body at step time <paramref name="time"/> along its motion (a step lasting <paramref name="seconds"/>).</summary>
     public void MoveTo(double time, float seconds)
     {
+        if (_turn is { Active: true } turn)
+        {
+            TurnJointsTo(turn, time);
+        }
+
         float span = (float)((time - BaseTime) * seconds);
         Vector2 position = BasePosition + (Velocity * span);
         float heading = Kind == BodyKind.Circle ? Heading : Angle.Wrap(BaseHeading + (AngularVelocity * span));
@@ -332,6 +383,39 @@ internal sealed class Body
         Position = position;
         Heading = heading;
         Invalidate();
+    }
+
+    /// <summary>The step ends: joints that turned over it hold where they are (their targets, unless the move was rejected).</summary>
+    public void EndJointTurn()
+    {
+        if (_turn is { } turn)
+        {
+            turn.Active = false;
+        }
+    }
+
+    // The joints of a turning fish at a step time: linear in time from the step's start, exactly
+    // the targets at its end. A change of angles is a change of shape (no remembered test reused).
+    private void TurnJointsTo(JointTurn turn, double time)
+    {
+        Vector3 joints = time >= 1.0 ? turn.To : turn.From + ((turn.To - turn.From) * (float)Math.Max(time, 0.0));
+        if (joints.X == Joint1 && joints.Y == Joint2 && joints.Z == Joint3)
+        {
+            return;
+        }
+
+        (Joint1, Joint2, Joint3) = (joints.X, joints.Y, joints.Z);
+        ShapeStamp++;
+        Invalidate();
+    }
+
+    // A pending turn starts with the step, from the joints the fish has now.
+    private void StartJointTurn(JointTurn turn)
+    {
+        turn.Pending = false;
+        turn.From = new Vector3(Joint1, Joint2, Joint3);
+        turn.Active = turn.To != turn.From;
+        turn.Swing = turn.Active ? Swing(Model!.Size, turn.To - turn.From) : 0f;
     }
 
     /// <summary>Commits the current pose as the body's state at <paramref name="time"/>.</summary>
@@ -631,6 +715,17 @@ internal sealed class Body
         public Vector3 TailJoints;
         public Vector2 TailLocal;
         public float TailRadius;
+    }
+
+    // A fish's joints turning over a step: set between steps (pending), running in the step
+    // (active) from the angles it started with to the targets, with the most a point moves by it.
+    private sealed class JointTurn
+    {
+        public Vector3 From;
+        public Vector3 To;
+        public float Swing;
+        public bool Pending;
+        public bool Active;
     }
 
     // A static body's shape, bounding circle and bounds (the walls: their pool and its bounds).

@@ -187,7 +187,35 @@ public sealed partial class MotionWorld
         }
     }
 
-    /// <summary>Sets a fish's joint angles (they hold for the rest of the step).</summary>
+    /// <summary>
+    /// Sets the angles a fish's joints turn to over the next step: through it they turn linearly
+    /// in time from their angles at its start and reach these at its end. The tail is swept like
+    /// any motion (its sampling and swept bounds cover the turn), so a contact of the turning tail
+    /// is found at its time of first contact instead of as an overlap at the start of the step, as
+    /// after <see cref="SetJoints"/>. Until the step the fish keeps its joints (<see cref="FishPoseOf"/>
+    /// shows them); a later call replaces the targets; <see cref="SetJoints"/>, or a rejected
+    /// move (back to the joints the step began with), stops the turn.
+    /// </summary>
+    /// <param name="fish">The fish's id.</param>
+    /// <param name="joint1">Joint 1 at the end of the next step, rad.</param>
+    /// <param name="joint2">Joint 2 at the end of the next step, rad.</param>
+    /// <param name="joint3">Joint 3 at the end of the next step, rad.</param>
+    /// <exception cref="ArgumentException">The body is not a fish, an angle is not finite, or a step is running.</exception>
+    public void SetJointTargets(BodyId fish, float joint1, float joint2, float joint3)
+    {
+        Body b = Moving(fish, BodyKind.Fish, nameof(fish));
+        Finite(joint1, nameof(joint1));
+        Finite(joint2, nameof(joint2));
+        Finite(joint3, nameof(joint3));
+        if (_stepping)
+        {
+            throw new ArgumentException($"{fish}: joint targets can be set only between steps", nameof(fish));
+        }
+
+        b.AimJoints(joint1, joint2, joint3);
+    }
+
+    /// <summary>Sets a fish's joint angles now (they hold for the rest of the step; a turn set by <see cref="SetJointTargets"/> stops).</summary>
     /// <param name="fish">The fish's id.</param>
     /// <param name="joint1">Joint 1, rad.</param>
     /// <param name="joint2">Joint 2, rad.</param>
@@ -200,6 +228,7 @@ public sealed partial class MotionWorld
         Finite(joint2, nameof(joint2));
         Finite(joint3, nameof(joint3));
         Touch(b);
+        b.HoldJoints();
         b.Joint1 = joint1;
         b.Joint2 = joint2;
         b.Joint3 = joint3;

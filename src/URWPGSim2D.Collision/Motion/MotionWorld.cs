@@ -440,6 +440,7 @@ public sealed partial class MotionWorld
         Time = 0.0;
         foreach (Body body in _schedule.Planner.MoverBodies)
         {
+            body.EndJointTurn();
             body.Rebase(0.0);
             Remember(body);
         }

@@ -185,8 +185,11 @@ internal sealed class SweepPlanner
         }
         else
         {
-            float reach = Vector2.Distance(bound.Center, body.Position) + bound.Radius;
-            sweep.Spin = MathF.Abs(body.AngularVelocity) * reach * dt;
+            // A fish whose joints turn over the step: its tail moves by their swing too, and reaches
+            // no farther than it does now plus that swing.
+            float swing = body.JointSwing;
+            float reach = Vector2.Distance(bound.Center, body.Position) + bound.Radius + swing;
+            sweep.Spin = (MathF.Abs(body.AngularVelocity) * reach * dt) + swing;
         }
 
         sweep.Rate = (sweep.Velocity.Length() * dt) + sweep.Spin;

@@ -180,6 +180,16 @@ public sealed class FishState
         }
     }
 
+    /// <summary>Sets the angles the joints turn to over the next cycle, swept like any motion (<see cref="MotionWorld.SetJointTargets"/>); nothing when they are those already.</summary>
+    internal void TurnJoints(float joint1, float joint2, float joint3)
+    {
+        FishPose pose = Pose;
+        if (pose.Joint1 != joint1 || pose.Joint2 != joint2 || pose.Joint3 != joint3)
+        {
+            _motion.SetJointTargets(Handle, joint1, joint2, joint3);
+        }
+    }
+
     /// <summary>Back to the state a fish made at <paramref name="position"/> and <paramref name="heading"/> has: joints straight, at rest, in play, no decision yet.</summary>
     internal void Restart(Vector2 position, float heading, float tailPhase)
     {

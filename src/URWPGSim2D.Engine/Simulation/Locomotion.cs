@@ -34,10 +34,18 @@ internal static class Locomotion
                 f.Turn.Value = 0f;
             }
 
-            f.SetJoints(
-                TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase),
-                TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase),
-                TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase));
+            float joint1 = TailWave.JointAngle(0, d.VCode, d.TCode, endTime, f.TailPhase);
+            float joint2 = TailWave.JointAngle(1, d.VCode, d.TCode, endTime, f.TailPhase);
+            float joint3 = TailWave.JointAngle(2, d.VCode, d.TCode, endTime, f.TailPhase);
+            if (world.TailSweeps)
+            {
+                f.TurnJoints(joint1, joint2, joint3);
+            }
+            else
+            {
+                f.SetJoints(joint1, joint2, joint3);
+            }
+
             Vector2 drift = Vector2.Zero;
             float angularDrift = 0f;
             if (noise is not null)

@@ -46,6 +46,13 @@ public sealed class World
     /// <summary>The motion world: every body's pose, joints, shape and in-cycle motion.</summary>
     public MotionWorld Motion { get; }
 
+    /// <summary>
+    /// Whether a fish's tail turns to the cycle's wave pose over the cycle, swept like any motion
+    /// (<see cref="MotionWorld.SetJointTargets"/>), instead of taking it at the cycle's start (false:
+    /// the pinned traces' model, until the contact model that comes with it is complete).
+    /// </summary>
+    internal bool TailSweeps { get; set; }
+
     /// <summary>The walls' handle in the motion world.</summary>
     public BodyId WallsHandle { get; }
 
