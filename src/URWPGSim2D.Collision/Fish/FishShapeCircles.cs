@@ -3,8 +3,8 @@ namespace URWPGSim2D.Collision.Fish;
 /// <summary>
 /// The tail group and root circles of a fish in its body frame (origin P, axis along the
 /// heading). The fish's shape in that frame depends on the three joint angles only, so the
-/// circles are recomputed only when a joint changes — within a simulation cycle the joints stay
-/// put while position and heading move through sub-steps and contact searches — and the model
+/// circles are recomputed only when a joint changes — within a step the joints stay put unless they turn over it
+/// while position and heading move through sub-steps and contact searches — and the model
 /// moves them rigidly to each pose, as it moves the body group circle.
 /// </summary>
 /// <remarks>

@@ -23,7 +23,6 @@ internal sealed class Body
     private static readonly PolygonPart NoPolygon = new([], [], 0f);
 
     private readonly FishBounds? _fish;
-    private readonly JointTurn? _turn;
     private readonly PolygonPart _polygon = NoPolygon;
     private StaticPart _static = NoStatic;
     private bool _frameValid;
@@ -57,7 +56,6 @@ internal sealed class Body
         Circle group = model.BodyGroup;
         var (sin, cos) = MathF.SinCos(pose.Heading);
         Vector2 offset = group.Center - pose.Position;
-        _turn = new JointTurn();
         _fish = new FishBounds
         {
             BodyGroupLocal = new Vector2((offset.X * cos) + (offset.Y * sin), (-offset.X * sin) + (offset.Y * cos)),
@@ -296,7 +294,7 @@ internal sealed class Body
     /// </summary>
     public void StartStep()
     {
-        if (_turn is { Pending: true } turn)
+        if (_fish is { TurnPending: true } turn)
         {
             StartJointTurn(turn);
         }
@@ -313,26 +311,26 @@ internal sealed class Body
     /// <summary>A fish's joints turn to these angles over the next step (from its joints when the step starts).</summary>
     public void AimJoints(float joint1, float joint2, float joint3)
     {
-        JointTurn turn = _turn!;
-        turn.To = new Vector3(joint1, joint2, joint3);
-        turn.Pending = true;
+        FishBounds turn = _fish!;
+        turn.TurnTo = new Vector3(joint1, joint2, joint3);
+        turn.TurnPending = true;
     }
 
     /// <summary>A fish's joints hold their angles from now on: a turn set for the next step, or running in this one, stops.</summary>
     public void HoldJoints()
     {
-        if (_turn is { } turn)
+        if (_fish is { } turn)
         {
-            turn.Pending = false;
-            turn.Active = false;
+            turn.TurnPending = false;
+            turn.TurnActive = false;
         }
     }
 
     /// <summary>Whether a fish's joints are set to turn over the next step (tests).</summary>
-    public bool JointsAimed => _turn is { Pending: true };
+    public bool JointsAimed => _fish is { TurnPending: true };
 
     /// <summary>Most a point of the body moves over a whole step by its joints' turning, mm (0 while they hold).</summary>
-    public float JointSwing => _turn is { Active: true } turn ? turn.Swing : 0f;
+    public float JointSwing => _fish is { TurnActive: true } turn ? turn.Swing : 0f;
 
     /// <summary>
     /// The most a point of a fish of <paramref name="size"/> moves while its joints turn by the
@@ -367,7 +365,7 @@ internal sealed class Body
     /// <summary>Places the body at step time <paramref name="time"/> along its motion (a step lasting <paramref name="seconds"/>).</summary>
     public void MoveTo(double time, float seconds)
     {
-        if (_turn is { Active: true } turn)
+        if (_fish is { TurnActive: true } turn)
         {
             TurnJointsTo(turn, time);
         }
@@ -385,20 +383,20 @@ internal sealed class Body
         Invalidate();
     }
 
-    /// <summary>The step ends: joints that turned over it hold where they are (their targets, unless the move was rejected).</summary>
+    /// <summary>The step ends, or the body's move is rejected: a turn running in the step stops, the joints hold where they are (a turn set for the next step stays set).</summary>
     public void EndJointTurn()
     {
-        if (_turn is { } turn)
+        if (_fish is { } turn)
         {
-            turn.Active = false;
+            turn.TurnActive = false;
         }
     }
 
     // The joints of a turning fish at a step time: linear in time from the step's start, exactly
     // the targets at its end. A change of angles is a change of shape (no remembered test reused).
-    private void TurnJointsTo(JointTurn turn, double time)
+    private void TurnJointsTo(FishBounds turn, double time)
     {
-        Vector3 joints = time >= 1.0 ? turn.To : turn.From + ((turn.To - turn.From) * (float)Math.Max(time, 0.0));
+        Vector3 joints = time >= 1.0 ? turn.TurnTo : turn.TurnFrom + ((turn.TurnTo - turn.TurnFrom) * (float)Math.Max(time, 0.0));
         if (joints.X == Joint1 && joints.Y == Joint2 && joints.Z == Joint3)
         {
             return;
@@ -410,12 +408,12 @@ internal sealed class Body
     }
 
     // A pending turn starts with the step, from the joints the fish has now.
-    private void StartJointTurn(JointTurn turn)
+    private void StartJointTurn(FishBounds turn)
     {
-        turn.Pending = false;
-        turn.From = new Vector3(Joint1, Joint2, Joint3);
-        turn.Active = turn.To != turn.From;
-        turn.Swing = turn.Active ? Swing(Model!.Size, turn.To - turn.From) : 0f;
+        turn.TurnPending = false;
+        turn.TurnFrom = new Vector3(Joint1, Joint2, Joint3);
+        turn.TurnActive = turn.TurnTo != turn.TurnFrom;
+        turn.Swing = turn.TurnActive ? Swing(Model!.Size, turn.TurnTo - turn.TurnFrom) : 0f;
     }
 
     /// <summary>Commits the current pose as the body's state at <paramref name="time"/>.</summary>
@@ -704,9 +702,16 @@ internal sealed class Body
 
     // A fish's bounds that follow from its pose, kept apart from the body so that a ball's or a
     // polygon's state stays small: what the body group is in the body frame, and the last frame,
-    // group circles and tail circle computed (valid while the body's flags say so).
+    // group circles and tail circle computed (valid while the body's flags say so); and its joints'
+    // turn over a step: set between steps (pending), running in the step (active) from the angles
+    // it started with to the targets, with the most a point moves by it.
     private sealed class FishBounds
     {
+        public Vector3 TurnFrom;
+        public Vector3 TurnTo;
+        public float Swing;
+        public bool TurnPending;
+        public bool TurnActive;
         public Vector2 BodyGroupLocal;
         public float BodyGroupRadius;
         public RigidFrame Frame;
@@ -715,17 +720,6 @@ internal sealed class Body
         public Vector3 TailJoints;
         public Vector2 TailLocal;
         public float TailRadius;
-    }
-
-    // A fish's joints turning over a step: set between steps (pending), running in the step
-    // (active) from the angles it started with to the targets, with the most a point moves by it.
-    private sealed class JointTurn
-    {
-        public Vector3 From;
-        public Vector3 To;
-        public float Swing;
-        public bool Pending;
-        public bool Active;
     }
 
     // A static body's shape, bounding circle and bounds (the walls: their pool and its bounds).

@@ -9,7 +9,7 @@ public enum BodyKind : byte
     /// <summary>A moving convex polygon, given about its own origin: translates and turns about that origin.</summary>
     Polygon,
 
-    /// <summary>A moving fish: translates and turns about its body centre; its joints keep their angles within a step.</summary>
+    /// <summary>A moving fish: translates and turns about its body centre; its joints keep their angles within a step unless set to turn over it (<see cref="MotionWorld.SetJointTargets"/>).</summary>
     Fish,
 
     /// <summary>A static shape (circle, box, 8-DOP, polygon or segment) that never moves.</summary>

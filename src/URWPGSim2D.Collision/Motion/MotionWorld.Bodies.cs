@@ -50,7 +50,7 @@ public sealed partial class MotionWorld
         return Add(Body.Polygon(_bodies.Count, shape, position, heading));
     }
 
-    /// <summary>Adds a moving fish; it turns about its body centre and its joints keep their angles within a step.</summary>
+    /// <summary>Adds a moving fish; it turns about its body centre and its joints keep their angles within a step unless set to turn over it (<see cref="SetJointTargets"/>).</summary>
     /// <param name="size">The fish's dimensions.</param>
     /// <param name="pose">Its position, heading and joint angles.</param>
     /// <returns>The body's id.</returns>
@@ -193,8 +193,10 @@ public sealed partial class MotionWorld
     /// any motion (its sampling and swept bounds cover the turn), so a contact of the turning tail
     /// is found at its time of first contact instead of as an overlap at the start of the step, as
     /// after <see cref="SetJoints"/>. Until the step the fish keeps its joints (<see cref="FishPoseOf"/>
-    /// shows them); a later call replaces the targets; <see cref="SetJoints"/>, or a rejected
-    /// move (back to the joints the step began with), stops the turn.
+    /// shows them); a later call replaces the targets. A turn lasts one step; <see cref="SetJoints"/>
+    /// stops it, and so does a move rejected in the step (the fish goes back to where it began the
+    /// step, see <see cref="RejectMove"/>); a move that <see cref="Settle"/> rejects before the step
+    /// leaves the targets set.
     /// </summary>
     /// <param name="fish">The fish's id.</param>
     /// <param name="joint1">Joint 1 at the end of the next step, rad.</param>

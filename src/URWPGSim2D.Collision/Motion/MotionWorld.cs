@@ -5,7 +5,7 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// Pseudo-continuous collision detection over a world of bodies for one step of time: every
 /// moving body moves linearly from its state at the start of the step (translation and turning;
-/// a fish's joints keep their angles), and every contact is reported, in time order, at its time
+/// a fish's joints keep their angles unless set to turn over the step, <see cref="SetJointTargets"/>), and every contact is reported, in time order, at its time
 /// of first contact through an <see cref="IContactHandler"/> that applies the caller's response.
 /// Nothing is missed and nothing tunnels: each candidate pair (found by the broad phase, a
 /// uniform grid by default) is sampled on its own clock, often enough that neither

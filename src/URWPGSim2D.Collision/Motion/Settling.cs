@@ -297,7 +297,7 @@ internal sealed class Settling
         }
 
         body.Stop();
-        body.HoldJoints();
+        body.EndJointTurn();
         body.Invalidate();
         body.Rebase(_world.Time);
         _world.ReportRejected(body.Handle);

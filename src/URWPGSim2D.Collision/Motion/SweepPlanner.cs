@@ -5,7 +5,8 @@ namespace URWPGSim2D.Collision.Motion;
 /// <summary>
 /// Finds the candidate pairs for the rest of a step. Every mover gets a travel from the time it
 /// is planned to the end of the step: the most any of its points moves over a whole step (|v|·dt,
-/// plus |ω|·dt times the reach of its farthest point for a turning body), and a swept circle: its
+/// plus |ω|·dt times the reach of its farthest point for a turning body, plus a fish's joints'
+/// swing when they turn over the step), and a swept circle: its
 /// bounding circle grown by that travel. The broad phase holds the swept circles' boxes and the
 /// static bodies' boxes; a pair it reports is a candidate when the swept circles (+1 mm), or the
 /// swept circle and the static box, meet. A mover is also paired with the walls when its swept

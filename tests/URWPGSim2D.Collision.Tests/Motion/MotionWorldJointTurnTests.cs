@@ -147,14 +147,194 @@ public sealed class MotionWorldJointTurnTests
         Assert.Equal(expected.X, seen.Joints.X, 1e-6f);
         Assert.Equal(expected.Y, seen.Joints.Y, 1e-6f);
         Assert.Equal(expected.Z, seen.Joints.Z, 1e-6f);
+        Assert.Equal(1, world.Events);
 
         FishPose after = world.FishPoseOf(fish);
         Assert.Equal(to, new Vector3(after.Joint1, after.Joint2, after.Joint3));
 
-        // The turn was for one step: the next one holds the joints.
-        world.Step(0.1f, new RecordingHandler());
+        // The turn was for one step: through the next one the joints hold their targets (seen
+        // at another contact in the middle of that step, and at its end).
+        world.SetPose(ball, new Vector2(400f, 0f), 0f);
+        world.SetVelocity(ball, new Vector2(-4000f, 0f));
+        var next = new JointsAtContact(fish);
+        world.Step(0.1f, next);
+        Assert.True(next.Time is > 0.0 and < 1.0, $"contact at {next.Time}");
+        Assert.Equal(to, next.Joints);
         FishPose held = world.FishPoseOf(fish);
         Assert.Equal(to, new Vector3(held.Joint1, held.Joint2, held.Joint3));
+    }
+
+    [Fact]
+    public void AFishTurningWhileItsTailBeatsMeetsAPostWhenABruteForceScanDoes()
+    {
+        // The fish turns fast about its centre while its tail swings the other way: the tail's
+        // path is the sum of both. Random posts near the tail; the first contact against a scan of
+        // 4,000 poses of the combined motion (and no contact where the scan finds none).
+        var random = new Random(17);
+        int met = 0;
+        for (int i = 0; i < 200; i++)
+        {
+            float omega = (float)((random.NextDouble() * 16.0) - 8.0);
+            var from = new Vector3(0.3f, 0.3f, 0.5f) * MathF.Sign(omega);
+            Vector3 to = -from;
+            float angle = (float)(Math.PI + ((random.NextDouble() - 0.5) * 1.6));
+            float distance = 230f + (float)(random.NextDouble() * 120.0);
+            var post = new Circle(new Vector2(MathF.Cos(angle), MathF.Sin(angle)) * distance, 3f + (float)(random.NextDouble() * 6.0));
+            var start = new FishPose(Vector2.Zero, 0f, from.X, from.Y, from.Z);
+            if (Overlaps(start, from, post))
+            {
+                continue;
+            }
+
+            var world = new MotionWorld();
+            BodyId fish = world.AddFish(FishSize.Default, start);
+            world.AddStatic(post);
+            world.SetVelocity(fish, Vector2.Zero, omega);
+            world.SetJointTargets(fish, to.X, to.Y, to.Z);
+            var handler = new RecordingHandler();
+            world.Step(0.1f, handler);
+
+            const int Scan = 4000;
+            int k = 0;
+            while (k <= Scan && !Overlaps(new FishPose(Vector2.Zero, omega * 0.1f * k / Scan, 0f, 0f, 0f), Vector3.Lerp(from, to, k / (float)Scan), post))
+            {
+                k++;
+            }
+
+            try
+            {
+                if (k > Scan)
+                {
+                    Assert.Empty(handler.Contacts);
+                    continue;
+                }
+
+                // Met no earlier than the scan finds them overlapping, shallow (a grazing contact is
+                // answered where a sample finds it no deeper than the tolerance), and before the
+                // pair can move more than its sampling limit past the first contact.
+                met++;
+                Assert.NotEmpty(handler.Contacts);
+                Contact first = handler.Contacts[0];
+                double scanned = k / (double)Scan;
+                float travel = Body.Swing(FishSize.Default, to - from) + (MathF.Abs(omega) * 0.1f * 350f);
+                float limit = 0.5f * ((2f * 0.089964f * FishSize.Default.Joint3) + (2f * post.Radius));
+                Assert.InRange(first.Time, scanned - (1.0 / Scan), scanned + (limit / travel) + (1.0 / Scan));
+                Assert.InRange(first.Depth, MotionTolerances.ContactSlop, MotionTolerances.TimeOfImpactTolerance + 0.05f);
+            }
+            catch (XunitException e)
+            {
+                throw RandomCaseException.At(17, i, e);
+            }
+        }
+
+        Assert.True(met > 30, $"only {met} posts met");
+    }
+
+    [Fact]
+    public void TheSweptCircleHoldsEveryLeafOfATurningFishWithABeatingTailThroughTheStep()
+    {
+        // Brute force: 64 poses of the step, every leaf vertex inside the swept circle the step planned.
+        var random = new Random(29);
+        float tightest = 0f;
+        for (int i = 0; i < 200; i++)
+        {
+            var world = new MotionWorld();
+            Vector3 from = RandomJoints(random), to = RandomJoints(random);
+            float heading = (float)(random.NextDouble() * 6.0);
+            var velocity = new Vector2((float)(random.NextDouble() * 600.0) - 300f, (float)(random.NextDouble() * 600.0) - 300f);
+            float omega = (float)((random.NextDouble() * 24.0) - 12.0);
+            BodyId fish = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, heading, from.X, from.Y, from.Z));
+            world.SetVelocity(fish, velocity, omega);
+            world.SetJointTargets(fish, to.X, to.Y, to.Z);
+            world.Step(0.1f, new RecordingHandler());
+            Disc swept = world.SweptCircleOf(fish);
+            for (int k = 0; k <= 64; k++)
+            {
+                float t = k / 64f;
+                var pose = new FishPose(velocity * 0.1f * t, heading + (omega * 0.1f * t), 0f, 0f, 0f);
+                foreach (FishPart part in Parts)
+                {
+                    foreach (Vector2 v in Leaf(FishSize.Default, pose.Position, pose.Heading, Vector3.Lerp(from, to, t), part))
+                    {
+                        float reach = Vector2.Distance(v, swept.Center);
+                        tightest = MathF.Max(tightest, reach / swept.Radius);
+                        Assert.True(reach <= swept.Radius + 1e-3f, $"case {i}: a vertex of {part} at time {t} lies {reach} mm from the swept circle's centre, radius {swept.Radius}");
+                    }
+                }
+            }
+        }
+
+        Assert.True(tightest > 0.7f, $"the swept circle is {1f / tightest:F2} times the farthest vertex's distance at best");
+    }
+
+    [Fact]
+    public void TurningFishGiveTheSameContactsOnOneAndOnTwoThreads()
+    {
+        static List<Contact> Run(int threads)
+        {
+            var world = new MotionWorld { Threads = threads, MinimumMoversForThreads = 1 };
+            world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+            var random = new Random(23);
+            var fish = new List<BodyId>();
+            for (int i = 0; i < 24; i++)
+            {
+                var at = new Vector2((i % 6 * 450f) - 1150f, (i / 6 * 420f) - 650f);
+                BodyId f = world.AddFish(FishSize.Default, new FishPose(at, (float)(random.NextDouble() * 6.0), 0f, 0f, 0f));
+                world.SetVelocity(f, new Vector2((float)(random.NextDouble() * 600.0) - 300f, (float)(random.NextDouble() * 600.0) - 300f), (float)(random.NextDouble() * 4.0) - 2f);
+                fish.Add(f);
+                BodyId ball = world.AddCircle(30f, at + new Vector2(200f, 190f));
+                world.SetVelocity(ball, new Vector2((float)(random.NextDouble() * 2000.0) - 1000f, (float)(random.NextDouble() * 2000.0) - 1000f));
+            }
+
+            var handler = new RecordingHandler(0.3f);
+            int chunks = 0;
+            for (int step = 0; step < 30; step++)
+            {
+                float phase = step * 0.9f;
+                foreach (BodyId f in fish)
+                {
+                    world.SetJointTargets(f, 0.4f * MathF.Sin(phase), 0.5f * MathF.Sin(phase + 1f), 0.6f * MathF.Sin(phase + 2f));
+                }
+
+                world.Step(0.1f, handler);
+                chunks = Math.Max(chunks, world.Chunks);
+            }
+
+            Assert.Equal(threads, chunks);
+            return handler.Contacts;
+        }
+
+        List<Contact> one = Run(1), two = Run(2);
+        Assert.True(one.Count > 50, $"only {one.Count} contacts");
+        Assert.Equal(one.Count, two.Count);
+        for (int i = 0; i < one.Count; i++)
+        {
+            Assert.Equal(one[i].Time, two[i].Time);
+            Assert.Equal(one[i].Result, two[i].Result);
+            Assert.Equal(one[i].BodyA.Index, two[i].BodyA.Index);
+            Assert.Equal(one[i].BodyB.Index, two[i].BodyB.Index);
+        }
+    }
+
+    [Fact]
+    public void TargetsStaySetWhenSettleRejectsAMoveBeforeTheStep()
+    {
+        var world = new MotionWorld();
+        BodyId fish = world.AddFish(FishSize.Default, new FishPose(Vector2.Zero, 0f, 0f, 0f, 0f));
+        BodyId ball = world.AddCircle(30f, new Vector2(600f, 0f));
+        world.Step(0.1f, new RecordingHandler());
+
+        // Placed inside the ball between steps, then targets; Settle rejects the move.
+        world.SetPose(fish, new Vector2(520f, 0f), 0f);
+        world.SetJointTargets(fish, 0.3f, 0.3f, 0.3f);
+        var rejecting = new RejectOnFirstContact();
+        world.Settle(rejecting);
+        Assert.Equal([fish], rejecting.Rejected);
+
+        world.Step(0.1f, new RecordingHandler());
+        FishPose pose = world.FishPoseOf(fish);
+        Assert.Equal(new Vector3(0.3f, 0.3f, 0.3f), new Vector3(pose.Joint1, pose.Joint2, pose.Joint3));
+        Assert.Equal(new Vector2(600f, 0f), world.PositionOf(ball));
     }
 
     [Fact]
