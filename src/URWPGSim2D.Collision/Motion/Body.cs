@@ -326,9 +326,6 @@ internal sealed class Body
         }
     }
 
-    /// <summary>Whether a fish's joints are set to turn over the next step (tests).</summary>
-    public bool JointsAimed => _fish is { TurnPending: true };
-
     /// <summary>Most a point of the body moves over a whole step by its joints' turning, mm (0 while they hold).</summary>
     public float JointSwing => _fish is { TurnActive: true } turn ? turn.Swing : 0f;
 

@@ -173,8 +173,7 @@ public sealed class FishState
     /// <summary>Sets the joint angles for the cycle (the body's shape changes only when they differ).</summary>
     public void SetJoints(float joint1, float joint2, float joint3)
     {
-        FishPose pose = Pose;
-        if (pose.Joint1 != joint1 || pose.Joint2 != joint2 || pose.Joint3 != joint3)
+        if (!HasJoints(joint1, joint2, joint3))
         {
             _motion.SetJoints(Handle, joint1, joint2, joint3);
         }
@@ -183,11 +182,17 @@ public sealed class FishState
     /// <summary>Sets the angles the joints turn to over the next cycle, swept like any motion (<see cref="MotionWorld.SetJointTargets"/>); nothing when they are those already.</summary>
     internal void TurnJoints(float joint1, float joint2, float joint3)
     {
-        FishPose pose = Pose;
-        if (pose.Joint1 != joint1 || pose.Joint2 != joint2 || pose.Joint3 != joint3)
+        if (!HasJoints(joint1, joint2, joint3))
         {
             _motion.SetJointTargets(Handle, joint1, joint2, joint3);
         }
+    }
+
+    // Whether the joints have these angles now, bit for bit.
+    private bool HasJoints(float joint1, float joint2, float joint3)
+    {
+        FishPose pose = Pose;
+        return pose.Joint1 == joint1 && pose.Joint2 == joint2 && pose.Joint3 == joint3;
     }
 
     /// <summary>Back to the state a fish made at <paramref name="position"/> and <paramref name="heading"/> has: joints straight, at rest, in play, no decision yet.</summary>
