@@ -27,6 +27,8 @@ internal sealed class ContactEvents
     private readonly EventHits _hits = new();
     private BodySet _involved = new(0);
     private BodySet _dirty = new(0);
+    private HeldContacts? _held;
+    private bool _answeringHeld;
     private int[] _pending = new int[16];
     private int _pendingCount;
 
@@ -45,6 +47,12 @@ internal sealed class ContactEvents
         _bodies = bodies;
         _search = new FirstContactSearch(schedule, bodies, _hits);
         _replanner = new Replanner(this);
+    }
+
+    /// <summary>The stage that holds touching pairs (set once by the world): a re-planned pair it holds is not scheduled on its own clock.</summary>
+    public HeldContacts Held
+    {
+        set => _held = value;
     }
 
     /// <summary>Contact events of the current or last step.</summary>
@@ -112,6 +120,31 @@ internal sealed class ContactEvents
         }
     }
 
+    /// <summary>
+    /// The held pairs found overlapping at a sub-step's end, answered together as one pressing
+    /// event there: no search for a time of first contact (the bodies touch already), each pair
+    /// answered in the order given, then relaxation and one re-plan of all their bodies. A held
+    /// answer is expected every sub-step and up to a sub-step deep: it counts for no body's events,
+    /// and the corrections of its relaxation (bodies pushed into others by it) count for no body's
+    /// wedging (the end of the step still rejects a move left overlapping).
+    /// </summary>
+    public void HandleHeld(double time, ReadOnlySpan<int> slots, ReadOnlySpan<Hit> hits)
+    {
+        _hits.Clear();
+        _hits.Reserve(slots.Length);
+        _involved.Clear();
+        for (int i = 0; i < slots.Length; i++)
+        {
+            _hits.Add(slots[i], hits[i]);
+            _involved.AddPair(_table.Pair(slots[i]));
+        }
+
+        PressingCount++;
+        _answeringHeld = true;
+        Answer(time, pressing: true);
+        _answeringHeld = false;
+    }
+
     // One event: its bodies go back to the last time all its pairs were apart, the time of first
     // contact is found, the handler responds there, and the bodies are committed and planned again.
     private void HandleEvent(double found)
@@ -153,15 +186,26 @@ internal sealed class ContactEvents
         }
 
         double contact = refine && lo < found ? _search.Search(lo, found, apartAtLo, _involved) : found;
+        Answer(contact, pressing);
+    }
+
+    // The event's bodies placed at the contact time, the handler's response to each of its pairs there, then relaxation.
+    private void Answer(double contact, bool pressing)
+    {
+        ReadOnlySpan<Body> movers = _schedule.Planner.MoverBodies;
         MoveInvolved(contact);
         _world.Time = contact;
         Count++;
         foreach (int m in _involved.Items)
         {
             Body body = movers[m];
-            body.Events++;
-            body.EventsInPlace = body.LastEventTime == contact ? body.EventsInPlace + 1 : 0;
-            body.LastEventTime = contact;
+            if (!_answeringHeld)
+            {
+                body.Events++;
+                body.EventsInPlace = body.LastEventTime == contact ? body.EventsInPlace + 1 : 0;
+                body.LastEventTime = contact;
+            }
+
             _settling.MarkTouched(m);
         }
 
@@ -203,7 +247,7 @@ internal sealed class ContactEvents
         Hit hit = _sampler.Memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
-            _world.Report(new Contact(a, b, hit, _world.Time, pressing));
+            _world.Report(new Contact(a, b, hit, _world.Time, pressing), countsForWedging: !_answeringHeld);
         }
     }
 
@@ -379,6 +423,11 @@ internal sealed class ContactEvents
             }
 
             table.SetApartAtLastFree(slot, apart);
+            if (owner._held is { } held && held.TryHold(slot, time, gap))
+            {
+                return;
+            }
+
             if (time < 1.0)
             {
                 owner._sampler.Schedule(table, slot, time, gap);

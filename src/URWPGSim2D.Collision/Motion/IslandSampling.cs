@@ -34,6 +34,7 @@ internal sealed class IslandSampling
     private IslandWorker[] _workers = [];
     private int[] _chunkStart = new int[2];
     private IslandRunner? _runner;
+    private HeldContacts? _heldContacts;
     private int _nextHeld;
     private bool _islandsBuilt;
 
@@ -44,6 +45,12 @@ internal sealed class IslandSampling
         _table = schedule.Table;
         _sampler = schedule.Sampler;
         _bodies = bodies;
+    }
+
+    /// <summary>The stage that holds touching pairs (set once by the world): a pair it held at the step's start gets no first sample.</summary>
+    public HeldContacts HeldContacts
+    {
+        set => _heldContacts = value;
     }
 
     /// <summary>Threads a step may use (checked by the world).</summary>
@@ -185,6 +192,11 @@ internal sealed class IslandSampling
     // A planned pair's first sample, scheduled from the start of the step by its gap there.
     private void ScheduleFirst(PairSampler sampler, int slot, float seconds)
     {
+        if (_heldContacts is { } held && held.IsHeldAtStart(slot))
+        {
+            return;
+        }
+
         ref readonly PlannedPair pair = ref _table.Pair(slot);
         PairSampler.MovePair(_bodies, pair, 0.0, seconds);
         float gap = PairTest.Gap(_bodies[pair.A], _bodies[pair.B]);

@@ -575,6 +575,7 @@ public sealed partial class MotionWorld
         _schedule.Load([.. movers], [.. statics], walls);
         _islands.Load(m, PairSchedule.ReservedPairs(m));
         _events.Load(m);
+        _held.Reserve(m);
         _contacts.Reserve(2 * m);
         _settling.Load(m);
         _changed = new BodySet(m);

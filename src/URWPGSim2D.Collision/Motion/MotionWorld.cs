@@ -26,6 +26,7 @@ public sealed partial class MotionWorld
     private readonly ContactEvents _events;
     private readonly Settling _settling;
     private readonly ContactCache _contacts = new();
+    private readonly HeldContacts _held;
     private IContactHandler? _handler;
     private bool _pressingContacts;
 
@@ -46,7 +47,38 @@ public sealed partial class MotionWorld
         _settling = new Settling(this, _schedule, _bodies);
         _events = new ContactEvents(this, _schedule, _settling, _contacts, _bodies);
         _islands = new IslandSampling(_schedule, _bodies);
+        _held = new HeldContacts(_schedule, _contacts, _settling, _bodies);
+        _events.Held = _held;
+        _islands.HeldContacts = _held;
     }
+
+    /// <summary>
+    /// Sub-steps on which touching pairs are answered together (a power of two up to
+    /// <see cref="TickQueue.Ticks"/>), or 0 (the default): every pair is sampled on its own clock and
+    /// every contact is an event at its time of first contact. See <see cref="HeldContacts"/>.
+    /// </summary>
+    /// <exception cref="ArgumentException">The value is not 0 or a power of two up to the limit, or a step is running.</exception>
+    internal int HeldSubSteps
+    {
+        get => _held.SubSteps;
+        set
+        {
+            if (value < 0 || value > TickQueue.Ticks || (value > 0 && !BitOperations.IsPow2(value)))
+            {
+                throw new ArgumentException($"held sub-steps must be 0 or a power of two up to {TickQueue.Ticks}, got {value}", nameof(value));
+            }
+
+            if (_stepping)
+            {
+                throw new ArgumentException("held sub-steps cannot change while a step runs", nameof(value));
+            }
+
+            _held.SubSteps = value;
+        }
+    }
+
+    /// <summary>Held pairs answered in the last step (tests).</summary>
+    internal int HeldAnswers => _held.Answers;
 
     /// <summary>The time within the current step (a fraction 0 … 1 of its duration): during a handler call, the contact's time.</summary>
     public double Time { get; internal set; }
@@ -138,8 +170,14 @@ public sealed partial class MotionWorld
         _islands.SampleFirst();
         PairSampler sampler = _schedule.Sampler;
         PairTable table = _schedule.Table;
-        for (double time; (time = _islands.NextTime()) >= 0.0;)
+        for (double time; (time = _islands.NextTime()) >= 0.0 || _held.NextTime >= 0.0;)
         {
+            if (_held.DueBefore(time))
+            {
+                _held.Run(_events);
+                continue;
+            }
+
             int due = sampler.TakeDue(time, table);
             if (_islands.TakeHeld(time) + due > 0)
             {
@@ -295,8 +333,8 @@ public sealed partial class MotionWorld
     /// <summary>A mover's swept circle as the last step planned it (tests).</summary>
     internal Disc SweptCircleOf(BodyId body) => _schedule.Planner.SweptCircle(Get(body).Slot);
 
-    /// <summary>The response to one contact, from the handler, after its bodies are involved in the order the response moves them.</summary>
-    internal void Report(in Contact contact)
+    /// <summary>The response to one contact, from the handler, after its bodies are involved in the order the response moves them; a pressing contact's corrections, or any when <paramref name="countsForWedging"/> is false, count for no body's wedging.</summary>
+    internal void Report(in Contact contact, bool countsForWedging = true)
     {
         Body a = Get(contact.BodyA), b = Get(contact.BodyB);
         InvolveInOrder(a, b);
@@ -309,7 +347,7 @@ public sealed partial class MotionWorld
         Vector2 positionA = a.Position, positionB = b.Position;
         float headingA = a.Heading, headingB = b.Heading;
         handler.OnSeparate(this, contact);
-        bool counts = !contact.Pressing;
+        bool counts = !contact.Pressing && countsForWedging;
         bool correctedA = counts && (a.Position != positionA || a.Heading != headingA);
         bool correctedB = counts && (b.Position != positionB || b.Heading != headingB);
         if (correctedA)
@@ -399,6 +437,7 @@ public sealed partial class MotionWorld
         _events.BeginStep();
         _settling.BeginStep();
         _contacts.BeginStep();
+        _held.BeginStep();
         _schedule.Sampler.Memo.ResetTests();
         Time = 0.0;
         _stepping = true;
@@ -415,6 +454,7 @@ public sealed partial class MotionWorld
         }
 
         _schedule.PlanStepStart();
+        _held.HoldAtStart();
     }
 
     // Every mover moved to a time of the step and committed there.

@@ -196,6 +196,9 @@ internal sealed class PairSampler
         Queue.Push(Math.Min(next, 1.0), slot, table.Generation(slot));
     }
 
+    /// <summary>A pair tested at the end of the step outside the queue (a held pair) overlapping by <paramref name="depth"/> (within the contact slop).</summary>
+    public void NoteEndDepth(float depth) => DeepestAtEnd = MathF.Max(DeepestAtEnd, depth);
+
     /// <summary>Adds a hit of the current sample.</summary>
     public void AddHit(int slot, in Hit hit)
     {

@@ -8,12 +8,14 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 public sealed class MotionWorldAllocationTests
 {
     [Theory]
-    [InlineData(100, 60, 20)]
-    [InlineData(1_000, 30, 10)]
-    [InlineData(10_000, 10, 4)]
-    public void AStepAllocatesNothingAfterWarmUp(int bodies, int warmUp, int steps)
+    [InlineData(100, 60, 20, 0)]
+    [InlineData(1_000, 30, 10, 0)]
+    [InlineData(10_000, 10, 4, 0)]
+    [InlineData(1_000, 30, 10, 4)]
+    public void AStepAllocatesNothingAfterWarmUp(int bodies, int warmUp, int steps, int heldSubSteps)
     {
         var world = World(bodies);
+        world.HeldSubSteps = heldSubSteps;
         var handler = new RecordingHandler(0.3f) { Record = false };
         for (int i = 0; i < warmUp; i++)
         {
@@ -34,6 +36,7 @@ public sealed class MotionWorldAllocationTests
 
             windows[w] = GC.GetAllocatedBytesForCurrentThread() - before;
             Assert.True(world.Events > 0, "no contact: the scene does not exercise the motion world");
+            Assert.True(heldSubSteps == 0 || world.HeldAnswers > 0, "no held answer: the scene does not exercise held contacts");
             if (windows[w] == 0L)
             {
                 return;

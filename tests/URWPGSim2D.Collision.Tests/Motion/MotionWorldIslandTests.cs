@@ -133,9 +133,10 @@ public sealed class MotionWorldIslandTests
     }
 
     // 12 steps of a 1,000-body crowd (about 600 movers): per step the counts, per mover its exact state.
-    private static List<string> Run(int threads, out List<Contact> contacts, out int chunks)
+    internal static List<string> Run(int threads, out List<Contact> contacts, out int chunks, int heldSubSteps = 0)
     {
         var world = MotionWorldAllocationTests.World(1_000);
+        world.HeldSubSteps = heldSubSteps;
         world.Threads = threads;
         world.MinimumMoversForThreads = 64; // below the default, so that a test-sized crowd uses the threads
         var handler = new RecordingHandler(0.3f);
@@ -145,7 +146,7 @@ public sealed class MotionWorldIslandTests
         {
             world.Step(Seconds, handler);
             chunks = Math.Max(chunks, world.Chunks);
-            lines.Add($"step {step}: sub-steps {world.SubSteps}, events {world.Events}, rejected {world.RejectedMoves}, overlap {Bits(world.LeftoverOverlap)}");
+            lines.Add($"step {step}: sub-steps {world.SubSteps}, events {world.Events}, held answers {world.HeldAnswers}, rejected {world.RejectedMoves}, overlap {Bits(world.LeftoverOverlap)}");
             for (int id = 0; id < world.BodyCount; id++)
             {
                 if (world.KindOf(world.IdAt(id)) <= BodyKind.Fish)
@@ -160,7 +161,7 @@ public sealed class MotionWorldIslandTests
         return lines;
     }
 
-    private static bool Same(in Contact a, in Contact b) =>
+    internal static bool Same(in Contact a, in Contact b) =>
         a.BodyA.Index == b.BodyA.Index && a.BodyB.Index == b.BodyB.Index && a.Time == b.Time
         && a.Result.MinimumTranslationVector == b.Result.MinimumTranslationVector
         && a.Result.NormalAxis == b.Result.NormalAxis && a.Result.ActionPoint == b.Result.ActionPoint;
