@@ -16,7 +16,12 @@ namespace URWPGSim2D.Engine.Simulation;
 /// impulse J = 0.49·|Δv_ball| as a heading increment (J·r⊥/6000)·0.01 with the signed lever. A later
 /// contact of the same pair in that cycle is a pressing contact, the continuous form of the
 /// original's push-out: both move on along the normal at the share-weighted common speed
-/// v_ball + s·(v_fish − v_ball), s the ball's share of the correction, and nothing turns;</item>
+/// v_ball + s·(v_fish − v_ball), s the ball's share of the correction, and nothing turns. A contact the
+/// motion world answers where it finds it, up to a sub-step or a sampling interval after it began
+/// (<see cref="Contact.Pressing"/>: held or pressing contacts, neither on in the match server), that is
+/// the pair's first in the cycle gets both at once, the
+/// exchange then the press, and its correction is shared as those speed changes would have moved the two
+/// since (the ball takes (c − v_ball)/(v_fish − v_ball), c the common speed);</item>
 /// <item>fish–fish: v_n' = (v_A + v_B + e'·(v_B − v_A))/2 with e' = −0.005·(1 − (d_A + d_B)/600) for
 /// the rest of the cycle; on the pair's first contact in a cycle each fish turns by its own J = 0.8·|Δv_n|;</item>
 /// <item>fish–obstacle: the fish's normal speed becomes −0.003·(1 − d/300)·v_n; it turns on the
@@ -46,7 +51,7 @@ internal sealed class ContactResponse
     private readonly int[] _partners;
     private readonly int[] _partnerCount;
     private readonly int[] _partnerCycle;
-    private float _ballShare; // the ball's share of the last fish–ball separation, for its response
+    private float _ballShare; // the ball's share s of the last fish–ball contact (of its correction at a time of first contact), for its response
 
     /// <summary>Creates the response for a world.</summary>
     public ContactResponse(World world)
@@ -78,8 +83,10 @@ internal sealed class ContactResponse
                 break;
             case PairKind.FishBall:
                 bool pectoral = hit.PartA is FishPart.LeftPectoral or FishPart.RightPectoral;
-                _ballShare = _world.Fish[pair.A].MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
-                _separation.Apply(pair, hit, 1f - _ballShare, _ballShare);
+                FishState fish = _world.Fish[pair.A];
+                _ballShare = fish.MoveRejected ? 1f : pectoral ? PhysicsConstants.PectoralBallShare : 0.5f;
+                float correction = hit.Pressing && !fish.MoveRejected && !HadContact(fish, pair.B) ? FirstPressShare(fish, _world.Balls[pair.B], hit) : _ballShare;
+                _separation.Apply(pair, hit, 1f - correction, correction);
                 break;
             case PairKind.BallBall:
                 _separation.Apply(pair, hit, 0.5f, 0.5f);
@@ -140,7 +147,13 @@ internal sealed class ContactResponse
             float after = Impulse.Exchange(vb, PhysicsConstants.BallMass, vf, PhysicsConstants.FishMass, e);
             ball.Velocity += (after - vb) * n;
             Turn(fish, lever, -PhysicsConstants.BallMass * (after - vb) * n);
-            return;
+            if (!hit.Pressing || vf - after >= 0f)
+            {
+                return;
+            }
+
+            // Answered where found, the contact began earlier: the pair has pressed on since.
+            vb = after;
         }
 
         float common = vb + (ballShare * (vf - vb));
@@ -261,6 +274,41 @@ internal sealed class ContactResponse
         {
             fish.Heading = Angle.Wrap(fish.Heading + turn);
         }
+    }
+
+    // The ball's share of the correction of a fish–ball contact answered where found (a held contact,
+    // Contact.Pressing) that is the pair's first in the cycle: what the responses would have done since
+    // the time of first contact, to first order. There the exchange gives the ball its new normal
+    // speed and leaves the fish's, and the pair, still closing, presses on at the common speed c at
+    // once; moving on at c since then, each body is displaced by its change of normal speed times the
+    // time since, so the ball takes (c − v_b) / (v_f − v_b) of the overlap (0.81 for a ball at rest
+    // against a fish at full speed, against the half it takes at a time of first contact).
+    private float FirstPressShare(FishState fish, BallState ball, in Contact hit)
+    {
+        Vector2 n = hit.Normal;
+        float vf = NormalSpeed(fish, hit.Point - fish.Position, n);
+        float vb = Vector2.Dot(ball.Velocity, n);
+        if (vf - vb >= 0f)
+        {
+            return _ballShare;
+        }
+
+        float after = Impulse.Exchange(vb, PhysicsConstants.BallMass, vf, PhysicsConstants.FishMass, FishBallRestitution(fish, hit.Point));
+        float common = vf - after < 0f ? after + (_ballShare * (vf - after)) : after;
+        return Math.Clamp((common - vb) / (vf - vb), 0f, 1f);
+    }
+
+    // Whether the fish had a contact with `partner` in the current cycle already (nothing recorded).
+    private bool HadContact(FishState fish, int partner)
+    {
+        int i = fish.Index;
+        if (_partnerCycle[i] != _world.Cycle)
+        {
+            return false;
+        }
+
+        ReadOnlySpan<int> partners = _partners.AsSpan(i * PartnersPerFish, _partnerCount[i]);
+        return partners.Contains(partner) || _partnerCount[i] == PartnersPerFish;
     }
 
     // Whether this is the fish's first contact with `partner` in the current cycle (and records it).
