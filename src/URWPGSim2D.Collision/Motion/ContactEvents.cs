@@ -28,7 +28,6 @@ internal sealed class ContactEvents
     private BodySet _involved = new(0);
     private BodySet _dirty = new(0);
     private HeldContacts? _held;
-    private bool _answeringHeld;
     private int[] _pending = new int[16];
     private int _pendingCount;
 
@@ -140,9 +139,7 @@ internal sealed class ContactEvents
         }
 
         PressingCount++;
-        _answeringHeld = true;
-        Answer(time, pressing: true);
-        _answeringHeld = false;
+        Answer(time, pressing: true, held: true);
     }
 
     // One event: its bodies go back to the last time all its pairs were apart, the time of first
@@ -186,11 +183,13 @@ internal sealed class ContactEvents
         }
 
         double contact = refine && lo < found ? _search.Search(lo, found, apartAtLo, _involved) : found;
-        Answer(contact, pressing);
+        Answer(contact, pressing, held: false);
     }
 
-    // The event's bodies placed at the contact time, the handler's response to each of its pairs there, then relaxation.
-    private void Answer(double contact, bool pressing)
+    // The event's bodies placed at the contact time, the handler's response to each of its pairs
+    // there, then relaxation. A held answer counts for no body's events, nor do the corrections of
+    // its relaxation for wedging.
+    private void Answer(double contact, bool pressing, bool held)
     {
         ReadOnlySpan<Body> movers = _schedule.Planner.MoverBodies;
         MoveInvolved(contact);
@@ -199,7 +198,7 @@ internal sealed class ContactEvents
         foreach (int m in _involved.Items)
         {
             Body body = movers[m];
-            if (!_answeringHeld)
+            if (!held)
             {
                 body.Events++;
                 body.EventsInPlace = body.LastEventTime == contact ? body.EventsInPlace + 1 : 0;
@@ -212,10 +211,10 @@ internal sealed class ContactEvents
         _world.ClearChanged();
         foreach (int slot in _hits.Slot)
         {
-            Respond(_table.Pair(slot), pressing);
+            Respond(_table.Pair(slot), pressing, held);
         }
 
-        Relax();
+        Relax(held);
     }
 
     // Every hit of the event is a pair answered at one of its last two samples: the bodies are in
@@ -240,14 +239,14 @@ internal sealed class ContactEvents
         return _contacts.IsPressing(pair.A, pair.B, time, PressingWindow * _table.Interval(slot));
     }
 
-    // The handler's response to one pair, if it still overlaps.
-    private void Respond(in PlannedPair pair, bool pressing)
+    // The handler's response to one pair, if it still overlaps (its correction counts for wedging unless the answer is held).
+    private void Respond(in PlannedPair pair, bool pressing, bool held)
     {
         Body a = _bodies[pair.A], b = _bodies[pair.B];
         Hit hit = _sampler.Memo.Detect(a, b);
         if (hit.Depth > MotionTolerances.ContactSlop)
         {
-            _world.Report(new Contact(a, b, hit, _world.Time, pressing), countsForWedging: !_answeringHeld);
+            _world.Report(new Contact(a, b, hit, _world.Time, pressing), countsForWedging: !held);
         }
     }
 
@@ -267,7 +266,7 @@ internal sealed class ContactEvents
     // cascade lasts, the bodies it moves are checked against the pairs already planned for them
     // (no broad phase), and once it is quiet they are planned again, once. What is left is sampled
     // as usual.
-    private void Relax()
+    private void Relax(bool held)
     {
         int pass = 0;
         CommitChanged(_involved);
@@ -275,7 +274,7 @@ internal sealed class ContactEvents
         while (_pendingCount > 0)
         {
             _involved.Clear();
-            RespondPending();
+            RespondPending(held);
             while (true)
             {
                 _dirty.Clear();
@@ -292,7 +291,7 @@ internal sealed class ContactEvents
                     break;
                 }
 
-                RespondPending();
+                RespondPending(held);
             }
 
             Replan(pass);
@@ -363,7 +362,7 @@ internal sealed class ContactEvents
     }
 
     // The handler's response to each pending pair; their bodies join the event.
-    private void RespondPending()
+    private void RespondPending(bool held)
     {
         for (int i = 0; i < _pendingCount; i++)
         {
@@ -376,7 +375,7 @@ internal sealed class ContactEvents
         for (int i = 0; i < _pendingCount; i++)
         {
             int slot = _pending[i];
-            Respond(_table.Pair(slot), pressingContacts && IsPressing(slot, time));
+            Respond(_table.Pair(slot), pressingContacts && IsPressing(slot, time), held);
         }
 
         _pendingCount = 0;

@@ -21,7 +21,7 @@ public sealed class MotionWorldHeldContactsTests
         BodyId walls = world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         BodyId ball = world.AddCircle(58f, new Vector2(1500f - 58f - 25f, 0f));
         world.HeldSubSteps = 4;
-        var handler = new PushOut(stop: false);
+        var handler = new PushOutHandler(stop: false);
 
         // Step 0: not touching at the start, so the first contact is an event at its time of first
         // contact, 25 / 40 = 0.625, found by the pair's sample at the end of the step (a wall pair's
@@ -87,7 +87,7 @@ public sealed class MotionWorldHeldContactsTests
         world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         BodyId ball = world.AddCircle(58f, new Vector2(1500f - 58f - 0.01f, 0f));
         world.HeldSubSteps = subSteps;
-        var handler = new PushOut(stop: false);
+        var handler = new PushOutHandler(stop: false);
         world.SetVelocity(ball, new Vector2(400f, 0f));
         world.Step(Seconds, handler); // the first contact, at once: from then on the pair touches
         for (int step = 1; step <= 3; step++)
@@ -147,7 +147,7 @@ public sealed class MotionWorldHeldContactsTests
         world.AddStatic(new ConvexPolygon([new Vector2(-2f, -300f), new Vector2(2f, -300f), new Vector2(2f, 300f), new Vector2(-2f, 300f)]));
         BodyId ball = world.AddCircle(20f, new Vector2(-30f, 0f));
         world.HeldSubSteps = subSteps;
-        var handler = new PushOut(stop: true);
+        var handler = new PushOutHandler(stop: true);
         for (int step = 0; step < 10; step++)
         {
             handler.Contacts.Clear();
@@ -229,10 +229,11 @@ public sealed class MotionWorldHeldContactsTests
         world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         BodyId ball = world.AddCircle(58f, new Vector2(1400f, 0f));
         world.SetVelocity(ball, new Vector2(1000f, 0f));
-        var handler = new ChangingHandler();
+        ArgumentException? refusal = null;
+        var handler = new PushOutHandler { Probe = w => refusal ??= Assert.Throws<ArgumentException>(() => w.HeldSubSteps = 4) };
         world.Step(Seconds, handler);
-        Assert.NotNull(handler.Refusal);
-        Assert.Contains("while a step runs", handler.Refusal!.Message, StringComparison.Ordinal);
+        Assert.NotNull(refusal);
+        Assert.Contains("while a step runs", refusal!.Message, StringComparison.Ordinal);
     }
 
     // About 460 bodies apart on a jittered lattice in a pool of 10 × 6 m: fish swimming at 300 mm/s
@@ -281,46 +282,5 @@ public sealed class MotionWorldHeldContactsTests
         }
 
         return world;
-    }
-
-    // Moves the body out along the MTV (and, when told, stops its motion into the partner); records the contacts.
-    private sealed class PushOut(bool stop) : IContactHandler
-    {
-        public List<Contact> Contacts { get; } = [];
-
-        public void OnContact(MotionWorld world, in Contact contact)
-        {
-            Contacts.Add(contact);
-            BodyId a = contact.BodyA;
-            world.SetPose(a, world.PositionOf(a) + contact.Mtv + (contact.Normal * 0.01f), world.HeadingOf(a));
-            Vector2 v = world.VelocityOf(a);
-            float vn = Vector2.Dot(v, contact.Normal);
-            if (stop && vn < 0f)
-            {
-                world.SetVelocity(a, v - (vn * contact.Normal), world.AngularVelocityOf(a));
-            }
-        }
-
-        public void OnMoveRejected(MotionWorld world, BodyId body)
-        {
-        }
-    }
-
-    // Tries to change the sub-steps from a handler.
-    private sealed class ChangingHandler : IContactHandler
-    {
-        public ArgumentException? Refusal { get; private set; }
-
-        public void OnContact(MotionWorld world, in Contact contact)
-        {
-            Refusal ??= Assert.Throws<ArgumentException>(() => world.HeldSubSteps = 4);
-            BodyId a = contact.BodyA;
-            world.SetPose(a, world.PositionOf(a) + contact.Mtv + (contact.Normal * 0.01f), world.HeadingOf(a));
-            world.SetVelocity(a, Vector2.Zero);
-        }
-
-        public void OnMoveRejected(MotionWorld world, BodyId body)
-        {
-        }
     }
 }

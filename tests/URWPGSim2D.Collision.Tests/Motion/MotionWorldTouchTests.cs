@@ -15,7 +15,7 @@ public sealed class MotionWorldTouchTests
     {
         var (world, ball, walls) = BallBesideTheRightWall();
         world.PressingContacts = true;
-        var handler = new TouchRecorder();
+        var handler = new PushOutHandler();
         for (int step = 0; step < 6; step++)
         {
             handler.Contacts.Clear();
@@ -60,7 +60,7 @@ public sealed class MotionWorldTouchTests
     {
         var (world, ball, walls) = BallBesideTheRightWall();
         Assert.False(world.PressingContacts); // the default
-        var handler = new TouchRecorder();
+        var handler = new PushOutHandler();
         for (int step = 0; step < 6; step++)
         {
             handler.Contacts.Clear();
@@ -106,7 +106,7 @@ public sealed class MotionWorldTouchTests
     public void ClearForgetsEveryTouchWithoutEndingIt()
     {
         var (world, ball, walls) = BallBesideTheRightWall();
-        var handler = new TouchRecorder();
+        var handler = new PushOutHandler();
         world.SetVelocity(ball, new Vector2(400f, 0f));
         world.Step(0.1f, handler);
         Assert.True(world.IsTouching(ball, walls));
@@ -147,36 +147,6 @@ public sealed class MotionWorldTouchTests
     }
 
     // Moves the ball out of the wall and stops its motion into it; records contacts and touches.
-    private sealed class TouchRecorder : IContactHandler
-    {
-        public List<Contact> Contacts { get; } = [];
-
-        public List<(BodyId, BodyId)> Began { get; } = [];
-
-        public List<(BodyId, BodyId)> Ended { get; } = [];
-
-        public void OnTouchBegan(MotionWorld world, BodyId bodyA, BodyId bodyB) => Began.Add((bodyA, bodyB));
-
-        public void OnTouchEnded(MotionWorld world, BodyId bodyA, BodyId bodyB) => Ended.Add((bodyA, bodyB));
-
-        public void OnContact(MotionWorld world, in Contact contact)
-        {
-            Contacts.Add(contact);
-            BodyId a = contact.BodyA;
-            world.SetPose(a, world.PositionOf(a) + contact.Mtv + (contact.Normal * 0.01f), world.HeadingOf(a));
-            Vector2 v = world.VelocityOf(a);
-            float vn = Vector2.Dot(v, contact.Normal);
-            if (vn < 0f)
-            {
-                world.SetVelocity(a, v - (vn * contact.Normal), world.AngularVelocityOf(a));
-            }
-        }
-
-        public void OnMoveRejected(MotionWorld world, BodyId body)
-        {
-        }
-    }
-
     // A fish pushes a ball: the ball is moved out of the fish and takes the fish's velocity.
     private sealed class PushingHandler : IContactHandler
     {
