@@ -27,22 +27,7 @@ internal sealed class BruteForceBroadPhase : IBroadPhase
     public void FindPairs(PairList pairs)
     {
         ArgumentNullException.ThrowIfNull(pairs);
-        pairs.Clear();
-        var min = _store.Min;
-        var max = _store.Max;
-        int n = _store.Count;
-        for (int a = 0; a < _store.MovingCount; a++)
-        {
-            var minA = min[a];
-            var maxA = max[a];
-            for (int b = a + 1; b < n; b++)
-            {
-                if (ProxyBox.Overlap(minA, maxA, min[b], max[b]))
-                {
-                    pairs.Add(a, b);
-                }
-            }
-        }
+        _store.PairEveryTwo(pairs);
     }
 
     /// <inheritdoc/>
@@ -50,14 +35,6 @@ internal sealed class BruteForceBroadPhase : IBroadPhase
     {
         ArgumentNullException.ThrowIfNull(result);
         result.Clear();
-        var min = _store.Min;
-        var max = _store.Max;
-        for (int p = 0; p < _store.Count; p++)
-        {
-            if (ProxyBox.Overlap(box.Min, box.Max, min[p], max[p]))
-            {
-                result.Add(p);
-            }
-        }
+        _store.AddOverlapping(box.Min, box.Max, result);
     }
 }

@@ -35,6 +35,36 @@ internal sealed class ProxyStore
         MovingCount = movingCount;
     }
 
+    /// <summary>Every pair of a moving proxy and a later proxy whose boxes overlap, by testing every two: ascending A, then ascending B.</summary>
+    public void PairEveryTwo(PairList pairs)
+    {
+        pairs.Clear();
+        Vector2[] min = Min, max = Max;
+        for (int a = 0; a < MovingCount; a++)
+        {
+            Vector2 lo = min[a], hi = max[a];
+            for (int b = a + 1; b < Count; b++)
+            {
+                if (ProxyBox.Overlap(lo, hi, min[b], max[b]))
+                {
+                    pairs.Add(a, b);
+                }
+            }
+        }
+    }
+
+    /// <summary>Appends every proxy whose box overlaps [<paramref name="lo"/>, <paramref name="hi"/>], by testing each, in ascending order.</summary>
+    public void AddOverlapping(Vector2 lo, Vector2 hi, IndexList result)
+    {
+        for (int p = 0; p < Count; p++)
+        {
+            if (ProxyBox.Overlap(lo, hi, Min[p], Max[p]))
+            {
+                result.Add(p);
+            }
+        }
+    }
+
     /// <summary>Adds a static proxy after the others, growing the arrays when needed.</summary>
     /// <returns>Its index.</returns>
     public int Append(in Aabb box)

@@ -37,16 +37,12 @@ internal sealed partial class UniformGrid
     // more than about four per proxy.
     private void LayOut()
     {
-        Vector2 lo = Vector2.Zero, hi = Vector2.Zero;
-        if (_store.Count > 0)
+        // Only a large world is laid out: there is at least one proxy.
+        Vector2 lo = new(float.PositiveInfinity), hi = new(float.NegativeInfinity);
+        for (int p = 0; p < _store.Count; p++)
         {
-            lo = new Vector2(float.PositiveInfinity);
-            hi = new Vector2(float.NegativeInfinity);
-            for (int p = 0; p < _store.Count; p++)
-            {
-                lo = Vector2.Min(lo, _store.Min[p]);
-                hi = Vector2.Max(hi, _store.Min[p]);
-            }
+            lo = Vector2.Min(lo, _store.Min[p]);
+            hi = Vector2.Max(hi, _store.Min[p]);
         }
 
         long budget = (4L * _store.Count) + 64;
@@ -108,7 +104,7 @@ internal sealed partial class UniformGrid
             _cellStart[c] += _cellStart[c - 1];
         }
 
-        int listed = cells > 0 ? _cellStart[cells - 1] : 0;
+        int listed = _cellStart[cells - 1];
         _cellStart[cells] = listed;
         for (int p = n - 1; p >= 0; p--)
         {

@@ -5,6 +5,7 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// their cells are the same or neighbours; each pair of neighbouring cells is visited once (a cell
 /// with itself, its right neighbour and the three cells below), which reads the sorted arrays in
 /// order. Moved and oversize proxies are then paired by their own scans of the cells they cover.
+/// A small world is not laid out: every two of its boxes are tested.
 /// </content>
 internal sealed partial class UniformGrid
 {

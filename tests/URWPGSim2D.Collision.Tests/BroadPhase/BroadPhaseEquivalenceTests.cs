@@ -108,6 +108,55 @@ public sealed class BroadPhaseEquivalenceTests
         Assert.True(found > 5_000, $"only {found} proxies were found");
     }
 
+    [Theory]
+    [InlineData(0f)]
+    [InlineData(40f)]
+    public void OneGridSwitchingBetweenSmallAndLargeWorldsFindsWhatBruteForceFinds(float cellSize)
+    {
+        // A grid of at most 48 proxies tests every two and lays out no cells; one instance goes
+        // back and forth across that size, with moves in between, pairs and queries checked each time.
+        var truth = new BruteForceBroadPhase();
+        var grid = new UniformGrid(cellSize);
+        var expected = new PairList();
+        var actual = new PairList();
+        var expectedNear = new IndexList();
+        var actualNear = new IndexList();
+        var world = new RandomBoxWorld(seed: 4848);
+        int pairs = 0;
+        foreach (int n in new[] { 48, 49, 10, 200, 47, 0, 48, 120, 3, 49, 48, 60 })
+        {
+            float half = n > 48 ? 1500f : 400f;
+            Aabb[] boxes = world.Boxes(n, half);
+            int moving = n - (n / 4);
+            truth.Reset(boxes, moving);
+            grid.Reset(boxes, moving);
+            for (int round = 0; round < 3; round++)
+            {
+                Compare(truth, grid, expected, actual, $"{n} boxes, round {round}");
+                pairs += expected.Count;
+                for (int m = 0; m < n / 2; m++)
+                {
+                    int p = world.Random.Next(n);
+                    Aabb moved = world.Moved(truth.Box(p), half);
+                    truth.Move(p, moved);
+                    grid.Move(p, moved);
+                }
+
+                Aabb query = world.Box(half);
+                truth.Query(query, expectedNear);
+                grid.Query(query, actualNear);
+                Assert.True(expectedNear.Items.SequenceEqual(actualNear.Items), $"{n} boxes, query {round}");
+            }
+
+            if (n <= 48)
+            {
+                Assert.Equal(0, grid.OversizeCount); // none is left from the large world before
+            }
+        }
+
+        Assert.True(pairs > 1000, $"only {pairs} pairs were compared");
+    }
+
     [Fact]
     public void TheBruteForceReferenceIsTheDefinition()
     {

@@ -146,7 +146,6 @@ public sealed class MotionWorldTouchTests
         return (world, ball, walls);
     }
 
-    // Moves the ball out of the wall and stops its motion into it; records contacts and touches.
     // A fish pushes a ball: the ball is moved out of the fish and takes the fish's velocity.
     private sealed class PushingHandler : IContactHandler
     {
