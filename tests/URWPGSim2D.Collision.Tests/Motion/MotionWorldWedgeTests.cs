@@ -6,23 +6,30 @@ namespace URWPGSim2D.Collision.Tests.Motion;
 /// it has had <see cref="WedgePolicy.EventsBeforeDeferring"/> events in a step, its further
 /// contacts that cannot tunnel before the step ends are left to the end of the step, and if settling
 /// there does not free it, its move is rejected (it stays where the last step ended, which was
-/// free). (Without that the bar below takes 65 events a step.)
+/// free). (Without that the bar below takes 65 events a step.) The same holds with held contacts
+/// on 2, 4 and 8 sub-steps.
 /// </summary>
 public sealed class MotionWorldWedgeTests
 {
-    [Fact]
-    public void ABarSpinningInASlotTooNarrowForItEndsEveryStepWithinTheGuarantee()
+    [Theory]
+    [InlineData(0)]
+    [InlineData(2)]
+    [InlineData(4)]
+    [InlineData(8)]
+    public void ABarSpinningInASlotTooNarrowForItEndsEveryStepWithinTheGuarantee(int heldSubSteps)
     {
         // A bar 200 × 40 mm turning at 3 rad/s between two boxes 150 mm apart: once it jams, pushing
         // one end out of one box pushes the other end into the other one, and it keeps turning.
         var world = BarInSlot(out BodyId body);
+        world.HeldSubSteps = heldSubSteps;
         var handler = new RecordingHandler { Record = false };
-        int most = 0, rejected = 0;
+        int most = 0, rejected = 0, held = 0;
         for (int step = 0; step < 30; step++)
         {
             world.SetVelocity(body, Vector2.Zero, 3f);
             world.Step(0.1f, handler);
             most = Math.Max(most, world.Events);
+            held += world.HeldAnswers;
             Assert.True(world.LeftoverOverlap <= MotionTolerances.ContactSlop, $"step {step}: {world.LeftoverOverlap} mm left");
             rejected += world.RejectedMoves;
             Assert.True(world.MeasureOverlap() <= 0.5f, $"step {step}: measured {world.MeasureOverlap()} mm");
@@ -35,6 +42,10 @@ public sealed class MotionWorldWedgeTests
 
         // A jammed step whose overlap settling cannot remove goes back to where the last one ended.
         Assert.True(rejected > 0, "no move was rejected");
+
+        // With held contacts the jammed bar is also answered at every sub-step's end where it presses
+        // (those answers are not events): the same guarantee, the same rejected moves.
+        Assert.Equal(heldSubSteps > 0, held > 0);
     }
 
     /// <summary>A bar 200 × 40 mm standing (heading π/2) between two boxes 150 mm apart, in a pool.</summary>
