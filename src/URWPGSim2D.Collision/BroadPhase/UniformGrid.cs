@@ -15,8 +15,8 @@ namespace URWPGSim2D.Collision.BroadPhase;
 /// are kept in a separate list and tested against the boxes of the cells they cover (against
 /// everything when those are more than <see cref="MaxCellsPerQuery"/>). With objects of similar size,
 /// <see cref="FindPairs"/> costs O(n + pairs) and <see cref="Move"/> O(1). A world of at most
-/// <see cref="SmallWorld"/> proxies (a match's pool: its fish, balls, obstacles and goal blocks) is
-/// not laid out at all: every pair of boxes is tested, which costs it less than the cells would
+/// <see cref="SmallWorld"/> proxies (a match's pool, with its 19 fish, balls, obstacles and goal
+/// blocks, is one) is not laid out at all: every pair of boxes is tested, which costs it less than the cells would
 /// (the same pairs, in the same order).
 /// </summary>
 internal sealed partial class UniformGrid : IBroadPhase
