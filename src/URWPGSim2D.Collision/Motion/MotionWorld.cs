@@ -53,12 +53,21 @@ public sealed partial class MotionWorld
     }
 
     /// <summary>
-    /// Sub-steps on which touching pairs are answered together (a power of two up to
-    /// <see cref="TickQueue.Ticks"/>), or 0 (the default): every pair is sampled on its own clock and
-    /// every contact is an event at its time of first contact. See <see cref="HeldContacts"/>.
+    /// Sub-steps on which touching pairs are answered together (held contacts), or 0 (the default):
+    /// every pair is sampled on its own clock and every contact is an event at its time of first
+    /// contact. With K sub-steps the step is cut into K equal parts; a pair whose bodies touch (the
+    /// handler answered it in this step or the last), whose bounds could meet within a sub-step and
+    /// whose sampling interval is at least a sub-step is not sampled on its own clock: it is tested
+    /// at every sub-step's end, and the pairs found overlapping there are answered together as one
+    /// pressing event (<see cref="Contact.Pressing"/>; no search for a time of first contact, their
+    /// bodies planned again once). A held pair moves at most its sampling limit in a sub-step, so
+    /// nothing passes through another; a first contact, or a contact made again after the bodies
+    /// parted, is still found at its time of first contact. A held answer is not an event
+    /// (<see cref="Events"/>) and its corrections count for no body's wedging. A power of two up to
+    /// 2,048; the match server plays on 2.
     /// </summary>
-    /// <exception cref="ArgumentException">The value is not 0 or a power of two up to the limit, or a step is running.</exception>
-    internal int HeldSubSteps
+    /// <exception cref="ArgumentException">The value is not 0 or a power of two up to 2,048, or a step is running.</exception>
+    public int HeldSubSteps
     {
         get => _held.SubSteps;
         set
@@ -77,8 +86,8 @@ public sealed partial class MotionWorld
         }
     }
 
-    /// <summary>Held pairs answered in the last step (tests).</summary>
-    internal int HeldAnswers => _held.Answers;
+    /// <summary>Held pairs answered in the last step: the pairs found overlapping at a sub-step's end and answered together (see <see cref="HeldSubSteps"/>).</summary>
+    public int HeldAnswers => _held.Answers;
 
     /// <summary>The time within the current step (a fraction 0 … 1 of its duration): during a handler call, the contact's time.</summary>
     public double Time { get; internal set; }

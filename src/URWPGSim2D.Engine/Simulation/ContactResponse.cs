@@ -18,7 +18,8 @@ namespace URWPGSim2D.Engine.Simulation;
 /// original's push-out: both move on along the normal at the share-weighted common speed
 /// v_ball + s·(v_fish − v_ball), s the ball's share of the correction, and nothing turns. A contact the
 /// motion world answers where it finds it, up to a sub-step or a sampling interval after it began
-/// (<see cref="Contact.Pressing"/>: held or pressing contacts, neither on in the match server), that is
+/// (<see cref="Contact.Pressing"/>: a held contact, as a match answers its touching pairs on
+/// <see cref="CycleMotion.HeldSubSteps"/> sub-steps, or a pressing one), that is
 /// the pair's first in the cycle gets both at once, the
 /// exchange then the press, and its correction is shared as those speed changes would have moved the two
 /// since (the ball takes (c − v_ball)/(v_fish − v_ball), c the common speed);</item>

@@ -226,8 +226,8 @@ public sealed class PoloTests
         Assert.Equal(new MatchOutcome(0, "higher score"), match.Referee!.Outcome);
     }
 
-    // Demo against demo, a 1v1 match has a goal in about half of the seeds (seeds 1-24: 13 with
-    // this motion, 11 with the motion before it; seeds 1-12: 6 and 8), the two demos often blocking
+    // Demo against demo, a 1v1 match has a goal in about half of the seeds (seeds 1-24: 13; seeds
+    // 1-12: 6), the two demos often blocking
     // each other; which seeds score changes with rounding-sized changes of the motion. No promise
     // names this, so it is checked as a rate: at least 3 of seeds 1-12 (at a rate of one half, 12
     // seeds fall below that about once in 50).

@@ -4,7 +4,7 @@ namespace URWPGSim2D.Server.Tests.Simulation;
 
 /// <summary>
 /// The contact response when the motion world answers touching pairs at the ends of its sub-steps
-/// (held contacts, <c>MotionWorld.HeldSubSteps</c>; off in the match server): a contact answered where
+/// (held contacts, <c>MotionWorld.HeldSubSteps</c>; 2 in the match server): a contact answered where
 /// it is found stands for one that began up to a sub-step earlier, so the response does what it would
 /// have done since the time of first contact. Checked against the same scene played with every
 /// contact answered at its time of first contact.
@@ -28,6 +28,22 @@ public sealed class HeldContactsResponseTests
         // every held correction it is 1477.96, 1501.09 and 1512.65 (7.6 to 42.3 mm off): the fish pushed
         // back by half of overlaps up to a sub-step deep, that a first contact would never have let form.
         Assert.True(MathF.Abs(held - reference) <= 5f, $"{subSteps} sub-steps: {held} mm against {reference} mm");
+    }
+
+    [Fact]
+    public void AMatchHoldsItsTouchingPairsOnTwoSubSteps()
+    {
+        var match = TestMatches.FromJson(HeadOn);
+        Assert.Equal(2, match.World.Motion.HeldSubSteps);
+        int heldAnswers = 0;
+        for (int k = 1; k <= 100; k++)
+        {
+            match.Step();
+            heldAnswers += match.World.Motion.HeldAnswers;
+        }
+
+        Assert.True(heldAnswers > 50, $"{heldAnswers} held answers in 100 cycles of a push");
+        Assert.Equal(Travel(2, out _), match.World.Fish[0].Position.X + 1100f);
     }
 
     // The fish's travel in 100 cycles of the head-on push, checking every cycle that the ball is never faster
