@@ -13,6 +13,23 @@ namespace URWPGSim2D.Learning.Tests;
 /// </summary>
 public sealed class MatchRestartTests
 {
+    [Fact]
+    public void ARestartForgetsTheTouchesTheMatchLeft()
+    {
+        var item = ItemRegistry.Find("polo-1v1")!;
+        var (played, pushed) = Build(item, "chase-ball", 103, noise: true);
+        int cycle = 0;
+        while (played.World.Motion.TouchingPairs == 0 && cycle < 160)
+        {
+            Push(pushed, ++cycle, 7);
+            played.Step();
+        }
+
+        Assert.True(played.World.Motion.TouchingPairs > 0, $"nothing touched in {cycle} cycles");
+        played.Restart(3);
+        Assert.Equal(0, played.World.Motion.TouchingPairs);
+    }
+
     [Theory]
     [InlineData("polo-1v1", "chase-ball", true)]
     [InlineData("polo-1v1", "idle", false)]
@@ -33,7 +50,9 @@ public sealed class MatchRestartTests
             }
 
             Assert.True(played.World.Cycle == 160 && played.Rules.Events.Count > 0, $"{slug}: the first match recorded no event");
+            // Touches the old match left would hold pairs a new match does not hold: the restart forgets them.
             played.Restart(seed);
+            Assert.Equal(0, played.World.Motion.TouchingPairs);
             var (fresh, freshPushed) = Build(item, opponent, seed, noise);
             var playedLine = new TraceLine(played.World, played.Teams, played.Rules);
             var freshLine = new TraceLine(fresh.World, fresh.Teams, fresh.Rules);

@@ -91,7 +91,7 @@ public sealed partial class MotionWorld
 
     /// <summary>
     /// Removes every body: the motion world is empty again, its settings (<see cref="Wedging"/>,
-    /// <see cref="Threads"/>) kept, and the next body added is number 0. The ids of the removed
+    /// <see cref="Threads"/>, <see cref="HeldSubSteps"/>, <see cref="PressingContacts"/>) kept, and the next body added is number 0. The ids of the removed
     /// bodies are stale: every method refuses them with an <see cref="ArgumentException"/> that
     /// says so, even where a new body has the same number.
     /// </summary>
@@ -107,6 +107,24 @@ public sealed partial class MotionWorld
         _contacts.Clear();
         _generation++;
         _loaded = false;
+    }
+
+    /// <summary>
+    /// Forgets every touch (<see cref="IsTouching"/>), as <see cref="Clear"/> does, without ending
+    /// it (no <see cref="IContactHandler.OnTouchEnded"/>): the next step treats every pair as not
+    /// touching, so no pair is held (<see cref="HeldSubSteps"/>) and each pair's next contact is a
+    /// first contact. For a game put back to its start in place, which should then play what a new
+    /// motion world of the same bodies plays.
+    /// </summary>
+    /// <exception cref="InvalidOperationException">A step or <see cref="Settle"/> is running.</exception>
+    public void ForgetTouches()
+    {
+        if (_stepping)
+        {
+            throw new InvalidOperationException("touches cannot be forgotten while a step or Settle runs");
+        }
+
+        _contacts.Clear();
     }
 
     /// <summary>What a body is.</summary>

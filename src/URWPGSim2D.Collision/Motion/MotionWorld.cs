@@ -61,10 +61,11 @@ public sealed partial class MotionWorld
     /// at every sub-step's end, and the pairs found overlapping there are answered together as one
     /// pressing event (<see cref="Contact.Pressing"/>; no search for a time of first contact, their
     /// bodies planned again once). A held pair moves at most its sampling limit in a sub-step, so
-    /// nothing passes through another; a first contact, or a contact made again after the bodies
-    /// parted, is still found at its time of first contact. A held answer is not an event
-    /// (<see cref="Events"/>) and its corrections count for no body's wedging. A power of two up to
-    /// 2,048; the match server plays on 2.
+    /// nothing passes through another. A first contact, or a contact made again after the bodies
+    /// parted farther than they can close in a sub-step, is still found at its time of first
+    /// contact. A sub-step's held answers count as one event (<see cref="Events"/>,
+    /// <see cref="PressingEvents"/>; <see cref="HeldAnswers"/> counts the pairs), and count for no
+    /// body's events or wedging. A power of two up to 2,048; the match server plays on 2.
     /// </summary>
     /// <exception cref="ArgumentException">The value is not 0 or a power of two up to 2,048, or a step is running.</exception>
     public int HeldSubSteps

@@ -133,6 +133,7 @@ public sealed class Match
 
         var scenario = Referee!.Scenario;
         World.Cycle = 0;
+        World.Motion.ForgetTouches();
         for (int i = 0; i < World.Fish.Length; i++)
         {
             var d = scenario.Fish[i];

@@ -4,8 +4,8 @@ using URWPGSim2D.Collision.Motion;
 namespace URWPGSim2D.Engine.Simulation;
 
 /// <summary>
-/// The server's response hook for the motion world: at the time of first contact
-/// <see cref="ContactResponse"/> applies the reference's position correction (its fish corrections
+/// The server's response hook for the motion world: at the time of first contact (or, for a pair
+/// already touching, at a sub-step's end) <see cref="ContactResponse"/> applies the reference's position correction (its fish corrections
 /// counted by the motion world's wedge policy) and then the impulses to the two bodies where they are (their poses and velocities are the motion world's, changed in
 /// place), and the contact is logged for the trace and the summary. A rejected move (the body went
 /// back to where it ended the last cycle) stops the body for the rest of the cycle.

@@ -14,10 +14,10 @@ public sealed class CycleMotion
     /// <summary>
     /// The sub-steps of a cycle on which a match answers its touching pairs together (a fish
     /// pressing a ball, a ball held against a wall): 2, every 50 ms (see
-    /// <see cref="MotionWorld.HeldSubSteps"/>). Of 2 and 4, both as faithful on the head-on push of
-    /// docs/fidelity.md, 2 is the cheaper in a crowd.
+    /// <see cref="MotionWorld.HeldSubSteps"/>). Of 2 and 4, both as faithful on the head-on push
+    /// (docs/motion.md, held contacts), 2 is the cheaper in a crowd.
     /// </summary>
-    public const int HeldSubSteps = 2;
+    public static int HeldSubSteps => 2;
 
     private readonly World _world;
     private readonly ContactHandler _handler;

@@ -177,7 +177,7 @@ internal sealed class CliApp
             : new CliUsageException(message, Synopsis);
     }
 
-    /// <summary>The arguments of the first match a user sees, the program run with none: ball-grab, demo against demo, seed 6 (a match with goals, 3:4).</summary>
+    /// <summary>The arguments of the first match a user sees, the program run with none: ball-grab, demo against demo, seed 6 (a match with a goal, 0:3).</summary>
     private static readonly string[] FirstMatch = ["--seed", "6"];
 
     /// <summary>

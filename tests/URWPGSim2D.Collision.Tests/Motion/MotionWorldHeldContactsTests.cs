@@ -236,6 +236,75 @@ public sealed class MotionWorldHeldContactsTests
         Assert.Contains("while a step runs", refusal!.Message, StringComparison.Ordinal);
     }
 
+    [Fact]
+    public void AWorldThatForgetsItsTouchesPlaysWhatANewWorldPlays()
+    {
+        // A ball that touched the wall in the last step is put back 5 mm from it, closer than it can
+        // close in a sub-step (400 mm/s: 10 mm in each of 4): still touching, the pair is held and
+        // its contact answered at the first sub-step's end, 5 mm deep; forgotten, it is a first
+        // contact again, at 5 / 40 = 0.125 of the step, as in a new world with the ball put there.
+        var remembering = Pressed(forget: false, out BodyId ball, out BodyId walls);
+        var forgetting = Pressed(forget: true, out BodyId forgettingBall, out BodyId forgettingWalls);
+        Assert.True(remembering.IsTouching(ball, walls));
+        Assert.False(forgetting.IsTouching(forgettingBall, forgettingWalls));
+        Assert.Equal(0, forgetting.TouchingPairs);
+
+        var fresh = new MotionWorld();
+        fresh.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId freshBall = fresh.AddCircle(58f, new Vector2(1500f - 58f - 5f, 0f));
+        fresh.HeldSubSteps = 4;
+
+        var held = StepOn(remembering, ball);
+        var forgotten = StepOn(forgetting, forgettingBall);
+        var anew = StepOn(fresh, freshBall);
+        Assert.True(held[0].Pressing && held[0].Time == 0.25, $"remembered: first answer at {held[0].Time}, pressing {held[0].Pressing}");
+        Assert.False(forgotten[0].Pressing);
+        Assert.Equal(0.125, forgotten[0].Time, 0.25 / 40.0);
+        Assert.Equal(anew.Select(c => (c.Time, c.Depth, c.Pressing)), forgotten.Select(c => (c.Time, c.Depth, c.Pressing)));
+
+        static MotionWorld Pressed(bool forget, out BodyId ball, out BodyId walls)
+        {
+            var world = new MotionWorld();
+            walls = world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+            ball = world.AddCircle(58f, new Vector2(1500f - 58f - 25f, 0f));
+            world.HeldSubSteps = 4;
+            world.SetVelocity(ball, new Vector2(400f, 0f));
+            world.Step(Seconds, new PushOutHandler(stop: false));
+            Assert.True(world.IsTouching(ball, walls));
+            world.SetPose(ball, new Vector2(1500f - 58f - 5f, 0f), 0f);
+            if (forget)
+            {
+                world.ForgetTouches();
+            }
+
+            return world;
+        }
+
+        static List<Contact> StepOn(MotionWorld world, BodyId ball)
+        {
+            var handler = new PushOutHandler(stop: false);
+            world.SetVelocity(ball, new Vector2(400f, 0f));
+            world.Step(Seconds, handler);
+            Assert.NotEmpty(handler.Contacts);
+            return handler.Contacts;
+        }
+    }
+
+    [Fact]
+    public void TouchesCannotBeForgottenWhileAStepRuns()
+    {
+        var world = new MotionWorld();
+        world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
+        BodyId ball = world.AddCircle(58f, new Vector2(1400f, 0f));
+        world.SetVelocity(ball, new Vector2(1000f, 0f));
+        InvalidOperationException? refusal = null;
+        var handler = new PushOutHandler { Probe = w => refusal ??= Assert.Throws<InvalidOperationException>(w.ForgetTouches) };
+        world.Step(Seconds, handler);
+        Assert.NotNull(refusal);
+        Assert.Contains("while a step or Settle runs", refusal!.Message, StringComparison.Ordinal);
+        Assert.Equal(1, world.TouchingPairs);
+    }
+
     // About 460 bodies apart on a jittered lattice in a pool of 10 × 6 m: fish swimming at 300 mm/s
     // (turning), balls at up to 2,000 mm/s, squares, a few round obstacles.
     private static MotionWorld Crowd(int seed)
