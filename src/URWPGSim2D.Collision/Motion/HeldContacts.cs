@@ -36,6 +36,7 @@ internal sealed class HeldContacts
     private int _tick;
     private int _subSteps;
     private int _movers;
+    private int _others;
 
     /// <summary>Creates the stage over the pair schedule, the contacts that persist, the settling stage (wedged bodies' contacts) and the world's bodies (by id).</summary>
     public HeldContacts(PairSchedule schedule, ContactCache contacts, Settling settling, List<Body> bodies)
@@ -65,17 +66,19 @@ internal sealed class HeldContacts
     /// <summary>Held pairs answered in the last step (each answer of a pair counts).</summary>
     public int Answers { get; private set; }
 
-    /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers (only while the stage is on: a world that holds nothing keeps no room for it).</summary>
-    public void Reserve(int movers)
+    /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers and <paramref name="others"/> static bodies and walls (only while the stage is on: a world that holds nothing keeps no room for it).</summary>
+    public void Reserve(int movers, int others)
     {
         _movers = movers;
+        _others = others;
         Size();
     }
 
-    // Room for as many held pairs as the pair table reserves, once the stage is on.
+    // Room for as many held pairs as the pair table reserves, or as the world can have (a small
+    // world: a match of 3 movers has at most a few dozen pairs), once the stage is on.
     private void Size()
     {
-        int pairs = PairSchedule.ReservedPairs(_movers);
+        int pairs = Math.Min(PairSchedule.ReservedPairs(_movers), PairSchedule.MostPairs(_movers, _others));
         if (_subSteps == 0 || _slot.Length >= pairs)
         {
             return;

@@ -593,7 +593,7 @@ public sealed partial class MotionWorld
         _schedule.Load([.. movers], [.. statics], walls);
         _islands.Load(m, PairSchedule.ReservedPairs(m));
         _events.Load(m);
-        _held.Reserve(m);
+        _held.Reserve(m, statics.Count + (walls is null ? 0 : 1));
         _contacts.Reserve(2 * m);
         _settling.Load(m);
         _changed = new BodySet(m);

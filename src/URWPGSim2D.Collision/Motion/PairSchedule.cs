@@ -42,6 +42,9 @@ internal sealed class PairSchedule
     /// <summary>Room for a busy step of a world of <paramref name="movers"/> movers, in pairs.</summary>
     public static int ReservedPairs(int movers) => (8 * movers) + 64;
 
+    /// <summary>The most pairs a world can have planned at once: every two movers, and every mover with every static body and the walls (<paramref name="others"/>).</summary>
+    public static int MostPairs(int movers, int others) => (int)Math.Min(int.MaxValue, ((long)movers * (movers - 1) / 2) + ((long)movers * others));
+
     /// <summary>Takes a new set of bodies (allocates only here): room for a busy step up front, so that a crowd does not find a new largest step now and then.</summary>
     public void Load(Body[] movers, Body[] statics, Body? walls)
     {
