@@ -14,6 +14,36 @@ namespace URWPGSim2D.Learning.Tests;
 public sealed class MatchRestartTests
 {
     [Fact]
+    public void ARestartedMatchsFirstFishBallContactIsAFirstContactAgain()
+    {
+        // Played to its first fish-ball contact (cycle k) and restarted with the same seed and
+        // decisions, the match meets the ball at cycle k again: a first contact of the cycle (the
+        // exchange), as in a new match, not a repeat of the old match's contact of its cycle k.
+        var item = ItemRegistry.Find("polo-1v1")!;
+        var (played, playedPushed) = Build(item, "idle", 5, noise: false);
+        int k = 0;
+        while (!played.Contacts.Cycle.ToArray().Any(c => c.Pair.Kind == URWPGSim2D.Engine.Simulation.PairKind.FishBall) && k < 200)
+        {
+            Push(playedPushed, ++k, 0);
+            played.Step();
+        }
+
+        Assert.True(k < 200, "no fish-ball contact in 200 cycles");
+        played.Restart(5);
+        var (fresh, freshPushed) = Build(item, "idle", 5, noise: false);
+        var playedLine = new TraceLine(played.World, played.Teams, played.Rules);
+        var freshLine = new TraceLine(fresh.World, fresh.Teams, fresh.Rules);
+        for (int cycle = 1; cycle <= k + 20; cycle++)
+        {
+            Push(playedPushed, cycle, 0);
+            Push(freshPushed, cycle, 0);
+            played.Step();
+            fresh.Step();
+            Assert.Equal(freshLine.Write(fresh.Contacts.Cycle).ToArray(), playedLine.Write(played.Contacts.Cycle).ToArray());
+        }
+    }
+
+    [Fact]
     public void ARestartForgetsTheTouchesTheMatchLeft()
     {
         var item = ItemRegistry.Find("polo-1v1")!;

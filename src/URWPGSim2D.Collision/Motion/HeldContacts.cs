@@ -75,7 +75,7 @@ internal sealed class HeldContacts
     }
 
     // Room for as many held pairs as the pair table reserves, or as the world can have (a small
-    // world: a match of 3 movers has at most a few dozen pairs), once the stage is on.
+    // world: a match of 3 movers has at most a dozen pairs), once the stage is on.
     private void Size()
     {
         int pairs = Math.Min(PairSchedule.ReservedPairs(_movers), PairSchedule.MostPairs(_movers, _others));

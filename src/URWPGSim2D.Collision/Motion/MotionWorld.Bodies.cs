@@ -91,7 +91,8 @@ public sealed partial class MotionWorld
 
     /// <summary>
     /// Removes every body: the motion world is empty again, its settings (<see cref="Wedging"/>,
-    /// <see cref="Threads"/>, <see cref="HeldSubSteps"/>, <see cref="PressingContacts"/>) kept, and the next body added is number 0. The ids of the removed
+    /// <see cref="Threads"/>, <see cref="MinimumMoversForThreads"/>, <see cref="HeldSubSteps"/>,
+    /// <see cref="PressingContacts"/>) kept, and the next body added is number 0. The ids of the removed
     /// bodies are stale: every method refuses them with an <see cref="ArgumentException"/> that
     /// says so, even where a new body has the same number.
     /// </summary>
@@ -112,8 +113,8 @@ public sealed partial class MotionWorld
     /// <summary>
     /// Forgets every touch (<see cref="IsTouching"/>), as <see cref="Clear"/> does, without ending
     /// it (no <see cref="IContactHandler.OnTouchEnded"/>): the next step treats every pair as not
-    /// touching, so no pair is held (<see cref="HeldSubSteps"/>) and each pair's next contact is a
-    /// first contact. For a game put back to its start in place, which should then play what a new
+    /// touching, so no pair is held at its start (<see cref="HeldSubSteps"/>) and each pair's next
+    /// contact is a first contact. For a game put back to its start in place, which should then play what a new
     /// motion world of the same bodies plays.
     /// </summary>
     /// <exception cref="InvalidOperationException">A step or <see cref="Settle"/> is running.</exception>

@@ -133,7 +133,7 @@ public sealed class Match
 
         var scenario = Referee!.Scenario;
         World.Cycle = 0;
-        World.Motion.ForgetTouches();
+        Motion.Restart();
         for (int i = 0; i < World.Fish.Length; i++)
         {
             var d = scenario.Fish[i];

@@ -14,6 +14,9 @@ internal sealed class ContactHandler(World world, ContactLog log) : IContactHand
 {
     private readonly ContactResponse _response = new(world);
 
+    /// <summary>Forgets the contacts the response remembers (a match restarted in place).</summary>
+    public void Restart() => _response.Restart();
+
     /// <inheritdoc/>
     public void OnSeparate(MotionWorld motionWorld, in Contact contact) => _response.Separate(world.PairOf(contact), contact);
 

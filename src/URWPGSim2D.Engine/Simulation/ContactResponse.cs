@@ -299,6 +299,9 @@ internal sealed class ContactResponse
         return Math.Clamp((common - vb) / (vf - vb), 0f, 1f);
     }
 
+    /// <summary>Forgets every fish's contacts of the cycle (a match put back to cycle 0 in place counts its cycles again).</summary>
+    public void Restart() => Array.Fill(_partnerCycle, -1);
+
     // Whether the fish had a contact with `partner` in the current cycle already (nothing recorded).
     private bool HadContact(FishState fish, int partner)
     {

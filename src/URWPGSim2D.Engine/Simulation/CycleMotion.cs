@@ -58,6 +58,17 @@ public sealed class CycleMotion
     /// <summary>Deepest overlap of any pair (walls included) at the end of the last cycle (or settling), mm.</summary>
     public float LeftoverOverlap => _world.Motion.LeftoverOverlap;
 
+    /// <summary>
+    /// Forgets what the stage remembers of the cycles played (the motion world's touches, the
+    /// response's contacts of the cycle), for a match put back to cycle 0 in place: it then plays
+    /// what a new stage plays.
+    /// </summary>
+    internal void Restart()
+    {
+        _world.Motion.ForgetTouches();
+        _handler.Restart();
+    }
+
     /// <summary>Moves every body through one cycle, resolving contacts on the way.</summary>
     public void Run()
     {
