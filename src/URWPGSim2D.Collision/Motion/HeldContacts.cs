@@ -35,8 +35,7 @@ internal sealed class HeldContacts
     private int _hitCount;
     private int _tick;
     private int _subSteps;
-    private int _movers;
-    private int _others;
+    private int _room;
 
     /// <summary>Creates the stage over the pair schedule, the contacts that persist, the settling stage (wedged bodies' contacts) and the world's bodies (by id).</summary>
     public HeldContacts(PairSchedule schedule, ContactCache contacts, Settling settling, List<Body> bodies)
@@ -69,8 +68,7 @@ internal sealed class HeldContacts
     /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers and <paramref name="others"/> static bodies and walls (only while the stage is on: a world that holds nothing keeps no room for it).</summary>
     public void Reserve(int movers, int others)
     {
-        _movers = movers;
-        _others = others;
+        _room = Math.Min(PairSchedule.ReservedPairs(movers), PairSchedule.MostPairs(movers, others));
         Size();
     }
 
@@ -78,7 +76,7 @@ internal sealed class HeldContacts
     // world: a match of 3 movers has at most a dozen pairs), once the stage is on.
     private void Size()
     {
-        int pairs = Math.Min(PairSchedule.ReservedPairs(_movers), PairSchedule.MostPairs(_movers, _others));
+        int pairs = _room;
         if (_subSteps == 0 || _slot.Length >= pairs)
         {
             return;

@@ -225,15 +225,8 @@ public sealed class MotionWorldHeldContactsTests
     [Fact]
     public void SubStepsCannotChangeWhileAStepRuns()
     {
-        var world = new MotionWorld();
-        world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
-        BodyId ball = world.AddCircle(58f, new Vector2(1400f, 0f));
-        world.SetVelocity(ball, new Vector2(1000f, 0f));
-        ArgumentException? refusal = null;
-        var handler = new PushOutHandler { Probe = w => refusal ??= Assert.Throws<ArgumentException>(() => w.HeldSubSteps = 4) };
-        world.Step(Seconds, handler);
-        Assert.NotNull(refusal);
-        Assert.Contains("while a step runs", refusal!.Message, StringComparison.Ordinal);
+        var refusal = RefusedMidStep<ArgumentException>(w => w.HeldSubSteps = 4, out _);
+        Assert.Contains("while a step runs", refusal.Message, StringComparison.Ordinal);
     }
 
     [Fact]
@@ -293,16 +286,24 @@ public sealed class MotionWorldHeldContactsTests
     [Fact]
     public void TouchesCannotBeForgottenWhileAStepRuns()
     {
-        var world = new MotionWorld();
+        var refusal = RefusedMidStep<InvalidOperationException>(w => w.ForgetTouches(), out MotionWorld world);
+        Assert.Contains("while a step or Settle runs", refusal.Message, StringComparison.Ordinal);
+        Assert.Equal(1, world.TouchingPairs);
+    }
+
+    // A ball driven into the wall; at its contact the handler tries the change and must be refused.
+    private static TException RefusedMidStep<TException>(Action<MotionWorld> change, out MotionWorld world)
+        where TException : Exception
+    {
+        world = new MotionWorld();
         world.AddWalls(new Field(3000f, 2000f, goalBlocks: false));
         BodyId ball = world.AddCircle(58f, new Vector2(1400f, 0f));
         world.SetVelocity(ball, new Vector2(1000f, 0f));
-        InvalidOperationException? refusal = null;
-        var handler = new PushOutHandler { Probe = w => refusal ??= Assert.Throws<InvalidOperationException>(w.ForgetTouches) };
+        TException? refusal = null;
+        var handler = new PushOutHandler { Probe = w => refusal ??= Assert.Throws<TException>(() => change(w)) };
         world.Step(Seconds, handler);
         Assert.NotNull(refusal);
-        Assert.Contains("while a step or Settle runs", refusal!.Message, StringComparison.Ordinal);
-        Assert.Equal(1, world.TouchingPairs);
+        return refusal!;
     }
 
     // About 460 bodies apart on a jittered lattice in a pool of 10 × 6 m: fish swimming at 300 mm/s
