@@ -487,8 +487,14 @@ internal sealed class Body
         {
             if (!_frameValid)
             {
+                // Most changes of pose move the fish without turning it (or its model): the turn's
+                // sine and cosine are kept from the last frame when the turn is the same.
                 FishPose posed = Model!.Pose;
-                _fish!.Frame = new RigidFrame(posed.Position, posed.Heading, Position, Heading);
+                FishBounds fish = _fish!;
+                fish.Frame = fish.FrameKnown && fish.Frame.Turn == Heading - posed.Heading
+                    ? fish.Frame.Moved(posed.Position, Position)
+                    : new RigidFrame(posed.Position, posed.Heading, Position, Heading);
+                fish.FrameKnown = true;
                 _frameValid = true;
             }
 
@@ -712,6 +718,7 @@ internal sealed class Body
         public Vector2 BodyGroupLocal;
         public float BodyGroupRadius;
         public RigidFrame Frame;
+        public bool FrameKnown;
         public Disc BodyDisc;
         public Disc TailDisc;
         public Vector3 TailJoints;

@@ -8,14 +8,17 @@ public readonly struct Contact
         Pressing = pressing;
         BodyA = bodyA.Handle;
         BodyB = bodyB.Handle;
-        Result = hit.Result;
+        Intersect = hit.Intersect;
         PartA = hit.PartA < 0 ? null : (FishPart)hit.PartA;
         PartB = hit.PartB < 0 ? null : (FishPart)hit.PartB;
         Time = time;
-        Mtv = XZPlane.ToPlane(Result.MinimumTranslationVector);
-        Normal = XZPlane.ToPlane(Result.NormalAxis);
-        Point = XZPlane.ToPlane(Result.ActionPoint);
-        Depth = Result.Intersect ? Mtv.Length() : 0f; // the length of this contact's own translation (a contact carried into another frame keeps its depth only to the last bit)
+        if (hit.Intersect)
+        {
+            Mtv = hit.Mtv;
+            Normal = hit.Normal;
+            Point = hit.Point;
+            Depth = Mtv.Length(); // the length of this contact's own translation (a contact carried into another frame keeps its depth only to the last bit)
+        }
     }
 
     /// <summary>The first body (always a moving one): <see cref="Result"/>'s translation moves it out of <see cref="BodyB"/>.</summary>
@@ -25,7 +28,8 @@ public readonly struct Contact
     public BodyId BodyB { get; }
 
     /// <summary>The overlap: minimum translation of A, unit normal from B toward A, action point (X–Z plane, mm).</summary>
-    public CollisionDetectionResult Result { get; }
+    public CollisionDetectionResult Result =>
+        Intersect ? new CollisionDetectionResult(true, XZPlane.ToWorld(Mtv), XZPlane.ToWorld(Normal), XZPlane.ToWorld(Point)) : CollisionDetectionResult.None;
 
     /// <summary>The leaf of A in contact when A is a fish, else null.</summary>
     public FishPart? PartA { get; }
@@ -46,7 +50,7 @@ public readonly struct Contact
     public double Time { get; }
 
     /// <summary>Whether the bodies overlap (false for "no contact").</summary>
-    public bool Intersect => Result.Intersect;
+    public bool Intersect { get; }
 
     /// <summary>The minimum translation of A in the plane (X, Y = world X, Z), mm; zero when the bodies do not overlap.</summary>
     public Vector2 Mtv { get; }

@@ -68,7 +68,7 @@ internal sealed class HeldContacts
     /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers and <paramref name="others"/> static bodies and walls (only while the stage is on: a world that holds nothing keeps no room for it).</summary>
     public void Reserve(int movers, int others)
     {
-        _room = Math.Min(PairSchedule.ReservedPairs(movers), PairSchedule.MostPairs(movers, others));
+        _room = PairSchedule.PairRoom(movers, others);
         Size();
     }
 

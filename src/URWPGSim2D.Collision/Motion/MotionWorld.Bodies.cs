@@ -1,4 +1,6 @@
 using System.Collections.Generic;
+using System.Diagnostics.CodeAnalysis;
+using System.Runtime.CompilerServices;
 using URWPGSim2D.Collision.Pool;
 
 namespace URWPGSim2D.Collision.Motion;
@@ -533,14 +535,20 @@ public sealed partial class MotionWorld
         int index = id.Index;
         if (id.World != _world || id.Generation != _generation || (uint)index >= (uint)_bodies.Count)
         {
-            throw new ArgumentException(
-                id.IsNull ? "default(BodyId) names no body: use an id an Add method returned"
-                : id.World == _world && id.Generation != _generation ? $"{id} is stale: its body was removed when the motion world was cleared (Clear); use the id Add returned since"
-                : $"{id} is not a body of this motion world (it has {_bodies.Count}; an id is valid only in the motion world that returned it)", name);
+            ThrowNotABody(id, name);
         }
 
         return _bodies[index];
     }
+
+    // Kept out of Existing so that the check inlines where bodies are looked up.
+    [DoesNotReturn]
+    [MethodImpl(MethodImplOptions.NoInlining)]
+    private void ThrowNotABody(BodyId id, string name) =>
+        throw new ArgumentException(
+            id.IsNull ? "default(BodyId) names no body: use an id an Add method returned"
+            : id.World == _world && id.Generation != _generation ? $"{id} is stale: its body was removed when the motion world was cleared (Clear); use the id Add returned since"
+            : $"{id} is not a body of this motion world (it has {_bodies.Count}; an id is valid only in the motion world that returned it)", name);
 
     private Body Moving(BodyId id, BodyKind? kind, string name)
     {
@@ -590,11 +598,11 @@ public sealed partial class MotionWorld
             }
         }
 
-        int m = movers.Count;
+        int m = movers.Count, others = statics.Count + (walls is null ? 0 : 1);
         _schedule.Load([.. movers], [.. statics], walls);
-        _islands.Load(m, PairSchedule.ReservedPairs(m));
+        _islands.Load(m, PairSchedule.PairRoom(m, others));
         _events.Load(m);
-        _held.Reserve(m, statics.Count + (walls is null ? 0 : 1));
+        _held.Reserve(m, others);
         _contacts.Reserve(2 * m);
         _settling.Load(m);
         _changed = new BodySet(m);

@@ -45,12 +45,15 @@ internal sealed class PairSchedule
     /// <summary>The most pairs a world can have planned at once: every two movers, and every mover with every static body and the walls (<paramref name="others"/>).</summary>
     public static int MostPairs(int movers, int others) => (int)Math.Min(int.MaxValue, ((long)movers * (movers - 1) / 2) + ((long)movers * others));
 
+    /// <summary>The pair slots a world keeps room for: a busy step's (<see cref="ReservedPairs"/>), never more than it can have at once (<see cref="MostPairs"/>).</summary>
+    public static int PairRoom(int movers, int others) => Math.Min(ReservedPairs(movers), MostPairs(movers, others));
+
     /// <summary>Takes a new set of bodies (allocates only here): room for a busy step up front, so that a crowd does not find a new largest step now and then.</summary>
     public void Load(Body[] movers, Body[] statics, Body? walls)
     {
         Planner.Load(movers, statics, walls);
         Table.Resize(movers.Length);
-        Table.Reserve(ReservedPairs(movers.Length));
+        Table.Reserve(PairRoom(movers.Length, statics.Length + (walls is null ? 0 : 1)));
         Sampler.Reserve(movers.Length);
     }
 

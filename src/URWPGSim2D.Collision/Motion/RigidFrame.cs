@@ -29,9 +29,27 @@ internal readonly struct RigidFrame
             (_sin, _cos) = MathF.SinCos(turn);
         }
 
+        Turn = turn;
         IsIdentity = turn == 0f && from == to;
         IsTranslation = turn == 0f;
     }
+
+    private RigidFrame(in RigidFrame turned, Vector2 from, Vector2 to)
+    {
+        _from = from;
+        _to = to;
+        _cos = turned._cos;
+        _sin = turned._sin;
+        Turn = turned.Turn;
+        IsIdentity = turned.IsTranslation && from == to;
+        IsTranslation = turned.IsTranslation;
+    }
+
+    /// <summary>The turn θ − θ₀, rad, as the constructor computed it.</summary>
+    public float Turn { get; }
+
+    /// <summary>The motion with this one's turn (its sine and cosine reused, so bit for bit what the constructor gives for the same turn) from <paramref name="from"/> to <paramref name="to"/>.</summary>
+    public RigidFrame Moved(Vector2 from, Vector2 to) => new(this, from, to);
 
     /// <summary>True when the model is exactly at the fish's pose.</summary>
     public bool IsIdentity { get; }

@@ -16,19 +16,20 @@ public readonly struct Aabb
     {
         Guard.Finite(min, nameof(min));
         Guard.Finite(max, nameof(max));
-        if (min.X > max.X)
+        if (min.X > max.X || min.Y > max.Y)
         {
-            throw new ArgumentException($"min x ({min.X}) is greater than max x ({max.X})", nameof(min));
-        }
-
-        if (min.Y > max.Y)
-        {
-            throw new ArgumentException($"min z ({min.Y}) is greater than max z ({max.Y})", nameof(min));
+            Inverted(min, max);
         }
 
         Min = min;
         Max = max;
     }
+
+    [System.Diagnostics.CodeAnalysis.DoesNotReturn]
+    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+    private static void Inverted(Vector2 min, Vector2 max) =>
+        throw new ArgumentException(
+            min.X > max.X ? $"min x ({min.X}) is greater than max x ({max.X})" : $"min z ({min.Y}) is greater than max z ({max.Y})", nameof(min));
 
     // Trusted corners from the library's own arithmetic (finite, min ≤ max): no checks.
     private Aabb(Vector2 min, Vector2 max, bool trusted)
