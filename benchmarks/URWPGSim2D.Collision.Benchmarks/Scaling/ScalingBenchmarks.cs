@@ -12,8 +12,8 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// (<see cref="BaselineMatch"/>: the same scene played by the whole server of the commit tagged
 /// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. Every iteration
 /// builds the scene afresh and plays its first 20 cycles unmeasured (the starting overlaps are
-/// resolved in the first ones), then measures cycles 20 to 29, one a call: every iteration, and
-/// both methods, time the same cycles (a crowd's cycles grow dearer as it jams, so timing
+/// resolved in the first ones), then measures cycles 20 to 29, one a call (the JIT warmed first,
+/// <see cref="JitWarmUp"/>): every iteration, and both methods, time the same cycles (a crowd's cycles grow dearer as it jams, so timing
 /// whichever cycles a method happened to reach would compare unlike work). Brute force, the broad
 /// phase's reference, is in <see cref="BruteForceScalingBenchmarks"/>.
 /// </summary>
@@ -29,6 +29,22 @@ public class ScalingBenchmarks
     /// <summary>Fish and balls in the scene.</summary>
     [Params(100, 300, 1_000, 3_000, 10_000, 30_000)]
     public int Objects { get; set; }
+
+    /// <summary>Warms the JIT on a 1,000-body crowd (see <see cref="JitWarmUp"/>).</summary>
+    [GlobalSetup(Target = nameof(Grid))]
+    public void WarmUp()
+    {
+        Match warm = MatchBuilder.Build(CrowdScenario.Create(1_000));
+        JitWarmUp.Until(warm.Step);
+    }
+
+    /// <summary>Warms the JIT on a 1,000-body crowd played by the frozen motion stage.</summary>
+    [GlobalSetup(Target = nameof(Baseline))]
+    public void WarmUpBaseline()
+    {
+        BaselineMatch warm = BaselineBuilder.Build(baseline::URWPGSim2D.Server.Scenario.CrowdScenario.Create(1_000));
+        JitWarmUp.Until(warm.Step);
+    }
 
     /// <summary>Builds the scene and plays its first 20 cycles.</summary>
     [IterationSetup(Target = nameof(Grid))]
