@@ -10,12 +10,13 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// match's density, the pool growing with the count, fish on fixed random decisions) for 100 to
 /// 30,000 fish and balls, the motion world's broad phase a uniform grid, against the frozen baseline
 /// (<see cref="BaselineMatch"/>: the same scene played by the whole server of the commit tagged
-/// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. Every iteration
-/// builds the scene afresh and plays its first 20 cycles unmeasured (the starting overlaps are
-/// resolved in the first ones), then measures cycles 20 to 29, one a call (the JIT warmed first,
-/// <see cref="JitWarmUp"/>): every iteration, and both methods, time the same cycles (a crowd's cycles grow dearer as it jams, so timing
-/// whichever cycles a method happened to reach would compare unlike work). Brute force, the broad
-/// phase's reference, is in <see cref="BruteForceScalingBenchmarks"/>.
+/// <c>benchmark-baseline</c>, compiled from that tag) measured in the same run. The JIT is warmed
+/// first (<see cref="JitWarmUp"/>); every iteration builds the scene afresh and plays its first 20
+/// cycles unmeasured (the starting overlaps are resolved in the first ones), then measures cycles
+/// 20 to 29, one a call: every iteration, and both methods, time the same cycles (a crowd's cycles
+/// grow dearer as it jams, so timing whichever cycles a method happened to reach would compare
+/// unlike work). Brute force, the broad phase's reference, is in
+/// <see cref="BruteForceScalingBenchmarks"/>.
 /// </summary>
 [Config(typeof(BaselineConfig))]
 [InvocationCount(MeasuredCycles)]

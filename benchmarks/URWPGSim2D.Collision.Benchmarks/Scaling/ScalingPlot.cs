@@ -7,7 +7,7 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// <summary>
 /// Writes the cost-per-cycle plot of docs/performance.md: time per cycle (log scale) against the
 /// number of objects (log scale), one line per measured series, with a dashed slope-1 guide
-/// (cost proportional to the count) and issue 10's goals at 1,000 and 10,000. Plain SVG, nothing but numbers in it.
+/// (cost proportional to the count). Plain SVG, nothing but numbers in it.
 /// </summary>
 public static class ScalingPlot
 {
@@ -58,17 +58,7 @@ public static class ScalingPlot
         s.Append(F($"<text x=\"{(Left + Width - Right) / 2:0.#}\" y=\"{Height - 18}\" text-anchor=\"middle\">fish and balls (same density, the pool grows with the count)</text>\n"));
         s.Append(F($"<text x=\"18\" y=\"{(Top + Height - Bottom) / 2:0.#}\" text-anchor=\"middle\" transform=\"rotate(-90 18 {(Top + Height - Bottom) / 2:0.#})\">time per cycle</text>\n"));
 
-        // Issue 10's goals (0.8 ms at 1,000, 8 ms at 10,000) as marks, and a slope-1 guide through the first series' smallest point.
-        foreach (var (objects, nanoseconds, label) in new[] { (1_000.0, 8e5, "goal 0.8 ms"), (10_000.0, 8e6, "goal 8 ms") })
-        {
-            if (nanoseconds >= yMin && nanoseconds <= yMax && objects >= xMin && objects <= xMax)
-            {
-                double markX = X(objects), markY = Y(nanoseconds);
-                s.Append(F($"<path d=\"M{markX - 6:0.#},{markY:0.#}H{markX + 6:0.#}M{markX:0.#},{markY - 6:0.#}V{markY + 6:0.#}\" stroke=\"#555\" stroke-width=\"2\"/>\n"));
-                s.Append(F($"<text x=\"{markX + 8:0.#}\" y=\"{markY + 14:0.#}\" fill=\"#555\">{label}</text>\n"));
-            }
-        }
-
+        // A slope-1 guide through the first series' smallest point.
         var anchor = series[0].Points.OrderBy(p => p.Objects).First(); // the first series sets the slope-1 guide
         double guideEnd = Math.Min(xMax, anchor.Objects * (yMax / anchor.Nanoseconds));
         s.Append(F($"<line x1=\"{X(anchor.Objects):0.#}\" y1=\"{Y(anchor.Nanoseconds):0.#}\" x2=\"{X(guideEnd):0.#}\" y2=\"{Y(anchor.Nanoseconds * guideEnd / anchor.Objects):0.#}\" stroke=\"#aaa\" stroke-dasharray=\"6 4\"/>\n"));

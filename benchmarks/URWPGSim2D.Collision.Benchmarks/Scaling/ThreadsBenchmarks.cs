@@ -5,9 +5,9 @@ namespace URWPGSim2D.Collision.Benchmarks.Scaling;
 /// balls, its motion world on one thread (the baseline) and on two (<c>run --threads 2</c>: the
 /// islands sampled on two threads up to their first contact); both play the same match, tested.
 /// The JIT is warmed first (<see cref="JitWarmUp"/>); every iteration builds the scene afresh and
-/// plays its first 20 cycles unmeasured, then measures
-/// cycles 20 to 29, one a call: both methods time the same cycles (a crowd's cycles grow dearer as
-/// it jams, so timing whichever cycles each method happened to reach would compare unlike work).
+/// plays its first 20 cycles unmeasured, then measures cycles 20 to 29, one a call: both methods
+/// time the same cycles (a crowd's cycles grow dearer as it jams, so timing whichever cycles each
+/// method happened to reach would compare unlike work).
 /// </summary>
 [MemoryDiagnoser]
 [MedianColumn]

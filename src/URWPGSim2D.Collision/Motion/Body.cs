@@ -705,7 +705,8 @@ internal sealed class Body
 
     // A fish's bounds that follow from its pose, kept apart from the body so that a ball's or a
     // polygon's state stays small: what the body group is in the body frame, and the last frame,
-    // group circles and tail circle computed (valid while the body's flags say so); and its joints'
+    // group circles and tail circle computed (valid while the body's flags say so; the last frame's
+    // turn is reused by the next frame of the same turn once one was computed, FrameKnown); and its joints'
     // turn over a step: set between steps (pending), running in the step (active) from the angles
     // it started with to the targets, with the most a point moves by it.
     private sealed class FishBounds

@@ -48,7 +48,11 @@ internal readonly struct RigidFrame
     /// <summary>The turn θ − θ₀, rad, as the constructor computed it.</summary>
     public float Turn { get; }
 
-    /// <summary>The motion with this one's turn (its sine and cosine reused, so bit for bit what the constructor gives for the same turn) from <paramref name="from"/> to <paramref name="to"/>.</summary>
+    /// <summary>
+    /// The motion with this one's turn (its sine and cosine reused, so bit for bit what the
+    /// constructor gives for the same turn) from <paramref name="from"/> to <paramref name="to"/>.
+    /// Only for a frame the constructor built: a default frame has no turn to reuse.
+    /// </summary>
     public RigidFrame Moved(Vector2 from, Vector2 to) => new(this, from, to);
 
     /// <summary>True when the model is exactly at the fish's pose.</summary>

@@ -1,3 +1,6 @@
+using System.Diagnostics.CodeAnalysis;
+using System.Runtime.CompilerServices;
+
 namespace URWPGSim2D.Collision.Shapes;
 
 /// <summary>
@@ -25,8 +28,8 @@ public readonly struct Aabb
         Max = max;
     }
 
-    [System.Diagnostics.CodeAnalysis.DoesNotReturn]
-    [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+    [DoesNotReturn]
+    [MethodImpl(MethodImplOptions.NoInlining)]
     private static void Inverted(Vector2 min, Vector2 max) =>
         throw new ArgumentException(
             min.X > max.X ? $"min x ({min.X}) is greater than max x ({max.X})" : $"min z ({min.Y}) is greater than max z ({max.Y})", nameof(min));
