@@ -57,6 +57,10 @@ public readonly struct CollisionDetectionResult : IEquatable<CollisionDetectionR
         ? new CollisionDetectionResult(true, -MinimumTranslationVector, -NormalAxis, ActionPoint)
         : this;
 
+    /// <summary>A result from plane quantities (X = world X, Y = world Z): <see cref="None"/> when they do not intersect.</summary>
+    internal static CollisionDetectionResult InPlane(bool intersect, Vector2 mtv, Vector2 normal, Vector2 actionPoint) =>
+        intersect ? new(true, XZPlane.ToWorld(mtv), XZPlane.ToWorld(normal), XZPlane.ToWorld(actionPoint)) : None;
+
     /// <summary>Builds an intersecting result from plane quantities (X = world X, Y = world Z).</summary>
     internal static CollisionDetectionResult FromPlane(Vector2 normal, float depth, Vector2 actionPoint) =>
         new(true, XZPlane.ToWorld(normal * depth), XZPlane.ToWorld(normal), XZPlane.ToWorld(actionPoint));

@@ -491,10 +491,9 @@ internal sealed class Body
                 // sine and cosine are kept from the last frame when the turn is the same.
                 FishPose posed = Model!.Pose;
                 FishBounds fish = _fish!;
-                fish.Frame = fish.FrameKnown && fish.Frame.Turn == Heading - posed.Heading
+                fish.Frame = fish.Frame.Turn == Heading - posed.Heading
                     ? fish.Frame.Moved(posed.Position, Position)
                     : new RigidFrame(posed.Position, posed.Heading, Position, Heading);
-                fish.FrameKnown = true;
                 _frameValid = true;
             }
 
@@ -706,7 +705,7 @@ internal sealed class Body
     // A fish's bounds that follow from its pose, kept apart from the body so that a ball's or a
     // polygon's state stays small: what the body group is in the body frame, and the last frame,
     // group circles and tail circle computed (valid while the body's flags say so; the last frame's
-    // turn is reused by the next frame of the same turn once one was computed, FrameKnown); and its joints'
+    // turn is reused by the next frame of the same turn, the first frame a built one of no turn); and its joints'
     // turn over a step: set between steps (pending), running in the step (active) from the angles
     // it started with to the targets, with the most a point moves by it.
     private sealed class FishBounds
@@ -718,8 +717,7 @@ internal sealed class Body
         public bool TurnActive;
         public Vector2 BodyGroupLocal;
         public float BodyGroupRadius;
-        public RigidFrame Frame;
-        public bool FrameKnown;
+        public RigidFrame Frame = new(Vector2.Zero, 0f, Vector2.Zero, 0f);
         public Disc BodyDisc;
         public Disc TailDisc;
         public Vector3 TailJoints;

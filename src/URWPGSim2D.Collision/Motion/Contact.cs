@@ -29,7 +29,7 @@ public readonly struct Contact
 
     /// <summary>The overlap: minimum translation of A, unit normal from B toward A, action point (X–Z plane, mm).</summary>
     public CollisionDetectionResult Result =>
-        Intersect ? new CollisionDetectionResult(true, XZPlane.ToWorld(Mtv), XZPlane.ToWorld(Normal), XZPlane.ToWorld(Point)) : CollisionDetectionResult.None;
+        CollisionDetectionResult.InPlane(Intersect, Mtv, Normal, Point);
 
     /// <summary>The leaf of A in contact when A is a fish, else null.</summary>
     public FishPart? PartA { get; }

@@ -65,10 +65,10 @@ internal sealed class HeldContacts
     /// <summary>Held pairs answered in the last step (each answer of a pair counts).</summary>
     public int Answers { get; private set; }
 
-    /// <summary>Makes room for a busy step of a world of <paramref name="movers"/> movers and <paramref name="others"/> static bodies and walls (only while the stage is on: a world that holds nothing keeps no room for it).</summary>
-    public void Reserve(int movers, int others)
+    /// <summary>Makes room for <paramref name="pairs"/> held pairs, the pair slots the world keeps (<see cref="PairSchedule.Room"/>; only while the stage is on: a world that holds nothing keeps no room for it).</summary>
+    public void Reserve(int pairs)
     {
-        _room = PairSchedule.PairRoom(movers, others);
+        _room = pairs;
         Size();
     }
 

@@ -68,5 +68,5 @@ internal readonly struct Hit
 
     /// <summary>The contact as the library reports it.</summary>
     public CollisionDetectionResult Result =>
-        Intersect ? new CollisionDetectionResult(true, XZPlane.ToWorld(Mtv), XZPlane.ToWorld(Normal), XZPlane.ToWorld(Point)) : CollisionDetectionResult.None;
+        CollisionDetectionResult.InPlane(Intersect, Mtv, Normal, Point);
 }

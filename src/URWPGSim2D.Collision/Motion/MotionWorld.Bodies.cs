@@ -598,11 +598,11 @@ public sealed partial class MotionWorld
             }
         }
 
-        int m = movers.Count, others = statics.Count + (walls is null ? 0 : 1);
+        int m = movers.Count;
         _schedule.Load([.. movers], [.. statics], walls);
-        _islands.Load(m, PairSchedule.PairRoom(m, others));
+        _islands.Load(m, _schedule.Room);
         _events.Load(m);
-        _held.Reserve(m, others);
+        _held.Reserve(_schedule.Room);
         _contacts.Reserve(2 * m);
         _settling.Load(m);
         _changed = new BodySet(m);

@@ -48,12 +48,16 @@ internal sealed class PairSchedule
     /// <summary>The pair slots a world keeps room for: a busy step's (<see cref="ReservedPairs"/>), never more than it can have at once (<see cref="MostPairs"/>).</summary>
     public static int PairRoom(int movers, int others) => Math.Min(ReservedPairs(movers), MostPairs(movers, others));
 
+    /// <summary>The pair slots the loaded world keeps room for (<see cref="PairRoom"/>).</summary>
+    public int Room { get; private set; }
+
     /// <summary>Takes a new set of bodies (allocates only here): room for a busy step up front, so that a crowd does not find a new largest step now and then.</summary>
     public void Load(Body[] movers, Body[] statics, Body? walls)
     {
         Planner.Load(movers, statics, walls);
         Table.Resize(movers.Length);
-        Table.Reserve(PairRoom(movers.Length, statics.Length + (walls is null ? 0 : 1)));
+        Room = PairRoom(movers.Length, statics.Length + (walls is null ? 0 : 1));
+        Table.Reserve(Room);
         Sampler.Reserve(movers.Length);
     }
 
